@@ -1,0 +1,80 @@
+#pragma once
+// A joint of the running simulation: its coordinate, and position/velocity/effort commands.
+
+#include <memory>
+#include <string>
+
+#include "ambf_like/joint_spec.hpp"
+#include "ambf_like/pid_controller.hpp"
+
+class btRigidBody;
+class btTypedConstraint;
+struct btJointFeedback;
+
+namespace ambf_like {
+
+/// What currently drives a joint.
+enum class JointDrive { Free, Position, Velocity, Effort };
+
+/// One joint of a World. Commands persist until replaced; the controller runs every step.
+class Joint {
+ public:
+  /// Built by World; `frame_in_parent` is the constraint frame in the parent's COM frame.
+  Joint(JointSpec spec, std::unique_ptr<btTypedConstraint> constraint, btRigidBody& parent,
+        btRigidBody& child, const Transform& frame_in_parent);
+  ~Joint();
+  Joint(const Joint&) = delete;
+  Joint& operator=(const Joint&) = delete;
+
+  const std::string& name() const { return spec_.name; }
+  const JointSpec& spec() const { return spec_; }
+  /// Revolute, continuous and prismatic joints that are not passive accept commands.
+  bool isControllable() const;
+
+  /// Joint coordinate (rad, or m for prismatic), continuous across turns.
+  double position() const { return position_; }
+  /// Rate of the coordinate (rad/s or m/s), from the bodies' velocities.
+  double velocity() const;
+  /// Generalised force (N m or N) the joint's actuator and limits applied in the last step.
+  double effort() const;
+
+  JointDrive drive() const { return drive_; }
+  double target() const { return target_; }
+
+  /// Tracks `position` with the joint's PID; returns the target after clamping to the limits.
+  /// Throws std::invalid_argument for NaN/inf or a joint that takes no commands.
+  double commandPosition(double position);
+  void commandVelocity(double velocity);
+  void commandEffort(double effort);
+  /// Stops driving the joint (motor off, no effort).
+  void release();
+
+  /// World internals: apply the controller before a step, read the coordinate after it.
+  void applyControl(double dt);
+  void updateCoordinate();
+  btTypedConstraint& constraint() { return *constraint_; }
+
+ private:
+  double rawCoordinate() const;
+  Vec3 axisInWorld() const;
+  void requireCommandable(const char* what, double value) const;
+  void setDrive(JointDrive drive, double target);
+  void driveMotor(bool on, double velocity, double max_impulse, double dt);
+  double drivenEffort(double dt);
+  void applyEffort(double effort);
+
+  JointSpec spec_;
+  std::unique_ptr<btTypedConstraint> constraint_;
+  std::unique_ptr<btJointFeedback> feedback_;
+  btRigidBody& parent_;
+  btRigidBody& child_;
+  Transform frame_in_parent_;
+  PidController pid_;
+  JointDrive drive_ = JointDrive::Free;
+  double target_ = 0.0;
+  double position_ = 0.0;
+  double last_raw_ = 0.0;
+  double actuator_effort_ = 0.0;
+};
+
+}  // namespace ambf_like

@@ -1,0 +1,38 @@
+#pragma once
+// Triangle meshes read from STL, OBJ, 3DS or DAE files through assimp, loaded once and shared.
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "ambf_like/load_error.hpp"
+#include "ambf_like/transform.hpp"
+
+namespace ambf_like {
+
+/// Triangle geometry of one mesh file: vertices welded by position, node transforms applied.
+struct Mesh {
+  std::filesystem::path file;
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> triangles;
+
+  /// Mean of the vertices (AMBF's default inertial offset for mesh bodies).
+  Vec3 centroid() const;
+};
+
+/// Loads each mesh file once (assimp) and hands out shared, immutable copies.
+class MeshLibrary {
+ public:
+  /// Throws LoadError naming `referenced_from` when the file is missing, unreadable or empty.
+  std::shared_ptr<const Mesh> load(const std::filesystem::path& file,
+                                   const SourceRef& referenced_from);
+
+  std::size_t size() const { return cache_.size(); }
+
+ private:
+  std::map<std::filesystem::path, std::shared_ptr<const Mesh>> cache_;
+};
+
+}  // namespace ambf_like

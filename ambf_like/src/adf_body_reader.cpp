@@ -1,0 +1,171 @@
+#include "adf_readers.hpp"
+
+namespace ambf_like::detail {
+
+namespace {
+
+CollisionMeshType readMeshType(const YamlView& node) {
+  const auto text = node.asKeyword();
+  if (text == "concave_mesh" || text == "trimesh") return CollisionMeshType::ConcaveMesh;
+  if (text == "convex_mesh") return CollisionMeshType::ConvexMesh;
+  if (text == "convex_hull") return CollisionMeshType::ConvexHull;
+  if (text == "point_cloud") return CollisionMeshType::PointCloud;
+  node.fail("unknown collision mesh type '" + node.asString() +
+            "' (expected CONCAVE_MESH, TRIMESH, CONVEX_MESH, CONVEX_HULL or POINT_CLOUD)");
+}
+
+double nonNegative(const YamlView& node) {
+  const double value = node.asDouble();
+  if (value < 0.0) node.fail("must not be negative (got " + std::to_string(value) + ")");
+  return value;
+}
+
+void reportMissing(const SourceRef& where, const std::string& message, LoadContext& context) {
+  if (context.options().skip_missing_files) {
+    context.warn(where, message + "; continuing without it as requested");
+  } else {
+    context.defer(where, message);
+  }
+}
+
+std::vector<PrimitiveShape> readCollisionPrimitives(const YamlView& node, LoadContext& context) {
+  const bool compound = node.has("compound collision shape");
+  if (compound && node.has("collision shape")) {
+    node["collision shape"].fail("give either 'collision shape' or 'compound collision shape'");
+  }
+  if (compound) return readCompoundShape(node["compound collision shape"], context);
+  if (!node.has("collision shape")) return {};
+  std::optional<Transform> offset;
+  if (auto o = node.find("collision offset")) offset = o->asPose();
+  return {readPrimitive(node["collision shape"], node["collision geometry"], offset)};
+}
+
+std::vector<PrimitiveShape> readVisualPrimitives(const YamlView& node, LoadContext& context) {
+  if (auto list = node.find("compound shape")) return readCompoundShape(*list, context);
+  if (auto shape = node.find("shape"))
+    return {readPrimitive(*shape, node["geometry"], std::nullopt)};
+  return {};
+}
+
+/// Every rigid-body key of ADF 1.0. Accepted but not simulated: publishing, colours, visibility,
+/// shaders, plugins and the body's Cartesian controller (this simulator commands joints).
+// clang-format off
+constexpr std::string_view kBodyKeys[] = {
+    "name", "namespace", "mesh", "collision mesh", "collision mesh type", "shape", "geometry",
+    "compound shape", "collision shape", "collision geometry", "collision offset",
+    "compound collision shape", "mass", "inertia", "inertial offset", "location", "scale",
+    "collision margin", "collision groups", "friction", "restitution", "damping", "controller",
+    "passive", "publish frequency", "publish joint names", "publish joint positions",
+    "publish children names", "color", "color rgba", "color components", "visible", "shaders",
+    "plugins", "gravity", "high resolution path", "low resolution path"};
+// clang-format on
+
+}  // namespace
+
+BodySpec readBody(const YamlView& node, const std::string& identifier, const MeshDirectories& dirs,
+                  LoadContext& context) {
+  node.checkKeys(kBodyKeys, context);
+  BodySpec body;
+  body.where = node.where();
+  body.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
+  if (body.name.empty()) node["name"].fail("body name is empty");
+
+  const MeshDirectories local = meshDirectoriesOf(node, dirs);
+
+  body.mass = nonNegative(node["mass"]);
+  if (auto inertia = node.find("inertia")) {
+    body.inertia = Vec3(nonNegative((*inertia)["ix"]), nonNegative((*inertia)["iy"]),
+                        nonNegative((*inertia)["iz"]));
+  }
+  if (auto offset = node.find("inertial offset")) body.inertial_offset = offset->asPose();
+  if (auto location = node.find("location")) body.location = location->asPose();
+  if (auto scale = node.find("scale")) {
+    body.scale = scale->asDouble();
+    if (body.scale <= 0.0) scale->fail("scale must be greater than zero");
+  }
+  if (auto gravity = node.find("gravity")) body.gravity = gravity->asXyz();
+  body.passive = node.getBool("passive", false);
+
+  if (auto friction = node.find("friction")) {
+    friction->checkKeys({"static", "rolling"}, context);
+    if (auto v = friction->find("static")) body.surface.static_friction = nonNegative(*v);
+    if (auto v = friction->find("rolling")) body.surface.rolling_friction = nonNegative(*v);
+  }
+  if (auto damping = node.find("damping")) {
+    damping->checkKeys({"linear", "angular"}, context);
+    if (auto v = damping->find("linear")) body.surface.linear_damping = nonNegative(*v);
+    if (auto v = damping->find("angular")) body.surface.angular_damping = nonNegative(*v);
+  }
+  if (auto restitution = node.find("restitution")) {
+    body.surface.restitution = nonNegative(*restitution);
+  }
+
+  auto& collision = body.collision;
+  if (auto margin = node.find("collision margin")) collision.margin = nonNegative(*margin);
+  if (auto groups = node.find("collision groups")) {
+    for (const auto& group : groups->elements()) {
+      const int value = group.asInt();
+      if (value < 0 || value > 999) group.fail("collision group must be in 0..999");
+      collision.groups.push_back(value);
+    }
+  }
+  collision.primitives = readCollisionPrimitives(node, context);
+  body.visual_primitives = readVisualPrimitives(node, context);
+
+  const std::string mesh_name = node.has("mesh") ? node["mesh"].asString() : "";
+  const std::string collision_name =
+      node.has("collision mesh") ? node["collision mesh"].asString() : mesh_name;
+  if (auto type = node.find("collision mesh type")) collision.mesh_type = readMeshType(*type);
+
+  const bool wants_collision_mesh = collision.primitives.empty() && !collision_name.empty();
+  std::string tried_visual, tried_collision;
+  std::optional<std::filesystem::path> visual, collision_mesh;
+  if (!mesh_name.empty()) visual = findMesh(mesh_name, {local.high_res}, tried_visual);
+  if (wants_collision_mesh) {
+    collision_mesh = findMesh(collision_name, {local.low_res, local.high_res}, tried_collision);
+  }
+  const std::string body_label = "body '" + body.name + "': ";
+  if (wants_collision_mesh && !collision_mesh && !visual && collision_name == mesh_name) {
+    reportMissing(
+        node["mesh"].where(),
+        body_label + "mesh file '" + mesh_name + "' not found (looked for " + tried_collision + ")",
+        context);
+  } else {
+    if (!mesh_name.empty() && !visual) {
+      reportMissing(node["mesh"].where(),
+                    body_label + "visual mesh '" + mesh_name + "' not found (looked for " +
+                        tried_visual + ")",
+                    context);
+    }
+    if (wants_collision_mesh && !collision_mesh) {
+      const auto key = node.has("collision mesh") ? node["collision mesh"] : node["mesh"];
+      reportMissing(key.where(),
+                    body_label + "collision mesh '" + collision_name + "' not found (looked for " +
+                        tried_collision + ")",
+                    context);
+    }
+  }
+  if (visual) body.visual_mesh = *visual;
+  if (collision_mesh) collision.mesh = *collision_mesh;
+
+  const bool missing_geometry = wants_collision_mesh && !collision_mesh;
+  if (body.mass > 0.0 && !body.inertia && collision.empty() && !missing_geometry) {
+    node["mass"].fail(body_label +
+                      "a dynamic body needs 'inertia' when it has no collision geometry to "
+                      "compute it from");
+  }
+  if (body.mass > 0.0 && !body.inertia && missing_geometry &&
+      context.options().skip_missing_files) {
+    node["mass"].fail(body_label +
+                      "its inertia was to come from the missing mesh; give 'inertia' to "
+                      "continue without the mesh");
+  }
+  for (const auto& primitive : collision.primitives) {
+    if (primitive.type == PrimitiveType::Plane && body.mass > 0.0) {
+      node["mass"].fail(body_label + "a PLANE collision shape needs a static body (mass 0)");
+    }
+  }
+  return body;
+}
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,180 @@
+#include <set>
+
+#include "adf_readers.hpp"
+
+namespace ambf_like::detail {
+
+namespace {
+
+/// The definitions of the identifiers listed under `section` (e.g. `bodies: [BODY a, BODY b]`).
+std::vector<std::pair<std::string, YamlView>> listedDefinitions(const YamlView& root,
+                                                                const char* section) {
+  std::vector<std::pair<std::string, YamlView>> out;
+  auto list = root.find(section);
+  if (!list || list->isNull()) return out;
+  for (const auto& entry : list->elements()) {
+    const auto identifier = entry.asString();
+    auto definition = root.find(identifier);
+    if (!definition) {
+      entry.fail("'" + identifier + "' is listed in '" + section +
+                 "' but not defined in this file");
+    }
+    if (!definition->isMap()) definition->fail("expected a mapping for '" + identifier + "'");
+    out.emplace_back(identifier, *definition);
+  }
+  return out;
+}
+
+void warnUnsupported(const YamlView& root, LoadContext& context) {
+  for (const char* section :
+       {"ghost objects", "sensors", "actuators", "cameras", "lights", "vehicles", "volumes"}) {
+    auto list = root.find(section);
+    if (list && list->isSequence() && !list->elements().empty()) {
+      context.warn(list->where(), std::string(section) + " are not simulated; ignored");
+    }
+  }
+}
+
+void checkJointBodies(const ModelSpec& model, const std::vector<YamlView>& joint_nodes) {
+  std::set<std::string> rigid;
+  for (const auto& body : model.bodies) rigid.insert(body.name);
+  for (std::size_t i = 0; i < model.joints.size(); ++i) {
+    const auto& joint = model.joints[i];
+    for (const char* side : {"parent", "child"}) {
+      const auto& name = std::string(side) == "parent" ? joint.parent : joint.child;
+      if (!rigid.count(name)) {
+        joint_nodes[i][side].fail("joint '" + joint.name + "': " + side + " body '" + name +
+                                  "' is not a rigid body of this model");
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::string stripPrefix(const std::string& identifier) {
+  for (const char* prefix : {"BODY ", "JOINT ", "SOFTBODY ", "SOFT BODY "}) {
+    const std::string p(prefix);
+    if (identifier.rfind(p, 0) == 0) return identifier.substr(p.size());
+  }
+  return identifier;
+}
+
+MeshDirectories meshDirectoriesOf(const YamlView& node, const MeshDirectories& model_dirs) {
+  MeshDirectories dirs = model_dirs;
+  const auto model_dir = node.file().parent_path();
+  if (auto p = node.find("high resolution path")) dirs.high_res = model_dir / p->asString();
+  if (auto p = node.find("low resolution path")) dirs.low_res = model_dir / p->asString();
+  return dirs;
+}
+
+std::optional<std::filesystem::path> findMesh(const std::string& name,
+                                              const std::vector<std::filesystem::path>& dirs,
+                                              std::string& tried) {
+  tried.clear();
+  for (const auto& dir : dirs) {
+    const auto candidate = (dir / name).lexically_normal();
+    if (std::filesystem::is_regular_file(candidate)) return candidate;
+    if (tried.find(candidate.string()) != std::string::npos) continue;
+    if (!tried.empty()) tried += ", ";
+    tried += candidate.string();
+  }
+  return std::nullopt;
+}
+
+ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) {
+  const auto root = YamlView::parseFile(file);
+  root.checkSectionKeys({"adf version",
+                         "high resolution path",
+                         "low resolution path",
+                         "namespace",
+                         "bodies",
+                         "soft bodies",
+                         "ghost objects",
+                         "joints",
+                         "sensors",
+                         "actuators",
+                         "cameras",
+                         "lights",
+                         "vehicles",
+                         "volumes",
+                         "ignore inter-collision",
+                         "gravity",
+                         "shaders",
+                         "plugins",
+                         "joint erp",
+                         "joint cfm"},
+                        context);
+  if (auto version = root.find("adf version"); version && version->asString() != "1.0") {
+    version->fail("unsupported ADF version '" + version->asString() + "' (only 1.0 exists)");
+  }
+  ModelSpec model;
+  model.file = file;
+  model.name_space = root.has("namespace") ? root["namespace"].asString() : "/ambf/env/";
+  model.ignore_inter_collision = root.getBool("ignore inter-collision", false);
+  if (auto gravity = root.find("gravity")) model.gravity = gravity->asXyz();
+
+  const auto dir = file.parent_path();
+  MeshDirectories dirs;
+  dirs.high_res =
+      root.has("high resolution path") ? dir / root["high resolution path"].asString() : dir;
+  dirs.low_res = root.has("low resolution path") ? dir / root["low resolution path"].asString()
+                                                 : dirs.high_res;
+  const JointDefaults joint_defaults{root.getDouble("joint erp", 0.1),
+                                     root.getDouble("joint cfm", 0.1)};
+
+  std::set<std::string> names;
+  auto claimName = [&names](const std::string& name, const YamlView& node) {
+    if (!names.insert(name).second) node.fail("another body of this model is named '" + name + "'");
+  };
+  for (const auto& [identifier, node] : listedDefinitions(root, "bodies")) {
+    model.bodies.push_back(readBody(node, identifier, dirs, context));
+    claimName(model.bodies.back().name, node);
+  }
+  for (const auto& [identifier, node] : listedDefinitions(root, "soft bodies")) {
+    model.soft_bodies.push_back(readSoftBody(node, identifier, dirs, context));
+    claimName(model.soft_bodies.back().name, node);
+  }
+  std::vector<YamlView> joint_nodes;
+  for (const auto& [identifier, node] : listedDefinitions(root, "joints")) {
+    model.joints.push_back(readJoint(node, identifier, joint_defaults, context));
+    joint_nodes.push_back(node);
+  }
+  checkJointBodies(model, joint_nodes);
+  warnUnsupported(root, context);
+  return model;
+}
+
+WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
+                    std::optional<std::filesystem::path>& environment) {
+  const auto root = YamlView::parseFile(file);
+  // Lights, cameras, skybox, enclosure and shaders are accepted for compatibility; the
+  // physics does not use them.
+  root.checkSectionKeys(
+      {"adf version", "namespace", "enclosure", "enclosure size", "lights", "cameras",
+       "environment", "skybox", "max iterations", "gravity", "shaders", "plugins"},
+      context);
+  WorldSpec world;
+  world.file = file;
+  if (auto ns = root.find("namespace")) world.name_space = ns->asString();
+  if (auto gravity = root.find("gravity")) world.gravity = gravity->asXyz();
+  if (auto iterations = root.find("max iterations")) {
+    world.max_iterations = iterations->asInt();
+    if (world.max_iterations < 1) iterations->fail("max iterations must be at least 1");
+  }
+  environment.reset();
+  if (auto env = root.find("environment")) {
+    const auto path = (file.parent_path() / env->asString()).lexically_normal();
+    if (std::filesystem::is_regular_file(path)) {
+      environment = path;
+    } else if (context.options().skip_missing_files) {
+      context.warn(env->where(), "environment file " + path.string() +
+                                     " not found; continuing without it as requested");
+    } else {
+      context.defer(env->where(), "environment file " + path.string() + " not found");
+    }
+  }
+  return world;
+}
+
+}  // namespace ambf_like::detail

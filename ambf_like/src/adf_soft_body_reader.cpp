@@ -1,0 +1,142 @@
+#include <sstream>
+
+#include "adf_readers.hpp"
+
+namespace ambf_like::detail {
+
+namespace {
+
+/// Reads `key` into `value` if present, checking it lies in [low, high].
+void readBounded(const YamlView& config, const char* key, double low, double high, double& value) {
+  auto node = config.find(key);
+  if (!node) return;
+  value = node->asDouble();
+  if (value < low || value > high) {
+    std::ostringstream range;
+    range << key << " must be in [" << low << ", " << high << "]";
+    node->fail(range.str());
+  }
+}
+
+void readCount(const YamlView& config, const char* key, int minimum, int& value) {
+  auto node = config.find(key);
+  if (!node) return;
+  value = node->asInt();
+  if (value < minimum)
+    node->fail(std::string(key) + " must be at least " + std::to_string(minimum));
+}
+
+constexpr double kInf = 1e30;
+constexpr int kKnownCollisionFlags = 0x07ff;
+
+/// The keys of a soft body's `config:` block.
+// clang-format off
+constexpr std::string_view kConfigKeys[] = {
+    "kLST", "kAST", "kVST", "kVCF", "kDP", "kDG", "kLF", "kPR", "kVC", "kDF", "kMT", "kCHR",
+    "kKHR", "kSHR", "kAHR", "kSRHR_CL", "kSKHR_CL", "kSSHR_CL", "kSR_SPLT_CL", "kSK_SPLT_CL",
+    "kSS_SPLT_CL", "maxvolume", "timescale", "viterations", "piterations", "diterations",
+    "citerations", "flags", "bending constraint", "clusters", "fixed nodes", "margin"};
+// clang-format on
+
+SoftBodyConfig readConfig(const YamlView& node, LoadContext& context) {
+  node.checkKeys(kConfigKeys, context);
+  SoftBodyConfig c;
+  readBounded(node, "kLST", 0, 1, c.kLST);
+  readBounded(node, "kAST", 0, 1, c.kAST);
+  readBounded(node, "kVST", 0, 1, c.kVST);
+  readBounded(node, "kVCF", 0, kInf, c.kVCF);
+  readBounded(node, "kDP", 0, 1, c.kDP);
+  readBounded(node, "kDG", 0, kInf, c.kDG);
+  readBounded(node, "kLF", 0, kInf, c.kLF);
+  readBounded(node, "kPR", -kInf, kInf, c.kPR);
+  readBounded(node, "kVC", 0, kInf, c.kVC);
+  readBounded(node, "kDF", 0, 1, c.kDF);
+  readBounded(node, "kMT", 0, 1, c.kMT);
+  readBounded(node, "kCHR", 0, 1, c.kCHR);
+  readBounded(node, "kKHR", 0, 1, c.kKHR);
+  readBounded(node, "kSHR", 0, 1, c.kSHR);
+  readBounded(node, "kAHR", 0, 1, c.kAHR);
+  readBounded(node, "kSRHR_CL", 0, 1, c.kSRHR_CL);
+  readBounded(node, "kSKHR_CL", 0, 1, c.kSKHR_CL);
+  readBounded(node, "kSSHR_CL", 0, 1, c.kSSHR_CL);
+  readBounded(node, "kSR_SPLT_CL", 0, 1, c.kSR_SPLT_CL);
+  readBounded(node, "kSK_SPLT_CL", 0, 1, c.kSK_SPLT_CL);
+  readBounded(node, "kSS_SPLT_CL", 0, 1, c.kSS_SPLT_CL);
+  readBounded(node, "maxvolume", 0, kInf, c.maxvolume);
+  readBounded(node, "timescale", 0, kInf, c.timescale);
+  readCount(node, "viterations", 0, c.viterations);
+  readCount(node, "piterations", 1, c.piterations);
+  readCount(node, "diterations", 0, c.diterations);
+  readCount(node, "citerations", 0, c.citerations);
+  readCount(node, "bending constraint", 0, c.bending_constraint);
+  readCount(node, "clusters", 0, c.clusters);
+  if (auto flags = node.find("flags")) {
+    c.collision_flags = flags->asInt();
+    if (c.collision_flags < 0 || (c.collision_flags & ~kKnownCollisionFlags) != 0) {
+      flags->fail("unknown btSoftBody collision flag bits in " + std::to_string(c.collision_flags));
+    }
+  }
+  if (auto fixed = node.find("fixed nodes")) {
+    for (const auto& index : fixed->elements()) {
+      const int value = index.asInt();
+      if (value < 0) index.fail("node index must not be negative");
+      c.fixed_nodes.push_back(value);
+    }
+  }
+  return c;
+}
+
+/// Every soft-body key of ADF 1.0 outside `config`.
+// clang-format off
+constexpr std::string_view kSoftBodyKeys[] = {
+    "name", "namespace", "mesh", "mass", "location", "scale", "collision margin",
+    "randomize constraints", "config", "inertial offset", "color", "color rgba",
+    "color components", "visible", "shaders", "plugins", "passive", "publish frequency",
+    "high resolution path", "low resolution path"};
+// clang-format on
+
+}  // namespace
+
+SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
+                          const MeshDirectories& dirs, LoadContext& context) {
+  node.checkKeys(kSoftBodyKeys, context);
+  SoftBodySpec soft;
+  soft.where = node.where();
+  soft.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
+  soft.mass = node["mass"].asDouble();
+  if (soft.mass <= 0.0) node["mass"].fail("a soft body needs a mass greater than zero");
+  if (auto v = node.find("location")) soft.location = v->asPose();
+  if (auto v = node.find("scale")) {
+    soft.scale = v->asDouble();
+    if (soft.scale <= 0.0) v->fail("scale must be greater than zero");
+  }
+  soft.randomize_constraints = node.getBool("randomize constraints", false);
+  if (auto config = node.find("config")) soft.config = readConfig(*config, context);
+
+  const auto margin = node.find("collision margin");
+  const auto config_margin = node.find("config") ? node["config"].find("margin") : std::nullopt;
+  if (margin) {
+    soft.margin = margin->asDouble();
+    if (config_margin) {
+      context.warn(config_margin->where(), "'collision margin' of the body is used instead");
+    }
+  } else if (config_margin) {
+    soft.margin =
+        config_margin->asDouble();  // AMBF ignores this key (a known defect); we honour it
+  }
+  if (soft.margin < 0.0) node.fail("collision margin must not be negative");
+
+  const MeshDirectories local = meshDirectoriesOf(node, dirs);
+  const auto mesh_node = node["mesh"];
+  std::string tried;
+  auto mesh = findMesh(mesh_node.asString(), {local.low_res, local.high_res}, tried);
+  if (!mesh) {
+    // A soft body is nothing but its mesh: it cannot be skipped into existence.
+    mesh_node.fail("soft body '" + soft.name + "': mesh file '" + mesh_node.asString() +
+                   "' not found (looked for " + tried + ")");
+  }
+  soft.mesh = *mesh;
+  return soft;
+}
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,44 @@
+#include "collision_filter.hpp"
+
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+
+#include <algorithm>
+
+namespace ambf_like::detail {
+
+namespace {
+
+const CollisionTag* tagOf(const btBroadphaseProxy* proxy) {
+  const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+  return object ? static_cast<const CollisionTag*>(object->getUserPointer()) : nullptr;
+}
+
+bool shareGroup(const std::vector<int>& a, const std::vector<int>& b) {
+  auto i = a.begin();
+  auto j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i == *j) return true;
+    (*i < *j) ? ++i : ++j;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool CollisionFilter::needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const {
+  // Bullet's own group/mask test (keeps static-static pairs out).
+  if ((a->m_collisionFilterGroup & b->m_collisionFilterMask) == 0 ||
+      (b->m_collisionFilterGroup & a->m_collisionFilterMask) == 0) {
+    return false;
+  }
+  const CollisionTag* ta = tagOf(a);
+  const CollisionTag* tb = tagOf(b);
+  if (ta == nullptr || tb == nullptr) return true;
+  if (ta->model == tb->model && ta->model_ignores_inter_collision && !ta->soft && !tb->soft) {
+    return false;
+  }
+  if (ta->groups.empty() || tb->groups.empty()) return true;
+  return shareGroup(ta->groups, tb->groups);
+}
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,27 @@
+#pragma once
+// Broadphase filter implementing AMBF's collision groups and per-model `ignore inter-collision`.
+
+#include <BulletCollision/BroadphaseCollision/btOverlappingPairCache.h>
+
+#include <string>
+#include <vector>
+
+namespace ambf_like::detail {
+
+/// What the filter knows about one collision object (set as its user pointer).
+struct CollisionTag {
+  std::string name;
+  int model = 0;
+  bool model_ignores_inter_collision = false;
+  bool soft = false;
+  std::vector<int> groups;  ///< sorted; empty collides with every group
+};
+
+/// Two objects collide unless both are rigid bodies of a model that ignores inter-collision,
+/// or both have groups and share none. Pairs joined by a joint are excluded by Bullet itself.
+class CollisionFilter : public btOverlapFilterCallback {
+ public:
+  bool needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const override;
+};
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,44 @@
+#pragma once
+// Builds a body's Bullet collision shape (in its centre-of-mass frame) from its CollisionSpec.
+
+#include <memory>
+#include <vector>
+
+#include "ambf_like/body_spec.hpp"
+#include "ambf_like/mesh.hpp"
+
+class btCollisionShape;
+class btTriangleIndexVertexArray;
+
+namespace ambf_like::detail {
+
+/// Owns Bullet collision shapes and the vertex/index buffers that mesh shapes point into.
+class ShapeStore {
+ public:
+  ShapeStore();
+  ~ShapeStore();
+  ShapeStore(const ShapeStore&) = delete;
+  ShapeStore& operator=(const ShapeStore&) = delete;
+
+  btCollisionShape* keep(std::unique_ptr<btCollisionShape> shape);
+  /// A triangle-mesh view of `mesh` scaled by `scale`, moved by `transform`, kept alive here.
+  btTriangleIndexVertexArray* meshInterface(const Mesh& mesh, double scale,
+                                            const Transform& transform);
+
+ private:
+  struct Buffers;
+  std::vector<std::unique_ptr<btCollisionShape>> shapes_;
+  std::vector<std::unique_ptr<Buffers>> buffers_;
+};
+
+/// A body's collision shape and mass properties, in its centre-of-mass (COM) frame.
+struct BodyShape {
+  btCollisionShape* shape = nullptr;  ///< null when the body has no collision geometry
+  Transform com_in_body = Transform::Identity();
+  Vec3 local_inertia = Vec3::Zero();
+  std::size_t vertex_count = 0;  ///< collision vertices (primitives count as 0)
+};
+
+BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& store);
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,32 @@
+#pragma once
+// Loader-wide options and the warnings collected while reading one scene.
+
+#include <string>
+#include <vector>
+
+#include "ambf_like/load_error.hpp"
+#include "ambf_like/scene_loader.hpp"
+
+namespace ambf_like::detail {
+
+/// Carries the options of one load and gathers its warnings and deferred errors.
+class LoadContext {
+ public:
+  explicit LoadContext(LoadOptions options) : options_(options) {}
+
+  const LoadOptions& options() const { return options_; }
+  void warn(SourceRef where, std::string message);
+  /// An error that does not stop reading (so one run reports every missing file); thrown at the
+  /// end.
+  void defer(SourceRef where, std::string message);
+  void throwIfDeferred() const;
+
+  std::vector<LoadIssue> takeWarnings() { return std::move(warnings_); }
+
+ private:
+  LoadOptions options_;
+  std::vector<LoadIssue> warnings_;
+  std::vector<LoadIssue> errors_;
+};
+
+}  // namespace ambf_like::detail

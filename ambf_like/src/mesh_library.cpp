@@ -1,0 +1,111 @@
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <assimp/Importer.hpp>
+#include <cstring>
+#include <unordered_map>
+
+#include "ambf_like/mesh.hpp"
+
+namespace ambf_like {
+
+namespace {
+
+/// Exact-position key for welding vertices that files store once per triangle (e.g. STL).
+struct PositionKey {
+  double x, y, z;
+  bool operator==(const PositionKey& other) const {
+    return x == other.x && y == other.y && z == other.z;
+  }
+};
+
+struct PositionHash {
+  std::size_t operator()(const PositionKey& key) const {
+    std::size_t seed = 0;
+    for (double v : {key.x, key.y, key.z}) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &v, sizeof bits);
+      seed ^= std::hash<std::uint64_t>{}(bits) + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
+    }
+    return seed;
+  }
+};
+
+/// Keeps only vertices that a triangle uses, so vertex i is soft-body node i.
+void dropUnreferencedVertices(Mesh& mesh) {
+  std::vector<int> remap(mesh.vertices.size(), -1);
+  std::vector<Vec3> kept;
+  for (auto& triangle : mesh.triangles) {
+    for (int& index : triangle) {
+      auto& target = remap[static_cast<std::size_t>(index)];
+      if (target < 0) {
+        target = static_cast<int>(kept.size());
+        kept.push_back(mesh.vertices[static_cast<std::size_t>(index)]);
+      }
+      index = target;
+    }
+  }
+  mesh.vertices = std::move(kept);
+}
+
+Mesh readMesh(const std::filesystem::path& file, const SourceRef& referenced_from) {
+  auto fail = [&](const std::string& message) -> LoadError {
+    return LoadError(referenced_from, "mesh " + file.string() + ": " + message);
+  };
+  if (!std::filesystem::is_regular_file(file)) throw fail("file not found");
+
+  Assimp::Importer importer;
+  // Keep a Z-up COLLADA file's coordinates as written (assimp would turn it Y-up).
+  importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
+  const unsigned flags = aiProcess_Triangulate | aiProcess_DropNormals |
+                         aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices;
+  const aiScene* scene = importer.ReadFile(file.string(), flags);
+  if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) != 0) {
+    throw fail(std::string("cannot read: ") + importer.GetErrorString());
+  }
+
+  Mesh mesh;
+  mesh.file = file;
+  std::unordered_map<PositionKey, int, PositionHash> index_of;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    const aiMesh* part = scene->mMeshes[m];
+    std::vector<int> remap(part->mNumVertices);
+    for (unsigned v = 0; v < part->mNumVertices; ++v) {
+      const auto& p = part->mVertices[v];
+      const PositionKey key{p.x, p.y, p.z};
+      auto [it, inserted] = index_of.emplace(key, static_cast<int>(mesh.vertices.size()));
+      if (inserted) mesh.vertices.emplace_back(p.x, p.y, p.z);
+      remap[v] = it->second;
+    }
+    for (unsigned f = 0; f < part->mNumFaces; ++f) {
+      const aiFace& face = part->mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
+      const std::array<int, 3> tri{remap[face.mIndices[0]], remap[face.mIndices[1]],
+                                   remap[face.mIndices[2]]};
+      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;  // degenerate
+      mesh.triangles.push_back(tri);
+    }
+  }
+  if (mesh.triangles.empty()) throw fail("the file holds no triangles");
+  dropUnreferencedVertices(mesh);
+  return mesh;
+}
+
+}  // namespace
+
+Vec3 Mesh::centroid() const {
+  Vec3 sum = Vec3::Zero();
+  for (const auto& v : vertices) sum += v;
+  return vertices.empty() ? sum : Vec3(sum / static_cast<double>(vertices.size()));
+}
+
+std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,
+                                              const SourceRef& referenced_from) {
+  if (auto it = cache_.find(file); it != cache_.end()) return it->second;
+  auto mesh = std::make_shared<const Mesh>(readMesh(file, referenced_from));
+  cache_.emplace(file, mesh);
+  return mesh;
+}
+
+}  // namespace ambf_like

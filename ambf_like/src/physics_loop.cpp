@@ -1,0 +1,58 @@
+#include "ambf_like/physics_loop.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <thread>
+
+namespace ambf_like {
+
+PhysicsLoop::PhysicsLoop(World& world, LoopOptions options) : world_(world), options_(options) {
+  if (!(options_.rate_hz > 0.0) || !std::isfinite(options_.rate_hz)) {
+    throw std::invalid_argument("loop rate must be a positive number of Hz");
+  }
+  const double per_iteration = 1.0 / options_.rate_hz / world_.stepSize();
+  steps_per_iteration_ = std::max<std::uint64_t>(1, std::llround(per_iteration));
+  period_ = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(1.0 / options_.rate_hz));
+}
+
+void PhysicsLoop::count() {
+  if (meter_.tick() && on_window) on_window(meter_);
+}
+
+void PhysicsLoop::iterate() {
+  const auto now = Clock::now();
+  if (!started_) {
+    started_ = true;
+    start_ = now;
+    next_tick_ = now;
+  }
+  if (options_.paced) {
+    next_tick_ += period_;
+    if (next_tick_ < now) {
+      next_tick_ = now;  // fell behind: do not burst to catch up
+    } else {
+      std::this_thread::sleep_until(next_tick_);
+    }
+  }
+  std::uint64_t steps = steps_per_iteration_;
+  if (!options_.fixed_time_step) {
+    const double wall = std::chrono::duration<double>(Clock::now() - start_).count();
+    const double behind = std::floor((wall - world_.time()) / world_.stepSize());
+    steps = static_cast<std::uint64_t>(
+        std::clamp(behind, 0.0, static_cast<double>(world_.settings().max_iterations)));
+  }
+  world_.step(steps);
+  count();
+}
+
+void PhysicsLoop::advanceTo(double sim_time) {
+  const double half_step = world_.stepSize() / 2.0;
+  while (world_.time() + half_step < sim_time) {
+    world_.step();
+    count();
+  }
+}
+
+}  // namespace ambf_like

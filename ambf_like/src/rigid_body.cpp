@@ -1,0 +1,42 @@
+#include "ambf_like/rigid_body.hpp"
+
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+
+#include "bullet_conversions.hpp"
+
+namespace ambf_like {
+
+using detail::toEigen;
+
+RigidBody::RigidBody(BodySpec spec, std::string qualified_name, std::unique_ptr<btRigidBody> body,
+                     const Transform& com_in_body, std::size_t collision_vertices)
+    : spec_(std::move(spec)),
+      qualified_name_(std::move(qualified_name)),
+      body_(std::move(body)),
+      body_in_com_(com_in_body.inverse()),
+      collision_vertices_(collision_vertices) {}
+
+RigidBody::~RigidBody() = default;
+
+Transform RigidBody::centerOfMassPose() const {
+  return toEigen(body_->getCenterOfMassTransform());
+}
+
+Transform RigidBody::pose() const {
+  return centerOfMassPose() * body_in_com_;
+}
+
+Vec3 RigidBody::linearVelocity() const {
+  return toEigen(body_->getLinearVelocity());
+}
+
+Vec3 RigidBody::angularVelocity() const {
+  return toEigen(body_->getAngularVelocity());
+}
+
+bool RigidBody::isFinite() const {
+  return centerOfMassPose().matrix().allFinite() && linearVelocity().allFinite() &&
+         angularVelocity().allFinite();
+}
+
+}  // namespace ambf_like

@@ -1,0 +1,114 @@
+#include "ambf_like/scene_loader.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "adf_readers.hpp"
+#include "lower_case.hpp"
+#include "urdf_reader.hpp"
+
+namespace ambf_like {
+
+namespace {
+
+using detail::LoadContext;
+using detail::YamlView;
+
+ModelSpec readModel(const std::filesystem::path& file, LoadContext& context) {
+  if (detail::lowerCase(file.extension().string()) == ".urdf")
+    return detail::readUrdfModel(file, context);
+  return detail::readAdfModel(file, context);
+}
+
+LoadedScene assemble(const std::vector<std::filesystem::path>& model_files,
+                     const std::optional<std::filesystem::path>& world_file, LoadContext& context) {
+  LoadedScene scene;
+  std::optional<std::filesystem::path> environment;
+  if (world_file) scene.spec.world = detail::readWorld(*world_file, context, environment);
+  if (environment) scene.spec.models.push_back(readModel(*environment, context));
+  for (const auto& file : model_files) scene.spec.models.push_back(readModel(file, context));
+  context.throwIfDeferred();
+  if (scene.spec.models.empty()) {
+    throw LoadError(SourceRef{world_file.value_or(""), 0, ""}, "no model to load");
+  }
+  scene.warnings = context.takeWarnings();
+  return scene;
+}
+
+}  // namespace
+
+std::vector<int> parseLaunchIndices(const std::string& text) {
+  std::vector<int> indices;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    std::size_t used = 0;
+    int value = -1;
+    try {
+      value = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != item.size() || value < 0) {
+      throw std::invalid_argument("launch index '" + item + "' in '" + text +
+                                  "' is not a non-negative integer");
+    }
+    indices.push_back(value);
+  }
+  if (indices.empty()) throw std::invalid_argument("no launch index given");
+  return indices;
+}
+
+LoadedScene loadLaunchFile(const std::filesystem::path& launch_file,
+                           const LaunchSelection& selection, const LoadOptions& options) {
+  LoadContext context(options);
+  const auto root = YamlView::parseFile(launch_file);
+  // Colour and input-device files are read by AMBF's graphics and device layers, not its physics.
+  root.checkKeys({"adf version", "world config", "color config", "input devices config",
+                  "multibody configs", "plugins"},
+                 context);
+  const auto dir = launch_file.parent_path();
+  std::vector<std::filesystem::path> files;
+  std::vector<YamlView> entries;
+  if (auto list = root.find("multibody configs")) entries = list->elements();
+
+  std::vector<int> indices = selection.indices;
+  if (indices.empty()) {
+    for (int i = 0; i < static_cast<int>(entries.size()); ++i) indices.push_back(i);
+  }
+  for (int index : indices) {
+    if (index < 0 || index >= static_cast<int>(entries.size())) {
+      throw LoadError(
+          SourceRef{launch_file, 0, "multibody configs"},
+          "launch index " + std::to_string(index) + " does not exist (the file lists " +
+              std::to_string(entries.size()) + " multibody configs" +
+              (entries.empty() ? "" : ", indices 0.." + std::to_string(entries.size() - 1)) + ")");
+    }
+    const auto& entry = entries[static_cast<std::size_t>(index)];
+    const auto path = (dir / entry.asString()).lexically_normal();
+    if (!std::filesystem::is_regular_file(path)) {
+      entry.fail("multibody config " + std::to_string(index) + " (" + path.string() +
+                 ") not found");
+    }
+    files.push_back(path);
+  }
+  for (const auto& extra : selection.extra_files) files.push_back(extra);
+
+  std::optional<std::filesystem::path> world_file;
+  if (auto world = root.find("world config")) {
+    world_file = (dir / world->asString()).lexically_normal();
+    if (!std::filesystem::is_regular_file(*world_file)) {
+      world->fail("world config " + world_file->string() + " not found");
+    }
+  }
+  return assemble(files, world_file, context);
+}
+
+LoadedScene loadModelFiles(const std::vector<std::filesystem::path>& model_files,
+                           const std::optional<std::filesystem::path>& world_file,
+                           const LoadOptions& options) {
+  LoadContext context(options);
+  return assemble(model_files, world_file, context);
+}
+
+}  // namespace ambf_like

@@ -1,0 +1,252 @@
+#include "urdf_reader.hpp"
+
+#include <console_bridge/console.h>
+#include <urdf_parser/urdf_parser.h>
+
+#include <Eigen/Eigenvalues>
+#include <fstream>
+#include <sstream>
+
+namespace ambf_like::detail {
+
+namespace {
+
+/// Collects urdfdom's console messages so a parse failure can say why.
+class CapturedConsole : public console_bridge::OutputHandler {
+ public:
+  CapturedConsole() : previous_(console_bridge::getOutputHandler()) {
+    console_bridge::useOutputHandler(this);
+  }
+  ~CapturedConsole() override { console_bridge::useOutputHandler(previous_); }
+  CapturedConsole(const CapturedConsole&) = delete;
+  CapturedConsole& operator=(const CapturedConsole&) = delete;
+
+  void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN)
+      messages_ += (messages_.empty() ? "" : "; ") + text;
+  }
+  const std::string& messages() const { return messages_; }
+
+ private:
+  console_bridge::OutputHandler* previous_;
+  std::string messages_;
+};
+
+Transform toTransform(const urdf::Pose& pose) {
+  Transform t = Transform::Identity();
+  const auto& r = pose.rotation;
+  t.linear() = Quat(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
+  t.translation() = Vec3(pose.position.x, pose.position.y, pose.position.z);
+  return t;
+}
+
+Vec3 toVec(const urdf::Vector3& v) {
+  return Vec3(v.x, v.y, v.z);
+}
+
+struct UrdfContext {
+  std::filesystem::path file;
+  LoadContext& load;
+  SourceRef at(const std::string& path) const { return SourceRef{file, 0, path}; }
+  [[noreturn]] void fail(const std::string& path, const std::string& message) const {
+    throw LoadError(at(path), message);
+  }
+};
+
+std::filesystem::path resolveMeshFile(const std::string& filename, const std::string& path,
+                                      const UrdfContext& ctx) {
+  std::string name = filename;
+  if (name.rfind("package://", 0) == 0) {
+    ctx.fail(path, "mesh '" + filename +
+                       "' uses package://, which needs a ROS package path; use a path relative "
+                       "to the URDF file");
+  }
+  if (name.rfind("file://", 0) == 0) name = name.substr(7);
+  const auto resolved = (ctx.file.parent_path() / name).lexically_normal();
+  if (!std::filesystem::is_regular_file(resolved)) {
+    if (ctx.load.options().skip_missing_files) {
+      ctx.load.warn(ctx.at(path), "mesh file " + resolved.string() +
+                                      " not found; continuing without it as requested");
+      return {};
+    }
+    ctx.fail(path, "mesh file " + resolved.string() + " not found");
+  }
+  return resolved;
+}
+
+/// Converts one URDF geometry into a primitive (or, for meshes, a mesh path in `mesh`).
+std::optional<PrimitiveShape> readGeometry(const urdf::Geometry& geometry, const urdf::Pose& origin,
+                                           const std::string& path, const UrdfContext& ctx,
+                                           std::filesystem::path& mesh) {
+  PrimitiveShape shape;
+  shape.offset = toTransform(origin);
+  switch (geometry.type) {
+    case urdf::Geometry::BOX:
+      shape.type = PrimitiveType::Box;
+      shape.box_size = toVec(static_cast<const urdf::Box&>(geometry).dim);
+      return shape;
+    case urdf::Geometry::SPHERE:
+      shape.type = PrimitiveType::Sphere;
+      shape.radius = static_cast<const urdf::Sphere&>(geometry).radius;
+      return shape;
+    case urdf::Geometry::CYLINDER: {
+      const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
+      shape.type = PrimitiveType::Cylinder;
+      shape.radius = cylinder.radius;
+      shape.height = cylinder.length;
+      return shape;
+    }
+    case urdf::Geometry::MESH: {
+      const auto& m = static_cast<const urdf::Mesh&>(geometry);
+      if ((toVec(m.scale) - Vec3::Ones()).norm() > 1e-12) {
+        ctx.fail(path, "scaled meshes are not supported");
+      }
+      if (!toTransform(origin).isApprox(Transform::Identity())) {
+        ctx.fail(path, "a mesh with an origin offset is not supported; bake it into the mesh");
+      }
+      mesh = resolveMeshFile(m.filename, path, ctx);
+      return std::nullopt;
+    }
+  }
+  ctx.fail(path, "unknown geometry type");
+}
+
+void readInertial(const urdf::Link& link, bool is_root, BodySpec& body, const UrdfContext& ctx) {
+  const std::string path = "link[" + link.name + "]/inertial";
+  if (!link.inertial) {
+    if (!is_root) ctx.fail(path, "a movable link needs an <inertial> element");
+    body.mass = 0.0;  // the root link without inertia is the fixed base
+    return;
+  }
+  const auto& in = *link.inertial;
+  if (!(in.mass >= 0.0)) ctx.fail(path, "mass must be a non-negative number");
+  body.mass = in.mass;
+  Eigen::Matrix3d tensor;
+  tensor << in.ixx, in.ixy, in.ixz, in.ixy, in.iyy, in.iyz, in.ixz, in.iyz, in.izz;
+  if (!tensor.allFinite()) ctx.fail(path, "inertia must be finite");
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(tensor);
+  Eigen::Matrix3d axes = solver.eigenvectors();
+  if (axes.determinant() < 0.0) axes.col(2) = -axes.col(2);
+  Transform offset = toTransform(in.origin);
+  offset.linear() = offset.linear() * axes;
+  body.inertial_offset = offset;
+  body.inertia = solver.eigenvalues().cwiseMax(0.0);
+}
+
+BodySpec readLink(const urdf::Link& link, bool is_root, const Transform& location,
+                  const UrdfContext& ctx) {
+  BodySpec body;
+  body.name = link.name;
+  body.location = location;
+  body.where = ctx.at("link[" + link.name + "]");
+  readInertial(link, is_root, body, ctx);
+
+  for (std::size_t i = 0; i < link.collision_array.size(); ++i) {
+    const auto& collision = *link.collision_array[i];
+    const std::string path = "link[" + link.name + "]/collision[" + std::to_string(i) + "]";
+    if (!collision.geometry) ctx.fail(path, "collision without geometry");
+    std::filesystem::path mesh;
+    auto primitive = readGeometry(*collision.geometry, collision.origin, path, ctx, mesh);
+    if (primitive) body.collision.primitives.push_back(*primitive);
+    if (!mesh.empty()) {
+      if (!body.collision.mesh.empty())
+        ctx.fail(path, "only one collision mesh per link is supported");
+      body.collision.mesh = mesh;
+    }
+  }
+  if (!body.collision.mesh.empty() && !body.collision.primitives.empty()) {
+    ctx.fail("link[" + link.name + "]", "mixing a collision mesh with primitives is not supported");
+  }
+  for (std::size_t i = 0; i < link.visual_array.size(); ++i) {
+    const auto& visual = *link.visual_array[i];
+    if (!visual.geometry) continue;
+    const std::string path = "link[" + link.name + "]/visual[" + std::to_string(i) + "]";
+    std::filesystem::path mesh;
+    auto primitive = readGeometry(*visual.geometry, visual.origin, path, ctx, mesh);
+    if (primitive) body.visual_primitives.push_back(*primitive);
+    if (!mesh.empty() && body.visual_mesh.empty()) body.visual_mesh = mesh;
+  }
+  if (body.mass > 0.0 && !body.inertia && body.collision.empty()) {
+    ctx.fail("link[" + link.name + "]", "needs an inertia or collision geometry");
+  }
+  return body;
+}
+
+JointSpec readUrdfJoint(const urdf::Joint& joint, const UrdfContext& ctx) {
+  const std::string path = "joint[" + joint.name + "]";
+  JointSpec spec;
+  spec.name = joint.name;
+  spec.parent = joint.parent_link_name;
+  spec.child = joint.child_link_name;
+  spec.where = ctx.at(path);
+  const Transform origin = toTransform(joint.parent_to_joint_origin_transform);
+  Vec3 axis = toVec(joint.axis);
+  if (axis.norm() < 1e-12) axis = Vec3::UnitX();  // URDF's default axis
+  spec.parent_pivot = origin.translation();
+  spec.parent_axis = (origin.linear() * axis).normalized();
+  spec.child_pivot = Vec3::Zero();
+  spec.child_axis = axis.normalized();
+  switch (joint.type) {
+    case urdf::Joint::REVOLUTE:
+      spec.type = JointType::Revolute;
+      break;
+    case urdf::Joint::CONTINUOUS:
+      spec.type = JointType::Continuous;
+      break;
+    case urdf::Joint::PRISMATIC:
+      spec.type = JointType::Prismatic;
+      break;
+    case urdf::Joint::FIXED:
+      spec.type = JointType::Fixed;
+      break;
+    default:
+      ctx.fail(path, "joint type is not supported (only revolute, continuous, prismatic, fixed)");
+  }
+  if ((spec.type == JointType::Revolute || spec.type == JointType::Prismatic) && joint.limits) {
+    if (joint.limits->lower > joint.limits->upper) ctx.fail(path + "/limit", "lower > upper");
+    spec.limits = JointLimits{joint.limits->lower, joint.limits->upper};
+  }
+  if (joint.dynamics) spec.damping = joint.dynamics->damping;
+  if (joint.mimic)
+    ctx.load.warn(ctx.at(path + "/mimic"), "mimic joints are not supported; ignored");
+  return spec;
+}
+
+}  // namespace
+
+ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context) {
+  const UrdfContext ctx{file, context};
+  std::ifstream in(file);
+  if (!in) ctx.fail("", std::filesystem::exists(file) ? "cannot read file" : "file not found");
+  std::stringstream text;
+  text << in.rdbuf();
+
+  urdf::ModelInterfaceSharedPtr urdf;
+  std::string messages;
+  {
+    CapturedConsole console;
+    urdf = urdf::parseURDF(text.str());
+    messages = console.messages();
+  }
+  if (!urdf) ctx.fail("", "malformed URDF" + (messages.empty() ? "" : ": " + messages));
+
+  ModelSpec model;
+  model.file = file;
+  model.name_space = "/ambf/env/" + urdf->getName() + "/";
+  // Depth-first from the root so every link's location follows from its parent's.
+  std::vector<std::pair<urdf::LinkConstSharedPtr, Transform>> pending{
+      {urdf->getRoot(), Transform::Identity()}};
+  while (!pending.empty()) {
+    auto [link, location] = pending.back();
+    pending.pop_back();
+    model.bodies.push_back(readLink(*link, link == urdf->getRoot(), location, ctx));
+    for (const auto& joint : link->child_joints) {
+      model.joints.push_back(readUrdfJoint(*joint, ctx));
+      const auto child = urdf->getLink(joint->child_link_name);
+      pending.emplace_back(child, location * toTransform(joint->parent_to_joint_origin_transform));
+    }
+  }
+  return model;
+}
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,296 @@
+#include "ambf_like/world.hpp"
+
+#include <BulletCollision/CollisionShapes/btEmptyShape.h>
+#include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
+#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
+#include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
+#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
+#include <btBulletDynamicsCommon.h>
+
+#include <algorithm>
+#include <deque>
+#include <map>
+#include <stdexcept>
+
+#include "bullet_conversions.hpp"
+#include "collision_filter.hpp"
+#include "collision_shape_factory.hpp"
+#include "constraint_factory.hpp"
+#include "soft_body_factory.hpp"
+
+namespace ambf_like {
+
+using detail::toBt;
+using detail::toEigen;
+
+namespace {
+
+/// Finds an item by qualified name, or by plain name when that is unique.
+template <typename Items>
+std::optional<std::size_t> findByName(const Items& items, std::string_view name) {
+  std::optional<std::size_t> found;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (items[i]->qualifiedName() == name) return i;
+    if (items[i]->name() == name) {
+      if (found) return std::nullopt;
+      found = i;
+    }
+  }
+  return found;
+}
+
+template <typename Items>
+std::size_t requireByName(const Items& items, std::string_view name, const char* kind) {
+  if (auto index = findByName(items, name)) return *index;
+  std::size_t matches = 0;
+  for (const auto& item : items) matches += item->name() == name ? 1 : 0;
+  throw std::out_of_range(
+      std::string(kind) + " '" + std::string(name) + "' " +
+      (matches > 1 ? "is ambiguous: use its namespace-qualified name" : "does not exist"));
+}
+
+}  // namespace
+
+namespace detail {
+/// A joint together with its namespace-qualified name, for lookups.
+struct NamedJoint {
+  std::unique_ptr<Joint> joint;
+  std::string qualified;
+  const std::string& name() const { return joint->name(); }
+  const std::string& qualifiedName() const { return qualified; }
+};
+}  // namespace detail
+
+struct World::Impl {
+  WorldSpec settings;
+  WorldOptions options;
+  btSoftBodyRigidBodyCollisionConfiguration collision_config;
+  btCollisionDispatcher dispatcher{&collision_config};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btSoftRigidDynamicsWorld world{&dispatcher, &broadphase, &solver, &collision_config};
+  detail::CollisionFilter filter;
+  detail::ShapeStore shapes;
+  btEmptyShape no_geometry;  ///< for bodies without collision geometry
+  std::deque<detail::CollisionTag> tags;
+  std::vector<std::unique_ptr<RigidBody>> bodies;
+  std::vector<std::unique_ptr<SoftBody>> soft_bodies;
+  std::vector<std::unique_ptr<detail::NamedJoint>> joints;
+  std::size_t collision_vertices = 0;
+  double time = 0.0;
+  std::uint64_t steps = 0;
+
+  Impl(const WorldSpec& spec, const WorldOptions& opts) : settings(spec), options(opts) {
+    btGImpactCollisionAlgorithm::registerAlgorithm(&dispatcher);
+    world.getPairCache()->setOverlapFilterCallback(&filter);
+    world.setGravity(toBt(settings.gravity));
+    world.getSolverInfo().m_numIterations = options.solver_iterations;
+    auto& info = world.getWorldInfo();
+    info.m_gravity = toBt(settings.gravity);
+    info.air_density = 1.2;
+    info.m_sparsesdf.setDefaultVoxelsz(options.sdf_voxel_size);
+    info.m_sparsesdf.Reset();
+  }
+
+  ~Impl() {
+    for (auto& j : joints) world.removeConstraint(&j->joint->constraint());
+    for (auto& s : soft_bodies) world.removeSoftBody(&s->bullet());
+    for (auto& b : bodies) world.removeRigidBody(&b->bullet());
+  }
+
+  void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
+  RigidBody& addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
+                     MeshLibrary& meshes, Transform& com_in_body);
+};
+
+RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
+                                MeshLibrary& meshes, Transform& com_in_body) {
+  const auto shape = detail::buildBodyShape(spec, meshes, shapes);
+  com_in_body = shape.com_in_body;
+  collision_vertices += shape.vertex_count;
+
+  btRigidBody::btRigidBodyConstructionInfo info(
+      spec.mass, nullptr, shape.shape ? shape.shape : &no_geometry, toBt(shape.local_inertia));
+  info.m_friction = spec.surface.static_friction;
+  info.m_rollingFriction = spec.surface.rolling_friction;
+  info.m_restitution = spec.surface.restitution;
+  info.m_linearDamping = spec.surface.linear_damping;
+  info.m_angularDamping = spec.surface.angular_damping;
+  auto rigid = std::make_unique<btRigidBody>(info);
+  rigid->setCenterOfMassTransform(toBt(spec.location * shape.com_in_body));
+  rigid->setActivationState(DISABLE_DEACTIVATION);
+
+  auto groups = spec.collision.groups;
+  std::sort(groups.begin(), groups.end());
+  auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name, model_index,
+                                                     model.ignore_inter_collision, false, groups});
+  rigid->setUserPointer(&tag);
+  world.addRigidBody(rigid.get());
+  if (const auto gravity = spec.gravity ? spec.gravity : model.gravity) {
+    rigid->setFlags(rigid->getFlags() | BT_DISABLE_WORLD_GRAVITY);
+    rigid->setGravity(toBt(*gravity));
+  }
+  bodies.push_back(std::make_unique<RigidBody>(spec, tag.name, std::move(rigid), shape.com_in_body,
+                                               shape.vertex_count));
+  return *bodies.back();
+}
+
+void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes) {
+  struct Placed {
+    RigidBody* body;
+    Transform com_in_body;
+  };
+  std::map<std::string, Placed> by_name;
+  for (const auto& spec : model.bodies) {
+    Transform com_in_body;
+    auto& body = addBody(spec, model, model_index, meshes, com_in_body);
+    by_name[spec.name] = {&body, com_in_body};
+  }
+  for (const auto& spec : model.soft_bodies) {
+    SourceRef where = spec.where;
+    where.key_path += "/mesh";
+    const auto mesh = meshes.load(spec.mesh, where);
+    auto soft = detail::makeSoftBody(spec, *mesh, world.getWorldInfo());
+    auto& tag = tags.emplace_back(detail::CollisionTag{
+        model.name_space + spec.name, model_index, model.ignore_inter_collision, true, {}});
+    soft->setUserPointer(&tag);
+    world.addSoftBody(soft.get());
+    soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
+  }
+  for (const auto& spec : model.joints) {
+    const auto& parent = by_name.at(spec.parent);
+    const auto& child = by_name.at(spec.child);
+    const auto frames =
+        detail::computeJointFrames(spec, parent.com_in_body, parent.body->spec().scale,
+                                   child.com_in_body, child.body->spec().scale);
+    auto constraint =
+        detail::makeConstraint(spec, parent.body->bullet(), child.body->bullet(), frames);
+    world.addConstraint(constraint.get(), spec.ignore_inter_collision);
+    auto named = std::make_unique<detail::NamedJoint>();
+    named->qualified = model.name_space + spec.name;
+    named->joint = std::make_unique<Joint>(spec, std::move(constraint), parent.body->bullet(),
+                                           child.body->bullet(), frames.in_parent);
+    joints.push_back(std::move(named));
+  }
+}
+
+World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
+    : impl_(std::make_unique<Impl>(scene.world, options)) {
+  if (!(options.step_size > 0.0)) throw std::invalid_argument("step size must be positive");
+  for (std::size_t m = 0; m < scene.models.size(); ++m) {
+    impl_->addModel(scene.models[m], static_cast<int>(m), meshes);
+  }
+}
+
+World::~World() = default;
+
+void World::step() {
+  const double h = impl_->options.step_size;
+  for (auto& j : impl_->joints) j->joint->applyControl(h);
+  impl_->world.stepSimulation(h, 0, h);
+  for (auto& j : impl_->joints) j->joint->updateCoordinate();
+  if (!impl_->soft_bodies.empty()) impl_->world.getWorldInfo().m_sparsesdf.GarbageCollect();
+  ++impl_->steps;
+  impl_->time = static_cast<double>(impl_->steps) * h;
+}
+
+void World::step(std::uint64_t count) {
+  for (std::uint64_t i = 0; i < count; ++i) step();
+}
+
+double World::time() const {
+  return impl_->time;
+}
+std::uint64_t World::stepCount() const {
+  return impl_->steps;
+}
+double World::stepSize() const {
+  return impl_->options.step_size;
+}
+const WorldSpec& World::settings() const {
+  return impl_->settings;
+}
+
+std::size_t World::jointCount() const {
+  return impl_->joints.size();
+}
+Joint& World::joint(std::size_t index) {
+  return *impl_->joints.at(index)->joint;
+}
+const Joint& World::joint(std::size_t index) const {
+  return *impl_->joints.at(index)->joint;
+}
+Joint& World::joint(std::string_view name) {
+  return *impl_->joints[requireByName(impl_->joints, name, "joint")]->joint;
+}
+std::optional<std::size_t> World::findJoint(std::string_view name) const {
+  return findByName(impl_->joints, name);
+}
+
+std::size_t World::bodyCount() const {
+  return impl_->bodies.size();
+}
+RigidBody& World::body(std::size_t index) {
+  return *impl_->bodies.at(index);
+}
+const RigidBody& World::body(std::size_t index) const {
+  return *impl_->bodies.at(index);
+}
+RigidBody& World::body(std::string_view name) {
+  return *impl_->bodies[requireByName(impl_->bodies, name, "body")];
+}
+
+std::size_t World::softBodyCount() const {
+  return impl_->soft_bodies.size();
+}
+SoftBody& World::softBody(std::size_t index) {
+  return *impl_->soft_bodies.at(index);
+}
+const SoftBody& World::softBody(std::size_t index) const {
+  return *impl_->soft_bodies.at(index);
+}
+SoftBody& World::softBody(std::string_view name) {
+  return *impl_->soft_bodies[requireByName(impl_->soft_bodies, name, "soft body")];
+}
+
+std::vector<Contact> World::contacts() const {
+  std::vector<Contact> out;
+  auto nameOf = [](const btCollisionObject* object) {
+    const auto* tag = static_cast<const detail::CollisionTag*>(object->getUserPointer());
+    return tag ? tag->name : std::string("?");
+  };
+  auto& dispatcher = impl_->dispatcher;
+  for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
+    for (int k = 0; k < manifold->getNumContacts(); ++k) {
+      const auto& point = manifold->getContactPoint(k);
+      out.push_back({nameOf(manifold->getBody0()), nameOf(manifold->getBody1()),
+                     toEigen(point.getPositionWorldOnB()), toEigen(point.m_normalWorldOnB),
+                     point.getDistance(), point.getAppliedImpulse()});
+    }
+  }
+  for (const auto& soft : impl_->soft_bodies) {
+    const auto& body = soft->bullet();
+    for (int i = 0; i < body.m_rcontacts.size(); ++i) {
+      const auto& contact = body.m_rcontacts[i];
+      const btVector3& node = contact.m_node->m_x;
+      out.push_back({soft->qualifiedName(), nameOf(contact.m_cti.m_colObj), toEigen(node),
+                     toEigen(contact.m_cti.m_normal),
+                     contact.m_cti.m_normal.dot(node) + contact.m_cti.m_offset, 0.0});
+    }
+  }
+  return out;
+}
+
+bool World::isFinite() const {
+  return std::all_of(impl_->bodies.begin(), impl_->bodies.end(),
+                     [](const auto& b) { return b->isFinite(); }) &&
+         std::all_of(impl_->soft_bodies.begin(), impl_->soft_bodies.end(),
+                     [](const auto& s) { return s->isFinite(); });
+}
+
+std::size_t World::collisionVertexCount() const {
+  return impl_->collision_vertices;
+}
+
+}  // namespace ambf_like

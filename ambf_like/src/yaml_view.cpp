@@ -1,0 +1,222 @@
+#include "yaml_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "load_context.hpp"
+#include "lower_case.hpp"
+
+namespace ambf_like::detail {
+
+namespace {
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string suggestion(std::string_view key, std::span<const std::string_view> known) {
+  std::string_view best;
+  std::size_t best_distance = 3;
+  for (auto candidate : known) {
+    const auto d = editDistance(key, candidate);
+    if (d < best_distance) {
+      best = candidate;
+      best_distance = d;
+    }
+  }
+  return best.empty() ? std::string() : " (did you mean '" + std::string(best) + "'?)";
+}
+
+}  // namespace
+
+YamlView YamlView::parseFile(const std::filesystem::path& file) {
+  auto shared_file = std::make_shared<const std::filesystem::path>(file);
+  SourceRef where{file, 0, ""};
+  if (!std::filesystem::is_regular_file(file)) {
+    throw LoadError(where, std::filesystem::exists(file) ? "not a regular file" : "file not found");
+  }
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file.string());
+  } catch (const YAML::ParserException& e) {
+    where.line = e.mark.line + 1;
+    throw LoadError(where, "malformed YAML: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw LoadError(where, std::string("cannot read YAML: ") + e.what());
+  }
+  if (!root.IsDefined() || root.IsNull()) throw LoadError(where, "file is empty");
+  if (!root.IsMap()) throw LoadError(where, "expected a YAML mapping at the top level");
+  return YamlView(root, shared_file, "");
+}
+
+YamlView::YamlView(YAML::Node node, std::shared_ptr<const std::filesystem::path> file,
+                   std::string key_path)
+    : node_(std::move(node)), file_(std::move(file)), key_path_(std::move(key_path)) {}
+
+int YamlView::line() const {
+  const auto mark = node_.Mark();
+  return mark.line >= 0 ? mark.line + 1 : 0;
+}
+
+SourceRef YamlView::where() const {
+  return SourceRef{*file_, line(), key_path_};
+}
+
+void YamlView::fail(const std::string& message) const {
+  throw LoadError(where(), message);
+}
+
+std::string YamlView::childPath(std::string_view key) const {
+  return key_path_.empty() ? std::string(key) : key_path_ + "/" + std::string(key);
+}
+
+bool YamlView::has(std::string_view key) const {
+  if (!node_.IsMap()) return false;
+  const YAML::Node& self = node_;
+  return self[std::string(key)].IsDefined();
+}
+
+std::optional<YamlView> YamlView::find(std::string_view key) const {
+  if (!has(key)) return std::nullopt;
+  const YAML::Node& self = node_;
+  return YamlView(self[std::string(key)], file_, childPath(key));
+}
+
+YamlView YamlView::operator[](std::string_view key) const {
+  if (!node_.IsMap()) fail("expected a mapping with key '" + std::string(key) + "'");
+  auto child = find(key);
+  if (!child) fail("missing required key '" + std::string(key) + "'");
+  return *child;
+}
+
+std::vector<YamlView> YamlView::elements() const {
+  if (!node_.IsSequence()) fail("expected a list");
+  std::vector<YamlView> out;
+  out.reserve(node_.size());
+  for (std::size_t i = 0; i < node_.size(); ++i) {
+    const YAML::Node& self = node_;
+    out.emplace_back(self[i], file_, key_path_ + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
+std::vector<std::string> YamlView::keys() const {
+  if (!node_.IsMap()) fail("expected a mapping");
+  std::vector<std::string> out;
+  for (const auto& entry : node_) out.push_back(entry.first.as<std::string>());
+  return out;
+}
+
+std::string YamlView::asString() const {
+  if (!node_.IsScalar()) fail("expected a text value");
+  return node_.Scalar();
+}
+
+std::string YamlView::asKeyword() const {
+  return lowerCase(asString());
+}
+
+double YamlView::asDouble() const {
+  if (!node_.IsScalar()) fail("expected a number");
+  double value = 0.0;
+  if (!YAML::convert<double>::decode(node_, value)) {
+    fail("expected a number, got '" + node_.Scalar() + "'");
+  }
+  if (!std::isfinite(value)) fail("expected a finite number, got '" + node_.Scalar() + "'");
+  return value;
+}
+
+int YamlView::asInt() const {
+  if (!node_.IsScalar()) fail("expected an integer");
+  int value = 0;
+  if (!YAML::convert<int>::decode(node_, value)) {
+    fail("expected an integer, got '" + node_.Scalar() + "'");
+  }
+  return value;
+}
+
+bool YamlView::asBool() const {
+  if (!node_.IsScalar()) fail("expected true or false");
+  bool value = false;
+  if (!YAML::convert<bool>::decode(node_, value)) {
+    fail("expected true or false, got '" + node_.Scalar() + "'");
+  }
+  return value;
+}
+
+Vec3 YamlView::asXyz() const {
+  if (!node_.IsMap()) fail("expected {x, y, z}");
+  return Vec3((*this)["x"].asDouble(), (*this)["y"].asDouble(), (*this)["z"].asDouble());
+}
+
+Vec3 YamlView::asRpy() const {
+  if (!node_.IsMap()) fail("expected {r, p, y}");
+  return Vec3((*this)["r"].asDouble(), (*this)["p"].asDouble(), (*this)["y"].asDouble());
+}
+
+Transform YamlView::asPose() const {
+  if (!node_.IsMap()) fail("expected {position, orientation}");
+  const Vec3 position = has("position") ? (*this)["position"].asXyz() : Vec3::Zero();
+  const Vec3 rpy = has("orientation") ? (*this)["orientation"].asRpy() : Vec3::Zero();
+  return makeTransform(position, rpy);
+}
+
+std::vector<int> YamlView::asIntList() const {
+  std::vector<int> out;
+  for (const auto& element : elements()) out.push_back(element.asInt());
+  return out;
+}
+
+double YamlView::getDouble(std::string_view key, double fallback) const {
+  auto child = find(key);
+  return child ? child->asDouble() : fallback;
+}
+
+bool YamlView::getBool(std::string_view key, bool fallback) const {
+  auto child = find(key);
+  return child ? child->asBool() : fallback;
+}
+
+void YamlView::checkKeys(std::span<const std::string_view> known, LoadContext& context) const {
+  checkKeysImpl(known, false, context);
+}
+
+void YamlView::checkSectionKeys(std::initializer_list<std::string_view> known,
+                                LoadContext& context) const {
+  checkKeysImpl(std::span(known.begin(), known.size()), true, context);
+}
+
+void YamlView::checkKeysImpl(std::span<const std::string_view> known, bool allow_mappings,
+                             LoadContext& context) const {
+  if (!node_.IsMap()) fail("expected a mapping");
+  std::map<std::string, int> first_line;
+  for (const auto& entry : node_) {
+    const auto key = entry.first.as<std::string>();
+    const int key_line = entry.first.Mark().line + 1;
+    SourceRef key_where{*file_, key_line, childPath(key)};
+    if (auto [it, inserted] = first_line.emplace(key, key_line); !inserted) {
+      context.warn(key_where, "duplicate key; the first one (line " + std::to_string(it->second) +
+                                  ") is used, as AMBF does");
+      continue;
+    }
+    const bool is_known = std::find(known.begin(), known.end(), key) != known.end();
+    if (is_known || (allow_mappings && entry.second.IsMap())) continue;
+    const std::string message = "unknown key '" + key + "'" + suggestion(key, known);
+    if (context.options().strict_keys) throw LoadError(key_where, message);
+    context.warn(key_where, message + "; ignored");
+  }
+}
+
+}  // namespace ambf_like::detail

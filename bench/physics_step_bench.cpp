@@ -1,0 +1,55 @@
+// Cost of one 1 ms physics step for the bundled demo scene and, when ../shared/data is present,
+// for AMBF's Raven-II and peg_and_base on a floor.
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+
+#include "ambf_like/scene_loader.hpp"
+#include "ambf_like/world.hpp"
+
+namespace {
+
+const std::filesystem::path kExamples = AMBF_LIKE_EXAMPLES_DIR;
+const std::filesystem::path kShared = RAVEN_SHARED_DATA_DIR;
+
+void stepScene(benchmark::State& state, const ambf_like::LoadedScene& scene) {
+  ambf_like::MeshLibrary meshes;
+  ambf_like::World world(scene.spec, meshes);
+  world.step(200);  // let bodies settle into contact first
+  for (auto _ : state) world.step();
+  state.counters["steps_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  if (!world.isFinite()) state.SkipWithError("the simulation produced NaN");
+}
+
+void BM_DemoScene(benchmark::State& state) {
+  stepScene(state, ambf_like::loadLaunchFile(kExamples / "demo/launch.yaml", {}));
+}
+BENCHMARK(BM_DemoScene);
+
+void BM_AmbfRaven(benchmark::State& state) {
+  const auto launch = kShared / "ambf/ambf_controller/raven2/launch.yaml";
+  if (!std::filesystem::exists(launch)) {
+    state.SkipWithError("../shared/data is absent");
+    return;
+  }
+  ambf_like::LoadOptions options;
+  options.skip_missing_files = true;
+  stepScene(state, ambf_like::loadLaunchFile(launch, {}, options));
+}
+BENCHMARK(BM_AmbfRaven);
+
+void BM_PegAndBaseOnFloor(benchmark::State& state) {
+  const auto peg = kShared / "ambf/ambf_models/descriptions/multi-bodies/puzzles/peg_and_base.yaml";
+  if (!std::filesystem::exists(peg)) {
+    state.SkipWithError("../shared/data is absent");
+    return;
+  }
+  stepScene(state, ambf_like::loadModelFiles({peg, kExamples / "floor.yaml"}));
+}
+BENCHMARK(BM_PegAndBaseOnFloor);
+
+}  // namespace
+
+BENCHMARK_MAIN();

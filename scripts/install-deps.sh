@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package the project needs (idempotent; run as root or with sudo).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git
+  libbullet-dev libbullet-extras-dev libeigen3-dev libassimp-dev
+  libyaml-cpp-dev liburdfdom-dev liburdfdom-headers-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libsdl2-dev libcli11-dev libspdlog-dev nlohmann-json3-dev
+  libroscpp-dev libstd-msgs-dev libsensor-msgs-dev libgeometry-msgs-dev
+  ros-std-msgs ros-sensor-msgs ros-geometry-msgs
+  python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag
+  python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+sudo_cmd=()
+[ "$(id -u)" -eq 0 ] || sudo_cmd=(sudo)
+echo "install-deps: installing ${#missing[@]} packages: ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,259 @@
+// Every kind of bad input gives one clear error naming the file and key path, never a crash.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "ambf_like/scene_loader.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using test_support::loadErrorOf;
+using test_support::TempDir;
+using testing::AllOf;
+using testing::HasSubstr;
+
+/// A valid two-body model; `body_extra` / `joint_extra` are spliced into the box and the joint.
+std::string model(const std::string& box_mass = "1.0", const std::string& box_extra = "",
+                  const std::string& joint_extra = "type: revolute") {
+  return "bodies: [BODY base, BODY box]\n"
+         "joints: [JOINT base-box]\n"
+         "BODY base:\n"
+         "  name: base\n"
+         "  mass: 0.0\n"
+         "  collision shape: BOX\n"
+         "  collision geometry: {x: 1, y: 1, z: 0.1}\n"
+         "BODY box:\n"
+         "  name: box\n"
+         "  mass: " +
+         box_mass +
+         "\n"
+         "  collision shape: BOX\n"
+         "  collision geometry: {x: 0.1, y: 0.1, z: 0.1}\n" +
+         box_extra +
+         "JOINT base-box:\n"
+         "  name: base-box\n"
+         "  parent: BODY base\n"
+         "  child: BODY box\n"
+         "  " +
+         joint_extra + "\n";
+}
+
+std::string loadError(const std::filesystem::path& file) {
+  return loadErrorOf([&] { ambf_like::loadModelFiles({file}); });
+}
+
+TEST(BadInput, ValidModelLoads) {
+  TempDir dir;
+  EXPECT_EQ(loadError(dir.write("m.yaml", model())), "");
+}
+
+TEST(BadInput, MalformedYamlNamesFileAndLine) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml", "bodies: [BODY a\nBODY a: {mass: 1\n");
+  EXPECT_THAT(loadError(file), AllOf(HasSubstr(file.string() + ":"), HasSubstr("malformed YAML")));
+}
+
+TEST(BadInput, EmptyFile) {
+  TempDir dir;
+  EXPECT_THAT(loadError(dir.write("m.yaml", "")), HasSubstr("file is empty"));
+}
+
+TEST(BadInput, MissingFile) {
+  TempDir dir;
+  EXPECT_THAT(loadError(dir.path() / "absent.yaml"), HasSubstr("file not found"));
+}
+
+TEST(BadInput, MissingRequiredKeyNamesKeyPathAndLine) {
+  TempDir dir;
+  const auto text = model("1.0");
+  const auto file = dir.write(
+      "m.yaml",
+      text.substr(0, text.find("  mass: 1.0")) +
+          text.substr(text.find("  collision shape: BOX\n  collision geometry: {x: 0.1")));
+  EXPECT_THAT(loadError(file), AllOf(HasSubstr(file.string() + ":9"), HasSubstr("BODY box"),
+                                     HasSubstr("missing required key 'mass'")));
+}
+
+TEST(BadInput, UnknownJointType) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml", model("1.0", "", "type: hinge2"));
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr(file.string() + ":17"), HasSubstr("JOINT base-box/type"),
+                    HasSubstr("unknown joint type 'hinge2'")));
+}
+
+TEST(BadInput, UnknownShape) {
+  TempDir dir;
+  auto text = model();
+  text.replace(text.rfind("collision shape: BOX"), 20, "collision shape: PYRAMID");
+  const auto file = dir.write("m.yaml", text);
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr("BODY box/collision shape"), HasSubstr("unknown shape 'PYRAMID'")));
+}
+
+TEST(BadInput, JointNamingMissingBody) {
+  TempDir dir;
+  auto text = model();
+  text.replace(text.find("child: BODY box"), 15, "child: BODY ghost");
+  const auto file = dir.write("m.yaml", text);
+  EXPECT_THAT(loadError(file), AllOf(HasSubstr("JOINT base-box/child"),
+                                     HasSubstr("child body 'ghost' is not a rigid body")));
+}
+
+TEST(BadInput, NegativeMass) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml", model("-2.0"));
+  EXPECT_THAT(loadError(file), AllOf(HasSubstr(file.string() + ":10"), HasSubstr("BODY box/mass"),
+                                     HasSubstr("must not be negative")));
+}
+
+TEST(BadInput, NanMass) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml", model(".nan"));
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr("BODY box/mass"), HasSubstr("expected a finite number, got '.nan'")));
+}
+
+TEST(BadInput, TextWhereANumberBelongs) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml", model("heavy"));
+  EXPECT_THAT(loadError(file), HasSubstr("expected a number, got 'heavy'"));
+}
+
+TEST(BadInput, UnknownKeySuggestsTheRightOne) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml", model("1.0", "  frition: {static: 0.3}\n"));
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr(file.string() + ":13"), HasSubstr("BODY box/frition"),
+                    HasSubstr("did you mean 'friction'?")));
+  // Lenient mode loads the model and reports the key as a warning.
+  ambf_like::LoadOptions lenient;
+  lenient.strict_keys = false;
+  const auto scene = ambf_like::loadModelFiles({file}, std::nullopt, lenient);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_THAT(scene.warnings[0].message, HasSubstr("unknown key 'frition'"));
+}
+
+TEST(BadInput, ListedButUndefinedIdentifier) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml", "bodies: [BODY a]\n");
+  EXPECT_THAT(loadError(file), HasSubstr("'BODY a' is listed in 'bodies' but not defined"));
+}
+
+TEST(BadInput, JointLimitsInverted) {
+  TempDir dir;
+  const auto file =
+      dir.write("m.yaml", model("1.0", "", "type: revolute\n  joint limits: {low: 1, high: -1}"));
+  EXPECT_THAT(loadError(file), AllOf(HasSubstr("JOINT base-box/joint limits"),
+                                     HasSubstr("'low' is greater than 'high'")));
+}
+
+TEST(BadInput, MissingMeshNamesBodyAndEveryPathTried) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml",
+                              "bodies: [BODY part]\n"
+                              "high resolution path: ./high/\n"
+                              "low resolution path: ./low/\n"
+                              "BODY part: {name: part, mass: 0, mesh: part.STL}\n");
+  const auto message = loadError(file);
+  EXPECT_THAT(message, AllOf(HasSubstr(file.string() + ":4"), HasSubstr("BODY part/mesh"),
+                             HasSubstr("body 'part'"), HasSubstr("low/part.STL"),
+                             HasSubstr("high/part.STL")));
+  ambf_like::LoadOptions skip;
+  skip.skip_missing_files = true;
+  const auto scene = ambf_like::loadModelFiles({file}, std::nullopt, skip);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_THAT(scene.warnings[0].message, HasSubstr("continuing without it"));
+  EXPECT_TRUE(scene.spec.models[0].bodies[0].collision.empty());
+}
+
+TEST(BadInput, EmptyMeshIsReportedWhenTheWorldIsBuilt) {
+  TempDir dir;
+  dir.write("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n");  // a polyline: no surface
+  const auto file = dir.write("m.yaml",
+                              "bodies: [BODY part]\n"
+                              "BODY part: {name: part, mass: 0, mesh: flat.obj}\n");
+  const auto message = loadErrorOf([&] { test_support::simulate({file}); });
+  EXPECT_THAT(message, AllOf(HasSubstr("BODY part/collision mesh"), HasSubstr("flat.obj"),
+                             HasSubstr("no triangles")));
+}
+
+TEST(BadInput, ZeroByteMeshFile) {
+  TempDir dir;
+  dir.write("void.stl", "");
+  const auto file = dir.write("m.yaml",
+                              "bodies: [BODY part]\n"
+                              "BODY part: {name: part, mass: 0, mesh: void.stl}\n");
+  EXPECT_THAT(loadErrorOf([&] { test_support::simulate({file}); }),
+              AllOf(HasSubstr("BODY part/collision mesh"), HasSubstr("void.stl"),
+                    HasSubstr("cannot read")));
+}
+
+TEST(BadInput, UnreadableMeshFile) {
+  TempDir dir;
+  dir.write("junk.stl", "this is not a mesh");
+  const auto file = dir.write("m.yaml",
+                              "bodies: [BODY part]\n"
+                              "BODY part: {name: part, mass: 0, mesh: junk.stl}\n");
+  EXPECT_THAT(loadErrorOf([&] { test_support::simulate({file}); }),
+              AllOf(HasSubstr("junk.stl"), HasSubstr("cannot read")));
+}
+
+TEST(BadInput, LaunchIndexOutOfRange) {
+  TempDir dir;
+  dir.write("m.yaml", model());
+  const auto launch = dir.write("launch.yaml", "multibody configs:\n  - m.yaml\n");
+  ambf_like::LaunchSelection selection;
+  selection.indices = {3};
+  const auto message = loadErrorOf([&] { ambf_like::loadLaunchFile(launch, selection); });
+  EXPECT_THAT(message, AllOf(HasSubstr(launch.string()), HasSubstr("launch index 3 does not exist"),
+                             HasSubstr("indices 0..0")));
+}
+
+TEST(BadInput, LaunchIndexThatIsNotANumber) {
+  EXPECT_EQ(ambf_like::parseLaunchIndices("0,3"), (std::vector<int>{0, 3}));
+  EXPECT_THROW(ambf_like::parseLaunchIndices("0,x"), std::invalid_argument);
+  EXPECT_THROW(ambf_like::parseLaunchIndices("1.5"), std::invalid_argument);
+  EXPECT_THROW(ambf_like::parseLaunchIndices("-1"), std::invalid_argument);
+  EXPECT_THROW(ambf_like::parseLaunchIndices(""), std::invalid_argument);
+}
+
+TEST(BadInput, LaunchEntryPointingAtAMissingFile) {
+  TempDir dir;
+  const auto launch = dir.write("launch.yaml", "multibody configs:\n  - nowhere.yaml\n");
+  EXPECT_THAT(loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); }),
+              AllOf(HasSubstr(launch.string() + ":2"), HasSubstr("multibody config 0"),
+                    HasSubstr("not found")));
+}
+
+TEST(BadInput, MalformedUrdf) {
+  TempDir dir;
+  const auto file = dir.write("arm.urdf", "<robot name='r'><link name='a'></robot>");
+  EXPECT_THAT(loadError(file), AllOf(HasSubstr(file.string()), HasSubstr("malformed URDF")));
+}
+
+TEST(BadInput, SoftBodyFixedNodeOutOfRange) {
+  TempDir dir;
+  const auto file = dir.write("m.yaml",
+                              "soft bodies: [BODY blob]\n"
+                              "BODY blob: {name: blob, mass: 1, mesh: " +
+                                  test_support::icosphereMesh().string() +
+                                  ", config: {fixed nodes: [0, 500]}}\n");
+  EXPECT_THAT(loadErrorOf([&] { test_support::simulate({file}); }),
+              AllOf(HasSubstr("BODY blob/config/fixed nodes"), HasSubstr("fixed node 500"),
+                    HasSubstr("162 nodes")));
+}
+
+TEST(BadInput, SoftBodyConfigOutOfRange) {
+  TempDir dir;
+  const auto file =
+      dir.write("m.yaml",
+                "soft bodies: [BODY blob]\n"
+                "BODY blob: {name: blob, mass: 1, mesh: " +
+                    test_support::icosphereMesh().string() + ", config: {kLST: 3}}\n");
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr("BODY blob/config/kLST"), HasSubstr("kLST must be in [0, 1]")));
+}
+
+}  // namespace

@@ -1,0 +1,63 @@
+// Collision groups and `ignore inter-collision` decide which bodies meet.
+
+#include <gtest/gtest.h>
+
+#include "test_files.hpp"
+
+namespace {
+
+/// A static slab at z = 0 and a box dropped onto it, with the given groups; returns where the
+/// box ends after one second (about 0.1 when it lands on the slab, far below when it passes).
+double dropThroughSlab(const std::string& slab_groups, const std::string& box_groups,
+                       bool ignore_inter_collision = false) {
+  test_support::TempDir dir;
+  const auto file = dir.write(
+      "m.yaml", std::string("bodies: [BODY slab, BODY box]\n") +
+                    "ignore inter-collision: " + (ignore_inter_collision ? "true" : "false") +
+                    "\n"
+                    "BODY slab: {name: slab, mass: 0, collision shape: BOX,"
+                    " collision geometry: {x: 1, y: 1, z: 0.1}, collision groups: " +
+                    slab_groups +
+                    "}\n"
+                    "BODY box: {name: box, mass: 1, collision shape: BOX,"
+                    " collision geometry: {x: 0.1, y: 0.1, z: 0.1}, collision groups: " +
+                    box_groups + ", location: {position: {x: 0, y: 0, z: 0.5}}}\n");
+  auto sim = test_support::simulate({file});
+  sim->world->step(1000);
+  return sim->world->body("box").pose().translation().z();
+}
+
+TEST(CollisionFilter, BodiesSharingAGroupCollide) {
+  EXPECT_NEAR(dropThroughSlab("[1, 4]", "[4]"), 0.1, 2e-3);
+}
+
+TEST(CollisionFilter, BodiesWithDisjointGroupsPassThroughEachOther) {
+  EXPECT_LT(dropThroughSlab("[1]", "[2, 3]"), -1.0);
+}
+
+TEST(CollisionFilter, AnEmptyGroupListCollidesWithEveryGroup) {
+  EXPECT_NEAR(dropThroughSlab("[]", "[7]"), 0.1, 2e-3);
+}
+
+TEST(CollisionFilter, IgnoreInterCollisionSeparatesBodiesOfOneModel) {
+  EXPECT_LT(dropThroughSlab("[]", "[]", true), -1.0);
+  EXPECT_NEAR(dropThroughSlab("[]", "[]", false), 0.1, 2e-3);
+}
+
+TEST(CollisionFilter, IgnoreInterCollisionStillCollidesWithOtherModels) {
+  test_support::TempDir dir;
+  const auto slab = dir.write("slab.yaml",
+                              "bodies: [BODY slab]\nignore inter-collision: true\n"
+                              "BODY slab: {name: slab, mass: 0, collision shape: BOX,"
+                              " collision geometry: {x: 1, y: 1, z: 0.1}}\n");
+  const auto box = dir.write("box.yaml",
+                             "bodies: [BODY box]\nignore inter-collision: true\n"
+                             "BODY box: {name: box, mass: 1, collision shape: BOX,"
+                             " collision geometry: {x: 0.1, y: 0.1, z: 0.1},"
+                             " location: {position: {x: 0, y: 0, z: 0.5}}}\n");
+  auto sim = test_support::simulate({slab, box});
+  sim->world->step(1000);
+  EXPECT_NEAR(sim->world->body("box").pose().translation().z(), 0.1, 2e-3);
+}
+
+}  // namespace

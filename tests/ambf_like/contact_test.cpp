@@ -1,0 +1,91 @@
+// Bodies dropped on a plane come to rest on it: no tunnelling, no floating by the margin.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "test_files.hpp"
+
+namespace {
+
+const std::string kGround =
+    "BODY ground:\n"
+    "  name: ground\n"
+    "  mass: 0\n"
+    "  collision shape: PLANE\n"
+    "  collision geometry: {normal: {x: 0, y: 0, z: 1}, offset: 0}\n";
+
+TEST(Contact, BoxDroppedOnAPlaneRestsOnIt) {
+  test_support::TempDir dir;
+  const auto file = dir.write("drop.yaml", "bodies: [BODY ground, BODY box]\n" + kGround +
+                                               "BODY box:\n"
+                                               "  name: box\n"
+                                               "  mass: 0.5\n"
+                                               "  collision shape: BOX\n"
+                                               "  collision geometry: {x: 0.1, y: 0.1, z: 0.1}\n"
+                                               "  location: {position: {x: 0, y: 0, z: 1.0}}\n");
+  auto sim = test_support::simulate({file});
+  auto& world = *sim->world;
+  auto& box = world.body("box");
+  double lowest = 1.0;
+  while (world.time() < 3.0) {
+    world.step();
+    lowest = std::min(lowest, box.pose().translation().z());
+  }
+  const double rest = box.pose().translation().z();
+  EXPECT_GT(lowest, 0.05 - 0.005) << "the box sank into the plane";
+  EXPECT_NEAR(rest, 0.05, 1e-3) << "the box should rest with its face on the plane";
+  EXPECT_LT(box.linearVelocity().norm(), 1e-3);
+
+  const auto contacts = world.contacts();
+  ASSERT_FALSE(contacts.empty());
+  const auto& c = contacts.front();
+  EXPECT_TRUE((c.body_a == "/ambf/env/box" && c.body_b == "/ambf/env/ground") ||
+              (c.body_b == "/ambf/env/box" && c.body_a == "/ambf/env/ground"));
+  EXPECT_NEAR(std::abs(c.normal_on_b.z()), 1.0, 1e-6);
+  EXPECT_LE(c.distance, 1e-3);
+}
+
+TEST(Contact, SoftBodyDroppedOnAPlaneRestsOnIt) {
+  test_support::TempDir dir;
+  const double margin = 0.002;
+  const auto file = dir.write(
+      "drop.yaml", "bodies: [BODY ground]\nsoft bodies: [BODY blob]\n" + kGround +
+                       "BODY blob:\n"
+                       "  name: blob\n"
+                       "  mass: 0.05\n"
+                       "  mesh: " +
+                       test_support::icosphereMesh().string() +
+                       "\n"
+                       "  scale: 0.05\n"
+                       "  collision margin: " +
+                       std::to_string(margin) +
+                       "\n"
+                       "  location: {position: {x: 0, y: 0, z: 0.3}}\n"
+                       "  config: {kDF: 0.8, kVC: 20, piterations: 4, bending constraint: 2}\n");
+  auto sim = test_support::simulate({file});
+  auto& world = *sim->world;
+  auto& blob = world.softBody("blob");
+  double lowest_ever = 1.0;
+  while (world.time() < 3.0) {
+    world.step();
+    for (const auto& p : blob.nodePositions()) lowest_ever = std::min(lowest_ever, p.z());
+  }
+  ASSERT_TRUE(blob.isFinite());
+  double lowest = 1.0, highest = -1.0;
+  for (const auto& p : blob.nodePositions()) {
+    lowest = std::min(lowest, p.z());
+    highest = std::max(highest, p.z());
+  }
+  EXPECT_GT(lowest_ever, -0.01) << "nodes tunnelled through the plane";
+  // At rest the lowest nodes sit on the plane, held off it by at most the collision margin
+  // (Bullet's default margin of 0.25 m would leave the 5 cm ball floating in the air).
+  EXPECT_GT(lowest, -0.002);
+  EXPECT_LT(lowest, margin + 0.002);
+  EXPECT_GT(highest, 0.05) << "the ball collapsed flat";
+  bool touching = false;
+  for (const auto& c : world.contacts()) touching |= c.body_a == "/ambf/env/blob";
+  EXPECT_TRUE(touching);
+}
+
+}  // namespace
