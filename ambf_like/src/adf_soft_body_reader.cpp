@@ -27,7 +27,32 @@ void readCount(const YamlView& config, const char* key, int minimum, int& value)
 }
 
 constexpr double kInf = 1e30;
-constexpr int kKnownCollisionFlags = 0x07ff;
+
+/// Bullet's classic soft world treats the rigid (0x0f) and soft (0xf0) parts of the flags as two
+/// switches, not bit sets: any other combination silently turns that kind of contact off.
+void checkCollisionFlags(const YamlView& node, int flags, int clusters) {
+  const int rigid = flags & 0x0f;
+  const int soft = flags & 0xf0;
+  if (flags < 0 || (flags & ~0xff) != 0 || rigid == 0x4) {
+    node.fail("flags " + std::to_string(flags) +
+              ": bits beyond SDF_RS/CL_RS/VF_SS/CL_SS belong to Bullet's deformable-body "
+              "pipeline, which this simulator does not use");
+  }
+  if (rigid != 0 && rigid != 0x1 && rigid != 0x2) {
+    node.fail("flags " + std::to_string(flags) +
+              ": rigid contact is one mode, SDF_RS (0x1) or CL_RS (0x2); Bullet ignores both when "
+              "they are combined");
+  }
+  if (soft != 0 && soft != 0x10 && soft != 0x20) {
+    node.fail("flags " + std::to_string(flags) +
+              ": soft-soft contact is one mode, VF_SS (0x10) or CL_SS (0x20); with any other "
+              "combination (CL_SELF 0x40 included) Bullet 3.24 uses none");
+  }
+  if ((rigid == 0x2 || soft == 0x20) && clusters == 0) {
+    node.fail("flags " + std::to_string(flags) +
+              ": cluster collision (CL_RS, CL_SS) needs 'clusters'");
+  }
+}
 
 /// The keys of a soft body's `config:` block.
 // clang-format off
@@ -72,9 +97,7 @@ SoftBodyConfig readConfig(const YamlView& node, LoadContext& context) {
   readCount(node, "clusters", 0, c.clusters);
   if (auto flags = node.find("flags")) {
     c.collision_flags = flags->asInt();
-    if (c.collision_flags < 0 || (c.collision_flags & ~kKnownCollisionFlags) != 0) {
-      flags->fail("unknown btSoftBody collision flag bits in " + std::to_string(c.collision_flags));
-    }
+    checkCollisionFlags(*flags, c.collision_flags, c.clusters);
   }
   if (auto fixed = node.find("fixed nodes")) {
     for (const auto& index : fixed->elements()) {

@@ -50,6 +50,21 @@ std::unique_ptr<btTypedConstraint> makePrismatic(const JointSpec& joint, btRigid
   return prismatic;
 }
 
+/// Sets axis `i` (0-2 linear, 3-5 angular) of a 6-DoF constraint to [low, high] given in this
+/// project's convention. Bullet's angular coordinates are minus the right-hand rotation of the
+/// child relative to the parent (AMBF inverts its torsion-spring limits for the same reason).
+void setAxisLimit(btGeneric6DofSpring2Constraint& six, int i, double low, double high) {
+  if (i < 3) {
+    six.setLimit(i, low, high);
+  } else {
+    six.setLimit(i, -high, -low);
+  }
+}
+
+void setAxisEquilibrium(btGeneric6DofSpring2Constraint& six, int i, double value) {
+  six.setEquilibriumPoint(i, i < 3 ? value : -value);
+}
+
 /// A single-axis spring: every axis locked but `axis` (2: linear z, 5: angular z).
 std::unique_ptr<btTypedConstraint> makeSpring(const JointSpec& joint, btRigidBody& parent,
                                               btRigidBody& child, const JointFrames& frames) {
@@ -61,7 +76,7 @@ std::unique_ptr<btTypedConstraint> makeSpring(const JointSpec& joint, btRigidBod
   if (joint.limits) {
     low = joint.limits->low;
     high = joint.limits->high;
-    spring->setLimit(axis, low, high);
+    setAxisLimit(*spring, axis, low, high);
   } else {
     spring->setLimit(axis, 1.0, -1.0);  // lower > upper: free
   }
@@ -71,7 +86,7 @@ std::unique_ptr<btTypedConstraint> makeSpring(const JointSpec& joint, btRigidBod
   spring->enableSpring(axis, true);
   spring->setStiffness(axis, joint.stiffness.value_or(10.0 * mass_a + mass_b));
   spring->setDamping(axis, joint.damping);
-  spring->setEquilibriumPoint(axis, joint.equilibrium_point.value_or(low + (high - low) / 2.0));
+  setAxisEquilibrium(*spring, axis, joint.equilibrium_point.value_or(low + (high - low) / 2.0));
   spring->setParam(BT_CONSTRAINT_STOP_ERP, joint.erp, axis);
   spring->setParam(BT_CONSTRAINT_STOP_CFM, joint.cfm, axis);
   return spring;
@@ -83,12 +98,13 @@ std::unique_ptr<btTypedConstraint> makeSixDof(const JointSpec& joint, btRigidBod
                                                               toBt(frames.in_child));
   const auto& d = joint.six_dof;
   for (int i = 0; i < 6; ++i) {
-    six->setLimit(i, d.low[static_cast<std::size_t>(i)], d.high[static_cast<std::size_t>(i)]);
+    const auto k = static_cast<std::size_t>(i);
+    setAxisLimit(*six, i, d.low[k], d.high[k]);
     if (joint.type != JointType::SixDofSpring) continue;
     six->enableSpring(i, true);
-    six->setStiffness(i, d.stiffness[static_cast<std::size_t>(i)]);
-    six->setDamping(i, d.damping[static_cast<std::size_t>(i)]);
-    six->setEquilibriumPoint(i, d.equilibrium[static_cast<std::size_t>(i)]);
+    six->setStiffness(i, d.stiffness[k]);
+    six->setDamping(i, d.damping[k]);
+    setAxisEquilibrium(*six, i, d.equilibrium[k]);
   }
   return six;
 }

@@ -91,8 +91,9 @@ double Joint::rawCoordinate() const {
       auto& six = static_cast<btGeneric6DofSpring2Constraint&>(*constraint_);
       six.calculateTransforms();
       if (spec_.type == JointType::Prismatic) return six.getRelativePivotPosition(0);
+      // Bullet's angular coordinate is minus the right-hand rotation (see constraint_factory).
       return spec_.type == JointType::LinearSpring ? six.getRelativePivotPosition(2)
-                                                   : six.getAngle(2);
+                                                   : -six.getAngle(2);
     }
     default:
       return 0.0;

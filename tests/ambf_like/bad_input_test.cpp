@@ -245,6 +245,23 @@ TEST(BadInput, SoftBodyFixedNodeOutOfRange) {
                     HasSubstr("162 nodes")));
 }
 
+TEST(BadInput, SoftBodyCollisionFlagsThatBulletWouldSilentlyIgnore) {
+  TempDir dir;
+  auto flags = [&](const std::string& value) {
+    return loadError(dir.write("m.yaml",
+                               "soft bodies: [BODY blob]\n"
+                               "BODY blob: {name: blob, mass: 1, mesh: " +
+                                   test_support::icosphereMesh().string() +
+                                   ", config: {clusters: 4, flags: " + value + "}}\n"));
+  };
+  EXPECT_THAT(flags("0x3"),
+              AllOf(HasSubstr("BODY blob/config/flags"), HasSubstr("rigid contact is one mode")));
+  EXPECT_THAT(flags("0x30"), HasSubstr("soft-soft contact is one mode"));
+  EXPECT_THAT(flags("0x60"), HasSubstr("CL_SELF"));
+  EXPECT_THAT(flags("0x100"), HasSubstr("deformable-body"));
+  EXPECT_EQ(flags("0x21"), "");
+}
+
 TEST(BadInput, SoftBodyConfigOutOfRange) {
   TempDir dir;
   const auto file =
