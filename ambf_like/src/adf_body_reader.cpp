@@ -64,7 +64,7 @@ constexpr std::string_view kBodyKeys[] = {
 
 BodySpec readBody(const YamlView& node, const std::string& identifier, const MeshDirectories& dirs,
                   LoadContext& context) {
-  node.checkKeys(kBodyKeys, context);
+  node.checkKeys(kBodyKeys, context.keyCheck());
   BodySpec body;
   body.where = node.where();
   body.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
@@ -87,12 +87,12 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   body.passive = node.getBool("passive", false);
 
   if (auto friction = node.find("friction")) {
-    friction->checkKeys({"static", "rolling"}, context);
+    friction->checkKeys({"static", "rolling"}, context.keyCheck());
     if (auto v = friction->find("static")) body.surface.static_friction = nonNegative(*v);
     if (auto v = friction->find("rolling")) body.surface.rolling_friction = nonNegative(*v);
   }
   if (auto damping = node.find("damping")) {
-    damping->checkKeys({"linear", "angular"}, context);
+    damping->checkKeys({"linear", "angular"}, context.keyCheck());
     if (auto v = damping->find("linear")) body.surface.linear_damping = nonNegative(*v);
     if (auto v = damping->find("angular")) body.surface.angular_damping = nonNegative(*v);
   }

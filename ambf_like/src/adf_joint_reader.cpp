@@ -56,7 +56,7 @@ SixAxis readSixAxis(const YamlView& node) {
 }
 
 void readSingleAxisLimits(const YamlView& node, JointSpec& joint, LoadContext& context) {
-  node.checkKeys({"low", "high"}, context);
+  node.checkKeys({"low", "high"}, context.keyCheck());
   const bool has_low = node.has("low");
   const bool has_high = node.has("high");
   if (has_low != has_high) {
@@ -115,7 +115,7 @@ constexpr std::string_view kJointKeys[] = {
 
 JointSpec readJoint(const YamlView& node, const std::string& identifier,
                     const JointDefaults& defaults, LoadContext& context) {
-  node.checkKeys(kJointKeys, context);
+  node.checkKeys(kJointKeys, context.keyCheck());
   JointSpec joint;
   joint.where = node.where();
   joint.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
@@ -159,7 +159,7 @@ JointSpec readJoint(const YamlView& node, const std::string& identifier,
   // AMBF: a `controller` block makes the PID output an effort; without one a velocity-output
   // PID (P 10, I 0, D 1) drives the joint motor. An explicit output type overrides either.
   if (auto controller = node.find("controller")) {
-    controller->checkKeys({"P", "I", "D"}, context);
+    controller->checkKeys({"P", "I", "D"}, context.keyCheck());
     joint.controller = {(*controller)["P"].asDouble(), controller->getDouble("I", 0.0),
                         (*controller)["D"].asDouble()};
     joint.output = ControlOutput::Effort;

@@ -104,7 +104,7 @@ ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) 
                          "plugins",
                          "joint erp",
                          "joint cfm"},
-                        context);
+                        context.keyCheck());
   if (auto version = root.find("adf version"); version && version->asString() != "1.0") {
     version->fail("unsupported ADF version '" + version->asString() + "' (only 1.0 exists)");
   }
@@ -153,7 +153,7 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
   root.checkSectionKeys(
       {"adf version", "namespace", "enclosure", "enclosure size", "lights", "cameras",
        "environment", "skybox", "max iterations", "gravity", "shaders", "plugins"},
-      context);
+      context.keyCheck());
   WorldSpec world;
   world.file = file;
   if (auto ns = root.find("namespace")) world.name_space = ns->asString();

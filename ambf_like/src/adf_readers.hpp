@@ -6,10 +6,12 @@
 #include <vector>
 
 #include "ambf_like/scene_spec.hpp"
+#include "common/yaml_view.hpp"
 #include "load_context.hpp"
-#include "yaml_view.hpp"
 
 namespace ambf_like::detail {
+
+using common::YamlView;
 
 /// The directories a model's relative mesh names are resolved against.
 struct MeshDirectories {

@@ -56,7 +56,7 @@ PrimitiveShape readPrimitive(const YamlView& shape, const YamlView& geometry,
 std::vector<PrimitiveShape> readCompoundShape(const YamlView& list, LoadContext& context) {
   std::vector<PrimitiveShape> shapes;
   for (const auto& entry : list.elements()) {
-    entry.checkKeys({"name", "shape", "geometry", "offset"}, context);
+    entry.checkKeys({"name", "shape", "geometry", "offset"}, context.keyCheck());
     std::optional<Transform> offset;
     if (auto node = entry.find("offset")) offset = node->asPose();
     shapes.push_back(readPrimitive(entry["shape"], entry["geometry"], offset));

@@ -64,7 +64,7 @@ constexpr std::string_view kConfigKeys[] = {
 // clang-format on
 
 SoftBodyConfig readConfig(const YamlView& node, LoadContext& context) {
-  node.checkKeys(kConfigKeys, context);
+  node.checkKeys(kConfigKeys, context.keyCheck());
   SoftBodyConfig c;
   readBounded(node, "kLST", 0, 1, c.kLST);
   readBounded(node, "kAST", 0, 1, c.kAST);
@@ -122,7 +122,7 @@ constexpr std::string_view kSoftBodyKeys[] = {
 
 SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
                           const MeshDirectories& dirs, LoadContext& context) {
-  node.checkKeys(kSoftBodyKeys, context);
+  node.checkKeys(kSoftBodyKeys, context.keyCheck());
   SoftBodySpec soft;
   soft.where = node.where();
   soft.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);

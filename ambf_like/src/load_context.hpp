@@ -6,6 +6,7 @@
 
 #include "ambf_like/load_error.hpp"
 #include "ambf_like/scene_loader.hpp"
+#include "common/yaml_view.hpp"
 
 namespace ambf_like::detail {
 
@@ -20,6 +21,9 @@ class LoadContext {
   /// end.
   void defer(SourceRef where, std::string message);
   void throwIfDeferred() const;
+
+  /// How YamlView::checkKeys should treat unknown and duplicate keys in this load.
+  common::KeyCheck keyCheck() { return {options_.strict_keys, warnings_}; }
 
   std::vector<LoadIssue> takeWarnings() { return std::move(warnings_); }
 

@@ -4,18 +4,18 @@
 #include <stdexcept>
 
 #include "adf_readers.hpp"
-#include "lower_case.hpp"
+#include "common/lower_case.hpp"
 #include "urdf_reader.hpp"
 
 namespace ambf_like {
 
 namespace {
 
+using common::YamlView;
 using detail::LoadContext;
-using detail::YamlView;
 
 ModelSpec readModel(const std::filesystem::path& file, LoadContext& context) {
-  if (detail::lowerCase(file.extension().string()) == ".urdf")
+  if (common::lowerCase(file.extension().string()) == ".urdf")
     return detail::readUrdfModel(file, context);
   return detail::readAdfModel(file, context);
 }
@@ -66,7 +66,7 @@ LoadedScene loadLaunchFile(const std::filesystem::path& launch_file,
   // Colour and input-device files are read by AMBF's graphics and device layers, not its physics.
   root.checkKeys({"adf version", "world config", "color config", "input devices config",
                   "multibody configs", "plugins"},
-                 context);
+                 context.keyCheck());
   const auto dir = launch_file.parent_path();
   std::vector<std::filesystem::path> files;
   std::vector<YamlView> entries;

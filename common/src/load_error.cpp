@@ -1,8 +1,8 @@
-#include "ambf_like/load_error.hpp"
+#include "common/load_error.hpp"
 
 #include <sstream>
 
-namespace ambf_like {
+namespace common {
 
 std::string SourceRef::str() const {
   std::ostringstream out;
@@ -32,4 +32,4 @@ LoadError::LoadError(std::vector<LoadIssue> issues)
 LoadError::LoadError(SourceRef where, std::string message)
     : LoadError(std::vector<LoadIssue>{{std::move(where), std::move(message)}}) {}
 
-}  // namespace ambf_like
+}  // namespace common

@@ -3,6 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <Eigen/Geometry>
 #include <filesystem>
 #include <initializer_list>
 #include <memory>
@@ -13,12 +14,16 @@
 #include <utility>
 #include <vector>
 
-#include "ambf_like/load_error.hpp"
-#include "ambf_like/transform.hpp"
+#include "common/load_error.hpp"
 
-namespace ambf_like::detail {
+namespace common {
 
-class LoadContext;
+/// How checkKeys treats what it finds: unknown keys throw when `strict`, otherwise they and
+/// duplicate keys are appended to `warnings`.
+struct KeyCheck {
+  bool strict = true;
+  std::vector<LoadIssue>& warnings;
+};
 
 /// Read-only view of one YAML node that knows its file and key path.
 class YamlView {
@@ -53,9 +58,12 @@ class YamlView {
   double asDouble() const;  ///< finite numbers only
   int asInt() const;
   bool asBool() const;
-  Vec3 asXyz() const;        ///< {x, y, z}
-  Vec3 asRpy() const;        ///< {r, p, y}
-  Transform asPose() const;  ///< {position {x,y,z}, orientation {r,p,y}}, both optional
+  Eigen::Vector3d asXyz() const;  ///< {x, y, z}
+  Eigen::Vector3d asRpy() const;  ///< {r, p, y}
+  /// {position {x,y,z}, orientation {r,p,y}}, both optional; R = Rz(y) Ry(p) Rx(r).
+  Eigen::Isometry3d asPose() const;
+  /// A list of exactly `count` numbers (any count when `count` is 0).
+  std::vector<double> asDoubleList(std::size_t count = 0) const;
   std::vector<int> asIntList() const;
 
   double getDouble(std::string_view key, double fallback) const;
@@ -63,22 +71,22 @@ class YamlView {
 
   /// Reports keys that are not in `known` (error or warning, per the load options) and duplicate
   /// keys (a warning: yaml-cpp, like AMBF, uses the first one).
-  void checkKeys(std::span<const std::string_view> known, LoadContext& context) const;
-  void checkKeys(std::initializer_list<std::string_view> known, LoadContext& context) const {
-    checkKeys(std::span(known.begin(), known.size()), context);
+  void checkKeys(std::span<const std::string_view> known, KeyCheck check) const;
+  void checkKeys(std::initializer_list<std::string_view> known, KeyCheck check) const {
+    checkKeys(std::span(known.begin(), known.size()), check);
   }
   /// Same for keys that may appear at the top of a file beside identifier mappings.
-  void checkSectionKeys(std::initializer_list<std::string_view> known, LoadContext& context) const;
+  void checkSectionKeys(std::initializer_list<std::string_view> known, KeyCheck check) const;
 
  private:
   int line() const;
   std::string childPath(std::string_view key) const;
   void checkKeysImpl(std::span<const std::string_view> known, bool allow_mappings,
-                     LoadContext& context) const;
+                     KeyCheck check) const;
 
   YAML::Node node_;
   std::shared_ptr<const std::filesystem::path> file_;
   std::string key_path_;
 };
 
-}  // namespace ambf_like::detail
+}  // namespace common

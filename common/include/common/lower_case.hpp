@@ -5,7 +5,7 @@
 #include <cctype>
 #include <string>
 
-namespace ambf_like::detail {
+namespace common {
 
 inline std::string lowerCase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(),
@@ -13,4 +13,4 @@ inline std::string lowerCase(std::string text) {
   return text;
 }
 
-}  // namespace ambf_like::detail
+}  // namespace common

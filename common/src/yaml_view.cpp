@@ -1,13 +1,12 @@
-#include "yaml_view.hpp"
+#include "common/yaml_view.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "load_context.hpp"
-#include "lower_case.hpp"
+#include "common/lower_case.hpp"
 
-namespace ambf_like::detail {
+namespace common {
 
 namespace {
 
@@ -156,21 +155,38 @@ bool YamlView::asBool() const {
   return value;
 }
 
-Vec3 YamlView::asXyz() const {
+Eigen::Vector3d YamlView::asXyz() const {
   if (!node_.IsMap()) fail("expected {x, y, z}");
-  return Vec3((*this)["x"].asDouble(), (*this)["y"].asDouble(), (*this)["z"].asDouble());
+  return {(*this)["x"].asDouble(), (*this)["y"].asDouble(), (*this)["z"].asDouble()};
 }
 
-Vec3 YamlView::asRpy() const {
+Eigen::Vector3d YamlView::asRpy() const {
   if (!node_.IsMap()) fail("expected {r, p, y}");
-  return Vec3((*this)["r"].asDouble(), (*this)["p"].asDouble(), (*this)["y"].asDouble());
+  return {(*this)["r"].asDouble(), (*this)["p"].asDouble(), (*this)["y"].asDouble()};
 }
 
-Transform YamlView::asPose() const {
+Eigen::Isometry3d YamlView::asPose() const {
   if (!node_.IsMap()) fail("expected {position, orientation}");
-  const Vec3 position = has("position") ? (*this)["position"].asXyz() : Vec3::Zero();
-  const Vec3 rpy = has("orientation") ? (*this)["orientation"].asRpy() : Vec3::Zero();
-  return makeTransform(position, rpy);
+  const Eigen::Vector3d position =
+      has("position") ? (*this)["position"].asXyz() : Eigen::Vector3d::Zero();
+  const Eigen::Vector3d rpy =
+      has("orientation") ? (*this)["orientation"].asRpy() : Eigen::Vector3d::Zero();
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+                   Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+                   Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+                      .toRotationMatrix();
+  pose.translation() = position;
+  return pose;
+}
+
+std::vector<double> YamlView::asDoubleList(std::size_t count) const {
+  std::vector<double> out;
+  for (const auto& element : elements()) out.push_back(element.asDouble());
+  if (count != 0 && out.size() != count) {
+    fail("expected " + std::to_string(count) + " numbers, got " + std::to_string(out.size()));
+  }
+  return out;
 }
 
 std::vector<int> YamlView::asIntList() const {
@@ -189,17 +205,17 @@ bool YamlView::getBool(std::string_view key, bool fallback) const {
   return child ? child->asBool() : fallback;
 }
 
-void YamlView::checkKeys(std::span<const std::string_view> known, LoadContext& context) const {
-  checkKeysImpl(known, false, context);
+void YamlView::checkKeys(std::span<const std::string_view> known, KeyCheck check) const {
+  checkKeysImpl(known, false, check);
 }
 
 void YamlView::checkSectionKeys(std::initializer_list<std::string_view> known,
-                                LoadContext& context) const {
-  checkKeysImpl(std::span(known.begin(), known.size()), true, context);
+                                KeyCheck check) const {
+  checkKeysImpl(std::span(known.begin(), known.size()), true, check);
 }
 
 void YamlView::checkKeysImpl(std::span<const std::string_view> known, bool allow_mappings,
-                             LoadContext& context) const {
+                             KeyCheck check) const {
   if (!node_.IsMap()) fail("expected a mapping");
   std::map<std::string, int> first_line;
   for (const auto& entry : node_) {
@@ -207,16 +223,17 @@ void YamlView::checkKeysImpl(std::span<const std::string_view> known, bool allow
     const int key_line = entry.first.Mark().line + 1;
     SourceRef key_where{*file_, key_line, childPath(key)};
     if (auto [it, inserted] = first_line.emplace(key, key_line); !inserted) {
-      context.warn(key_where, "duplicate key; the first one (line " + std::to_string(it->second) +
-                                  ") is used, as AMBF does");
+      check.warnings.push_back({key_where, "duplicate key; the first one (line " +
+                                               std::to_string(it->second) +
+                                               ") is used, as AMBF does"});
       continue;
     }
     const bool is_known = std::find(known.begin(), known.end(), key) != known.end();
     if (is_known || (allow_mappings && entry.second.IsMap())) continue;
     const std::string message = "unknown key '" + key + "'" + suggestion(key, known);
-    if (context.options().strict_keys) throw LoadError(key_where, message);
-    context.warn(key_where, message + "; ignored");
+    if (check.strict) throw LoadError(key_where, message);
+    check.warnings.push_back({key_where, message + "; ignored"});
   }
 }
 
-}  // namespace ambf_like::detail
+}  // namespace common

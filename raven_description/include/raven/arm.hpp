@@ -1,0 +1,27 @@
+#pragma once
+// The Raven-II's two arms and the per-arm joint vector shared by every layer.
+
+#include <Eigen/Core>
+#include <array>
+#include <string_view>
+
+namespace raven {
+
+/// Arm 0 is the left ("gold") arm, arm 1 the right ("green") arm.
+enum class Arm { Left = 0, Right = 1 };
+
+inline constexpr std::array<Arm, 2> kArms{Arm::Left, Arm::Right};
+inline constexpr int kJointCount = 7;
+
+/// Per arm, always in this order: shoulder, elbow, insertion (m), roll, wrist, jaw 1, jaw 2.
+using ArmJoints = Eigen::Matrix<double, kJointCount, 1>;
+
+enum JointIndex { kShoulder = 0, kElbow, kInsertion, kRoll, kWrist, kJaw1, kJaw2 };
+
+inline constexpr std::array<std::string_view, kJointCount> kJointNames{
+    "shoulder", "elbow", "insertion", "roll", "wrist", "jaw1", "jaw2"};
+
+inline int index(Arm arm) { return static_cast<int>(arm); }
+inline std::string_view armName(Arm arm) { return arm == Arm::Left ? "left" : "right"; }
+
+}  // namespace raven

@@ -1,0 +1,44 @@
+#pragma once
+// A platform profile: the kinematic parameters, home and limits of one Raven-II platform
+// (the physical robot R_P or AMBF's twin R_S), loaded from YAML.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "raven/arm.hpp"
+#include "raven/arm_convention.hpp"
+
+namespace raven {
+
+/// Lower and upper bound of every joint of one arm.
+struct JointLimits {
+  ArmJoints low = ArmJoints::Zero();
+  ArmJoints high = ArmJoints::Zero();
+};
+
+/// Everything that differs between platforms (the paper's Table II) and what they share.
+struct PlatformProfile {
+  std::string name;
+  std::string description;
+  /// The chain this project's controller uses for both arms (reference section B).
+  std::array<ArmConvention, 2> kinematics;
+  /// The physical robot's own firmware chain, as it reports poses (reference section A),
+  /// in each arm's base frame; absent for simulated platforms.
+  std::optional<std::array<ArmConvention, 2>> firmware_kinematics;
+  ArmJoints home = ArmJoints::Zero();
+  JointLimits limits;
+
+  const ArmConvention& arm(Arm a) const { return kinematics[static_cast<std::size_t>(index(a))]; }
+};
+
+/// Reads a profile file; throws std::runtime_error naming the file and key on bad input.
+PlatformProfile loadPlatformProfile(const std::filesystem::path& file);
+
+/// The profiles shipped with this project: "physical" or "ambf".
+PlatformProfile builtinProfile(const std::string& name);
+
+/// Where the shipped profiles live.
+std::filesystem::path profileDirectory();
+
+}  // namespace raven
