@@ -1,6 +1,7 @@
 #include "test_files.hpp"
 
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <stdexcept>
 
@@ -25,6 +26,12 @@ std::filesystem::path TempDir::write(const std::string& name, const std::string&
   out << text;
   if (!out) throw std::runtime_error("cannot write " + file.string());
   return file;
+}
+
+std::string readFile(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 std::filesystem::path sharedDataDir() {

@@ -26,6 +26,9 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+/// The whole content of a text file.
+std::string readFile(const std::filesystem::path& file);
+
 /// ../shared/data (next to the repository), or empty when that folder is absent.
 std::filesystem::path sharedDataDir();
 

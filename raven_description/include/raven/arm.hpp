@@ -21,7 +21,11 @@ enum JointIndex { kShoulder = 0, kElbow, kInsertion, kRoll, kWrist, kJaw1, kJaw2
 inline constexpr std::array<std::string_view, kJointCount> kJointNames{
     "shoulder", "elbow", "insertion", "roll", "wrist", "jaw1", "jaw2"};
 
-inline int index(Arm arm) { return static_cast<int>(arm); }
-inline std::string_view armName(Arm arm) { return arm == Arm::Left ? "left" : "right"; }
+inline int index(Arm arm) {
+  return static_cast<int>(arm);
+}
+inline std::string_view armName(Arm arm) {
+  return arm == Arm::Left ? "left" : "right";
+}
 
 }  // namespace raven

@@ -19,10 +19,10 @@ namespace raven {
 /// and theta6 = wrap(grasp_scale * (jaw1 - jaw2)).
 struct ArmConvention {
   Eigen::Isometry3d base = Eigen::Isometry3d::Identity();  ///< reporting frame -> row 0
-  std::array<double, 6> alpha{};                            ///< rad
-  double tool_length = 0.0;                                 ///< a of row 5 (Lw), m
-  double d4 = 0.0;                                          ///< d of row 3, m
-  double insertion_theta = 0.0;                             ///< fixed theta of row 2, rad
+  std::array<double, 6> alpha{};                           ///< rad
+  double tool_length = 0.0;                                ///< a of row 5 (Lw), m
+  double d4 = 0.0;                                         ///< d of row 3, m
+  double insertion_theta = 0.0;                            ///< fixed theta of row 2, rad
   /// Added to shoulder, elbow, (unused: insertion), roll, wrist before wrapping.
   std::array<double, 5> theta_offset{};
   double grasp_scale = 1.0;  ///< theta6 = grasp_scale * (jaw1 - jaw2)
