@@ -1,5 +1,6 @@
-// Cost of one 1 ms physics step for the bundled demo scene and, when ../shared/data is present,
-// for AMBF's Raven-II and peg_and_base on a floor.
+// Cost of one 1 ms physics step: the bundled demo scene; our Raven-II (simplified and dense
+// collision) holding home, alone and in the peg-transfer scene; and, when ../shared/data is
+// present, AMBF's Raven-II and peg_and_base on a floor.
 
 #include <benchmark/benchmark.h>
 
@@ -7,15 +8,27 @@
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "raven/platform_profile.hpp"
+#include "raven/twin_arms.hpp"
 
 namespace {
 
 const std::filesystem::path kExamples = AMBF_LIKE_EXAMPLES_DIR;
 const std::filesystem::path kShared = RAVEN_SHARED_DATA_DIR;
 
-void stepScene(benchmark::State& state, const ambf_like::LoadedScene& scene) {
+const std::filesystem::path kRavenModels = RAVEN_MODELS_DIR;
+const std::filesystem::path kDenseModels = RAVEN_DENSE_MODELS_DIR;
+
+/// Steps a scene; `holdRaven` commands both Raven-II arms to their home pose first.
+void stepScene(benchmark::State& state, const ambf_like::LoadedScene& scene,
+               bool holdRaven = false) {
   ambf_like::MeshLibrary meshes;
   ambf_like::World world(scene.spec, meshes);
+  if (holdRaven) {
+    raven::TwinArms arms(world, raven::ArmBindings::ourRaven());
+    const auto home = raven::builtinProfile("physical").home;
+    for (auto arm : raven::kArms) arms.command(arm, home);
+  }
   world.step(200);  // let bodies settle into contact first
   for (auto _ : state) world.step();
   state.counters["steps_per_s"] =
@@ -27,6 +40,21 @@ void BM_DemoScene(benchmark::State& state) {
   stepScene(state, ambf_like::loadLaunchFile(kExamples / "demo/launch.yaml", {}));
 }
 BENCHMARK(BM_DemoScene);
+
+void BM_OurRavenHoldingHome(benchmark::State& state) {
+  stepScene(state, ambf_like::loadLaunchFile(kRavenModels / "raven2/launch.yaml", {}), true);
+}
+BENCHMARK(BM_OurRavenHoldingHome);
+
+void BM_OurRavenDenseCollisionHoldingHome(benchmark::State& state) {
+  stepScene(state, ambf_like::loadLaunchFile(kDenseModels / "raven2/launch.yaml", {}), true);
+}
+BENCHMARK(BM_OurRavenDenseCollisionHoldingHome);
+
+void BM_PegTransferSceneAtRest(benchmark::State& state) {
+  stepScene(state, ambf_like::loadLaunchFile(kRavenModels / "peg_transfer/launch.yaml", {}), true);
+}
+BENCHMARK(BM_PegTransferSceneAtRest);
 
 void BM_AmbfRaven(benchmark::State& state) {
   const auto launch = kShared / "ambf/ambf_controller/raven2/launch.yaml";

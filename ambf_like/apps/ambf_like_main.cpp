@@ -70,6 +70,7 @@ nlohmann::json summarize(const ambf_like::LoadedScene& scene, const ambf_like::W
       {"joints", world.jointCount()},
       {"controllable_joints", controllable},
       {"collision_vertices", world.collisionVertexCount()},
+      {"collision_primitives", world.collisionPrimitiveCount()},
       {"warnings", scene.warnings.size()},
       {"steps", world.stepCount()},
       {"step_size_s", world.stepSize()},
@@ -91,9 +92,12 @@ void printSummary(const nlohmann::json& s) {
   std::printf("  models            : %zu\n", s["models"].size());
   for (const auto& m : s["models"])
     std::printf("                      %s\n", m.get<std::string>().c_str());
-  std::printf("  bodies            : %zu rigid (%zu static), %zu soft; %zu collision vertices\n",
+  std::printf("  bodies            : %zu rigid (%zu static), %zu soft\n",
               s["rigid_bodies"].get<std::size_t>(), s["static_bodies"].get<std::size_t>(),
-              s["soft_bodies"].get<std::size_t>(), s["collision_vertices"].get<std::size_t>());
+              s["soft_bodies"].get<std::size_t>());
+  std::printf("  collision shapes  : %zu mesh vertices, %zu primitives\n",
+              s["collision_vertices"].get<std::size_t>(),
+              s["collision_primitives"].get<std::size_t>());
   std::printf("  joints            : %zu (%zu take commands)\n", s["joints"].get<std::size_t>(),
               s["controllable_joints"].get<std::size_t>());
   std::printf("  simulated         : %llu steps of %.3f ms = %.3f s\n",

@@ -106,7 +106,7 @@ void readSpringValues(const YamlView& node, JointSpec& joint) {
 constexpr std::string_view kJointKeys[] = {
     "name", "namespace", "parent", "child", "parent axis", "parent pivot", "child axis",
     "child pivot", "type", "joint limits", "offset", "child offset", "joint offset", "controller",
-    "controller output type", "max motor impulse", "damping", "stiffness", "equilibrium point",
+    "controller output type", "max motor impulse", "max velocity", "damping", "stiffness", "equilibrium point",
     "enable motor", "enable feedback", "joint erp", "joint cfm", "ignore inter-collision",
     "passive", "publish frequency"};
 // clang-format on
@@ -169,6 +169,10 @@ JointSpec readJoint(const YamlView& node, const std::string& identifier,
   if (auto v = node.find("max motor impulse")) {
     joint.max_motor_impulse = v->asDouble();
     if (joint.max_motor_impulse < 0.0) v->fail("max motor impulse must not be negative");
+  }
+  if (auto v = node.find("max velocity")) {
+    joint.max_velocity = v->asDouble();
+    if (*joint.max_velocity <= 0.0) v->fail("max velocity must be positive");
   }
   joint.enable_motor = node.getBool("enable motor", true);
   joint.enable_feedback = node.getBool("enable feedback", false);

@@ -152,7 +152,7 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
   // physics does not use them.
   root.checkSectionKeys(
       {"adf version", "namespace", "enclosure", "enclosure size", "lights", "cameras",
-       "environment", "skybox", "max iterations", "gravity", "shaders", "plugins"},
+       "environment", "skybox", "max iterations", "gravity", "shaders", "plugins", "ambf_like"},
       context.keyCheck());
   WorldSpec world;
   world.file = file;
@@ -161,6 +161,17 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
   if (auto iterations = root.find("max iterations")) {
     world.max_iterations = iterations->asInt();
     if (world.max_iterations < 1) iterations->fail("max iterations must be at least 1");
+  }
+  if (auto own = root.find("ambf_like")) {
+    own->checkKeys({"solver iterations", "soft body sdf voxel size"}, context.keyCheck());
+    if (auto v = own->find("solver iterations")) {
+      world.solver_iterations = v->asInt();
+      if (*world.solver_iterations < 1) v->fail("solver iterations must be at least 1");
+    }
+    if (auto v = own->find("soft body sdf voxel size")) {
+      world.sdf_voxel_size = v->asDouble();
+      if (*world.sdf_voxel_size <= 0.0) v->fail("the voxel size must be positive");
+    }
   }
   environment.reset();
   if (auto env = root.find("environment")) {

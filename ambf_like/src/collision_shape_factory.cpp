@@ -163,6 +163,7 @@ BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& 
   if (mesh) {
     out.shape = makeMeshShape(body, *mesh, body_in_com, store);
   } else if (!collision.primitives.empty()) {
+    out.primitive_count = collision.primitives.size();
     std::vector<std::pair<btCollisionShape*, Transform>> children;
     for (const auto& primitive : collision.primitives) {
       const Transform offset =

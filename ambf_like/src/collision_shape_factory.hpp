@@ -36,7 +36,8 @@ struct BodyShape {
   btCollisionShape* shape = nullptr;  ///< null when the body has no collision geometry
   Transform com_in_body = Transform::Identity();
   Vec3 local_inertia = Vec3::Zero();
-  std::size_t vertex_count = 0;  ///< collision vertices (primitives count as 0)
+  std::size_t vertex_count = 0;     ///< collision mesh vertices
+  std::size_t primitive_count = 0;  ///< collision primitives
 };
 
 BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& store);

@@ -183,6 +183,8 @@ void Joint::release() {
 }
 
 void Joint::driveMotor(bool on, double velocity, double max_impulse, double dt) {
+  if (spec_.max_velocity)
+    velocity = std::clamp(velocity, -*spec_.max_velocity, *spec_.max_velocity);
   if (spec_.type == JointType::Prismatic) {
     auto& six = static_cast<btGeneric6DofSpring2Constraint&>(*constraint_);
     six.enableMotor(0, on);
@@ -222,8 +224,10 @@ double Joint::drivenEffort(double dt) {
           driveMotor(true, output, spec_.max_motor_impulse, dt);
           return 0.0;
         case ControlOutput::Position:
-          // Close half the error each step: the deadbeat e/dt is only marginally stable in
-          // Bullet's iterative solver (a slider then oscillates step to step).
+          // Close half the error each step (the deadbeat e/dt is only marginally stable in
+          // Bullet's iterative solver: a slider then oscillates step to step), no faster than
+          // `max velocity` (driveMotor caps it): without a cap a large jump asks for hundreds of
+          // rad/s and the torque-limited joint overshoots wildly.
           driveMotor(true, error / (2.0 * dt), spec_.max_motor_impulse, dt);
           return 0.0;
       }

@@ -77,6 +77,7 @@ struct World::Impl {
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
   std::size_t collision_vertices = 0;
+  std::size_t collision_primitives = 0;
   double time = 0.0;
   std::uint64_t steps = 0;
 
@@ -84,11 +85,13 @@ struct World::Impl {
     btGImpactCollisionAlgorithm::registerAlgorithm(&dispatcher);
     world.getPairCache()->setOverlapFilterCallback(&filter);
     world.setGravity(toBt(settings.gravity));
-    world.getSolverInfo().m_numIterations = options.solver_iterations;
+    world.getSolverInfo().m_numIterations =
+        options.solver_iterations.value_or(settings.solver_iterations.value_or(10));
     auto& info = world.getWorldInfo();
     info.m_gravity = toBt(settings.gravity);
     info.air_density = 1.2;
-    info.m_sparsesdf.setDefaultVoxelsz(options.sdf_voxel_size);
+    info.m_sparsesdf.setDefaultVoxelsz(
+        options.sdf_voxel_size.value_or(settings.sdf_voxel_size.value_or(0.01)));
     info.m_sparsesdf.Reset();
   }
 
@@ -108,6 +111,7 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
   const auto shape = detail::buildBodyShape(spec, meshes, shapes);
   com_in_body = shape.com_in_body;
   collision_vertices += shape.vertex_count;
+  collision_primitives += shape.primitive_count;
 
   btRigidBody::btRigidBodyConstructionInfo info(
       spec.mass, nullptr, shape.shape ? shape.shape : &no_geometry, toBt(shape.local_inertia));
@@ -189,7 +193,11 @@ void World::step() {
   for (auto& j : impl_->joints) j->joint->applyControl(h);
   impl_->world.stepSimulation(h, 0, h);
   for (auto& j : impl_->joints) j->joint->updateCoordinate();
-  if (!impl_->soft_bodies.empty()) impl_->world.getWorldInfo().m_sparsesdf.GarbageCollect();
+  // The sparse SDF frees cells unused for 256 collections; a collection walks every hash bucket,
+  // so it runs every 64 steps (cells then live 16k steps unused).
+  if (!impl_->soft_bodies.empty() && impl_->steps % 64 == 0) {
+    impl_->world.getWorldInfo().m_sparsesdf.GarbageCollect();
+  }
   ++impl_->steps;
   impl_->time = static_cast<double>(impl_->steps) * h;
 }
@@ -291,6 +299,10 @@ bool World::isFinite() const {
 
 std::size_t World::collisionVertexCount() const {
   return impl_->collision_vertices;
+}
+
+std::size_t World::collisionPrimitiveCount() const {
+  return impl_->collision_primitives;
 }
 
 }  // namespace ambf_like

@@ -200,6 +200,20 @@ TEST(AdfSemantics, LaunchFileSelectionWorldAndExtraFiles) {
   EXPECT_EQ(ambf_like::loadLaunchFile(launch, {}).spec.models.size(), 3u);  // no -l: all entries
 }
 
+TEST(AdfSemantics, WorldFileCarriesThisSimulatorsOwnSettings) {
+  TempDir dir;
+  dir.write("m.yaml", "bodies: [BODY b]\nBODY b: {mass: 0}\n");
+  dir.write("world.yaml", "ambf_like: {solver iterations: 25, soft body sdf voxel size: 0.002}\n");
+  const auto launch =
+      dir.write("launch.yaml", "world config: world.yaml\nmultibody configs:\n  - m.yaml\n");
+  const auto scene = ambf_like::loadLaunchFile(launch, {});
+  EXPECT_EQ(scene.spec.world.solver_iterations, 25);
+  EXPECT_EQ(scene.spec.world.sdf_voxel_size, 0.002);
+  dir.write("world.yaml", "ambf_like: {solver iteration: 25}\n");
+  EXPECT_THAT(test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); }),
+              testing::HasSubstr("did you mean 'solver iterations'"));
+}
+
 TEST(AdfSemantics, ModelAndBodyGravityOverrideTheWorld) {
   TempDir dir;
   const auto file = dir.write(

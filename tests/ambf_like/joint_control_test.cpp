@@ -150,6 +150,25 @@ TEST_F(JointControl, VelocityCommandIsTracked) {
   EXPECT_NEAR(link.velocity(), 0.8, 1e-3);
 }
 
+TEST_F(JointControl, MaxVelocityCapsVelocityCommandsAndThePositionServo) {
+  auto sim = load(kVerticalAxis, "  max motor impulse: 1.0\n  max velocity: 0.5\n");
+  auto& world = *sim->world;
+  auto& link = world.joint("base-link");
+  link.commandVelocity(3.0);
+  world.step(200);
+  EXPECT_NEAR(link.velocity(), 0.5, 1e-3);
+  link.release();
+  world.step(500);
+  link.commandPosition(-1.0);  // default velocity-output PID: capped travel, then P = 10
+  double fastest = 0.0;
+  for (int i = 0; i < 5000; ++i) {
+    world.step();
+    fastest = std::max(fastest, std::abs(link.velocity()));
+  }
+  EXPECT_LT(fastest, 0.5 + 1e-3);
+  EXPECT_NEAR(link.position(), -1.0, 1e-3);
+}
+
 TEST_F(JointControl, PositionCommandsAreClampedToTheLimits) {
   auto sim = load(kVerticalAxis, "  controller: {P: 20, I: 0, D: 2}\n");
   auto& world = *sim->world;

@@ -69,6 +69,9 @@ struct JointSpec {
   PidGains controller{10.0, 0.0, 1.0};
   ControlOutput output = ControlOutput::Velocity;
   double max_motor_impulse = 0.1;
+  /// Speed limit of the joint's motor (rad/s or m/s), an ambf_like extension (`max velocity`):
+  /// caps velocity commands and the speed a position servo may ask for. Empty: no cap.
+  std::optional<double> max_velocity;
   double damping = 0.0;
   std::optional<double> stiffness;          ///< springs; empty: derived from the body masses
   std::optional<double> equilibrium_point;  ///< springs; empty: mid-range

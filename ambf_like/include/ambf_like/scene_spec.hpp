@@ -30,6 +30,10 @@ struct WorldSpec {
   std::string name_space = "/ambf/env/";
   Vec3 gravity{0.0, 0.0, -9.81};
   int max_iterations = 10;  ///< Bullet max sub-steps per outer iteration
+  /// This simulator's own settings (an `ambf_like:` block AMBF ignores); WorldOptions given in
+  /// code take precedence.
+  std::optional<int> solver_iterations;
+  std::optional<double> sdf_voxel_size;
 };
 
 /// Everything needed to build a simulation.

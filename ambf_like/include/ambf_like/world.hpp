@@ -18,9 +18,13 @@ namespace ambf_like {
 
 /// World settings that are not part of the model files.
 struct WorldOptions {
-  double step_size = 0.001;      ///< fixed internal step (s); AMBF uses 1 ms
-  int solver_iterations = 10;    ///< sequential-impulse iterations per step (Bullet's default)
-  double sdf_voxel_size = 0.25;  ///< soft-vs-rigid signed-distance grid (Bullet's default, m)
+  double step_size = 0.001;  ///< fixed internal step (s); AMBF uses 1 ms
+  /// Sequential-impulse iterations per step; unset: the world file's, else Bullet's 10.
+  std::optional<int> solver_iterations;
+  /// Soft-vs-rigid signed-distance grid (m); unset: the world file's, else 0.01. Bullet's own
+  /// 0.25 m cannot represent rigid parts thinner than a few voxels (a 10 mm board lets soft
+  /// bodies sink through it).
+  std::optional<double> sdf_voxel_size;
 };
 
 /// One contact point between two bodies after the last step.
@@ -76,6 +80,8 @@ class World {
   bool isFinite() const;
   /// Vertices of every mesh collision shape (primitives count as none).
   std::size_t collisionVertexCount() const;
+  /// Primitive collision shapes (boxes, spheres, cylinders, capsules, cones, planes).
+  std::size_t collisionPrimitiveCount() const;
 
  private:
   struct Impl;

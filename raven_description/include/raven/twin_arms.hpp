@@ -1,0 +1,51 @@
+#pragma once
+// The arm layer over a simulated Raven-II: both arms' joint vectors, in a platform profile's
+// convention, mapped onto a World's joints, whichever model (ours or AMBF's) is loaded.
+
+#include <array>
+#include <string>
+
+#include "ambf_like/world.hpp"
+#include "raven/arm.hpp"
+
+namespace raven {
+
+/// Where one Raven joint lives in a simulated model: model value = scale * joint + offset.
+struct JointBinding {
+  std::string name;  ///< the World's joint name (qualified or unique plain name)
+  double scale = 1.0;
+  double offset = 0.0;
+};
+
+/// The seven joints of each arm in a model.
+struct ArmBindings {
+  std::array<std::array<JointBinding, kJointCount>, 2> joints;
+
+  /// This project's Raven-II (raven_description/models): joints named /raven2/<arm>/<joint>.
+  static ArmBindings ourRaven();
+  /// AMBF's blender-raven2.yaml, driven with the `ambf` profile as the paper's controller drove
+  /// it: joint values as they are, except the right arm's jaws, which AMBF turns the other way.
+  static ArmBindings ambfRaven();
+};
+
+/// Commands and reads both arms of a Raven-II inside a World.
+class TwinArms {
+ public:
+  /// Throws std::out_of_range naming the first bound joint the World does not have.
+  TwinArms(ambf_like::World& world, const ArmBindings& bindings);
+
+  /// Position command for every joint of `arm` (each clamped by its joint's limits in the model).
+  /// Throws std::invalid_argument, before moving anything, if a value is NaN or infinite.
+  void command(Arm arm, const ArmJoints& joints);
+  ArmJoints measured(Arm arm) const;
+  ArmJoints velocities(Arm arm) const;
+
+ private:
+  struct Bound {
+    ambf_like::Joint* joint;
+    double scale, offset;
+  };
+  std::array<std::array<Bound, kJointCount>, 2> bound_;
+};
+
+}  // namespace raven

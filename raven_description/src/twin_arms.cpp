@@ -1,0 +1,78 @@
+#include "raven/twin_arms.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace raven {
+
+ArmBindings ArmBindings::ourRaven() {
+  ArmBindings b;
+  for (Arm arm : kArms) {
+    for (int i = 0; i < kJointCount; ++i) {
+      b.joints[static_cast<std::size_t>(index(arm))][static_cast<std::size_t>(i)].name =
+          "/raven2/" + std::string(armName(arm)) + "/" +
+          std::string(kJointNames[static_cast<std::size_t>(i)]);
+    }
+  }
+  return b;
+}
+
+ArmBindings ArmBindings::ambfRaven() {
+  ArmBindings b;
+  for (Arm arm : kArms) {
+    const std::string s = arm == Arm::Left ? "L" : "R";
+    const std::array<std::string, kJointCount> names{"base_link_" + s + "-link1_" + s,
+                                                     "link1_" + s + "-link2_" + s,
+                                                     "link2_" + s + "-link3_" + s,
+                                                     "link3_" + s + "-instrument_shaft_" + s,
+                                                     "instrument_shaft_" + s + "-wrist_" + s,
+                                                     "wrist_" + s + "-grasper1_" + s,
+                                                     "wrist_" + s + "-grasper2_" + s};
+    for (int i = 0; i < kJointCount; ++i) {
+      auto& joint = b.joints[static_cast<std::size_t>(index(arm))][static_cast<std::size_t>(i)];
+      joint.name = names[static_cast<std::size_t>(i)];
+      if (arm == Arm::Right && (i == kJaw1 || i == kJaw2)) joint.scale = -1.0;
+    }
+  }
+  return b;
+}
+
+TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings) {
+  for (std::size_t a = 0; a < 2; ++a) {
+    for (std::size_t i = 0; i < kJointCount; ++i) {
+      const auto& b = bindings.joints[a][i];
+      bound_[a][i] = {&world.joint(b.name), b.scale, b.offset};
+    }
+  }
+}
+
+void TwinArms::command(Arm arm, const ArmJoints& joints) {
+  if (!joints.allFinite()) {
+    throw std::invalid_argument(std::string(armName(arm)) +
+                                " arm: joint command holds NaN or inf; nothing moved");
+  }
+  for (std::size_t i = 0; i < kJointCount; ++i) {
+    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    b.joint->commandPosition(b.scale * joints(static_cast<int>(i)) + b.offset);
+  }
+}
+
+ArmJoints TwinArms::measured(Arm arm) const {
+  ArmJoints q;
+  for (std::size_t i = 0; i < kJointCount; ++i) {
+    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    q(static_cast<int>(i)) = (b.joint->position() - b.offset) / b.scale;
+  }
+  return q;
+}
+
+ArmJoints TwinArms::velocities(Arm arm) const {
+  ArmJoints v;
+  for (std::size_t i = 0; i < kJointCount; ++i) {
+    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    v(static_cast<int>(i)) = b.joint->velocity() / b.scale;
+  }
+  return v;
+}
+
+}  // namespace raven
