@@ -46,6 +46,35 @@ TEST(Contact, BoxDroppedOnAPlaneRestsOnIt) {
   EXPECT_LE(c.distance, 1e-3);
 }
 
+/// A 10 cm cube mesh as a dynamic body of the given collision mesh type, dropped on the plane.
+double restingHeightOfCubeMesh(const std::string& mesh_type) {
+  test_support::TempDir dir;
+  dir.write("cube.obj",
+            "v -0.05 -0.05 -0.05\nv 0.05 -0.05 -0.05\nv 0.05 0.05 -0.05\nv -0.05 0.05 -0.05\n"
+            "v -0.05 -0.05 0.05\nv 0.05 -0.05 0.05\nv 0.05 0.05 0.05\nv -0.05 0.05 0.05\n"
+            "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\n"
+            "f 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n");
+  const auto file = dir.write("drop.yaml", "bodies: [BODY ground, BODY cube]\n" + kGround +
+                                               "BODY cube:\n"
+                                               "  name: cube\n"
+                                               "  mass: 0.5\n"
+                                               "  mesh: cube.obj\n"
+                                               "  collision mesh type: " +
+                                               mesh_type +
+                                               "\n"
+                                               "  location: {position: {x: 0, y: 0, z: 0.5}}\n");
+  auto sim = test_support::simulate({file});
+  sim->world->step(3000);
+  return sim->world->body("cube").pose().translation().z();
+}
+
+TEST(Contact, EveryCollisionMeshTypeRestsOnThePlane) {
+  for (const char* type : {"CONCAVE_MESH", "CONVEX_MESH", "CONVEX_HULL"}) {
+    // GImpact meshes keep their margin outside the surface, hence the looser bound.
+    EXPECT_NEAR(restingHeightOfCubeMesh(type), 0.05, 2.5e-3) << type;
+  }
+}
+
 TEST(Contact, SoftBodyDroppedOnAPlaneRestsOnIt) {
   test_support::TempDir dir;
   const double margin = 0.002;

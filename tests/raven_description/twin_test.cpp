@@ -148,6 +148,11 @@ TEST(Twin, FollowsAJointStepAtTheVelocityCapsUnderGravity) {
   twin.world.step(300);
   for (Arm arm : raven::kArms) {
     const ArmJoints error = (twin.arms.measured(arm) - goal).cwiseAbs();
+    const std::string side(raven::armName(arm));
+    RecordProperty(side + "_insertion_error_m", std::to_string(error(raven::kInsertion)));
+    RecordProperty(
+        side + "_worst_revolute_error_rad",
+        std::to_string(std::max(error.head<2>().maxCoeff(), error.tail<4>().maxCoeff())));
     EXPECT_LT(error(raven::kInsertion), 0.05e-3) << raven::armName(arm);
     for (int i : {0, 1, 3, 4, 5, 6})
       EXPECT_LT(error(i), 1e-3) << raven::armName(arm) << " joint " << i;
