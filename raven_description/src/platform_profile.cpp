@@ -78,8 +78,9 @@ PlatformProfile loadPlatformProfile(const std::filesystem::path& file) {
     profile.firmware_kinematics = readConventions(*firmware, warnings);
   }
   const auto joints = root["joints"];
-  joints.checkKeys({"home", "limits"}, {true, warnings});
+  joints.checkKeys({"home", "robot_home", "limits"}, {true, warnings});
   profile.home = readJoints(joints["home"]);
+  if (auto robot_home = joints.find("robot_home")) profile.robot_home = readJoints(*robot_home);
   const auto limits = joints["limits"];
   limits.checkKeys({"low", "high"}, {true, warnings});
   profile.limits.low = readJoints(limits["low"]);
@@ -88,9 +89,13 @@ PlatformProfile loadPlatformProfile(const std::filesystem::path& file) {
     if (profile.limits.low(i) > profile.limits.high(i)) {
       limits.fail("low > high for joint " + std::string(kJointNames[static_cast<std::size_t>(i)]));
     }
-    if (profile.home(i) < profile.limits.low(i) || profile.home(i) > profile.limits.high(i)) {
-      joints["home"].fail("home " + std::string(kJointNames[static_cast<std::size_t>(i)]) +
-                          " is outside the limits");
+    const std::string name(kJointNames[static_cast<std::size_t>(i)]);
+    const auto outside = [&](const ArmJoints& q) {
+      return q(i) < profile.limits.low(i) || q(i) > profile.limits.high(i);
+    };
+    if (outside(profile.home)) joints["home"].fail("home " + name + " is outside the limits");
+    if (profile.robot_home && outside(*profile.robot_home)) {
+      joints["robot_home"].fail("robot_home " + name + " is outside the limits");
     }
   }
   if (!warnings.empty())
@@ -100,6 +105,10 @@ PlatformProfile loadPlatformProfile(const std::filesystem::path& file) {
 
 std::filesystem::path profileDirectory() {
   return RAVEN_PROFILE_DIR;
+}
+
+std::filesystem::path modelDirectory() {
+  return RAVEN_MODEL_DIR;
 }
 
 PlatformProfile builtinProfile(const std::string& name) {

@@ -57,22 +57,25 @@ void TwinArms::command(Arm arm, const ArmJoints& joints) {
   }
 }
 
-ArmJoints TwinArms::measured(Arm arm) const {
-  ArmJoints q;
+template <typename Read>
+ArmJoints TwinArms::read(Arm arm, Read read) const {
+  ArmJoints out;
   for (std::size_t i = 0; i < kJointCount; ++i) {
-    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
-    q(static_cast<int>(i)) = (b.joint->position() - b.offset) / b.scale;
+    out(static_cast<int>(i)) = read(bound_[static_cast<std::size_t>(index(arm))][i]);
   }
-  return q;
+  return out;
+}
+
+ArmJoints TwinArms::measured(Arm arm) const {
+  return read(arm, [](const Bound& b) { return (b.joint->position() - b.offset) / b.scale; });
 }
 
 ArmJoints TwinArms::velocities(Arm arm) const {
-  ArmJoints v;
-  for (std::size_t i = 0; i < kJointCount; ++i) {
-    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
-    v(static_cast<int>(i)) = b.joint->velocity() / b.scale;
-  }
-  return v;
+  return read(arm, [](const Bound& b) { return b.joint->velocity() / b.scale; });
+}
+
+ArmJoints TwinArms::efforts(Arm arm) const {
+  return read(arm, [](const Bound& b) { return b.joint->effort() * b.scale; });
 }
 
 }  // namespace raven

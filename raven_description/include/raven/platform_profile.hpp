@@ -27,9 +27,19 @@ struct PlatformProfile {
   /// in each arm's base frame; absent for simulated platforms.
   std::optional<std::array<ArmConvention, 2>> firmware_kinematics;
   ArmJoints home = ArmJoints::Zero();
+  /// Where the robot's own `home` command takes the arms (the firmware's homing target);
+  /// absent: `home`.
+  std::optional<ArmJoints> robot_home;
   JointLimits limits;
 
   const ArmConvention& arm(Arm a) const { return kinematics[static_cast<std::size_t>(index(a))]; }
+  /// The chain the platform reports Cartesian poses in: the firmware's when the profile has
+  /// one, else the controller's.
+  const ArmConvention& reportingArm(Arm a) const {
+    const auto& chains = firmware_kinematics ? *firmware_kinematics : kinematics;
+    return chains[static_cast<std::size_t>(index(a))];
+  }
+  const ArmJoints& robotHome() const { return robot_home ? *robot_home : home; }
 };
 
 /// Reads a profile file; throws std::runtime_error naming the file and key on bad input.
@@ -40,5 +50,8 @@ PlatformProfile builtinProfile(const std::string& name);
 
 /// Where the shipped profiles live.
 std::filesystem::path profileDirectory();
+
+/// Where this project's models live (raven2/, peg_transfer/).
+std::filesystem::path modelDirectory();
 
 }  // namespace raven

@@ -39,12 +39,16 @@ class TwinArms {
   void command(Arm arm, const ArmJoints& joints);
   ArmJoints measured(Arm arm) const;
   ArmJoints velocities(Arm arm) const;
+  /// Joint torques (N m) and the insertion force (N) the drives exert, in the arm's sense.
+  ArmJoints efforts(Arm arm) const;
 
  private:
   struct Bound {
     ambf_like::Joint* joint;
     double scale, offset;
   };
+  template <typename Read>
+  ArmJoints read(Arm arm, Read read) const;
   std::array<std::array<Bound, kJointCount>, 2> bound_;
 };
 

@@ -1,0 +1,24 @@
+#pragma once
+// The twin's own actuators: stiff joint position servos that reach each setpoint within the
+// cycle, read back exactly from the simulation.
+
+#include "bridge/actuation.hpp"
+#include "bridge/drive_train.hpp"
+#include "raven/twin_arms.hpp"
+
+namespace bridge {
+
+/// Setpoints go straight to the model's position servos; readings are the simulated joints.
+class IdealActuation final : public Actuation {
+ public:
+  IdealActuation(raven::TwinArms& arms, DriveTrain drive) : arms_(arms), drive_(drive) {}
+  void drive(raven::Arm arm, const raven::ArmJoints& setpoint,
+             const raven::ArmJoints& setpoint_velocity) override;
+  ActuatorReadings read(raven::Arm arm) const override;
+
+ private:
+  raven::TwinArms& arms_;
+  DriveTrain drive_;
+};
+
+}  // namespace bridge

@@ -1,0 +1,26 @@
+#pragma once
+// Logs a warning the first time it occurs and then at most once a second with a repeat count,
+// so a 1 kHz stream of bad commands cannot flood the log.
+
+#include <map>
+#include <string>
+
+namespace bridge {
+
+/// Rate-limited warnings, one budget per key (keep keys few: e.g. the command's name), timed by
+/// the caller's clock.
+class ThrottledLog {
+ public:
+  explicit ThrottledLog(double interval = 1.0) : interval_(interval) {}
+  void warn(const std::string& key, const std::string& message, double now);
+
+ private:
+  struct Seen {
+    double last_logged;
+    long suppressed;
+  };
+  double interval_;
+  std::map<std::string, Seen> seen_;
+};
+
+}  // namespace bridge

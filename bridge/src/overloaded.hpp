@@ -1,0 +1,11 @@
+#pragma once
+// Builds one std::visit visitor from several lambdas.
+
+namespace bridge {
+
+template <typename... Ts>
+struct Overloaded : Ts... {
+  using Ts::operator()...;
+};
+
+}  // namespace bridge
