@@ -11,7 +11,7 @@ packages=(
   libroscpp-dev libstd-msgs-dev libsensor-msgs-dev libgeometry-msgs-dev
   ros-std-msgs ros-sensor-msgs ros-geometry-msgs
   python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag
-  python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg
+  python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg python3-genpy
 )
 
 missing=()

@@ -1,6 +1,6 @@
 #include "bridge/platform_command.hpp"
 
-#include "overloaded.hpp"
+#include "bridge/overloaded.hpp"
 
 namespace bridge {
 

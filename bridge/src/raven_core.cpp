@@ -5,7 +5,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "overloaded.hpp"
+#include "bridge/command_checks.hpp"
+#include "bridge/overloaded.hpp"
 
 namespace bridge {
 
@@ -15,17 +16,6 @@ using raven::kJointCount;
 
 std::string jointName(int i) {
   return std::string(raven::kJointNames[static_cast<std::size_t>(i)]);
-}
-
-const char* unit(int joint) {
-  return joint == raven::kInsertion ? "m" : "rad";
-}
-
-std::optional<std::string> nonFinite(const ArmJoints& q) {
-  for (int i = 0; i < kJointCount; ++i) {
-    if (!std::isfinite(q(i))) return "joint '" + jointName(i) + "' is NaN or infinite";
-  }
-  return std::nullopt;
 }
 
 }  // namespace
@@ -73,7 +63,7 @@ CommandResult RavenCore::apply(const PlatformCommand& command) {
       },
       command);
   if (!result) {
-    log_.warn(describe(command), "refused " + describe(command) + ": " + result.note, time());
+    log_.warn("refused " + describe(command) + ": " + result.note, time());
   }
   return result;
 }
@@ -127,7 +117,7 @@ std::string RavenCore::clampToLimits(ArmJoints& q) const {
   for (int i = 0; i < kJointCount; ++i) {
     if (q(i) != before(i)) {
       note << (note.tellp() > 0 ? ", " : "clamped ") << jointName(i) << " to " << q(i) << " "
-           << unit(i);
+           << jointUnit(i);
     }
   }
   return note.str();
@@ -135,17 +125,11 @@ std::string RavenCore::clampToLimits(ArmJoints& q) const {
 
 CommandResult RavenCore::servoTo(Arm arm, const ArmJoints& goal, bool check_jump) {
   if (auto why = motionRefusal()) return CommandResult::refused(*why);
-  if (auto why = nonFinite(goal)) return CommandResult::refused(*why + "; nothing moved");
+  if (auto why = nonFiniteJoint(goal)) return CommandResult::refused(*why + "; nothing moved");
   ArmMotion& m = arms_[slot(arm)];
-  const ArmJoints max_jump = limits_.maxJump();
-  for (int i = 0; check_jump && i < kJointCount; ++i) {
-    const double jump = std::abs(goal(i) - m.setpoint(i));
-    if (jump > max_jump(i) * (1.0 + 1e-9)) {
-      std::ostringstream why;
-      why << "joint '" << jointName(i) << "' would jump " << jump << " " << unit(i)
-          << ", more than " << limits_.jump_cycles << " cycles of motion (" << max_jump(i) << " "
-          << unit(i) << "); nothing moved";
-      return CommandResult::refused(why.str());
+  if (check_jump) {
+    if (auto why = jumpRefusal(goal, m.setpoint, limits_)) {
+      return CommandResult::refused(*why + "; nothing moved");
     }
   }
   ArmJoints clamped = goal;
@@ -184,7 +168,7 @@ CommandResult RavenCore::servoToPose(Arm arm, const Eigen::Isometry3d& pose) {
 
 CommandResult RavenCore::moveTo(Arm arm, const ArmJoints& goal) {
   if (auto why = motionRefusal()) return CommandResult::refused(*why);
-  if (auto why = nonFinite(goal)) return CommandResult::refused(*why + "; nothing moved");
+  if (auto why = nonFiniteJoint(goal)) return CommandResult::refused(*why + "; nothing moved");
   ArmJoints clamped = goal;
   std::string note = clampToLimits(clamped);
   startMove(arm, clamped);

@@ -4,7 +4,8 @@
 
 namespace bridge {
 
-void ThrottledLog::warn(const std::string& key, const std::string& message, double now) {
+void ThrottledLog::warn(const std::string& message, double now) {
+  const std::string key = message.substr(0, message.find_first_of("0123456789"));
   auto [it, first] = seen_.try_emplace(key, Seen{now, 0});
   if (first) {
     spdlog::warn("{}", message);
@@ -15,7 +16,7 @@ void ThrottledLog::warn(const std::string& key, const std::string& message, doub
     ++seen.suppressed;
     return;
   }
-  spdlog::warn("{} ({} more refusals of {} since the last report)", message, seen.suppressed, key);
+  spdlog::warn("{} ({} more like it since the last report)", message, seen.suppressed);
   seen = {now, 0};
 }
 

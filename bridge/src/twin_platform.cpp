@@ -38,7 +38,7 @@ std::array<ActuatorReadings, 2> readAll(const Actuation& actuation) {
 }  // namespace
 
 TwinPlatform::TwinPlatform(const TwinOptions& options)
-    : scene_(ambf_like::loadLaunchFile(options.launch_file, {})),
+    : scene_(ambf_like::loadLaunchFile(options.launch_file, {}, options.load)),
       world_(scene_.spec, meshes_, worldOptions(options.limits)),
       arms_(world_, options.bindings),
       drive_(DriveTrain::raven2()),

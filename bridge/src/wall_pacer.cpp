@@ -6,23 +6,23 @@
 
 namespace bridge {
 
-void WallPacer::waitUntil(double platform_time) {
+double WallPacer::secondsUntil(double platform_time) {
   const auto now = Clock::now();
   const auto offset =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(platform_time));
   if (!epoch_) epoch_ = now - offset;
-  const auto due = *epoch_ + offset;
-  const double late = std::chrono::duration<double>(now - due).count();
+  const double late = std::chrono::duration<double>(now - (*epoch_ + offset)).count();
   if (late > max_lag_) {
     spdlog::warn("{:.0f} ms behind the wall clock; carrying on from now", late * 1e3);
     epoch_ = now - offset;
-    return;
+    return 0.0;
   }
-  std::this_thread::sleep_until(due);
+  return -late;
 }
 
-double WallPacer::elapsed() const {
-  return epoch_ ? std::chrono::duration<double>(Clock::now() - *epoch_).count() : 0.0;
+void WallPacer::waitUntil(double platform_time) {
+  const double wait = secondsUntil(platform_time);
+  if (wait > 0.0) std::this_thread::sleep_for(std::chrono::duration<double>(wait));
 }
 
 }  // namespace bridge

@@ -8,6 +8,8 @@
 
 #include <cmath>
 
+#include "test_files.hpp"
+
 namespace {
 
 using bridge::Arm;
@@ -183,6 +185,33 @@ TEST(TwinPlatform, TheArmsHoldWhenTheControllerGoesSilent) {
   EXPECT_EQ(twin.setpointJs(Arm::Left).position, held_setpoint);
   EXPECT_LT(drift, 3e-4) << "more than two encoder counts of the roll";
   EXPECT_EQ(twin.operatingStatus().state, bridge::OperatingState::Enabled);
+}
+
+TEST(TwinPlatform, AmbfsOwnRavenIsDrivenThroughTheSamePlatformWithTheAmbfProfile) {
+  const auto shared = test_support::sharedDataDir();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent: AMBF's Raven-II model is needed";
+  bridge::TwinOptions options;
+  options.launch_file = shared / "ambf/ambf_controller/raven2/launch.yaml";
+  options.bindings = raven::ArmBindings::ambfRaven();
+  options.profile = "ambf";
+  options.load.skip_missing_files = true;  // base_link_L/R.STL are missing upstream
+  TwinPlatform twin(options);
+  makeReady(twin);
+  const auto ambf = raven::builtinProfile("ambf");
+  for (Arm arm : raven::kArms) {
+    EXPECT_LT((twin.setpointJs(arm).position - ambf.home).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  ArmJoints step = ArmJoints::Zero();
+  step(raven::kInsertion) = 0.0001;  // the cycle clamp's pace: 0.05 m/s
+  for (int k = 0; k < 50; ++k) {
+    ASSERT_TRUE(twin.send(bridge::ServoJr{Arm::Right, step}));
+    twin.advance(0.002);
+  }
+  EXPECT_NEAR(twin.setpointJs(Arm::Right).position(raven::kInsertion),
+              ambf.home(raven::kInsertion) + 0.005, 1e-12);
+  twin.advance(1.5);  // AMBF's own joint controllers settle in about half a second
+  EXPECT_NEAR(twin.measuredJs(Arm::Right).position(raven::kInsertion),
+              ambf.home(raven::kInsertion) + 0.005, 1e-4);
 }
 
 TEST(TwinPlatform, AdvanceRefusesNegativeOrNonFiniteTime) {

@@ -23,7 +23,10 @@ struct OperatingStatus {
 
   /// CRTK's "ready": enabled and homed.
   bool ready() const { return state == OperatingState::Enabled && is_homed; }
-  bool operator==(const OperatingStatus&) const = default;
+  bool operator==(const OperatingStatus& o) const {
+    return state == o.state && is_homed == o.is_homed && is_busy == o.is_busy;
+  }
+  bool operator!=(const OperatingStatus& o) const { return !(*this == o); }
 };
 
 /// "DISABLED", "ENABLED", "PAUSED", "FAULT".

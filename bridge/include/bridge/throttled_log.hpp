@@ -7,12 +7,12 @@
 
 namespace bridge {
 
-/// Rate-limited warnings, one budget per key (keep keys few: e.g. the command's name), timed by
-/// the caller's clock.
+/// Rate-limited warnings timed by the caller's clock. Messages that differ only in their numbers
+/// (the text from the first digit on) share one budget.
 class ThrottledLog {
  public:
   explicit ThrottledLog(double interval = 1.0) : interval_(interval) {}
-  void warn(const std::string& key, const std::string& message, double now);
+  void warn(const std::string& message, double now);
 
  private:
   struct Seen {

@@ -22,6 +22,9 @@ namespace bridge {
 struct TwinOptions {
   /// A launch file with the robot (and perhaps a scene); default: our Raven-II alone.
   std::filesystem::path launch_file = raven::modelDirectory() / "raven2" / "launch.yaml";
+  /// How strictly the model files are read (AMBF's own Raven-II needs skip_missing_files: two of
+  /// its meshes are missing upstream).
+  ambf_like::LoadOptions load;
   raven::ArmBindings bindings = raven::ArmBindings::ourRaven();
   /// "physical" (our model) or "ambf" (AMBF's blender-raven2.yaml), or a profile file.
   std::string profile = "physical";

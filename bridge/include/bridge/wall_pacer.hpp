@@ -13,8 +13,8 @@ class WallPacer {
   explicit WallPacer(double max_lag = 0.1) : max_lag_(max_lag) {}
   /// Returns when `platform_time` is due (at once if it is already past).
   void waitUntil(double platform_time);
-  /// Wall seconds since the epoch (0 before the first call).
-  double elapsed() const;
+  /// Wall seconds until `platform_time` is due (<= 0: it is due).
+  double secondsUntil(double platform_time);
 
  private:
   using Clock = std::chrono::steady_clock;

@@ -1,0 +1,57 @@
+#pragma once
+// Between the platform's SI values and the Raven-II's ROS messages: joint states, transforms,
+// operating states and raven_state. Reading a message checks it and says what is wrong.
+// Includes ROS 1 message headers: C++17 translation units only.
+
+#include <crtk_msgs/operating_state.h>
+#include <geometry_msgs/Transform.h>
+#include <geometry_msgs/TransformStamped.h>
+#include <raven_2/raven_state.h>
+#include <sensor_msgs/JointState.h>
+
+#include <optional>
+#include <string>
+
+#include "bridge/raven_platform.hpp"
+
+namespace bridge::ros1 {
+
+/// A value read from a message, or why it could not be.
+template <typename T>
+struct Parsed {
+  std::optional<T> value;
+  std::string error;
+
+  static Parsed ok(T v) { return {std::move(v), {}}; }
+  static Parsed fail(std::string why) { return {std::nullopt, std::move(why)}; }
+};
+
+/// One arm's joints from a command's `position`: 7 values, or the paper's controller's 15
+/// (7 used, then 8 that must be 0). Every value must be finite.
+Parsed<ArmJoints> armJointsFromCommand(const sensor_msgs::JointState& message);
+/// A grasper command's value: position[0], finite.
+Parsed<double> graspFromCommand(const sensor_msgs::JointState& message);
+/// A rigid transform; the quaternion must be finite and of unit length (within 1e-3).
+/// `zero_is_identity`: an all-zero quaternion (an unset field) means no rotation.
+Parsed<Eigen::Isometry3d> poseFromTransform(const geometry_msgs::Transform& message,
+                                            bool zero_is_identity = false);
+
+/// measured_js / setpoint_js of one arm: names "<colour>_shoulder", ..., SI units.
+sensor_msgs::JointState toJointState(const JointSample& sample, std::string_view colour,
+                                     ::ros::Time stamp);
+/// The robot's 7 joints from a measured_js / setpoint_js (velocity and effort may be empty).
+Parsed<JointSample> jointSampleFromState(const sensor_msgs::JointState& message);
+/// graspN/measured_js: [jaw1 + jaw2, jaw1, jaw2].
+sensor_msgs::JointState toGraspState(const JointSample& sample, std::string_view colour,
+                                     ::ros::Time stamp);
+
+geometry_msgs::TransformStamped toTransformStamped(const Eigen::Isometry3d& pose, ::ros::Time stamp,
+                                                   std::string frame, std::string child_frame);
+
+crtk_msgs::operating_state toOperatingState(const OperatingStatus& status, ::ros::Time stamp);
+Parsed<OperatingStatus> operatingStatusFrom(const crtk_msgs::operating_state& message);
+
+raven_2::raven_state toRavenState(const RavenStateSnapshot& state, ::ros::Time stamp);
+RavenStateSnapshot ravenStateFrom(const raven_2::raven_state& message);
+
+}  // namespace bridge::ros1

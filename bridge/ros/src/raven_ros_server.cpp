@@ -1,0 +1,316 @@
+#include "bridge/ros/raven_ros_server.hpp"
+
+#include <crtk_msgs/StringStamped.h>
+#include <raven_2/raven_automove.h>
+#include <raven_twin/Step.h>
+#include <raven_twin/StepDone.h>
+#include <ros/callback_queue.h>
+#include <ros/ros.h>
+#include <spdlog/spdlog.h>
+#include <std_msgs/String.h>
+
+#include <array>
+#include <deque>
+#include <vector>
+
+#include "bridge/ros/command_topics.hpp"
+#include "bridge/ros/low_latency.hpp"
+#include "bridge/ros/ros_conversions.hpp"
+#include "bridge/throttled_log.hpp"
+
+namespace bridge::ros1 {
+
+/// One command topic's message, read and checked: the commands it carries or why it is refused.
+struct IncomingCommand {
+  std::vector<PlatformCommand> commands;
+  std::string error;
+};
+
+namespace {
+
+constexpr double kMicron = 1e-6;
+constexpr std::uint64_t kJointStatesEvery = 30;  // about 33 Hz, as upstream throttles it
+
+template <typename Command, typename Value>
+IncomingCommand fromParsed(const Parsed<Value>& parsed, Arm arm) {
+  if (!parsed.value) return {{}, parsed.error};
+  return {{Command{arm, *parsed.value}}, {}};
+}
+
+IncomingCommand stateCommandFrom(const crtk_msgs::StringStamped& message) {
+  if (auto command = parseStateCommand(message.string)) return {{*command}, {}};
+  return {{},
+          "unknown state command '" + message.string +
+              "' (expected enable, disable, pause, resume, home or unhome)"};
+}
+
+/// raven_automove: per arm, a translation in microns and a rotation, applied incrementally.
+IncomingCommand automoveFrom(const raven_2::raven_automove& message) {
+  IncomingCommand out;
+  for (Arm arm : raven::kArms) {
+    auto increment =
+        poseFromTransform(message.tf_incr[static_cast<std::size_t>(raven::index(arm))], true);
+    if (!increment.value) {
+      return {{}, "tf_incr[" + std::to_string(raven::index(arm)) + "]: " + increment.error};
+    }
+    increment.value->translation() *= kMicron;
+    if (increment.value->matrix() == Eigen::Matrix4d::Identity()) continue;  // nothing to do
+    out.commands.push_back(ServoCr{arm, *increment.value});
+  }
+  return out;
+}
+
+}  // namespace
+
+/// Every topic the robot publishes.
+struct Publishers {
+  ::ros::Publisher operating_state, ravenstate, joint_states, step_done, refusals;
+  std::array<::ros::Publisher, 2> arm_operating_state, measured_js, setpoint_js, measured_cp,
+      setpoint_cp, grasp_measured_js;
+};
+
+/// The server's ROS side: a private callback queue spun by the serving loop (one thread, no
+/// locks), and in lock-step mode the commands held back until a step names them.
+class RavenRosServer::Impl {
+ public:
+  Impl(RavenPlatform& platform, const std::string& ros_namespace, RosServerOptions options);
+  void spinOnce(double wait);
+  const RavenPlatform& platform() const { return platform_; }
+
+ private:
+  using StepMessage = raven_twin::Step;
+
+  void subscribeCommands();
+  template <typename Message, typename Parse>
+  void subscribeCommand(CommandTopic topic, Parse parse);
+  void received(CommandTopic topic, IncomingCommand incoming);
+  void apply(CommandTopic topic, const IncomingCommand& incoming);
+  void refuse(CommandTopic topic, const std::string& why);
+  void runCycle();
+  void publishState();
+  bool stepReady(const StepMessage& step) const;
+  void runStep(const StepMessage& step);
+  ::ros::Time stamp() const;
+
+  RavenPlatform& platform_;
+  RosServerOptions options_;
+  ::ros::CallbackQueue queue_;
+  ::ros::NodeHandle node_;
+  std::vector<::ros::Subscriber> subscribers_;
+  Publishers publishers_;
+  std::array<std::deque<IncomingCommand>, kCommandTopicCount> pending_;
+  std::deque<StepMessage> steps_;
+  std::uint64_t cycles_published_ = 0;
+  ThrottledLog log_;
+};
+
+RavenRosServer::RavenRosServer(RavenPlatform& platform, const std::string& ros_namespace,
+                               RosServerOptions options)
+    : impl_(std::make_unique<Impl>(platform, ros_namespace, options)) {}
+
+RavenRosServer::~RavenRosServer() = default;
+
+void RavenRosServer::spin(double stop_after) {
+  while (::ros::ok() && (stop_after <= 0.0 || impl_->platform().now() < stop_after)) {
+    impl_->spinOnce(0.01);
+  }
+}
+
+void RavenRosServer::spinOnce(double wait) {
+  impl_->spinOnce(wait);
+}
+
+RavenRosServer::Impl::Impl(RavenPlatform& platform, const std::string& ros_namespace,
+                           RosServerOptions options)
+    : platform_(platform), options_(options), node_(ros_namespace) {
+  node_.setCallbackQueue(&queue_);
+  auto& p = publishers_;
+  // Lock-step runs many cycles in a burst: queue enough that a subscriber sees every cycle.
+  constexpr std::uint32_t kStateQueue = 1000;
+  p.operating_state = node_.advertise<crtk_msgs::operating_state>("operating_state", kStateQueue);
+  p.ravenstate = node_.advertise<raven_2::raven_state>("ravenstate", kStateQueue);
+  p.joint_states = node_.advertise<sensor_msgs::JointState>("joint_states", kStateQueue);
+  p.refusals = node_.advertise<std_msgs::String>(std::string(kRefusalTopic), 100);
+  if (options_.lock_step) {
+    p.step_done = node_.advertise<raven_twin::StepDone>(std::string(kStepDoneTopic), 100);
+    subscribers_.push_back(node_.subscribe<StepMessage>(
+        std::string(kStepTopic), 100,
+        [this](const StepMessage::ConstPtr& step) { steps_.push_back(*step); }, {}, lowLatency()));
+  }
+  for (Arm arm : raven::kArms) {
+    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const std::string ns = armNamespace(arm) + "/";
+    p.arm_operating_state[a] =
+        node_.advertise<crtk_msgs::operating_state>(ns + "operating_state", kStateQueue);
+    p.measured_js[a] = node_.advertise<sensor_msgs::JointState>(ns + "measured_js", kStateQueue);
+    p.setpoint_js[a] = node_.advertise<sensor_msgs::JointState>(ns + "setpoint_js", kStateQueue);
+    p.measured_cp[a] =
+        node_.advertise<geometry_msgs::TransformStamped>(ns + "measured_cp", kStateQueue);
+    p.setpoint_cp[a] =
+        node_.advertise<geometry_msgs::TransformStamped>(ns + "setpoint_cp", kStateQueue);
+    p.grasp_measured_js[a] =
+        node_.advertise<sensor_msgs::JointState>(graspNamespace(arm) + "/measured_js", kStateQueue);
+  }
+  subscribeCommands();
+  publishState();
+}
+
+template <typename Message, typename Parse>
+void RavenRosServer::Impl::subscribeCommand(CommandTopic topic, Parse parse) {
+  constexpr std::uint32_t kCommandQueue = 10000;  // never drop a command
+  subscribers_.push_back(node_.subscribe<Message>(
+      std::string(topicName(topic)), kCommandQueue,
+      [this, topic, parse](const typename Message::ConstPtr& message) {
+        received(topic, parse(*message));
+      },
+      {}, lowLatency()));
+}
+
+void RavenRosServer::Impl::subscribeCommands() {
+  using geometry_msgs::TransformStamped;
+  using sensor_msgs::JointState;
+  for (CommandTopic topic : {CommandTopic::StateCommand, CommandTopic::Arm1StateCommand,
+                             CommandTopic::Arm2StateCommand}) {
+    subscribeCommand<crtk_msgs::StringStamped>(topic, stateCommandFrom);
+  }
+  for (Arm arm : raven::kArms) {
+    subscribeCommand<JointState>(
+        forArm(CommandTopic::Arm1ServoJr, arm),
+        [arm](const JointState& m) { return fromParsed<ServoJr>(armJointsFromCommand(m), arm); });
+    subscribeCommand<JointState>(
+        forArm(CommandTopic::Arm1ServoJp, arm),
+        [arm](const JointState& m) { return fromParsed<ServoJp>(armJointsFromCommand(m), arm); });
+    subscribeCommand<TransformStamped>(
+        forArm(CommandTopic::Arm1ServoCp, arm), [arm](const TransformStamped& m) {
+          return fromParsed<ServoCp>(poseFromTransform(m.transform), arm);
+        });
+    subscribeCommand<TransformStamped>(
+        forArm(CommandTopic::Arm1ServoCr, arm), [arm](const TransformStamped& m) {
+          return fromParsed<ServoCr>(poseFromTransform(m.transform), arm);
+        });
+    subscribeCommand<JointState>(
+        forArm(CommandTopic::Grasp1ServoJr, arm),
+        [arm](const JointState& m) { return fromParsed<ServoJawJr>(graspFromCommand(m), arm); });
+    subscribeCommand<JointState>(
+        forArm(CommandTopic::Grasp1ServoJp, arm),
+        [arm](const JointState& m) { return fromParsed<ServoJawJp>(graspFromCommand(m), arm); });
+  }
+  subscribeCommand<raven_2::raven_automove>(CommandTopic::RavenAutomove, automoveFrom);
+}
+
+void RavenRosServer::Impl::received(CommandTopic topic, IncomingCommand incoming) {
+  if (options_.lock_step) {
+    pending_[static_cast<std::size_t>(topic)].push_back(std::move(incoming));
+  } else {
+    apply(topic, incoming);
+  }
+}
+
+void RavenRosServer::Impl::apply(CommandTopic topic, const IncomingCommand& incoming) {
+  if (!incoming.error.empty()) {
+    log_.warn("refused a message on " + std::string(topicName(topic)) + ": " + incoming.error,
+              platform_.now());
+    refuse(topic, incoming.error);
+    return;
+  }
+  for (const auto& command : incoming.commands) {
+    const CommandResult result = platform_.send(command);
+    if (!result) refuse(topic, result.note);  // the platform logs its own refusals
+  }
+}
+
+void RavenRosServer::Impl::refuse(CommandTopic topic, const std::string& why) {
+  std_msgs::String message;
+  message.data = std::string(topicName(topic)) + ": " + why;
+  publishers_.refusals.publish(message);
+}
+
+::ros::Time RavenRosServer::Impl::stamp() const {
+  return options_.lock_step ? ::ros::Time(platform_.now()) : ::ros::Time::now();
+}
+
+void RavenRosServer::Impl::spinOnce(double wait) {
+  if (!options_.lock_step) {
+    queue_.callAvailable();
+    runCycle();
+    return;
+  }
+  queue_.callAvailable(::ros::WallDuration(wait));
+  while (!steps_.empty() && stepReady(steps_.front())) {
+    runStep(steps_.front());
+    steps_.pop_front();
+  }
+}
+
+bool RavenRosServer::Impl::stepReady(const StepMessage& step) const {
+  std::array<std::size_t, kCommandTopicCount> needed{};
+  for (std::uint8_t id : step.command_order) {
+    if (id < kCommandTopicCount) ++needed[id];
+  }
+  for (std::size_t i = 0; i < kCommandTopicCount; ++i) {
+    if (pending_[i].size() < needed[i]) return false;
+  }
+  return true;
+}
+
+void RavenRosServer::Impl::runStep(const StepMessage& step) {
+  for (std::uint8_t id : step.command_order) {
+    const auto topic = commandTopicFromId(id);
+    if (!topic) {
+      spdlog::error("step {} names command topic id {}, which does not exist; ignored", step.seq,
+                    id);
+      continue;
+    }
+    auto& queue = pending_[id];
+    apply(*topic, queue.front());
+    queue.pop_front();
+  }
+  for (std::uint32_t c = 0; c < step.cycles; ++c) runCycle();
+  if (step.cycles == 0) publishState();
+  raven_twin::StepDone done;
+  done.header.stamp = stamp();
+  done.seq = step.seq;
+  publishers_.step_done.publish(done);
+}
+
+void RavenRosServer::Impl::runCycle() {
+  platform_.advance(0.001);
+  publishState();
+}
+
+void RavenRosServer::Impl::publishState() {
+  auto& p = publishers_;
+  const ::ros::Time now = stamp();
+  const auto status = toOperatingState(platform_.operatingStatus(), now);
+  p.operating_state.publish(status);
+  sensor_msgs::JointState both;
+  both.header.stamp = now;
+  for (Arm arm : raven::kArms) {
+    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const std::string_view colour = armColour(arm);
+    p.arm_operating_state[a].publish(status);
+    const Arm source = measuredJsSource(arm, options_.arm_swap);
+    p.measured_js[a].publish(toJointState(platform_.measuredJs(source), armColour(source), now));
+    p.setpoint_js[a].publish(toJointState(platform_.setpointJs(arm), colour, now));
+    const std::string base = std::string(colour) + "_base";
+    const std::string tool = std::string(colour) + "_tool";
+    p.measured_cp[a].publish(toTransformStamped(platform_.measuredCp(arm).pose, now, base, tool));
+    p.setpoint_cp[a].publish(toTransformStamped(platform_.setpointCp(arm).pose, now, base, tool));
+    const JointSample measured = platform_.measuredJs(arm);
+    p.grasp_measured_js[a].publish(toGraspState(measured, colour, now));
+    if (cycles_published_ % kJointStatesEvery == 0) {
+      const auto arm_state = toJointState(measured, colour, now);
+      both.name.insert(both.name.end(), arm_state.name.begin(), arm_state.name.end());
+      both.position.insert(both.position.end(), arm_state.position.begin(),
+                           arm_state.position.end());
+      both.velocity.insert(both.velocity.end(), arm_state.velocity.begin(),
+                           arm_state.velocity.end());
+      both.effort.insert(both.effort.end(), arm_state.effort.begin(), arm_state.effort.end());
+    }
+  }
+  if (cycles_published_ % kJointStatesEvery == 0) p.joint_states.publish(both);
+  if (const auto state = platform_.ravenState()) p.ravenstate.publish(toRavenState(*state, now));
+  ++cycles_published_;
+}
+
+}  // namespace bridge::ros1
