@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "twin_fixtures.hpp"
+
 namespace {
 
 using bridge::Arm;
@@ -13,14 +15,11 @@ using bridge::OperatingState;
 using bridge::RavenCore;
 using bridge::StateCommand;
 
-const raven::PlatformProfile& physical() {
-  static const auto profile = raven::builtinProfile("physical");
-  return profile;
-}
-
 /// A core whose arms follow their setpoints exactly (a perfect robot).
 struct Robot {
-  RavenCore core{physical(), bridge::ServoLimits{}, {physical().home, physical().home}};
+  RavenCore core{test_support::physicalProfile(),
+                 bridge::ServoLimits{},
+                 {test_support::physicalProfile().home, test_support::physicalProfile().home}};
 
   void cycle(int count = 1) {
     for (int i = 0; i < count; ++i) {
@@ -60,7 +59,10 @@ TEST(RavenCore, HomingMovesBothArmsToTheFirmwareHomeAndIsBusyMeanwhile) {
   robot.settle();
   EXPECT_TRUE(robot.core.status().is_homed);
   for (Arm arm : raven::kArms) {
-    EXPECT_LT((robot.core.setpoint(arm) - physical().robotHome()).cwiseAbs().maxCoeff(), 1e-12);
+    EXPECT_LT((robot.core.setpoint(arm) - test_support::physicalProfile().robotHome())
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-12);
   }
 }
 
@@ -174,7 +176,7 @@ TEST(RavenCore, AJumpBeyondTheClampsIsRefused) {
 TEST(RavenCore, JointLimitsHoldOnEveryCommandPath) {
   Robot robot;
   robot.makeReady();
-  const auto& limits = physical().limits;
+  const auto& limits = test_support::physicalProfile().limits;
   // Creep the insertion past its upper limit with increments, as a stuck stick would.
   for (int i = 0; i < 4000; ++i) {
     robot.core.apply(bridge::ServoJr{Arm::Left, jointStep(raven::kInsertion, 0.0001)});

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "test_files.hpp"
+#include "twin_fixtures.hpp"
 
 namespace {
 
@@ -16,16 +17,7 @@ using bridge::Arm;
 using bridge::ArmJoints;
 using bridge::StateCommand;
 using bridge::TwinPlatform;
-
-/// Enables and homes `platform` on its own clock.
-void makeReady(bridge::RavenPlatform& platform) {
-  if (platform.operatingStatus().state == bridge::OperatingState::Disabled) {
-    ASSERT_TRUE(platform.send(StateCommand::Enable));
-  }
-  ASSERT_TRUE(platform.send(StateCommand::Home));
-  for (int i = 0; i < 1000 && platform.operatingStatus().is_busy; ++i) platform.advance(0.01);
-  ASSERT_TRUE(platform.operatingStatus().ready());
-}
+using test_support::makeReady;
 
 bridge::TwinOptions standIn() {
   bridge::TwinOptions options;

@@ -14,6 +14,7 @@
 #include "bridge/ros/ros_conversions.hpp"
 #include "bridge/twin_platform.hpp"
 #include "ros_peers.hpp"
+#include "twin_fixtures.hpp"
 
 namespace {
 
@@ -47,22 +48,8 @@ struct Rig {
   RavenRosClient client;
 };
 
-/// Advances `platform` by 10 ms steps until `condition` holds, at most 10 s of its time.
-template <typename Condition>
-void advanceUntil(RavenPlatform& platform, Condition condition) {
-  for (int i = 0; i < 1000 && !condition(); ++i) platform.advance(0.01);
-}
-
-/// Enables and homes a platform on its own clock (homing takes about 1.8 s).
-void makeReady(RavenPlatform& platform) {
-  ASSERT_TRUE(platform.send(StateCommand::Enable));
-  advanceUntil(platform,
-               [&] { return platform.operatingStatus().state == OperatingState::Enabled; });
-  ASSERT_TRUE(platform.send(StateCommand::Home));
-  advanceUntil(platform, [&] { return platform.operatingStatus().ready(); });
-  ASSERT_TRUE(platform.operatingStatus().ready())
-      << bridge::wireName(platform.operatingStatus().state);
-}
+using test_support::advanceUntil;
+using test_support::makeReady;
 
 ArmJoints increment(int k) {
   const double s = std::sin(0.01 * k);

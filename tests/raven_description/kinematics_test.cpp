@@ -8,6 +8,7 @@
 #include <random>
 
 #include "raven/arm_kinematics.hpp"
+#include "twin_fixtures.hpp"
 
 namespace {
 
@@ -17,10 +18,6 @@ using raven::Arm;
 using raven::ArmJoints;
 using raven::ArmKinematics;
 
-const raven::PlatformProfile& physical() {
-  static const auto profile = raven::builtinProfile("physical");
-  return profile;
-}
 const raven::PlatformProfile& ambf() {
   static const auto profile = raven::builtinProfile("ambf");
   return profile;
@@ -47,20 +44,21 @@ bool withinLimits(const ArmJoints& q, const raven::JointLimits& limits) {
 
 TEST(Kinematics, FirmwareToolPointCheckValue) {
   // Reference section A: J = [pi/6, pi/2, 0.4, 0, 0, 0], in each arm's base frame.
-  const auto& firmware = *physical().firmware_kinematics;
+  const auto& firmware = *test_support::physicalProfile().firmware_kinematics;
   const ArmJoints q = joints({M_PI / 6, M_PI / 2, 0.4, 0, 0, 0, 0});
-  const ArmKinematics left(firmware[0], physical().limits), right(firmware[1], physical().limits);
+  const ArmKinematics left(firmware[0], test_support::physicalProfile().limits),
+      right(firmware[1], test_support::physicalProfile().limits);
   EXPECT_LT((left.toolPose(q).translation() - Vector3d(-0.07795, -0.02527, 0.01323)).norm(), 1e-5);
   EXPECT_LT((right.toolPose(q).translation() - Vector3d(-0.07795, 0.02527, 0.01323)).norm(), 1e-5);
 }
 
 TEST(Kinematics, WristPointAtThePhysicalHome) {
-  const auto& home = physical().home;
-  EXPECT_LT((ArmKinematics::of(physical(), Arm::Left).wristPoint(home) -
+  const auto& home = test_support::physicalProfile().home;
+  EXPECT_LT((ArmKinematics::of(test_support::physicalProfile(), Arm::Left).wristPoint(home) -
              Vector3d(0.31186, 0.08231, -0.07274))
                 .norm(),
             1e-5);
-  EXPECT_LT((ArmKinematics::of(physical(), Arm::Right).wristPoint(home) -
+  EXPECT_LT((ArmKinematics::of(test_support::physicalProfile(), Arm::Right).wristPoint(home) -
              Vector3d(-0.31186, 0.08231, -0.07274))
                 .norm(),
             1e-5);
@@ -90,7 +88,7 @@ TEST(Kinematics, WristPointWithAmbfJointOneAtSevenPiOver36) {
 
 TEST(Kinematics, DhRoundTrip) {
   std::mt19937_64 random(7);
-  for (const auto* profile : {&physical(), &ambf()}) {
+  for (const auto* profile : {&test_support::physicalProfile(), &ambf()}) {
     for (Arm arm : raven::kArms) {
       const auto kin = ArmKinematics::of(*profile, arm);
       for (int n = 0; n < 1000; ++n) {
@@ -128,7 +126,7 @@ void expectExactInverse(const ArmKinematics& kin, const raven::JointLimits& limi
 
 TEST(Kinematics, InverseOfForwardIsExactOnBothArmsOfBothProfiles) {
   std::mt19937_64 random(42);
-  for (const auto* profile : {&physical(), &ambf()}) {
+  for (const auto* profile : {&test_support::physicalProfile(), &ambf()}) {
     for (Arm arm : raven::kArms) {
       SCOPED_TRACE(profile->name + " " + std::string(raven::armName(arm)));
       expectExactInverse(ArmKinematics::of(*profile, arm), profile->limits, random, 10000);
@@ -139,8 +137,9 @@ TEST(Kinematics, InverseOfForwardIsExactOnBothArmsOfBothProfiles) {
 TEST(Kinematics, InverseOfTheFirmwareChainIsExactToo) {
   std::mt19937_64 random(43);
   for (std::size_t a = 0; a < 2; ++a) {
-    expectExactInverse(ArmKinematics((*physical().firmware_kinematics)[a], physical().limits),
-                       physical().limits, random, 2000);
+    expectExactInverse(ArmKinematics((*test_support::physicalProfile().firmware_kinematics)[a],
+                                     test_support::physicalProfile().limits),
+                       test_support::physicalProfile().limits, random, 2000);
   }
 }
 
@@ -149,9 +148,9 @@ TEST(Kinematics, UpToEightCandidatesIncludingTheTrueJoints) {
   // wrist point, and the reversed insertion needs the mechanism to point the shaft the other
   // way, which it cannot always do: 2 to 8 candidates, in elbow pairs.
   std::mt19937_64 random(3);
-  const auto kin = ArmKinematics::of(physical(), Arm::Left);
+  const auto kin = ArmKinematics::of(test_support::physicalProfile(), Arm::Left);
   for (int n = 0; n < 100; ++n) {
-    const ArmJoints q = randomJoints(physical().limits, random);
+    const ArmJoints q = randomJoints(test_support::physicalProfile().limits, random);
     const auto candidates =
         kin.inverseCandidates(kin.toolPose(q), q(raven::kJaw1) + q(raven::kJaw2), q);
     ASSERT_GE(candidates.size(), 2u);
@@ -166,7 +165,7 @@ TEST(Kinematics, UpToEightCandidatesIncludingTheTrueJoints) {
 
 TEST(Kinematics, WristLockedInverseKeepsRollWristAndJawsBitIdentical) {
   std::mt19937_64 random(11);
-  for (const auto* profile : {&physical(), &ambf()}) {
+  for (const auto* profile : {&test_support::physicalProfile(), &ambf()}) {
     for (Arm arm : raven::kArms) {
       const auto kin = ArmKinematics::of(*profile, arm);
       for (int n = 0; n < 2000; ++n) {
@@ -187,27 +186,29 @@ TEST(Kinematics, WristLockedInverseKeepsRollWristAndJawsBitIdentical) {
 }
 
 TEST(Kinematics, WristLockedInversePrefersTheSolutionNearestHome) {
-  const auto kin = ArmKinematics::of(physical(), Arm::Left);
-  ArmJoints q = physical().home;
+  const auto kin = ArmKinematics::of(test_support::physicalProfile(), Arm::Left);
+  ArmJoints q = test_support::physicalProfile().home;
   q(raven::kShoulder) += 0.2;
   q(raven::kElbow) -= 0.1;
   q(raven::kInsertion) += 0.03;
-  const auto solution = kin.inverseWristLocked(kin.wristPoint(q), physical().home, physical().home);
+  const auto solution =
+      kin.inverseWristLocked(kin.wristPoint(q), test_support::physicalProfile().home,
+                             test_support::physicalProfile().home);
   ASSERT_TRUE(solution.ok);
   EXPECT_LT((solution.joints.head<3>() - q.head<3>()).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 TEST(Kinematics, NoPathLeavesTheLimits) {
   std::mt19937_64 random(5);
-  const auto& limits = physical().limits;
-  const auto kin = ArmKinematics::of(physical(), Arm::Right);
+  const auto& limits = test_support::physicalProfile().limits;
+  const auto kin = ArmKinematics::of(test_support::physicalProfile(), Arm::Right);
   std::uniform_real_distribution<double> wide(-0.6, 0.6);
   int clamped = 0;
   for (int n = 0; n < 5000; ++n) {
     // Targets anywhere in a 1.2 m cube, most of them out of reach or out of the limits.
     const Vector3d p5(wide(random), wide(random), wide(random));
     const ArmJoints current = randomJoints(limits, random);
-    const auto locked = kin.inverseWristLocked(p5, current, physical().home);
+    const auto locked = kin.inverseWristLocked(p5, current, test_support::physicalProfile().home);
     if (locked.ok) {
       ASSERT_TRUE(withinLimits(locked.joints, limits));
       clamped += locked.clamp.any();
@@ -226,8 +227,8 @@ TEST(Kinematics, NoPathLeavesTheLimits) {
 }
 
 TEST(Kinematics, ClampReportsExactlyWhatItMoved) {
-  const auto kin = ArmKinematics::of(physical(), Arm::Left);
-  ArmJoints q = physical().home;
+  const auto kin = ArmKinematics::of(test_support::physicalProfile(), Arm::Left);
+  ArmJoints q = test_support::physicalProfile().home;
   q(raven::kInsertion) = 0.7;
   q(raven::kWrist) = -3.0;
   const auto report = kin.clamp(q);

@@ -11,6 +11,7 @@
 #include "raven/arm_kinematics.hpp"
 #include "raven/twin_arms.hpp"
 #include "test_files.hpp"
+#include "twin_fixtures.hpp"
 
 namespace {
 
@@ -19,11 +20,6 @@ using raven::Arm;
 using raven::ArmJoints;
 
 const std::filesystem::path kModels = RAVEN_MODELS_DIR;
-
-const raven::PlatformProfile& physical() {
-  static const auto profile = raven::builtinProfile("physical");
-  return profile;
-}
 
 /// A World with a launch file loaded, and the Raven arm layer over it.
 struct Twin {
@@ -72,10 +68,16 @@ TEST(Twin, CommittedModelsAreWhatTheGeneratorWrites) {
 TEST(Twin, ReadsTheHomeJointsAndSitsOnTheKinematicFramesAtLoad) {
   Twin twin(kModels / "raven2/launch.yaml");
   for (Arm arm : raven::kArms) {
-    EXPECT_LT((twin.arms.measured(arm) - physical().home).cwiseAbs().maxCoeff(), 1e-9);
-    const auto kin = raven::ArmKinematics::of(physical(), arm);
-    EXPECT_LT((twin.wristPoint(arm) - kin.wristPoint(physical().home)).norm(), 1e-9);
-    EXPECT_LT((twin.toolPoint(arm) - kin.toolPose(physical().home).translation()).norm(), 1e-9);
+    EXPECT_LT(
+        (twin.arms.measured(arm) - test_support::physicalProfile().home).cwiseAbs().maxCoeff(),
+        1e-9);
+    const auto kin = raven::ArmKinematics::of(test_support::physicalProfile(), arm);
+    EXPECT_LT((twin.wristPoint(arm) - kin.wristPoint(test_support::physicalProfile().home)).norm(),
+              1e-9);
+    EXPECT_LT(
+        (twin.toolPoint(arm) - kin.toolPose(test_support::physicalProfile().home).translation())
+            .norm(),
+        1e-9);
   }
 }
 
@@ -100,10 +102,10 @@ void settle(Twin& twin, Arm arm, const ArmJoints& target) {
 TEST(Twin, SettledPosesMatchTheKinematicsWithinATenthOfAMillimetre) {
   Twin twin(kModels / "raven2/launch.yaml");
   std::mt19937_64 random(2024);
-  const auto& limits = physical().limits;
+  const auto& limits = test_support::physicalProfile().limits;
   for (Arm arm : raven::kArms) {
     const Arm other = arm == Arm::Left ? Arm::Right : Arm::Left;
-    const auto kin = raven::ArmKinematics::of(physical(), arm);
+    const auto kin = raven::ArmKinematics::of(test_support::physicalProfile(), arm);
     double worst_wrist = 0.0, worst_tool = 0.0;
     std::size_t contacts = 0;
     for (int sample = 0; sample < 1000; ++sample) {
@@ -112,7 +114,7 @@ TEST(Twin, SettledPosesMatchTheKinematicsWithinATenthOfAMillimetre) {
         q(i) = std::uniform_real_distribution<double>(limits.low(i), limits.high(i))(random);
       }
       twin.arms.command(arm, q);
-      twin.arms.command(other, physical().home);
+      twin.arms.command(other, test_support::physicalProfile().home);
       settle(twin, arm, q);
       for (const auto& c : twin.world.contacts()) contacts += c.distance < 0.0;
       worst_wrist = std::max(worst_wrist, (twin.wristPoint(arm) - kin.wristPoint(q)).norm());
@@ -136,7 +138,7 @@ TEST(Twin, FollowsAJointStepAtTheVelocityCapsUnderGravity) {
   const ArmJoints cap =
       (ArmJoints() << 5 * deg, 5 * deg, 0.02, 15 * deg, 15 * deg, 15 * deg, 15 * deg).finished();
   ArmJoints step = (ArmJoints() << 0.05, -0.05, 0.01, 0.2, 0.2, -0.2, 0.2).finished();
-  const ArmJoints start = physical().home;
+  const ArmJoints start = test_support::physicalProfile().home;
   const ArmJoints goal = start + step;
   const double duration = (step.cwiseAbs().array() / cap.array()).maxCoeff();
   for (double t = 0.0; t < duration; t += twin.world.stepSize()) {
@@ -161,16 +163,17 @@ TEST(Twin, FollowsAJointStepAtTheVelocityCapsUnderGravity) {
 
 TEST(Twin, ArmLayerRefusesNonFiniteCommandsWithoutMoving) {
   Twin twin(kModels / "raven2/launch.yaml");
-  ArmJoints bad = physical().home;
+  ArmJoints bad = test_support::physicalProfile().home;
   bad(raven::kWrist) = std::nan("");
-  twin.arms.command(Arm::Left, physical().home);
+  twin.arms.command(Arm::Left, test_support::physicalProfile().home);
   EXPECT_THROW(twin.arms.command(Arm::Left, bad), std::invalid_argument);
-  EXPECT_DOUBLE_EQ(twin.world.joint("/raven2/left/shoulder").target(), physical().home(0));
+  EXPECT_DOUBLE_EQ(twin.world.joint("/raven2/left/shoulder").target(),
+                   test_support::physicalProfile().home(0));
 }
 
 TEST(Twin, PegTransferSceneRestsTenSecondsWithEveryPegOnItsPost) {
   Twin twin(kModels / "peg_transfer/launch.yaml");
-  for (Arm arm : raven::kArms) twin.arms.command(arm, physical().home);
+  for (Arm arm : raven::kArms) twin.arms.command(arm, test_support::physicalProfile().home);
   ASSERT_EQ(twin.world.softBodyCount(), 6u);
   twin.world.step(1000);
   std::vector<Vector3d> settled;

@@ -78,6 +78,21 @@ void ChildProcess::kill() {
   pid_ = -1;
 }
 
+int ChildProcess::wait(double timeout) {
+  if (pid_ <= 0) return -1;
+  const auto deadline = Clock::now() + std::chrono::duration<double>(timeout);
+  int status = 0;
+  while (waitpid(pid_, &status, WNOHANG) != pid_) {
+    if (Clock::now() > deadline) {
+      kill();
+      return -1;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  pid_ = -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 int freePort() {
   const int fd = socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in address{};

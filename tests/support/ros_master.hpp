@@ -26,6 +26,9 @@ class ChildProcess {
   void stop(double grace = 5.0);
   /// SIGKILL at once (a crash, a pulled cable); reaps it.
   void kill();
+  /// Waits up to `timeout` wall seconds for the program to end; its exit code, or -1 if it had
+  /// to be killed.
+  int wait(double timeout);
 
  private:
   pid_t pid_ = -1;

@@ -4,8 +4,8 @@
 
 namespace bridge::ros1 {
 
-void initRos(int& argc, char** argv, const std::string& node_name) {
-  ::ros::init(argc, argv, node_name);
+void initRos(int& argc, char** argv, const std::string& node_name, bool ros_handles_sigint) {
+  ::ros::init(argc, argv, node_name, ros_handles_sigint ? 0 : ::ros::init_options::NoSigintHandler);
 }
 
 bool rosOk() {

@@ -6,7 +6,8 @@
 namespace bridge::ros1 {
 
 /// ros::init: takes ROS remappings (name:=value, __ns:=...) out of argv. Call once, first.
-void initRos(int& argc, char** argv, const std::string& node_name);
+/// `ros_handles_sigint` false: the program keeps its own Ctrl-C handling.
+void initRos(int& argc, char** argv, const std::string& node_name, bool ros_handles_sigint = true);
 /// False once ROS is shutting down (Ctrl-C, rosnode kill).
 bool rosOk();
 /// The master this process talks to.

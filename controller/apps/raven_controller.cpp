@@ -1,0 +1,263 @@
+// raven_controller: the dual-platform controller. One instance drives the twin, the physical
+// Raven-II, or both in step, from a gamepad, the keyboard's mode keys, or a recorded file.
+
+#include <spdlog/spdlog.h>
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
+#include <map>
+#include <memory>
+
+#include "bridge/ros/raven_ros_client.hpp"
+#include "bridge/ros/ros_runtime.hpp"
+#include "bridge/twin_platform.hpp"
+#include "controller/session.hpp"
+#include "controller/terminal_keys.hpp"
+
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+using controller::Mode;
+
+/// Command-line settings.
+struct Settings {
+  std::string platform = "twin";
+  bool twin_over_ros = false;
+  std::string twin_ns = "/twin";
+  std::string physical_ns;
+  bool stand_in = false;
+  std::string twin_launch;
+  bool lock_step = false;
+  bool no_arm_swap = false;
+  std::string start_mode;
+  std::string replay_ci, replay_rs;
+  std::string record;
+  std::string out_dir = "recordings";
+  std::string mapping = "m2";
+  std::string trigger_range = "xbox-one";
+  bool paper_deadzone = false;
+  bool no_gamepad = false, no_keyboard = false;
+  double duration = 0.0;
+  double rate = 500.0;
+};
+
+/// Owns whichever platforms the settings ask for.
+struct Platforms {
+  std::unique_ptr<bridge::TwinPlatform> twin;
+  std::vector<std::unique_ptr<bridge::ros1::RavenRosClient>> clients;
+  std::vector<controller::PlatformSlot> slots;
+};
+
+Platforms makePlatforms(const Settings& s) {
+  Platforms p;
+  const bool want_physical = s.platform != "twin";
+  const bool want_twin = s.platform != "physical";
+  if (want_physical) {
+    bridge::ros1::RosClientOptions o;
+    o.robot_namespace = s.physical_ns;
+    o.arm_swap = !s.no_arm_swap;
+    p.clients.push_back(std::make_unique<bridge::ros1::RavenRosClient>(o));
+    p.slots.push_back({"physical", p.clients.back().get(), controller::CommandStyle::ServoJr});
+  }
+  if (want_twin && s.twin_over_ros) {
+    bridge::ros1::RosClientOptions o;
+    o.robot_namespace = s.twin_ns;
+    o.lock_step = s.lock_step;
+    p.clients.push_back(std::make_unique<bridge::ros1::RavenRosClient>(o));
+    p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
+  } else if (want_twin) {
+    bridge::TwinOptions o;
+    if (!s.twin_launch.empty()) o.launch_file = s.twin_launch;
+    o.clock = s.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
+    if (s.stand_in) o.stand_in = bridge::CableActuationParams::physicalStandIn();
+    p.twin = std::make_unique<bridge::TwinPlatform>(o);
+    p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
+  }
+  return p;
+}
+
+/// Enables and homes every platform that is not ready yet (at most 30 s of platform time).
+void makeReady(const std::vector<controller::PlatformSlot>& slots) {
+  for (const auto& slot : slots) {
+    auto& robot = *slot.platform;
+    if (robot.operatingStatus().ready()) continue;
+    spdlog::info("{}: enabling and homing", slot.name);
+    if (robot.operatingStatus().state != bridge::OperatingState::Enabled) {
+      robot.send(bridge::StateCommand::Enable);
+    }
+    robot.send(bridge::StateCommand::Home);
+    for (int i = 0; i < 3000 && !robot.operatingStatus().ready() && !interrupted; ++i) {
+      robot.advance(0.01);
+    }
+    if (!robot.operatingStatus().ready()) {
+      throw std::runtime_error(slot.name + " did not become enabled and homed (state " +
+                               std::string(bridge::wireName(robot.operatingStatus().state)) + ")");
+    }
+  }
+}
+
+std::optional<Mode> modeFromKey(char key) {
+  static const std::map<char, Mode> keys{{'1', Mode::Homing},
+                                         {'2', Mode::Manual},
+                                         {'3', Mode::ReplayInputs},
+                                         {'4', Mode::ReplayJoints},
+                                         {'5', Mode::SineDance}};
+  const auto it = keys.find(key);
+  return it == keys.end() ? std::nullopt : std::optional<Mode>(it->second);
+}
+
+int run(const Settings& s) {
+  if (s.lock_step && s.platform != "twin") {
+    throw std::runtime_error(
+        "--lock-step drives the twin alone; the physical robot runs in real time");
+  }
+  if (s.lock_step && s.replay_ci.empty() && s.replay_rs.empty() && s.start_mode != "o5" &&
+      s.start_mode != "o1") {
+    throw std::runtime_error(
+        "--lock-step needs a replay (--replay-ci / --replay-rs) or --mode o1/o5");
+  }
+  controller::SessionInputs inputs;
+  if (!s.replay_ci.empty()) inputs.inputs = controller::readCi(s.replay_ci);
+  if (!s.replay_rs.empty()) {
+    inputs.joints = controller::readRs(s.replay_rs);
+    spdlog::info("{}: {}", s.replay_rs, inputs.joints->variant.describe());
+  }
+  if (s.platform != "twin" || s.twin_over_ros) {
+    int argc = 1;
+    char name[] = "raven_controller";
+    char* argv[] = {name, nullptr};
+    bridge::ros1::initRos(argc, argv, "raven_controller", /*ros_handles_sigint=*/false);
+  }
+  Platforms platforms = makePlatforms(s);
+  makeReady(platforms.slots);
+
+  controller::ControllerOptions options;
+  options.rate = s.rate;
+  options.scheme = s.mapping == "m1-left"    ? controller::MappingScheme::M1Left
+                   : s.mapping == "m1-right" ? controller::MappingScheme::M1Right
+                                             : controller::MappingScheme::M2;
+  options.mapping.deadzone_reads_y_twice = s.paper_deadzone;
+  controller::DualPlatformController control(platforms.slots, options);
+
+  std::unique_ptr<controller::SdlGamepad> pad;
+  if (!s.no_gamepad && !s.lock_step) {
+    pad = std::make_unique<controller::SdlGamepad>(s.trigger_range == "8bit"
+                                                       ? controller::TriggerScale::EightBit
+                                                       : controller::TriggerScale::XboxOne);
+  }
+  inputs.gamepad = pad.get();
+  const bool replay = !s.replay_ci.empty() || !s.replay_rs.empty();
+  controller::SessionOptions session_options;
+  session_options.out_dir = s.out_dir;
+  session_options.record_name = s.record.empty() ? "raven" : s.record;
+  session_options.end_after_replay = replay;
+  controller::ControllerSession session(control, std::move(inputs), session_options);
+  std::unique_ptr<controller::TerminalKeys> keys;
+  if (!s.no_keyboard && !s.lock_step) {
+    keys = std::make_unique<controller::TerminalKeys>(STDIN_FILENO);
+    spdlog::info("keys: 1-5 modes O1-O5, r record, s stop recording, q quit");
+  }
+
+  const std::map<std::string, Mode> modes{{"o1", Mode::Homing},
+                                          {"o2", Mode::Manual},
+                                          {"o3", Mode::ReplayInputs},
+                                          {"o4", Mode::ReplayJoints},
+                                          {"o5", Mode::SineDance}};
+  Mode first = !s.replay_ci.empty()   ? Mode::ReplayInputs
+               : !s.replay_rs.empty() ? Mode::ReplayJoints
+               : pad                  ? Mode::Manual
+                                      : Mode::Idle;
+  if (!s.start_mode.empty()) first = modes.at(s.start_mode);
+  if (first != Mode::Idle) session.select(first);
+  if (!s.record.empty()) session.startRecording();
+
+  auto& reference = *platforms.slots.front().platform;
+  const double start = reference.now();
+  double next_report = start + 1.0, worst_divergence = 0.0;
+  std::size_t turns = 0;
+  while (!interrupted && session.turn()) {
+    ++turns;
+    // One key per turn: each takes effect after at least one iteration of the previous one.
+    if (const auto key = keys ? keys->next() : std::nullopt) {
+      if (const auto mode = modeFromKey(*key)) session.select(*mode);
+      if (*key == 'r') session.startRecording();
+      if (*key == 's') session.stopRecording();
+      if (*key == 'q' || *key == '0') session.quit();
+    }
+    if (platforms.slots.size() > 1) {
+      const double d = control.divergence();
+      worst_divergence = std::max(worst_divergence, d);
+      if (reference.now() >= next_report) {
+        spdlog::info("twin vs physical: largest joint divergence {:.4f} now, {:.4f} so far", d,
+                     worst_divergence);
+        next_report += 1.0;
+      }
+    }
+    if (s.duration > 0.0 && reference.now() - start >= s.duration) break;
+  }
+  const std::size_t rows = session.recording() ? session.stopRecording() : 0;
+  spdlog::info("done: {} turns, {:.3f} s of platform time; {} recording file(s){}", turns,
+               reference.now() - start, session.recordings().size(),
+               rows ? " (" + std::to_string(rows) + " rows)" : std::string());
+  for (const auto& file : session.recordings()) spdlog::info("  {}", file.string());
+  if (platforms.slots.size() > 1) {
+    spdlog::info("largest twin vs physical joint divergence: {:.4f}", worst_divergence);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "The Raven-II dual-platform controller: a gamepad (or a recording) drives the "
+      "twin, the physical robot, or both with identical commands."};
+  Settings s;
+  app.add_option("--platform", s.platform, "twin (default, in-process), physical (ROS) or both")
+      ->check(CLI::IsMember({"twin", "physical", "both"}));
+  app.add_flag("--twin-over-ros", s.twin_over_ros,
+               "reach the twin through a raven_twin_node instead of in-process");
+  app.add_option("--twin-ns", s.twin_ns, "the twin node's ROS namespace (--twin-over-ros)");
+  app.add_option("--physical-ns", s.physical_ns, "the physical robot's ROS namespace");
+  app.add_flag("--no-arm-swap", s.no_arm_swap, "the robot publishes each arm on its own topic");
+  app.add_flag("--stand-in", s.stand_in, "in-process twin with the physical stand-in actuation");
+  app.add_option("--twin-launch", s.twin_launch, "launch file of the twin's scene")
+      ->check(CLI::ExistingFile);
+  app.add_flag("--lock-step", s.lock_step,
+               "simulated clock: replays run as fast as the CPU allows (twin only)");
+  app.add_option("--mode", s.start_mode, "start in o1..o5")
+      ->check(CLI::IsMember({"o1", "o2", "o3", "o4", "o5"}));
+  app.add_option("--replay-ci", s.replay_ci, "O3: replay this controller-input file, then quit")
+      ->check(CLI::ExistingFile);
+  app.add_option("--replay-rs", s.replay_rs, "O4: replay this robot-state file's joints, then quit")
+      ->check(CLI::ExistingFile);
+  app.add_option("--record", s.record, "record from the start under this name");
+  app.add_option("--out", s.out_dir, "where recordings go");
+  app.add_option("--mapping", s.mapping, "initial mapping: m2, m1-left or m1-right")
+      ->check(CLI::IsMember({"m2", "m1-left", "m1-right"}));
+  app.add_option("--trigger-range", s.trigger_range,
+                 "xbox-one (every pad's full travel) or 8bit (the released controller on an "
+                 "8-bit trigger)")
+      ->check(CLI::IsMember({"xbox-one", "8bit"}));
+  app.add_flag("--paper-deadzone", s.paper_deadzone,
+               "the released controller's deadzone test (reads the stick's Y twice), needed to "
+               "replay the paper's recordings faithfully");
+  app.add_flag("--no-gamepad", s.no_gamepad, "do not look for a gamepad");
+  app.add_flag("--no-keyboard", s.no_keyboard, "do not read mode keys from the terminal");
+  app.add_option("--duration", s.duration, "stop after this many seconds of platform time")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--rate", s.rate, "command steps per second (1..1000)")
+      ->check(CLI::Range(1.0, 1000.0));
+  CLI11_PARSE(app, argc, argv);
+  std::signal(SIGINT, [](int) { interrupted = true; });
+  std::signal(SIGTERM, [](int) { interrupted = true; });
+  try {
+    return run(s);
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+}

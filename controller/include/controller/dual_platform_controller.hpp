@@ -1,0 +1,100 @@
+#pragma once
+// The paper's controller core: one set of joint targets, interpolated under the velocity caps and
+// sent identically to every selected platform (the twin, the physical robot, or both in step).
+// Modes O1 (homing), O2/O3 (manual: a live pad or replayed inputs), O4 (joint replay) and O5
+// (sine dance) each produce targets; execute() turns them into commands.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bridge/raven_platform.hpp"
+#include "controller/gamepad_mapping.hpp"
+#include "controller/velocity_cap.hpp"
+
+namespace controller {
+
+/// How commands reach a platform: the physical robot (and this project's twin) take servo_jr
+/// increments; AMBF's model is set to absolute joint positions each step.
+enum class CommandStyle { ServoJr, ServoJp };
+
+/// One platform the controller drives.
+struct PlatformSlot {
+  std::string name;  ///< "twin", "physical", ...: for logs and file names
+  bridge::RavenPlatform* platform = nullptr;
+  CommandStyle style = CommandStyle::ServoJr;
+};
+
+/// The controller's settings.
+struct ControllerOptions {
+  double rate = 500.0;  ///< command steps per second (the paper: 500; 1000 possible)
+  /// The controller's kinematics and home (section B of the kinematics reference).
+  std::string profile = "physical";
+  MappingScheme scheme = MappingScheme::M2;
+  VelocityCaps caps;
+  MappingConstants mapping;
+};
+
+/// What one iteration did.
+struct IterationReport {
+  int steps = 0;            ///< command steps (each 1/rate s)
+  bool clamped = false;     ///< a target hit a joint limit (the pad rumbles)
+  std::size_t refused = 0;  ///< commands a platform refused
+  std::string refusal;      ///< the first refusal's reason
+};
+
+/// The O5 sine dance's constants (the reference's), per joint in ArmJoints order.
+struct SineDance {
+  raven::ArmJoints scale =
+      (raven::ArmJoints() << 0.3, 0.3, 0.06, 0.3, 1.2, M_PI / 6.0, M_PI / 6.0).finished();
+  double speed = 10.0 / 500.0;  ///< phase per call
+  double ramp_per_call = 0.5 / 500.0;
+};
+
+/// Sends one target stream to every platform. Not thread-safe: one command thread owns it.
+class DualPlatformController {
+ public:
+  /// The first platform is the reference: its measured joints start the targets.
+  DualPlatformController(std::vector<PlatformSlot> platforms, ControllerOptions options);
+
+  /// Re-reads the pose from the reference platform's measured joints.
+  void readPose();
+  /// O1: from the current targets to the controller's home under the caps, then the stored
+  /// wrist values are reset.
+  IterationReport home();
+  /// O2 / O3: one manual-loop iteration from a pad reading.
+  IterationReport manual(const GamepadState& pad);
+  /// O4: one recorded joint row, reached under the caps; then the platforms' clocks run on to
+  /// `due` seconds after the replay began (the recording's own timing).
+  IterationReport replayJoints(const ArmPair& joints, double due);
+  /// O5: one call of the sine dance (every platform, within the caps and the limits).
+  IterationReport sineDance();
+  /// Starts a mode's clock: the sine dance's count and the joint replay's start time.
+  void beginMode();
+  /// Lets one command period pass on every platform without moving.
+  void idle();
+
+  /// The largest difference between the first two platforms' measured joints (0 with one).
+  double divergence() const;
+  const ArmPair& commanded() const { return commanded_; }
+  const GamepadMapping& mapping() const { return mapping_; }
+  const std::vector<PlatformSlot>& platforms() const { return platforms_; }
+  double period() const { return 1.0 / options_.rate; }
+
+ private:
+  /// C_V: moves every platform from the current targets to `next` in capped steps.
+  IterationReport execute(const ArmPair& next);
+  ArmPair measured(const PlatformSlot& slot) const;
+  void clamp(ArmPair& joints, IterationReport& report) const;
+
+  std::vector<PlatformSlot> platforms_;
+  ControllerOptions options_;
+  raven::PlatformProfile profile_;
+  ArmPair commanded_;
+  GamepadMapping mapping_;
+  SineDance dance_;
+  long dance_count_ = 0;
+  double mode_start_ = 0.0;
+};
+
+}  // namespace controller

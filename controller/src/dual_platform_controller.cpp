@@ -1,0 +1,140 @@
+#include "controller/dual_platform_controller.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace controller {
+
+namespace {
+
+ArmPair measuredOf(const bridge::RavenPlatform& platform) {
+  return {platform.measuredJs(Arm::Left).position, platform.measuredJs(Arm::Right).position};
+}
+
+}  // namespace
+
+DualPlatformController::DualPlatformController(std::vector<PlatformSlot> platforms,
+                                               ControllerOptions options)
+    : platforms_(std::move(platforms)),
+      options_(std::move(options)),
+      profile_(raven::builtinProfile(options_.profile)),
+      commanded_(measuredOf(*platforms_.at(0).platform)),
+      mapping_(profile_, options_.scheme, commanded_, options_.mapping) {
+  if (!(options_.rate >= 1.0 && options_.rate <= 1000.0)) {
+    throw std::invalid_argument("the command rate must be 1..1000 Hz (the robot's cycle is 1 ms)");
+  }
+}
+
+ArmPair DualPlatformController::measured(const PlatformSlot& slot) const {
+  return measuredOf(*slot.platform);
+}
+
+void DualPlatformController::readPose() {
+  commanded_ = measured(platforms_.front());
+  mapping_.reset(commanded_);
+}
+
+void DualPlatformController::clamp(ArmPair& joints, IterationReport& report) const {
+  for (auto& q : joints) {
+    const raven::ArmJoints before = q;
+    q = q.cwiseMax(profile_.limits.low).cwiseMin(profile_.limits.high);
+    report.clamped = report.clamped || q != before;
+  }
+}
+
+IterationReport DualPlatformController::execute(const ArmPair& next) {
+  const InterpolationPlan plan = planMove(commanded_, next, options_.caps, period());
+  const ArmPair increment = plan.increment();
+  IterationReport report;
+  report.steps = plan.steps;
+  for (int k = 1; k <= plan.steps; ++k) {
+    const ArmPair positions = plan.at(k);
+    for (const PlatformSlot& slot : platforms_) {
+      for (Arm arm : raven::kArms) {
+        const auto a = static_cast<std::size_t>(raven::index(arm));
+        const bridge::PlatformCommand command =
+            slot.style == CommandStyle::ServoJr
+                ? bridge::PlatformCommand{bridge::ServoJr{arm, increment[a]}}
+                : bridge::PlatformCommand{bridge::ServoJp{arm, positions[a]}};
+        const bridge::CommandResult result = slot.platform->send(command);
+        if (!result) {
+          if (report.refused++ == 0) report.refusal = slot.name + ": " + result.note;
+        }
+      }
+    }
+    for (const PlatformSlot& slot : platforms_) slot.platform->advance(period());
+  }
+  commanded_ = next;
+  return report;
+}
+
+IterationReport DualPlatformController::home() {
+  ArmPair target{profile_.home, profile_.home};
+  const IterationReport report = execute(target);
+  mapping_.reset(commanded_);
+  return report;
+}
+
+IterationReport DualPlatformController::manual(const GamepadState& pad) {
+  const MappingResult mapped = mapping_.apply(pad, measured(platforms_.front()));
+  ArmPair next = mapped.joints;
+  IterationReport clamp_report;
+  clamp(next, clamp_report);
+  IterationReport report = execute(next);
+  report.clamped = mapped.clamped || clamp_report.clamped;
+  return report;
+}
+
+void DualPlatformController::beginMode() {
+  dance_count_ = 0;
+  mode_start_ = platforms_.front().platform->now();
+}
+
+IterationReport DualPlatformController::replayJoints(const ArmPair& joints, double due) {
+  ArmPair next = joints;
+  IterationReport clamp_report;
+  clamp(next, clamp_report);
+  IterationReport report = execute(next);
+  report.clamped = clamp_report.clamped;
+  // The recording's timing: wait (on the platforms' own clocks) until the row is due.
+  const auto& reference = *platforms_.front().platform;
+  while (reference.now() - mode_start_ + 0.5 * period() < due) idle();
+  mapping_.reset(commanded_);
+  return report;
+}
+
+IterationReport DualPlatformController::sineDance() {
+  const double ramp = std::min(static_cast<double>(dance_count_) * dance_.ramp_per_call, 1.0);
+  ArmPair next;
+  for (Arm arm : raven::kArms) {
+    const int a = raven::index(arm);
+    for (int i = 0; i < raven::kJointCount; ++i) {
+      next[static_cast<std::size_t>(a)](i) =
+          ramp * dance_.scale(i) *
+              std::sin(dance_.speed * (static_cast<double>(dance_count_) + (i + a) * M_PI / 2.0)) +
+          profile_.home(i);
+    }
+  }
+  ++dance_count_;
+  IterationReport clamp_report;
+  clamp(next, clamp_report);
+  IterationReport report = execute(next);
+  report.clamped = clamp_report.clamped;
+  mapping_.reset(commanded_);
+  return report;
+}
+
+void DualPlatformController::idle() {
+  for (const PlatformSlot& slot : platforms_) slot.platform->advance(period());
+}
+
+double DualPlatformController::divergence() const {
+  if (platforms_.size() < 2) return 0.0;
+  const ArmPair a = measured(platforms_[0]);
+  const ArmPair b = measured(platforms_[1]);
+  return std::max((a[0] - b[0]).cwiseAbs().maxCoeff(), (a[1] - b[1]).cwiseAbs().maxCoeff());
+}
+
+}  // namespace controller

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Replays the paper's recorded gamepad inputs (2arm_ci.csv) with O3 on the twin, in lock-step,
+# records the twin, and compares it with the three physical replays of the same inputs as
+# ../shared/reference/recordings.md does (mean absolute joint difference, no offsets removed).
+#   scripts/replay-paper.sh [raven_controller flags, e.g. --stand-in]
+# Needs a build (scripts/build.sh) and ../shared/data.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${BUILD_DIR:-$root/build}"
+data="${RAVEN_SHARED_DATA_DIR:-$root/../shared/data}/recordings/paper_2arm"
+[ -f "$data/2arm_ci.csv" ] || { echo "replay-paper: $data/2arm_ci.csv not found" >&2; exit 1; }
+out="${OUT_DIR:-$build/replay}"
+# --paper-deadzone: the released controller's deadzone test, which its recordings show
+# (README: "Replaying the paper's recordings").
+"$build/controller/raven_controller" --lock-step --paper-deadzone --replay-ci "$data/2arm_ci.csv" \
+  --record twin_2arm --out "$out" "$@"
+latest="$(ls -t "$out"/twin_2arm_*_rs.csv | head -1)"
+"$build/analysis/raven_disparity" --sim "$latest" --physical "$data"/2arm_physical_{1,2,3}.csv \
+  --velocities

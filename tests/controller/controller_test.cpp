@@ -1,0 +1,175 @@
+// The controller core on the in-process twin: C_V's step counts, a property test that no
+// command stream exceeds a cap or a limit whatever the pad does, and modes O1, O4 and O5.
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "bridge/twin_platform.hpp"
+#include "controller/dual_platform_controller.hpp"
+#include "twin_fixtures.hpp"
+
+namespace {
+
+using controller::ArmPair;
+using controller::GamepadState;
+using raven::Arm;
+using raven::ArmJoints;
+
+/// A platform that passes everything to another and keeps every servo_jr increment it saw.
+class CommandLog final : public bridge::RavenPlatform {
+ public:
+  explicit CommandLog(bridge::RavenPlatform& inner) : inner_(inner) {}
+  bridge::CommandResult send(const bridge::PlatformCommand& c) override {
+    if (const auto* jr = std::get_if<bridge::ServoJr>(&c)) increments.push_back(jr->increment);
+    return inner_.send(c);
+  }
+  bridge::OperatingStatus operatingStatus() const override { return inner_.operatingStatus(); }
+  bridge::JointSample measuredJs(Arm a) const override { return inner_.measuredJs(a); }
+  bridge::JointSample setpointJs(Arm a) const override { return inner_.setpointJs(a); }
+  bridge::PoseSample measuredCp(Arm a) const override { return inner_.measuredCp(a); }
+  bridge::PoseSample setpointCp(Arm a) const override { return inner_.setpointCp(a); }
+  std::optional<bridge::RavenStateSnapshot> ravenState() const override {
+    return inner_.ravenState();
+  }
+  bridge::ClockKind clockKind() const override { return inner_.clockKind(); }
+  double now() const override { return inner_.now(); }
+  void advance(double s) override { inner_.advance(s); }
+
+  std::vector<ArmJoints> increments;
+
+ private:
+  bridge::RavenPlatform& inner_;
+};
+
+TEST(VelocityCap, AtLeastTenStepsMoreWhenAJointWouldExceedItsCap) {
+  const controller::VelocityCaps caps;
+  const ArmPair start{ArmJoints::Zero(), ArmJoints::Zero()};
+  ArmPair next = start;
+  next[0](raven::kShoulder) = 0.001;  // well under 10 steps' worth (1.745e-3)
+  EXPECT_EQ(controller::planMove(start, next, caps, 0.002).steps, 10);
+  next[1](raven::kInsertion) = 0.002;  // 0.02 m/s * 2 ms = 4e-5 per step: int(50) + 1
+  const auto plan = controller::planMove(start, next, caps, 0.002);
+  EXPECT_EQ(plan.steps, 51);
+  EXPECT_EQ(plan.at(plan.steps)[1], next[1]);
+  EXPECT_LE(plan.increment()[1](raven::kInsertion), 4e-5);
+  // At 1 kHz the same speed caps give twice the steps.
+  EXPECT_EQ(controller::planMove(start, next, caps, 0.001).steps, 101);
+}
+
+/// Random and adversarial pads: saturated sticks, triggers slammed, every button at random.
+GamepadState randomPad(std::mt19937_64& random, bool adversarial) {
+  std::uniform_real_distribution<double> axis(-1.0, 1.0), trigger(0.0, 3.996);
+  std::bernoulli_distribution coin(adversarial ? 0.5 : 0.05);
+  auto stick = [&] {
+    return adversarial ? (coin(random) ? 1.0 : -1.0) * (coin(random) ? 1.0 : 0.999) : axis(random);
+  };
+  GamepadState p;
+  p.left_x = stick();
+  p.left_y = stick();
+  p.right_x = stick();
+  p.right_y = stick();
+  p.left_trigger = adversarial ? (coin(random) ? 3.996 : 0.0) : trigger(random);
+  p.right_trigger = adversarial ? (coin(random) ? 3.996 : 0.0) : trigger(random);
+  p.left_bumper = coin(random);
+  p.right_bumper = coin(random);
+  p.a = coin(random);
+  p.b = coin(random);
+  p.x = coin(random);
+  p.y = coin(random);
+  p.back = coin(random);
+  p.start = coin(random);
+  return p;
+}
+
+TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
+  auto twin = test_support::readyTwin();
+  CommandLog log(*twin);
+  controller::DualPlatformController control({{"twin", &log, controller::CommandStyle::ServoJr}},
+                                             {});
+  const ArmJoints cap = controller::VelocityCaps{}.perStep(control.period());
+  const auto& limits = test_support::physicalProfile().limits;
+  std::mt19937_64 random(7);
+  std::size_t clamped = 0;
+  GamepadState pad;
+  for (int i = 0; i < 240; ++i) {
+    // Random readings, and adversarial ones held for 40 iterations to drive into the limits.
+    if (i % 40 == 0 || i >= 200) pad = randomPad(random, /*adversarial=*/i < 200);
+    const auto report = control.manual(pad);
+    clamped += report.clamped;
+    ASSERT_EQ(report.refused, 0u) << report.refusal;
+    for (const auto& q : control.commanded()) {
+      ASSERT_TRUE((q.array() >= limits.low.array()).all() &&
+                  (q.array() <= limits.high.array()).all())
+          << q.transpose();
+    }
+  }
+  ASSERT_FALSE(log.increments.empty());
+  for (const auto& increment : log.increments) {
+    ASSERT_TRUE((increment.cwiseAbs().array() <= cap.array() * (1.0 + 1e-12)).all())
+        << increment.transpose();
+  }
+  for (Arm arm : raven::kArms) {  // the robot's own setpoints stayed inside too
+    const ArmJoints q = twin->setpointJs(arm).position;
+    EXPECT_TRUE((q.array() >= limits.low.array()).all() &&
+                (q.array() <= limits.high.array()).all());
+  }
+  EXPECT_GT(clamped, 0u) << "the adversarial pads should have hit a limit";
+}
+
+TEST(ControllerModes, O1HomesUnderTheCaps) {
+  auto twin = test_support::readyTwin();
+  controller::DualPlatformController control(
+      {{"twin", twin.get(), controller::CommandStyle::ServoJr}}, {});
+  const auto report = control.home();
+  // From the firmware's home (roll 0) to the controller's (roll -pi/4) at 15 deg/s: 3 s.
+  EXPECT_NEAR(report.steps, 1500, 1);
+  twin->advance(0.1);
+  for (Arm arm : raven::kArms) {
+    EXPECT_LT((twin->measuredJs(arm).position - test_support::physicalProfile().home)
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-5);
+  }
+}
+
+TEST(ControllerModes, O5DancesEveryJointWithinTheCaps) {
+  auto twin = test_support::readyTwin();
+  CommandLog log(*twin);
+  controller::DualPlatformController control({{"twin", &log, controller::CommandStyle::ServoJr}},
+                                             {});
+  control.home();
+  control.beginMode();
+  ArmJoints travelled = ArmJoints::Zero();
+  ArmJoints previous = control.commanded()[0];
+  for (int i = 0; i < 400; ++i) {
+    control.sineDance();
+    travelled += (control.commanded()[0] - previous).cwiseAbs();
+    previous = control.commanded()[0];
+  }
+  EXPECT_GT(travelled.minCoeff(), 0.01) << "every joint moves: " << travelled.transpose();
+  const ArmJoints cap = controller::VelocityCaps{}.perStep(control.period());
+  for (const auto& increment : log.increments) {
+    ASSERT_TRUE((increment.cwiseAbs().array() <= cap.array() * (1.0 + 1e-12)).all());
+  }
+}
+
+TEST(ControllerModes, O4FollowsRecordedJointsOnTheRecordingsClock) {
+  auto twin = test_support::readyTwin();
+  controller::DualPlatformController control(
+      {{"twin", twin.get(), controller::CommandStyle::ServoJr}}, {});
+  control.beginMode();
+  const double t0 = twin->now();
+  ArmPair target = control.commanded();
+  for (int row = 1; row <= 50; ++row) {
+    target[0](raven::kShoulder) += 0.0005;  // a slow recorded motion, rows 40 ms apart
+    target[1](raven::kInsertion) -= 0.0001;
+    control.replayJoints(target, 0.04 * row);
+  }
+  EXPECT_NEAR(twin->now() - t0, 2.0, 0.002) << "the rows' own timing was kept";
+  twin->advance(0.05);
+  EXPECT_NEAR(twin->measuredJs(Arm::Left).position(raven::kShoulder), target[0](0), 1e-5);
+  EXPECT_NEAR(twin->measuredJs(Arm::Right).position(raven::kInsertion), target[1](2), 1e-6);
+}
+
+}  // namespace
