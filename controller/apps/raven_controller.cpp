@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <map>
@@ -197,6 +198,13 @@ int run(const Settings& s) {
       }
     }
     if (s.duration > 0.0 && reference.now() - start >= s.duration) break;
+    const auto faulted = std::find_if(platforms.slots.begin(), platforms.slots.end(), [](auto& p) {
+      return p.platform->operatingStatus().state == bridge::OperatingState::Fault;
+    });
+    if (faulted != platforms.slots.end()) {  // everything recorded so far is on disk
+      spdlog::error("{} is in FAULT: stopping", faulted->name);
+      break;
+    }
   }
   const std::size_t rows = session.recording() ? session.stopRecording() : 0;
   spdlog::info("done: {} turns, {:.3f} s of platform time; {} recording file(s){}", turns,
