@@ -186,6 +186,11 @@ BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& 
   if (out.shape != nullptr) {
     out.shape->setMargin(collision.margin);
     if (auto* gimpact = dynamic_cast<btGImpactShapeInterface*>(out.shape)) gimpact->updateBound();
+    // Convex hulls cache their bounding box with the margin they were built with (Bullet's
+    // 4 cm default): recompute it, or every hull reaches 4 cm further in the broadphase.
+    if (auto* hull = dynamic_cast<btPolyhedralConvexAabbCachingShape*>(out.shape)) {
+      hull->recalcLocalAabb();
+    }
   }
   if (body.inertia) {
     out.local_inertia = *body.inertia;
