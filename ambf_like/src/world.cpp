@@ -25,6 +25,11 @@ using detail::toEigen;
 
 namespace {
 
+/// Hash buckets of the soft-body sparse SDF. Bullet's default, 2383, is sized for its 0.25 m
+/// voxels; at millimetre voxels the peg scene holds 58,000 cells after 3 s and a lookup walked
+/// up to 11 of them (611 steps/s; with this table 1.05 and 1,187 steps/s). A prime near 2^18.
+constexpr int kSdfHashBuckets = 262139;
+
 /// Finds an item by qualified name, or by plain name when that is unique.
 template <typename Items>
 std::optional<std::size_t> findByName(const Items& items, std::string_view name) {
@@ -90,6 +95,7 @@ struct World::Impl {
     auto& info = world.getWorldInfo();
     info.m_gravity = toBt(settings.gravity);
     info.air_density = 1.2;
+    info.m_sparsesdf.Initialize(kSdfHashBuckets);
     info.m_sparsesdf.setDefaultVoxelsz(
         options.sdf_voxel_size.value_or(settings.sdf_voxel_size.value_or(0.01)));
     info.m_sparsesdf.Reset();
@@ -247,6 +253,9 @@ const RigidBody& World::body(std::size_t index) const {
 RigidBody& World::body(std::string_view name) {
   return *impl_->bodies[requireByName(impl_->bodies, name, "body")];
 }
+const RigidBody& World::body(std::string_view name) const {
+  return *impl_->bodies[requireByName(impl_->bodies, name, "body")];
+}
 
 std::size_t World::softBodyCount() const {
   return impl_->soft_bodies.size();
@@ -258,6 +267,9 @@ const SoftBody& World::softBody(std::size_t index) const {
   return *impl_->soft_bodies.at(index);
 }
 SoftBody& World::softBody(std::string_view name) {
+  return *impl_->soft_bodies[requireByName(impl_->soft_bodies, name, "soft body")];
+}
+const SoftBody& World::softBody(std::string_view name) const {
   return *impl_->soft_bodies[requireByName(impl_->soft_bodies, name, "soft body")];
 }
 

@@ -31,6 +31,12 @@ std::unique_ptr<Actuation> makeActuation(raven::TwinArms& arms, const DriveTrain
   return std::make_unique<IdealActuation>(arms, drive);
 }
 
+ambf_like::LoadedScene loadScene(const TwinOptions& options) {
+  ambf_like::LoadedScene scene = ambf_like::loadLaunchFile(options.launch_file, {}, options.load);
+  if (options.adjust_scene) options.adjust_scene(scene.spec);
+  return scene;
+}
+
 std::array<ActuatorReadings, 2> readAll(const Actuation& actuation) {
   return {actuation.read(Arm::Left), actuation.read(Arm::Right)};
 }
@@ -38,7 +44,7 @@ std::array<ActuatorReadings, 2> readAll(const Actuation& actuation) {
 }  // namespace
 
 TwinPlatform::TwinPlatform(const TwinOptions& options)
-    : scene_(ambf_like::loadLaunchFile(options.launch_file, {}, options.load)),
+    : scene_(loadScene(options)),
       world_(scene_.spec, meshes_, worldOptions(options.limits)),
       arms_(world_, options.bindings),
       drive_(DriveTrain::raven2()),

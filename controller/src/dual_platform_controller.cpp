@@ -93,15 +93,10 @@ void DualPlatformController::beginMode() {
 }
 
 IterationReport DualPlatformController::replayJoints(const ArmPair& joints, double due) {
-  ArmPair next = joints;
-  IterationReport clamp_report;
-  clamp(next, clamp_report);
-  IterationReport report = execute(next);
-  report.clamped = clamp_report.clamped;
+  const IterationReport report = moveTo(joints);
   // The recording's timing: wait (on the platforms' own clocks) until the row is due.
   const auto& reference = *platforms_.front().platform;
   while (reference.now() - mode_start_ + 0.5 * period() < due) idle();
-  mapping_.reset(commanded_);
   return report;
 }
 
@@ -118,6 +113,11 @@ IterationReport DualPlatformController::sineDance() {
     }
   }
   ++dance_count_;
+  return moveTo(next);
+}
+
+IterationReport DualPlatformController::moveTo(const ArmPair& joints) {
+  ArmPair next = joints;
   IterationReport clamp_report;
   clamp(next, clamp_report);
   IterationReport report = execute(next);

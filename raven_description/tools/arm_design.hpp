@@ -17,7 +17,7 @@ struct ArmDesign {
   Eigen::Vector3d carriage_size{0.05, 0.05, 0.07};
   double shaft_radius = 0.0042;  ///< 8.4 mm instrument shaft
   double wrist_radius = 0.0025;
-  double jaw_length = 0.011, jaw_width = 0.0022, jaw_thickness = 0.0018;
+  double jaw_length = 0.011, jaw_width = 0.0022, jaw_thickness = 0.005;
   // Masses (kg): plausible for an aluminium arm and a laparoscopic instrument.
   double link1_mass = 0.9, link2_mass = 0.7, carriage_mass = 0.35, shaft_mass = 0.08;
   double wrist_mass = 0.006, jaw_mass = 0.003;

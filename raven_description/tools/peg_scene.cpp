@@ -70,16 +70,17 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
   }
   b["compound shape"] = YAML::Clone(b["compound collision shape"]);
   board["BODY peg_board"] = b;
-  writeYaml(board, "Peg board with six posts" + note, dir / "peg_board.yaml");
+  writeYaml(board, "Peg board with twelve posts" + note, dir / "peg_board.yaml");
 
-  // Six soft rings, one resting on each post.
-  torus(d.peg_major_radius, d.peg_minor_radius, d.peg_ring_segments, d.peg_tube_segments)
+  // Six soft rings, one resting on each start post.
+  torus(d.peg_major_radius, d.peg_minor_radius, d.peg_ring_segments, d.peg_tube_segments,
+        d.peg_half_height)
       .writeObj(dir / "meshes" / "peg.obj", "soft ring peg" + note);
   YAML::Node pegs;
   pegs["high resolution path"] = "./meshes/";
   pegs["low resolution path"] = "./meshes/";
   pegs["namespace"] = "/peg_transfer/";
-  for (std::size_t i = 0; i < d.posts.size(); ++i) {
+  for (std::size_t i = 0; i < d.peg_count; ++i) {
     const std::string name = "peg" + std::to_string(i + 1);
     pegs["soft bodies"].push_back("BODY " + name);
     YAML::Node p;
@@ -88,7 +89,7 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
     p["mass"] = number(d.peg_mass);
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = Eigen::Vector3d(d.posts[i].x(), d.posts[i].y(),
-                                       d.board_top + d.peg_minor_radius + d.peg_margin);
+                                       d.board_top + d.peg_half_height + d.peg_margin);
     p["location"] = pose(at);
     p["collision margin"] = number(d.peg_margin);
     // Shape matching and volume conservation keep the ring round and resting (a bare surface
@@ -105,7 +106,7 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
     pegs["BODY " + name] = p;
   }
   pegs["soft bodies"].SetStyle(YAML::EmitterStyle::Flow);
-  writeYaml(pegs, "Six soft ring pegs" + note, dir / "pegs.yaml");
+  writeYaml(pegs, "Six tall soft ring pegs" + note, dir / "pegs.yaml");
 }
 
 }  // namespace raven::model

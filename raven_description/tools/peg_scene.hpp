@@ -1,6 +1,6 @@
 #pragma once
-// The peg-transfer scene: a board with six posts (three in each arm's reach) and six soft ring
-// pegs resting on them.
+// The peg-transfer scene: a board with twelve posts (six in each arm's reach) and six tall soft
+// ring pegs resting on the start posts.
 
 #include <Eigen/Core>
 #include <array>
@@ -11,20 +11,30 @@ namespace raven::model {
 /// Dimensions and placement of the board, the posts and the pegs (our own design).
 struct PegSceneDesign {
   double board_top = -0.205;  ///< z of the board surface in {B} (m)
-  Eigen::Vector3d board_size{0.90, 0.26, 0.01};
-  Eigen::Vector2d board_centre{0.0, 0.11};
+  Eigen::Vector3d board_size{0.90, 0.12, 0.01};
+  Eigen::Vector2d board_centre{0.0, 0.08};
   double post_radius = 0.0025;
   double post_height = 0.022;
-  /// Post positions (x, y) in {B}: three for the left arm, then three for the right. The two
-  /// arms' workspaces do not overlap (their remote centres are 0.6 m apart), so every post sits
-  /// in one arm's reach.
-  std::array<Eigen::Vector2d, 6> posts{Eigen::Vector2d(0.30, 0.07),  Eigen::Vector2d(0.36, 0.12),
-                                       Eigen::Vector2d(0.30, 0.17),  Eigen::Vector2d(-0.30, 0.07),
-                                       Eigen::Vector2d(-0.36, 0.12), Eigen::Vector2d(-0.30, 0.17)};
-  double peg_major_radius = 0.006;  ///< ring centre line
-  double peg_minor_radius = 0.002;  ///< tube
-  int peg_ring_segments = 12;       ///< 72 nodes: round enough, and six of them step at 5 kHz
-  int peg_tube_segments = 6;
+  /// Post positions (x, y) in {B}, six per arm: a start row (y = 0.058, where the pegs begin)
+  /// and a target row (y = 0.100), in the part of each arm's workspace where the grasper can
+  /// point straight down at every side of a peg (about 8 x 6 cm under its remote centre). The
+  /// two arms' workspaces do not overlap (their remote centres are 0.6 m apart).
+  std::array<Eigen::Vector2d, 12> posts{
+      Eigen::Vector2d(0.266, 0.058),  Eigen::Vector2d(0.300, 0.058),
+      Eigen::Vector2d(0.334, 0.058),  Eigen::Vector2d(-0.266, 0.058),
+      Eigen::Vector2d(-0.300, 0.058), Eigen::Vector2d(-0.334, 0.058),
+      Eigen::Vector2d(0.266, 0.100),  Eigen::Vector2d(0.300, 0.100),
+      Eigen::Vector2d(0.334, 0.100),  Eigen::Vector2d(-0.266, 0.100),
+      Eigen::Vector2d(-0.300, 0.100), Eigen::Vector2d(-0.334, 0.100)};
+  /// The pegs start on the first six posts (the start rows).
+  std::size_t peg_count = 6;
+  /// A tall soft ring: centre line radius, and the tube's half-width and half-height, so the
+  /// grasper can pinch its wall well above the board while the post passes through its hole.
+  double peg_major_radius = 0.008;
+  double peg_minor_radius = 0.002;
+  double peg_half_height = 0.005;
+  int peg_ring_segments = 16;  ///< 128 nodes: a station every 3.1 mm around the ring
+  int peg_tube_segments = 8;
   double peg_mass = 0.002;
   double peg_margin = 0.0005;
 };

@@ -43,7 +43,8 @@ std::vector<Eigen::Vector3d> jawHullPoints(double length, double width, double t
 
 /// A closed torus (ring) surface around z: `major` radius to the tube centre, `minor` tube
 /// radius, `ring_segments` x `tube_segments` vertices.
-TriangleMesh torus(double major, double minor, int ring_segments, int tube_segments);
+TriangleMesh torus(double major, double minor, int ring_segments, int tube_segments,
+                   double minor_height = 0.0);
 
 /// The convex hull surface of a point set (quickhull via Bullet's btConvexHullComputer).
 TriangleMesh convexHull(const std::vector<Eigen::Vector3d>& points);

@@ -180,23 +180,28 @@ TEST(Twin, PegTransferSceneRestsTenSecondsWithEveryPegOnItsPost) {
   for (std::size_t p = 0; p < 6; ++p) settled.push_back(twin.world.softBody(p).centerOfMass());
   twin.world.step(9000);
   ASSERT_TRUE(twin.world.isFinite());
-  const double board_top = -0.205, hole = 0.004, post = 0.0025;
-  const std::array<Eigen::Vector2d, 6> posts{Eigen::Vector2d(0.30, 0.07),
-                                             {0.36, 0.12},
-                                             {0.30, 0.17},
-                                             {-0.30, 0.07},
-                                             {-0.36, 0.12},
-                                             {-0.30, 0.17}};
+  // Tall rings (centre line 8 mm, tube 2 x 5 mm half-axes) on the start row of posts.
+  const double board_top = -0.205, hole = 0.006, post = 0.0025;
+  const std::array<Eigen::Vector2d, 6> posts{Eigen::Vector2d(0.266, 0.058),
+                                             {0.300, 0.058},
+                                             {0.334, 0.058},
+                                             {-0.266, 0.058},
+                                             {-0.300, 0.058},
+                                             {-0.334, 0.058}};
+  double worst_drift = 0.0;
   for (std::size_t p = 0; p < 6; ++p) {
     const auto& peg = twin.world.softBody(p);
     const Vector3d centre = peg.centerOfMass();
+    worst_drift = std::max(worst_drift, (centre - settled[p]).norm());
     EXPECT_LT((centre - settled[p]).norm(), 1e-3) << peg.name() << " drifted";
     EXPECT_LT((centre.head<2>() - posts[p]).norm(), hole - post) << peg.name() << " left its post";
     Eigen::AlignedBox3d box;
     for (const auto& v : peg.nodePositions()) box.extend(v);
     EXPECT_GT(box.min().z(), board_top - 1e-3) << peg.name() << " sank into the board";
-    EXPECT_NEAR(box.sizes().x(), 0.016, 0.2 * 0.016) << peg.name() << " lost its shape";
+    EXPECT_NEAR(box.sizes().x(), 0.020, 0.2 * 0.020) << peg.name() << " lost its shape";
+    EXPECT_NEAR(box.sizes().z(), 0.010, 0.2 * 0.010) << peg.name() << " lost its height";
   }
+  std::printf("worst peg drift from 1 s to 10 s: %.1f um\n", worst_drift * 1e6);
 }
 
 TEST(Twin, AmbfsOwnRavenIsDrivableThroughTheSameArmLayer) {

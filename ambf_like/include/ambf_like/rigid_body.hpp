@@ -36,6 +36,7 @@ class RigidBody {
   bool isFinite() const;
 
   btRigidBody& bullet() { return *body_; }
+  const btRigidBody& bullet() const { return *body_; }
 
  private:
   BodySpec spec_;

@@ -30,6 +30,7 @@ class SoftBody {
   bool isFinite() const;
 
   btSoftBody& bullet() { return *body_; }
+  const btSoftBody& bullet() const { return *body_; }
 
  private:
   SoftBodySpec spec_;

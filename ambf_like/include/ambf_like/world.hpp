@@ -68,11 +68,13 @@ class World {
   RigidBody& body(std::size_t index);
   const RigidBody& body(std::size_t index) const;
   RigidBody& body(std::string_view name);
+  const RigidBody& body(std::string_view name) const;
 
   std::size_t softBodyCount() const;
   SoftBody& softBody(std::size_t index);
   const SoftBody& softBody(std::size_t index) const;
   SoftBody& softBody(std::string_view name);
+  const SoftBody& softBody(std::string_view name) const;
 
   /// Every contact point of the last step, rigid-rigid and soft-rigid.
   std::vector<Contact> contacts() const;

@@ -3,6 +3,7 @@
 // on the simulated or the wall clock.
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -25,6 +26,9 @@ struct TwinOptions {
   /// How strictly the model files are read (AMBF's own Raven-II needs skip_missing_files: two of
   /// its meshes are missing upstream).
   ambf_like::LoadOptions load;
+  /// Applied to the loaded scene before the World is built (randomised batches vary friction,
+  /// softness and start poses this way).
+  std::function<void(ambf_like::SceneSpec&)> adjust_scene;
   raven::ArmBindings bindings = raven::ArmBindings::ourRaven();
   /// "physical" (our model) or "ambf" (AMBF's blender-raven2.yaml), or a profile file.
   std::string profile = "physical";
@@ -54,6 +58,7 @@ class TwinPlatform final : public RavenPlatform {
 
   /// The simulation, for scenes that need more than the arms (pegs, contacts).
   ambf_like::World& world() { return world_; }
+  const ambf_like::World& world() const { return world_; }
   const RavenCore& core() const { return core_; }
 
  private:

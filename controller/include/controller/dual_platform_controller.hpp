@@ -73,6 +73,9 @@ class DualPlatformController {
   void beginMode();
   /// Lets one command period pass on every platform without moving.
   void idle();
+  /// Scripted operation: moves every platform to `joints` under the caps (C_V), as a pad's
+  /// iteration would; the mapping then continues from there.
+  IterationReport moveTo(const ArmPair& joints);
 
   /// The largest difference between the first two platforms' measured joints (0 with one).
   double divergence() const;

@@ -1,0 +1,225 @@
+// raven_peg_transfer: the project's main job. Runs the peg transfer (or the paper's rectangle
+// task D_II) on the in-process twin, headless, no ROS master: one run with a per-peg report, or
+// a seeded randomised batch, split across machines with --shard, as JSON lines.
+
+#include <spdlog/fmt/fmt.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "scenario/batch.hpp"
+#include "scenario/batch_summary.hpp"
+#include "scenario/console_report.hpp"
+#include "scenario/handover_reach.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Command-line settings.
+struct Settings {
+  std::string task = "peg";
+  std::uint64_t seed = 0;
+  std::size_t runs = 1;
+  std::string shard = "1/1";
+  bool randomize = false;
+  std::string assist = "off";
+  std::size_t threads = 0;
+  std::string out_dir = "peg_transfer_results";
+  std::string record = "auto";
+  std::string jsonl;
+  bool stand_in = false;
+  double time_limit = 240.0;
+  double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
+  bool quiet = false, verbose = false;
+};
+
+constexpr std::size_t kHandoverSamples = 100000;
+constexpr double kJawLength = 0.0102;  ///< the grasper jaw's length past the jaw axis (m)
+
+/// Logs go to stderr, so stdout holds only the report.
+void setUpLogging(const Settings& s) {
+  spdlog::set_default_logger(spdlog::stderr_color_mt("raven_peg_transfer"));
+  spdlog::set_level(s.verbose ? spdlog::level::debug
+                    : s.quiet ? spdlog::level::warn
+                              : spdlog::level::info);
+}
+
+/// A file name that keeps shards sharing one directory apart.
+std::string shardSuffix(const scenario::Shard& shard) {
+  return shard.count == 1
+             ? ""
+             : "-shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
+}
+
+void writeJson(const fs::path& path, const nlohmann::json& j) {
+  std::ofstream file(path);
+  file << j.dump(2) << '\n';
+  if (!file) throw std::runtime_error("cannot write " + path.string());
+}
+
+int runPegTransfers(const Settings& s) {
+  const scenario::Shard shard = scenario::Shard::parse(s.shard);
+  const auto seeds = scenario::seedsOf(s.seed, s.runs, shard);
+  if (s.runs > 1 && !s.randomize) {
+    spdlog::warn("--runs {} without --randomize: every run uses the same nominal scene", s.runs);
+  }
+  const fs::path out(s.out_dir);
+  fs::create_directories(out);
+  const bool record = s.record == "yes" || (s.record == "auto" && seeds.size() == 1);
+  const fs::path jsonl_path =
+      s.jsonl.empty() ? out / ("runs" + shardSuffix(shard) + ".jsonl") : fs::path(s.jsonl);
+  std::ofstream jsonl(jsonl_path);
+  if (!jsonl) throw std::runtime_error("cannot write " + jsonl_path.string());
+
+  scenario::PegTransferOptions options;
+  options.randomize = s.randomize;
+  options.assist =
+      s.assist == "contact" ? scenario::AssistMode::Contact : scenario::AssistMode::Off;
+  options.stand_in = s.stand_in;
+  options.time_limit = s.time_limit;
+  const bool single = seeds.size() == 1;
+  const std::string which =
+      single ? fmt::format("seed {}", seeds.front())
+             : fmt::format("{} runs, seeds {}..{}", seeds.size(), s.seed, s.seed + s.runs - 1);
+  fmt::print("Peg transfer on the Raven-II twin: {}{}, {} scene, grasp assist {}{}\n", which,
+             shard.count > 1 ? fmt::format(" (shard {}: every {}th from seed {})", s.shard,
+                                           shard.count, s.seed + shard.index - 1)
+                             : "",
+             s.randomize ? "randomised" : "nominal", s.assist,
+             s.stand_in ? ", physical stand-in actuation" : "");
+  std::fflush(stdout);
+
+  scenario::ProgressBar bar(stderr, single ? "transfers" : "runs");
+  std::vector<scenario::PegTransferResult> results;
+  if (single) {
+    options.seed = seeds.front();
+    if (record)
+      options.rs_file = out / ("peg_transfer_seed" + std::to_string(options.seed) + "_rs.csv");
+    options.progress = [&bar](const scenario::RunProgress& p) { bar.show(p); };
+    results.push_back(scenario::runPegTransfer(options));
+    jsonl << results.back().json().dump() << '\n' << std::flush;
+  } else {
+    if (record) spdlog::warn("--record yes: every run writes its rs file into {}", out.string());
+    std::size_t finished = 0;
+    results = scenario::runBatch(
+        options, seeds,
+        s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency()),
+        [&](const scenario::PegTransferResult& r) {
+          jsonl << r.json().dump() << '\n' << std::flush;
+          bar.show({r.timing.sim_time, 0.0, ++finished, seeds.size()});
+        });
+  }
+  bar.finish();
+
+  const auto handover =
+      scenario::measureHandoverReach(raven::builtinProfile("physical"), kHandoverSamples);
+  if (single) {
+    fmt::print("{}{}", scenario::pegTable(results.front()),
+               scenario::timingLine(results.front().timing));
+  } else {
+    fmt::print("{}", scenario::batchTable(results));
+  }
+  fmt::print("mid-air handover: {}\n", handover.explain(kJawLength));
+
+  nlohmann::json summary = scenario::summarize(results);
+  summary["task"] = "peg_transfer";
+  summary["shard"] = s.shard;
+  summary["first_seed"] = s.seed;
+  summary["randomized"] = s.randomize;
+  summary["grasp_assist"] = s.assist;
+  summary["handover"] = {
+      {"possible", handover.possible(kJawLength)},   {"left_min_x_m", handover.left_min_x},
+      {"right_max_x_m", handover.right_max_x},       {"gap_m", handover.gap()},
+      {"samples_per_arm", handover.samples_per_arm}, {"explanation", handover.explain(kJawLength)}};
+  for (const auto& r : results) summary["results"].push_back(r.json());
+  const fs::path summary_path = out / ("summary" + shardSuffix(shard) + ".json");
+  writeJson(summary_path, summary);
+  const auto& first = results.front();
+  fmt::print(
+      "wrote {}{}, {}\n",
+      single && record ? fmt::format("{} ({} rows), ", first.rs_file.string(), first.rs_rows) : "",
+      summary_path.string(), jsonl_path.string());
+  return 0;
+}
+
+int runRectangleTask(const Settings& s) {
+  const fs::path out(s.out_dir);
+  fs::create_directories(out);
+  scenario::RectangleOptions options;
+  options.stand_in = s.stand_in;
+  if (s.rect_width_mm > 0) options.width = s.rect_width_mm * 1e-3;
+  if (s.rect_depth_mm > 0) options.depth = s.rect_depth_mm * 1e-3;
+  if (s.record != "no") {
+    options.rs_file = out / "rectangle_rs.csv";
+    options.ci_file = out / "rectangle_ci.csv";
+  }
+  fmt::print(
+      "Rectangle task D_II on the Raven-II twin: both arms, M2, sticks at full deflection\n");
+  std::fflush(stdout);
+  scenario::ProgressBar bar(stderr, "pad readings");
+  options.progress = [&bar](const scenario::RunProgress& p) { bar.show(p); };
+  const auto result = scenario::runRectangle(options);
+  bar.finish();
+  fmt::print("{}{}", scenario::rectangleSummary(result, options),
+             scenario::timingLine(result.timing));
+  const fs::path summary_path = out / "rectangle_summary.json";
+  writeJson(summary_path, result.json());
+  fmt::print("wrote {}{}\n",
+             options.rs_file.empty()
+                 ? ""
+                 : fmt::format("{}, {}, ", options.rs_file.string(), options.ci_file.string()),
+             summary_path.string());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Settings s;
+  CLI::App app{
+      "raven_peg_transfer: the peg transfer (or the rectangle task D_II) on the Raven-II "
+      "twin, headless; prints per-peg results and rates, writes the rs recording, a JSON "
+      "summary and JSON lines"};
+  app.add_option("--task", s.task, "peg (the peg transfer, default) or rectangle (D_II)")
+      ->check(CLI::IsMember({"peg", "rectangle"}));
+  app.add_option("--seed", s.seed, "first seed (run k uses seed + k)");
+  app.add_option("--runs", s.runs, "how many runs in the whole batch")->check(CLI::PositiveNumber);
+  app.add_option("--shard", s.shard,
+                 "i/N: run only this shard's share of the batch (runs k with k mod N = i - 1)");
+  app.add_flag("--randomize", s.randomize,
+               "draw peg start poses, peg friction and softness and board friction from the seed");
+  app.add_option("--grasp-assist", s.assist,
+                 "off (default: friction only) or contact (pin a peg touched by both jaws)")
+      ->check(CLI::IsMember({"off", "contact"}))
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // quickstart.sh's can be overridden
+  app.add_option("--threads", s.threads, "worker threads for a batch (default: one per core)");
+  app.add_option("--out", s.out_dir, "directory for the recordings and the summary");
+  app.add_option("--record", s.record, "write rs files: auto (a single run only), yes or no")
+      ->check(CLI::IsMember({"auto", "yes", "no"}));
+  app.add_option("--jsonl", s.jsonl, "JSON-lines file, one line per run (default: in --out)");
+  app.add_flag("--stand-in", s.stand_in, "the physical stand-in's actuation model");
+  app.add_option("--time-limit", s.time_limit, "simulated seconds a run may take")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--rect-width", s.rect_width_mm, "rectangle task: the side along x (mm)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--rect-depth", s.rect_depth_mm, "rectangle task: the side along y (mm)")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("-q,--quiet", s.quiet, "warnings and errors only");
+  app.add_flag("-v,--verbose", s.verbose, "log every phase of every transfer");
+  CLI11_PARSE(app, argc, argv);
+  setUpLogging(s);
+  try {
+    return s.task == "rectangle" ? runRectangleTask(s) : runPegTransfers(s);
+  } catch (const std::invalid_argument& e) {
+    spdlog::error("{}", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,66 @@
+#pragma once
+// One arm's scripted peg transfers: for each peg, orient the grasper over it, descend, close,
+// lift, carry, lower, open and retreat. Each call gives the next manual-loop target (at most a
+// millimetre or 0.05 rad from the last), which the controller then reaches under its caps,
+// exactly as it would a gamepad's. Positions move with the wrist-locked IK C_W.
+
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "ambf_like/world.hpp"
+#include "raven/arm_kinematics.hpp"
+#include "scenario/peg_layout.hpp"
+
+namespace scenario {
+
+/// The steps of one transfer.
+enum class Phase { Orient, Descend, Close, Lift, Carry, Lower, Open, Settle, Retreat, Done };
+
+std::string_view phaseName(Phase phase);
+
+/// Scripted operator for one arm.
+class ArmRoutine {
+ public:
+  ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile, const PegLayout& layout,
+             std::vector<PegJob> jobs);
+
+  /// The arm's next target. `target` is its current one, `world` shows the pegs.
+  raven::ArmJoints next(const raven::ArmJoints& target, const ambf_like::World& world);
+  bool done() const { return phase_ == Phase::Done; }
+  Phase phase() const { return phase_; }
+  /// The jaws' commanded opening (jaw1 + jaw2) of the last target.
+  double opening() const { return inner_ + outer_; }
+  /// Jobs finished (whatever their outcome).
+  std::size_t finished() const { return job_; }
+  const std::vector<PegJob>& jobs() const { return jobs_; }
+
+ private:
+  /// Where the grasp of the current job sits, measured from the peg when it starts.
+  struct Grasp {
+    Eigen::Matrix3d orientation;  ///< jaws down, turning about the ring's tangent
+    Eigen::Vector3d pivot;        ///< the jaw axis at the grasp
+    Eigen::Vector2d carry_offset = Eigen::Vector2d::Zero();  ///< pivot - ring centre
+  };
+  void plan(const ambf_like::World& world);
+  /// The joints (within the limits, nearest `target`) that hold the jaws open over the grasp.
+  std::optional<raven::ArmJoints> overPeg(const raven::ArmJoints& target) const;
+  /// Moves the tool point towards `goal` by at most `step`, the wrist locked.
+  raven::ArmJoints translate(const raven::ArmJoints& target, const Eigen::Vector3d& goal,
+                             double step, bool& arrived) const;
+  raven::ArmJoints withJaws(raven::ArmJoints q) const;
+  void advance(Phase next);
+
+  raven::Arm arm_;
+  raven::PlatformProfile profile_;
+  raven::ArmKinematics kinematics_;
+  PegLayout layout_;
+  std::vector<PegJob> jobs_;
+  std::size_t job_ = 0;
+  Phase phase_ = Phase::Orient;
+  int waited_ = 0;
+  Grasp grasp_;
+  double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
+};
+
+}  // namespace scenario

@@ -1,0 +1,36 @@
+#pragma once
+// The peg-transfer scenario, the project's main job: both arms of the in-process twin move the
+// six soft pegs from the start row to the target row, driven through the same controller path
+// a gamepad uses (DualPlatformController: velocity caps, wrist-locked IK), on the simulated
+// clock, optionally recording the paper's rs file.
+
+#include <cstdint>
+#include <filesystem>
+
+#include "scenario/peg_transfer_result.hpp"
+#include "scenario/run_progress.hpp"
+
+namespace scenario {
+
+/// How to run the scenario.
+struct PegTransferOptions {
+  std::uint64_t seed = 0;
+  /// Draw the scene from `seed` (scene_variation.hpp's ranges); else the nominal scene.
+  bool randomize = false;
+  AssistMode assist = AssistMode::Off;
+  /// The physical stand-in's actuation model instead of the twin's ideal servos.
+  bool stand_in = false;
+  /// Writes the rs recording here (one row per manual-loop iteration); empty: none.
+  std::filesystem::path rs_file;
+  /// Simulated seconds after which the run stops, whatever is left undone.
+  double time_limit = 240.0;
+  /// Simulated seconds the pegs settle after the last release before they are judged.
+  double settle_time = 1.0;
+  /// Called after every manual-loop iteration.
+  ProgressCallback progress;
+};
+
+/// Runs the scenario once. Throws common::LoadError if the scene's files are bad.
+PegTransferResult runPegTransfer(const PegTransferOptions& options);
+
+}  // namespace scenario

@@ -1,0 +1,58 @@
+#pragma once
+// What one peg-transfer run did: each peg's outcome, the run's timing, and its JSON line.
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "raven/arm.hpp"
+#include "scenario/run_timing.hpp"
+#include "scenario/scene_variation.hpp"
+
+namespace scenario {
+
+/// Whether the grasp assist may pin a touched peg to the jaws (grasp_assist.hpp).
+enum class AssistMode { Off, Contact };
+
+std::string_view assistName(AssistMode mode);
+
+/// One peg's transfer, as its soft body's nodes tell it.
+struct PegOutcome {
+  std::string peg;
+  raven::Arm arm = raven::Arm::Left;
+  Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
+  bool grasped = false;  ///< the ring left the board (its lowest node 5 mm above it)
+  double lift = 0.0;     ///< the highest its lowest node rose above the board (m)
+  bool placed = false;   ///< at the end: resting on its target post
+  bool lost = false;     ///< non-finite nodes, volume off by more than 20 %, or under the board
+  std::string loss;      ///< why it counts as lost
+  double min_volume_ratio = 1.0, max_volume_ratio = 1.0;  ///< volume / rest volume, extremes
+  Eigen::Vector3d final_centre = Eigen::Vector3d::Zero();
+  double miss = 0.0;  ///< final centre to the target post's axis, horizontally (m)
+};
+
+/// One run of the scenario.
+struct PegTransferResult {
+  SceneVariation variation;
+  AssistMode assist = AssistMode::Off;
+  bool stand_in = false;
+  std::array<PegOutcome, 6> pegs;
+  bool timed_out = false;  ///< the simulated time limit ended it
+  RunTiming timing;
+  std::size_t iterations = 0;  ///< manual-loop iterations
+  std::size_t grasps = 0;      ///< grasps the assist made
+  std::size_t refused = 0;     ///< commands the platform refused
+  std::filesystem::path rs_file;
+  std::size_t rs_rows = 0;
+
+  std::size_t placed() const;
+  std::size_t lost() const;
+  bool allPlaced() const { return placed() == pegs.size(); }
+  /// One JSON object (a JSON-lines row).
+  nlohmann::json json() const;
+};
+
+}  // namespace scenario

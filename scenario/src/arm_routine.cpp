@@ -1,0 +1,217 @@
+#include "scenario/arm_routine.hpp"
+
+#include <spdlog/spdlog.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace scenario {
+
+namespace {
+
+constexpr double kOpen = 1.3;         ///< the outer jaw's angle when open (rad): clear of the ring
+constexpr double kPress = -0.05;      ///< ... when closed: a little past the inner jaw's face
+constexpr double kJawStep = 0.05;     ///< jaw angle per iteration
+constexpr double kStep = 0.001;       ///< tool travel per iteration (m)
+constexpr double kAboveTop = 0.0035;  ///< the jaw axis above the ring's top at the grasp
+constexpr double kGap = 0.0002;       ///< the inner jaw's face from the wall
+constexpr double kApproach = 0.025;   ///< the orientation move ends this far above the grasp
+constexpr double kLift = 0.030;       ///< the ring's bottom clears the 22 mm post
+constexpr double kRetreat = 0.025;
+constexpr double kReleaseHeight = 0.0015;  ///< the ring's bottom above the board when let go
+constexpr int kSettleIterations = 15;
+constexpr double kStationWindow = 8.0 * M_PI / 180.0;
+
+double angleAbout(const Eigen::Vector2d& centre, const Eigen::Vector3d& p) {
+  return std::atan2(p.y() - centre.y(), p.x() - centre.x());
+}
+
+}  // namespace
+
+std::string_view phaseName(Phase phase) {
+  static constexpr std::array<std::string_view, 10> names{
+      "orient", "descend", "close", "lift", "carry", "lower", "open", "settle", "retreat", "done"};
+  return names[static_cast<std::size_t>(phase)];
+}
+
+ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
+                       const PegLayout& layout, std::vector<PegJob> jobs)
+    : arm_(arm),
+      profile_(profile),
+      kinematics_(raven::ArmKinematics::of(profile, arm)),
+      layout_(layout),
+      jobs_(std::move(jobs)) {
+  if (jobs_.empty()) phase_ = Phase::Done;
+}
+
+void ArmRoutine::plan(const ambf_like::World& world) {
+  const auto& peg = world.softBody(jobs_[job_].peg);
+  const PegState state = inspect(peg);
+  const Eigen::Vector2d centre = state.centre.head<2>();
+  // The station (one ring of the tube's nodes) nearest the peg's -y side, away from the
+  // target row: the nodes within a few degrees of the node nearest -90 degrees.
+  const auto& nodes = peg.nodePositions();
+  auto offSide = [&](const Eigen::Vector3d& p) {
+    return std::abs(std::remainder(angleAbout(centre, p) + M_PI / 2, 2 * M_PI));
+  };
+  const auto nearest =
+      std::min_element(nodes.begin(), nodes.end(),
+                       [&](const auto& a, const auto& b) { return offSide(a) < offSide(b); });
+  const double station_angle = angleAbout(centre, *nearest);
+  Eigen::Vector3d station = Eigen::Vector3d::Zero();
+  double top = -std::numeric_limits<double>::infinity();
+  int count = 0;
+  for (const auto& p : nodes) {
+    top = std::max(top, p.z());
+    if (std::abs(std::remainder(angleAbout(centre, p) - station_angle, 2 * M_PI)) <
+        kStationWindow) {
+      station += p;
+      ++count;
+    }
+  }
+  station /= count;
+  const Eigen::Vector2d inward = (centre - station.head<2>()).normalized();
+  // Jaws down; jaw 1 (the inner one) swings towards grasp_scale's side of the tool's y axis.
+  const double side = profile_.arm(arm_).grasp_scale > 0 ? 1.0 : -1.0;
+  const Eigen::Vector3d x(0, 0, -1), y = side * Eigen::Vector3d(inward.x(), inward.y(), 0);
+  grasp_.orientation.col(0) = x;
+  grasp_.orientation.col(1) = y;
+  grasp_.orientation.col(2) = x.cross(y);
+  const Eigen::Vector2d face = station.head<2>() + inward * (layout_.tube_half_width + kGap);
+  grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), top + kAboveTop);
+}
+
+raven::ArmJoints ArmRoutine::withJaws(raven::ArmJoints q) const {
+  q(raven::kJaw1) = inner_;
+  q(raven::kJaw2) = outer_;
+  return q;
+}
+
+std::optional<raven::ArmJoints> ArmRoutine::overPeg(const raven::ArmJoints& target) const {
+  Eigen::Isometry3d above = Eigen::Isometry3d::Identity();
+  above.linear() = grasp_.orientation;
+  above.translation() = grasp_.pivot + Eigen::Vector3d(0, 0, kApproach);
+  std::optional<raven::ArmJoints> best;
+  for (const auto& c : kinematics_.inverseCandidates(above, opening(), target)) {
+    const bool within = (c.array() >= profile_.limits.low.array()).all() &&
+                        (c.array() <= profile_.limits.high.array()).all();
+    if (within && (!best || raven::ArmKinematics::distance(c, target) <
+                                raven::ArmKinematics::distance(*best, target))) {
+      best = c;
+    }
+  }
+  if (best) *best = withJaws(*best);
+  return best;
+}
+
+raven::ArmJoints ArmRoutine::translate(const raven::ArmJoints& target, const Eigen::Vector3d& goal,
+                                       double step, bool& arrived) const {
+  const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+  Eigen::Vector3d delta = goal - tool;
+  arrived = delta.norm() <= step;
+  if (!arrived) delta *= step / delta.norm();
+  // The wrist is locked: the wrist point moves as the tool point does.
+  const auto solution =
+      kinematics_.inverseWristLocked(kinematics_.wristPoint(target) + delta, target, profile_.home);
+  if (!solution.ok || solution.clamp.any()) {  // out of reach: give the step up and carry on
+    arrived = true;
+    return target;
+  }
+  return withJaws(solution.joints);
+}
+
+void ArmRoutine::advance(Phase next) {
+  phase_ = next;
+  waited_ = 0;
+}
+
+raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_like::World& world) {
+  bool arrived = false;
+  raven::ArmJoints q = target;
+  const Phase before = phase_;
+  const std::size_t job = job_;
+  switch (phase_) {
+    case Phase::Orient: {  // one capped move: over the peg, jaws down and open
+      plan(world);
+      inner_ = 0.0;
+      outer_ = kOpen;
+      if (const auto above = overPeg(target)) {
+        q = *above;
+        advance(Phase::Descend);
+      } else {  // out of reach: leave this peg (its outcome shows it)
+        spdlog::warn("{} arm: no joint solution within the limits over {}; skipping it",
+                     raven::armName(arm_), jobs_[job_].peg);
+        advance(Phase::Retreat);
+      }
+      break;
+    }
+    case Phase::Descend:
+      q = translate(target, grasp_.pivot, kStep, arrived);
+      if (arrived) advance(Phase::Close);
+      break;
+    case Phase::Close:
+      outer_ = std::max(kPress, outer_ - kJawStep);
+      q = withJaws(target);
+      if (outer_ <= kPress) advance(Phase::Lift);
+      break;
+    case Phase::Lift:
+      q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
+      if (arrived) {
+        const Eigen::Vector3d tool = kinematics_.toolPose(q).translation();
+        grasp_.carry_offset =
+            tool.head<2>() - inspect(world.softBody(jobs_[job_].peg)).centre.head<2>();
+        advance(Phase::Carry);
+      }
+      break;
+    case Phase::Carry: {
+      const Eigen::Vector2d over = jobs_[job_].to + grasp_.carry_offset;
+      q = translate(target, Eigen::Vector3d(over.x(), over.y(), grasp_.pivot.z() + kLift), kStep,
+                    arrived);
+      if (arrived) advance(Phase::Lower);
+      break;
+    }
+    case Phase::Lower: {
+      const double bottom = inspect(world.softBody(jobs_[job_].peg)).bottom;
+      const double drop = bottom - (layout_.geometry.board_top + kReleaseHeight);
+      const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+      q = translate(target, tool - Eigen::Vector3d(0, 0, std::max(drop, 0.0)), kStep, arrived);
+      // Also stop when the jaws come near the board (the ring did not come along).
+      if (arrived || tool.z() < grasp_.pivot.z() - 0.002) advance(Phase::Open);
+      break;
+    }
+    case Phase::Open:
+      outer_ = std::min(kOpen, outer_ + kJawStep);
+      q = withJaws(target);
+      if (outer_ >= kOpen) advance(Phase::Settle);
+      break;
+    case Phase::Settle:
+      if (++waited_ >= kSettleIterations) advance(Phase::Retreat);
+      break;
+    case Phase::Retreat: {
+      const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+      const double height = grasp_.pivot.z() + kRetreat;
+      q = translate(target, Eigen::Vector3d(tool.x(), tool.y(), height), kStep, arrived);
+      if (arrived) {
+        ++job_;
+        advance(job_ < jobs_.size() ? Phase::Orient : Phase::Done);
+      }
+      break;
+    }
+    case Phase::Done:
+      break;
+  }
+  if (phase_ != before) {
+    const PegState peg = inspect(world.softBody(jobs_[job].peg));
+    const Eigen::Vector3d tool = kinematics_.toolPose(q).translation();
+    spdlog::debug(
+        "{} arm, {}: {} -> {}; tool ({:.4f} {:.4f} {:.4f}), peg centre ({:.4f} {:.4f} "
+        "{:.4f}) bottom {:.4f}",
+        raven::armName(arm_), jobs_[job].peg, phaseName(before), phaseName(phase_), tool.x(),
+        tool.y(), tool.z(), peg.centre.x(), peg.centre.y(), peg.centre.z(), peg.bottom);
+  }
+  return q;
+}
+
+}  // namespace scenario

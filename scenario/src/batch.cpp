@@ -1,0 +1,78 @@
+#include "scenario/batch.hpp"
+
+#include <atomic>
+#include <charconv>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace scenario {
+
+namespace {
+
+std::size_t parseCount(std::string_view part, std::string_view whole) {
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+  if (part.empty() || error != std::errc() || end != part.data() + part.size()) {
+    throw std::invalid_argument("shard '" + std::string(whole) +
+                                "': expected i/N with whole numbers, as in 2/8");
+  }
+  return value;
+}
+
+}  // namespace
+
+Shard Shard::parse(std::string_view text) {
+  const auto slash = text.find('/');
+  if (slash == std::string_view::npos) {
+    throw std::invalid_argument("shard '" + std::string(text) + "': expected i/N, as in 2/8");
+  }
+  Shard shard{parseCount(text.substr(0, slash), text), parseCount(text.substr(slash + 1), text)};
+  if (shard.count == 0 || shard.index == 0 || shard.index > shard.count) {
+    throw std::invalid_argument("shard '" + std::string(text) +
+                                "': needs 1 <= i <= N (shards are numbered from 1)");
+  }
+  return shard;
+}
+
+std::vector<std::uint64_t> seedsOf(std::uint64_t first_seed, std::size_t runs, const Shard& shard) {
+  std::vector<std::uint64_t> seeds;
+  for (std::size_t k = shard.index - 1; k < runs; k += shard.count) seeds.push_back(first_seed + k);
+  return seeds;
+}
+
+std::vector<PegTransferResult> runBatch(
+    const PegTransferOptions& base, const std::vector<std::uint64_t>& seeds, std::size_t threads,
+    const std::function<void(const PegTransferResult&)>& on_result) {
+  std::vector<PegTransferResult> results(seeds.size());
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  std::mutex report;
+  std::exception_ptr error;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < seeds.size() && !failed; i = next++) {
+      try {
+        PegTransferOptions options = base;
+        options.seed = seeds[i];
+        results[i] = runPegTransfer(options);
+        const std::lock_guard lock(report);
+        if (on_result) on_result(results[i]);
+      } catch (...) {
+        const std::lock_guard lock(report);
+        if (!error) error = std::current_exception();
+        failed = true;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  const std::size_t count = std::max<std::size_t>(1, std::min(threads, seeds.size()));
+  for (std::size_t t = 1; t < count; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& thread : pool) thread.join();
+  if (error) std::rethrow_exception(error);
+  return results;
+}
+
+}  // namespace scenario

@@ -1,0 +1,98 @@
+#include "scenario/peg_transfer.hpp"
+
+#include <memory>
+#include <optional>
+
+#include "controller/recording_io.hpp"
+#include "scenario/arm_routine.hpp"
+#include "scenario/grasp_assist.hpp"
+#include "scenario/peg_watch.hpp"
+#include "scenario/scripted_session.hpp"
+
+namespace scenario {
+
+namespace {
+
+bridge::TwinOptions twinOptions(const PegTransferOptions& options,
+                                const SceneVariation& variation) {
+  bridge::TwinOptions twin;
+  twin.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
+  twin.adjust_scene = [variation](ambf_like::SceneSpec& scene) { variation.apply(scene); };
+  if (options.stand_in) twin.stand_in = bridge::CableActuationParams::physicalStandIn();
+  return twin;
+}
+
+std::vector<PegJob> jobsOf(const PegLayout& layout, raven::Arm arm) {
+  std::vector<PegJob> jobs;
+  for (const PegJob& job : layout.jobs) {
+    if (job.arm == arm) jobs.push_back(job);
+  }
+  return jobs;
+}
+
+}  // namespace
+
+PegTransferResult runPegTransfer(const PegTransferOptions& options) {
+  PegTransferResult result;
+  result.variation = options.randomize ? SceneVariation::draw(options.seed) : SceneVariation{};
+  result.variation.seed = options.seed;
+  result.assist = options.assist;
+  result.stand_in = options.stand_in;
+
+  ScriptedSession session(twinOptions(options, result.variation));
+  ambf_like::World& world = session.twin().world();
+  const PegLayout layout;
+  PegWatch watch(world, layout);  // rest volumes: before the first step
+  session.makeReady(options.time_limit);
+  controller::DualPlatformController& controller = session.controller();
+  bridge::TwinPlatform& twin = session.twin();
+
+  const auto profile = raven::builtinProfile("physical");
+  std::array<ArmRoutine, 2> routines{
+      ArmRoutine(raven::Arm::Left, profile, layout, jobsOf(layout, raven::Arm::Left)),
+      ArmRoutine(raven::Arm::Right, profile, layout, jobsOf(layout, raven::Arm::Right))};
+  std::optional<GraspAssist> assist;
+  if (options.assist == AssistMode::Contact) {
+    std::vector<std::string> pegs;
+    for (const PegJob& job : layout.jobs) pegs.push_back(job.peg);
+    assist.emplace(world, pegs);
+  }
+  std::unique_ptr<controller::RsWriter> rs;
+  if (!options.rs_file.empty()) rs = std::make_unique<controller::RsWriter>(options.rs_file);
+
+  RunProgress progress{twin.now(), options.time_limit, 0, layout.jobs.size()};
+  auto done = [&] { return routines[0].done() && routines[1].done(); };
+  while (!done() && twin.now() < options.time_limit) {
+    const controller::ArmPair current = controller.commanded();
+    const controller::ArmPair next{routines[0].next(current[0], world),
+                                   routines[1].next(current[1], world)};
+    result.refused += controller.moveTo(next).refused;
+    if (assist) {
+      for (raven::Arm arm : raven::kArms)
+        assist->update(arm, routines[raven::index(arm)].opening());
+    }
+    if (rs) rs->write(*twin.ravenState());
+    watch.observe();
+    ++result.iterations;
+    progress.sim_time = twin.now();
+    progress.done = routines[0].finished() + routines[1].finished();
+    if (options.progress) options.progress(progress);
+  }
+  result.timed_out = !done();
+  const double settle_end = twin.now() + options.settle_time;
+  while (twin.now() < settle_end) {
+    controller.idle();
+    watch.observe();
+  }
+
+  result.pegs = watch.finish();
+  result.grasps = assist ? assist->grasps() : 0;
+  result.timing = session.timing();
+  if (rs) {
+    result.rs_file = rs->path();
+    result.rs_rows = rs->rows();
+  }
+  return result;
+}
+
+}  // namespace scenario

@@ -1,0 +1,58 @@
+#include "scenario/peg_transfer_result.hpp"
+
+#include <algorithm>
+
+namespace scenario {
+
+std::string_view assistName(AssistMode mode) {
+  return mode == AssistMode::Contact ? "contact" : "off";
+}
+
+std::size_t PegTransferResult::placed() const {
+  return static_cast<std::size_t>(
+      std::count_if(pegs.begin(), pegs.end(), [](const PegOutcome& p) { return p.placed; }));
+}
+
+std::size_t PegTransferResult::lost() const {
+  return static_cast<std::size_t>(
+      std::count_if(pegs.begin(), pegs.end(), [](const PegOutcome& p) { return p.lost; }));
+}
+
+nlohmann::json PegTransferResult::json() const {
+  nlohmann::json pegs_json = nlohmann::json::array();
+  for (const PegOutcome& p : pegs) {
+    pegs_json.push_back(
+        {{"peg", p.peg},
+         {"arm", raven::armName(p.arm)},
+         {"from_m", {p.from.x(), p.from.y()}},
+         {"to_m", {p.to.x(), p.to.y()}},
+         {"grasped", p.grasped},
+         {"lift_m", p.lift},
+         {"placed", p.placed},
+         {"lost", p.lost},
+         {"loss", p.loss},
+         {"volume_ratio_min", p.min_volume_ratio},
+         {"volume_ratio_max", p.max_volume_ratio},
+         {"final_centre_m", {p.final_centre.x(), p.final_centre.y(), p.final_centre.z()}},
+         {"miss_m", p.miss}});
+  }
+  nlohmann::json j{{"task", "peg_transfer"},
+                   {"seed", variation.seed},
+                   {"scene", variation.json()},
+                   {"grasp_assist", assistName(assist)},
+                   {"stand_in", stand_in},
+                   {"placed", placed()},
+                   {"lost", lost()},
+                   {"all_placed", allPlaced()},
+                   {"timed_out", timed_out},
+                   {"iterations", iterations},
+                   {"assisted_grasps", grasps},
+                   {"refused_commands", refused},
+                   {"rs_file", rs_file.string()},
+                   {"rs_rows", rs_rows},
+                   {"pegs", pegs_json}};
+  timing.addTo(j);
+  return j;
+}
+
+}  // namespace scenario

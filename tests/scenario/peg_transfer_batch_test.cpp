@@ -1,0 +1,41 @@
+// The acceptance batch: 20 seeded randomised peg transfers (start poses, friction, softness
+// drawn from each seed) with the contact-triggered grasp assist, on two worker threads and the
+// simulated clock. At least 18 must place all six pegs; no peg may ever be lost.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "scenario/batch.hpp"
+#include "scenario/console_report.hpp"
+
+namespace {
+
+TEST(PegTransferBatch, EighteenOfTwentyRandomisedRunsPlaceAllSixPegsAndNoneIsLost) {
+  scenario::PegTransferOptions options;
+  options.randomize = true;
+  options.assist = scenario::AssistMode::Contact;
+  const auto seeds = scenario::seedsOf(1, 20, scenario::Shard{});
+  const auto results = scenario::runBatch(options, seeds, 2);
+
+  ASSERT_EQ(results.size(), 20u);
+  std::printf("%s", scenario::batchTable(results).c_str());
+  std::size_t complete = 0;
+  for (const auto& r : results) {
+    complete += r.allPlaced() ? 1 : 0;
+    EXPECT_FALSE(r.timed_out) << "seed " << r.variation.seed;
+    EXPECT_EQ(r.refused, 0u) << "seed " << r.variation.seed;
+    for (const auto& p : r.pegs) {
+      EXPECT_FALSE(p.lost) << "seed " << r.variation.seed << " " << p.peg << ": " << p.loss;
+      EXPECT_GT(p.min_volume_ratio, 0.8);
+      EXPECT_LT(p.max_volume_ratio, 1.2);
+      if (!p.placed) {
+        std::printf("seed %llu: %s not placed (%.1f mm from its post's axis)\n",
+                    static_cast<unsigned long long>(r.variation.seed), p.peg.c_str(), p.miss * 1e3);
+      }
+    }
+  }
+  EXPECT_GE(complete, 18u);
+}
+
+}  // namespace
