@@ -75,6 +75,15 @@ std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& m
   }
   if (c.clusters > 0) body->generateClusters(c.clusters);
   body->getCollisionShape()->setMargin(spec.margin);
+  // Bullet sized each node's bounding-volume leaf with the default 0.25 m margin when it made the
+  // node, and later only grows a leaf that no longer holds its node: refit them to the real
+  // margin, or every rigid body within 25 cm tests every node at every step.
+  for (int i = 0; i < body->m_nodes.size(); ++i) {
+    btSoftBody::Node& node = body->m_nodes[i];
+    btDbvtVolume volume = btDbvtVolume::FromCR(node.m_x, spec.margin);
+    body->m_ndbvt.update(node.m_leaf, volume);
+  }
+  body->updateBounds();
   return body;
 }
 

@@ -12,7 +12,7 @@ namespace scenario {
 namespace {
 
 constexpr double kOpen = 1.3;         ///< the outer jaw's angle when open (rad): clear of the ring
-constexpr double kPress = -0.05;      ///< ... when closed: a little past the inner jaw's face
+constexpr double kPress = 0.25;       ///< ... when closed
 constexpr double kJawStep = 0.05;     ///< jaw angle per iteration
 constexpr double kStep = 0.001;       ///< tool travel per iteration (m)
 constexpr double kAboveTop = 0.0035;  ///< the jaw axis above the ring's top at the grasp
@@ -22,6 +22,9 @@ constexpr double kLift = 0.030;       ///< the ring's bottom clears the 22 mm po
 constexpr double kRetreat = 0.025;
 constexpr double kReleaseHeight = 0.0015;  ///< the ring's bottom above the board when let go
 constexpr int kSettleIterations = 15;
+constexpr double kCarried = 0.005;   ///< the ring's lowest node this far above the board: carried
+constexpr double kCentred = 0.0005;  ///< the ring's centre this near the post's axis (m)
+constexpr int kCentringIterations = 40;  ///< ... or this many iterations of trying
 constexpr double kStationWindow = 8.0 * M_PI / 180.0;
 
 double angleAbout(const Eigen::Vector2d& centre, const Eigen::Vector3d& p) {
@@ -81,6 +84,7 @@ void ArmRoutine::plan(const ambf_like::World& world) {
   grasp_.orientation.col(2) = x.cross(y);
   const Eigen::Vector2d face = station.head<2>() + inward * (layout_.tube_half_width + kGap);
   grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), top + kAboveTop);
+  grasp_.offset = face - centre;
 }
 
 raven::ArmJoints ArmRoutine::withJaws(raven::ArmJoints q) const {
@@ -158,27 +162,34 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       break;
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
-      if (arrived) {
-        const Eigen::Vector3d tool = kinematics_.toolPose(q).translation();
-        grasp_.carry_offset =
-            tool.head<2>() - inspect(world.softBody(jobs_[job_].peg)).centre.head<2>();
-        advance(Phase::Carry);
-      }
+      if (arrived) advance(Phase::Carry);
       break;
-    case Phase::Carry: {
-      const Eigen::Vector2d over = jobs_[job_].to + grasp_.carry_offset;
+    case Phase::Carry: {  // over the target post, watching the ring (it sways on its grasp)
+      const PegState peg = inspect(world.softBody(jobs_[job_].peg));
+      const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+      // A ring that came along is centred by sight; without one the jaws go where it would be.
+      const bool carried = peg.bottom > layout_.geometry.board_top + kCarried;
+      const Eigen::Vector2d offset =
+          carried ? Eigen::Vector2d(tool.head<2>() - peg.centre.head<2>()) : grasp_.offset;
+      const Eigen::Vector2d over = jobs_[job_].to + offset;
       q = translate(target, Eigen::Vector3d(over.x(), over.y(), grasp_.pivot.z() + kLift), kStep,
                     arrived);
-      if (arrived) advance(Phase::Lower);
+      const bool centred = !carried || (peg.centre.head<2>() - jobs_[job_].to).norm() < kCentred;
+      if (arrived && (centred || ++waited_ > kCentringIterations)) advance(Phase::Lower);
       break;
     }
-    case Phase::Lower: {
-      const double bottom = inspect(world.softBody(jobs_[job_].peg)).bottom;
-      const double drop = bottom - (layout_.geometry.board_top + kReleaseHeight);
+    case Phase::Lower: {  // down until the ring is just above the board, still centring it
+      const PegState peg = inspect(world.softBody(jobs_[job_].peg));
+      const double drop = peg.bottom - (layout_.geometry.board_top + kReleaseHeight);
+      if (peg.bottom < layout_.geometry.board_top + kCarried) {  // it did not come along
+        advance(Phase::Open);
+        break;
+      }
       const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
-      q = translate(target, tool - Eigen::Vector3d(0, 0, std::max(drop, 0.0)), kStep, arrived);
-      // Also stop when the jaws come near the board (the ring did not come along).
-      if (arrived || tool.z() < grasp_.pivot.z() - 0.002) advance(Phase::Open);
+      const Eigen::Vector2d shift = jobs_[job_].to - peg.centre.head<2>();
+      q = translate(target, tool + Eigen::Vector3d(shift.x(), shift.y(), -std::max(drop, 0.0)),
+                    kStep, arrived);
+      if (arrived) advance(Phase::Open);
       break;
     }
     case Phase::Open:

@@ -1,5 +1,6 @@
 // Bodies dropped on a plane come to rest on it: no tunnelling, no floating by the margin.
 
+#include <BulletSoftBody/btSoftBody.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -115,6 +116,34 @@ TEST(Contact, SoftBodyDroppedOnAPlaneRestsOnIt) {
   bool touching = false;
   for (const auto& c : world.contacts()) touching |= c.body_a == "/ambf/env/blob";
   EXPECT_TRUE(touching);
+}
+
+TEST(Contact, SoftBodyNodeBoundsAreSizedByItsOwnMargin) {
+  // Each node's bounding-volume leaf must be the node plus the body's margin: leaves left at
+  // Bullet's 0.25 m default make every rigid body within 25 cm test every node at every step
+  // (the peg scene ran at half speed, and the coarse distance field then caught nodes up to a
+  // voxel outside a shape's bounds).
+  test_support::TempDir dir;
+  const double margin = 0.0005;
+  const auto file = dir.write("blob.yaml",
+                              "soft bodies: [BODY blob]\n"
+                              "BODY blob:\n"
+                              "  name: blob\n"
+                              "  mass: 0.05\n"
+                              "  mesh: " +
+                                  test_support::icosphereMesh().string() +
+                                  "\n"
+                                  "  scale: 0.05\n"
+                                  "  collision margin: 0.0005\n");
+  auto sim = test_support::simulate({file});
+  auto& body = sim->world->softBody("blob").bullet();
+  for (int step = 0; step < 2; ++step) {
+    for (int i = 0; i < body.m_nodes.size(); ++i) {
+      const btVector3 half_extent = body.m_nodes[i].m_leaf->volume.Extents();
+      EXPECT_LT(half_extent.length(), 4 * margin) << "node " << i << " at step " << step;
+    }
+    sim->world->step();
+  }
 }
 
 }  // namespace

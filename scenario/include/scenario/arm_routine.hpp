@@ -40,7 +40,7 @@ class ArmRoutine {
   struct Grasp {
     Eigen::Matrix3d orientation;  ///< jaws down, turning about the ring's tangent
     Eigen::Vector3d pivot;        ///< the jaw axis at the grasp
-    Eigen::Vector2d carry_offset = Eigen::Vector2d::Zero();  ///< pivot - ring centre
+    Eigen::Vector2d offset;       ///< the jaw axis from the ring's centre, horizontally
   };
   void plan(const ambf_like::World& world);
   /// The joints (within the limits, nearest `target`) that hold the jaws open over the grasp.
