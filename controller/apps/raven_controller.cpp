@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 
+#include "bridge/enable_and_home.hpp"
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "bridge/twin_platform.hpp"
@@ -83,19 +84,12 @@ Platforms makePlatforms(const Settings& s) {
 /// Enables and homes every platform that is not ready yet (at most 30 s of platform time).
 void makeReady(const std::vector<controller::PlatformSlot>& slots) {
   for (const auto& slot : slots) {
-    auto& robot = *slot.platform;
-    if (robot.operatingStatus().ready()) continue;
+    if (slot.platform->operatingStatus().ready()) continue;
     spdlog::info("{}: enabling and homing", slot.name);
-    if (robot.operatingStatus().state != bridge::OperatingState::Enabled) {
-      robot.send(bridge::StateCommand::Enable);
-    }
-    robot.send(bridge::StateCommand::Home);
-    for (int i = 0; i < 3000 && !robot.operatingStatus().ready() && !interrupted; ++i) {
-      robot.advance(0.01);
-    }
-    if (!robot.operatingStatus().ready()) {
-      throw std::runtime_error(slot.name + " did not become enabled and homed (state " +
-                               std::string(bridge::wireName(robot.operatingStatus().state)) + ")");
+    try {
+      bridge::enableAndHome(*slot.platform, 30.0, [] { return !interrupted; });
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(slot.name + " " + e.what());
     }
   }
 }

@@ -39,7 +39,8 @@ struct Settings {
 };
 
 constexpr std::size_t kHandoverSamples = 100000;
-constexpr double kJawLength = 0.0102;  ///< the grasper jaw's length past the jaw axis (m)
+/// The grasper jaw's length past the jaw axis (m): raven_description/tools/arm_design.hpp.
+constexpr double kJawLength = 0.011;
 
 /// Logs go to stderr, so stdout holds only the report.
 void setUpLogging(const Settings& s) {
@@ -111,7 +112,7 @@ int runPegTransfers(const Settings& s) {
         s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency()),
         [&](const scenario::PegTransferResult& r) {
           jsonl << r.json().dump() << '\n' << std::flush;
-          bar.show({r.timing.sim_time, 0.0, ++finished, seeds.size()});
+          bar.show({r.timing.sim_time, ++finished, seeds.size()});
         });
   }
   bar.finish();

@@ -22,8 +22,7 @@ constexpr double kLift = 0.030;       ///< the ring's bottom clears the 22 mm po
 constexpr double kRetreat = 0.025;
 constexpr double kReleaseHeight = 0.0015;  ///< the ring's bottom above the board when let go
 constexpr int kSettleIterations = 15;
-constexpr double kCarried = 0.005;   ///< the ring's lowest node this far above the board: carried
-constexpr double kCentred = 0.0005;  ///< the ring's centre this near the post's axis (m)
+constexpr double kCentred = 0.0005;      ///< the ring's centre this near the post's axis (m)
 constexpr int kCentringIterations = 40;  ///< ... or this many iterations of trying
 constexpr double kStationWindow = 8.0 * M_PI / 180.0;
 
@@ -168,7 +167,7 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       const PegState peg = inspect(world.softBody(jobs_[job_].peg));
       const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
       // A ring that came along is centred by sight; without one the jaws go where it would be.
-      const bool carried = peg.bottom > layout_.geometry.board_top + kCarried;
+      const bool carried = layout_.geometry.offTheBoard(peg.bottom);
       const Eigen::Vector2d offset =
           carried ? Eigen::Vector2d(tool.head<2>() - peg.centre.head<2>()) : grasp_.offset;
       const Eigen::Vector2d over = jobs_[job_].to + offset;
@@ -181,7 +180,7 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
     case Phase::Lower: {  // down until the ring is just above the board, still centring it
       const PegState peg = inspect(world.softBody(jobs_[job_].peg));
       const double drop = peg.bottom - (layout_.geometry.board_top + kReleaseHeight);
-      if (peg.bottom < layout_.geometry.board_top + kCarried) {  // it did not come along
+      if (!layout_.geometry.offTheBoard(peg.bottom)) {  // it did not come along
         advance(Phase::Open);
         break;
       }

@@ -60,7 +60,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   std::unique_ptr<controller::RsWriter> rs;
   if (!options.rs_file.empty()) rs = std::make_unique<controller::RsWriter>(options.rs_file);
 
-  RunProgress progress{twin.now(), options.time_limit, 0, layout.jobs.size()};
+  RunProgress progress{twin.now(), 0, layout.jobs.size()};
   auto done = [&] { return routines[0].done() && routines[1].done(); };
   while (!done() && twin.now() < options.time_limit) {
     const controller::ArmPair current = controller.commanded();

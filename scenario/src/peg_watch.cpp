@@ -30,8 +30,7 @@ void PegWatch::observe() {
     o.min_volume_ratio = std::min(o.min_volume_ratio, ratio);
     o.max_volume_ratio = std::max(o.max_volume_ratio, ratio);
     o.lift = std::max(o.lift, s.bottom - board);
-    o.grasped = o.grasped || s.bottom - board > limits_.grasped_lift;
-    o.final_centre = s.centre;
+    o.grasped = o.grasped || layout_.geometry.offTheBoard(s.bottom);
     if (!s.finite) {
       o.lost = true;
       o.loss = "non-finite node positions";

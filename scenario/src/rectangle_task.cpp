@@ -98,7 +98,7 @@ RectangleResult runRectangle(const RectangleOptions& options) {
     }
   };
   recordPose();  // the homed pose the rectangle starts from
-  RunProgress progress{twin.now(), options.time_limit, 0, inputs.size()};
+  RunProgress progress{twin.now(), 0, inputs.size()};
   for (const controller::GamepadState& pad : inputs) {
     if (twin.now() >= options.time_limit) break;
     const controller::IterationReport report = controller.manual(pad);

@@ -1,6 +1,9 @@
 #include "scenario/scripted_session.hpp"
 
 #include <stdexcept>
+#include <string>
+
+#include "bridge/enable_and_home.hpp"
 
 namespace scenario {
 
@@ -11,11 +14,10 @@ ScriptedSession::ScriptedSession(const bridge::TwinOptions& options,
       controller_options_(std::move(controller_options)) {}
 
 void ScriptedSession::makeReady(double time_limit) {
-  twin_.send(bridge::StateCommand::Enable);
-  twin_.send(bridge::StateCommand::Home);
-  while (!twin_.operatingStatus().ready() && twin_.now() < time_limit) twin_.advance(0.01);
-  if (!twin_.operatingStatus().ready()) {
-    throw std::runtime_error("the twin did not finish homing within the time limit");
+  try {
+    bridge::enableAndHome(twin_, time_limit - twin_.now());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("the twin ") + e.what());
   }
   controller_.emplace(
       std::vector<controller::PlatformSlot>{{"twin", &twin_, controller::CommandStyle::ServoJr}},

@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "bridge/enable_and_home.hpp"
 #include "test_files.hpp"
 #include "twin_fixtures.hpp"
 
@@ -217,6 +218,29 @@ TEST(TwinPlatform, StandInParametersAreCheckedWhenLoaded) {
   const auto params = bridge::CableActuationParams::physicalStandIn();
   EXPECT_DOUBLE_EQ(params.kp(0), 0.3);
   EXPECT_DOUBLE_EQ(params.kd(2), 0.012);
+}
+
+TEST(EnableAndHome, BringsTheTwinToReadyOrSaysWhereItStopped) {
+  bridge::TwinPlatform slow;
+  try {
+    bridge::enableAndHome(slow, 0.05);  // homing takes seconds
+    ADD_FAILURE() << "ready after 0.05 s";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("within 0.05"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(state "), std::string::npos) << e.what();
+  }
+  EXPECT_LT(slow.now(), 0.07);
+
+  bridge::TwinPlatform twin;
+  bridge::enableAndHome(twin, 60.0);
+  EXPECT_TRUE(twin.operatingStatus().ready());
+  const double homed_at = twin.now();
+  bridge::enableAndHome(twin, 60.0);  // already ready: no time passes
+  EXPECT_EQ(twin.now(), homed_at);
+
+  bridge::TwinPlatform interrupted;
+  EXPECT_THROW(bridge::enableAndHome(interrupted, 60.0, [] { return false; }), std::runtime_error);
+  EXPECT_EQ(interrupted.now(), 0.0);
 }
 
 }  // namespace

@@ -11,6 +11,9 @@ namespace scenario {
 /// The scene's geometry a check needs (its design values).
 struct PegGeometry {
   double board_top = -0.205;
+  double lifted = 0.005;  ///< a ring whose lowest node is this far above the board is off it
+
+  bool offTheBoard(double bottom) const { return bottom > board_top + lifted; }
 };
 
 /// A snapshot of one soft peg.

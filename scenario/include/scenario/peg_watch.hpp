@@ -14,7 +14,6 @@ namespace scenario {
 struct PegIntegrity {
   double volume_tolerance = 0.20;  ///< |volume / rest volume - 1|
   double below_board = 0.003;      ///< lowest node this far under the board top: tunnelled
-  double grasped_lift = 0.005;     ///< lowest node this far above the board: off the board
 };
 
 /// Tracks the pegs' outcomes; call observe() after every manual-loop iteration.

@@ -6,10 +6,9 @@
 
 namespace scenario {
 
-/// A run's position: simulated time against its limit, and units of work done.
+/// A run's position: simulated time, and units of work done.
 struct RunProgress {
   double sim_time = 0.0;
-  double time_limit = 0.0;
   std::size_t done = 0;   ///< transfers (or rectangle edges) finished
   std::size_t total = 0;  ///< ... of this many
 };
