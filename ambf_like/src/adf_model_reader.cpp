@@ -6,6 +6,24 @@ namespace ambf_like::detail {
 
 namespace {
 
+SoftBodySleep readSoftBodySleep(const YamlView& node, LoadContext& context) {
+  node.checkKeys({"enabled", "distance", "time", "wake distance"}, context.keyCheck());
+  SoftBodySleep sleep;
+  sleep.enabled = node.getBool("enabled", sleep.enabled);
+  sleep.distance = node.getDouble("distance", sleep.distance);
+  sleep.time = node.getDouble("time", sleep.time);
+  sleep.wake_distance = node.getDouble("wake distance", sleep.wake_distance);
+  if (sleep.distance <= 0.0) node["distance"].fail("the resting distance must be positive");
+  if (sleep.time <= 0.0) node["time"].fail("the resting time must be positive");
+  if (sleep.wake_distance < 0.0)
+    node["wake distance"].fail("the wake distance must not be negative");
+  return sleep;
+}
+
+}  // namespace
+
+namespace {
+
 /// The definitions of the identifiers listed under `section` (e.g. `bodies: [BODY a, BODY b]`).
 std::vector<std::pair<std::string, YamlView>> listedDefinitions(const YamlView& root,
                                                                 const char* section) {
@@ -163,7 +181,8 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
     if (world.max_iterations < 1) iterations->fail("max iterations must be at least 1");
   }
   if (auto own = root.find("ambf_like")) {
-    own->checkKeys({"solver iterations", "soft body sdf voxel size"}, context.keyCheck());
+    own->checkKeys({"solver iterations", "soft body sdf voxel size", "soft body sleep"},
+                   context.keyCheck());
     if (auto v = own->find("solver iterations")) {
       world.solver_iterations = v->asInt();
       if (*world.solver_iterations < 1) v->fail("solver iterations must be at least 1");
@@ -172,6 +191,8 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
       world.sdf_voxel_size = v->asDouble();
       if (*world.sdf_voxel_size <= 0.0) v->fail("the voxel size must be positive");
     }
+    if (auto v = own->find("soft body sleep"))
+      world.soft_body_sleep = readSoftBodySleep(*v, context);
   }
   environment.reset();
   if (auto env = root.find("environment")) {

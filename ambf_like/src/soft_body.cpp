@@ -40,4 +40,8 @@ bool SoftBody::isFinite() const {
   return true;
 }
 
+bool SoftBody::isAsleep() const {
+  return body_->getActivationState() == DISABLE_SIMULATION;
+}
+
 }  // namespace ambf_like

@@ -17,6 +17,7 @@
 #include "collision_shape_factory.hpp"
 #include "constraint_factory.hpp"
 #include "soft_body_factory.hpp"
+#include "soft_body_sleep.hpp"
 
 namespace ambf_like {
 
@@ -81,6 +82,7 @@ struct World::Impl {
   std::vector<std::unique_ptr<RigidBody>> bodies;
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
+  std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when soft bodies never sleep
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
   double time = 0.0;
@@ -99,6 +101,9 @@ struct World::Impl {
     info.m_sparsesdf.setDefaultVoxelsz(
         options.sdf_voxel_size.value_or(settings.sdf_voxel_size.value_or(0.01)));
     info.m_sparsesdf.Reset();
+    auto sleep = settings.soft_body_sleep;
+    sleep.enabled = options.soft_body_sleep.value_or(sleep.enabled);
+    if (sleep.enabled) sleeper.emplace(sleep, world);
   }
 
   ~Impl() {
@@ -128,7 +133,9 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
   info.m_angularDamping = spec.surface.angular_damping;
   auto rigid = std::make_unique<btRigidBody>(info);
   rigid->setCenterOfMassTransform(toBt(spec.location * shape.com_in_body));
-  rigid->setActivationState(DISABLE_DEACTIVATION);
+  // Moving bodies never sleep (the arms hold still under servo control); static ones keep the
+  // sleeping state Bullet gives them, so they are never tested against sleeping soft bodies.
+  if (spec.mass > 0.0) rigid->setActivationState(DISABLE_DEACTIVATION);
 
   auto groups = spec.collision.groups;
   std::sort(groups.begin(), groups.end());
@@ -197,7 +204,9 @@ World::~World() = default;
 void World::step() {
   const double h = impl_->options.step_size;
   for (auto& j : impl_->joints) j->joint->applyControl(h);
+  if (impl_->sleeper) impl_->sleeper->beforeStep(impl_->soft_bodies, impl_->bodies);
   impl_->world.stepSimulation(h, 0, h);
+  if (impl_->sleeper) impl_->sleeper->afterStep(impl_->soft_bodies, h);
   for (auto& j : impl_->joints) j->joint->updateCoordinate();
   // The sparse SDF frees cells unused for 256 collections; a collection walks every hash bucket,
   // so it runs every 64 steps (cells then live 16k steps unused).

@@ -9,25 +9,9 @@
 
 namespace {
 
-const std::string kGround =
-    "BODY ground:\n"
-    "  name: ground\n"
-    "  mass: 0\n"
-    "  collision shape: PLANE\n"
-    "  collision geometry: {normal: {x: 0, y: 0, z: 1}, offset: 0}\n";
+using test_support::softBallBody;
 
-/// A soft ball "blob" of 5 cm radius and 50 g (the bundled icosphere) with `margin`.
-std::string softBall(double margin) {
-  return "BODY blob:\n"
-         "  name: blob\n"
-         "  mass: 0.05\n"
-         "  mesh: " +
-         test_support::icosphereMesh().string() +
-         "\n"
-         "  scale: 0.05\n"
-         "  collision margin: " +
-         std::to_string(margin) + "\n";
-}
+const std::string kGround = test_support::groundPlaneBody();
 
 TEST(Contact, BoxDroppedOnAPlaneRestsOnIt) {
   test_support::TempDir dir;
@@ -92,11 +76,11 @@ TEST(Contact, EveryCollisionMeshTypeRestsOnThePlane) {
 TEST(Contact, SoftBodyDroppedOnAPlaneRestsOnIt) {
   test_support::TempDir dir;
   const double margin = 0.002;
-  const auto file =
-      dir.write("drop.yaml",
-                "bodies: [BODY ground]\nsoft bodies: [BODY blob]\n" + kGround + softBall(margin) +
-                    "  location: {position: {x: 0, y: 0, z: 0.3}}\n"
-                    "  config: {kDF: 0.8, kVC: 20, piterations: 4, bending constraint: 2}\n");
+  const auto file = dir.write(
+      "drop.yaml", "bodies: [BODY ground]\nsoft bodies: [BODY blob]\n" + kGround +
+                       softBallBody(margin) +
+                       "  location: {position: {x: 0, y: 0, z: 0.3}}\n"
+                       "  config: {kDF: 0.8, kVC: 20, piterations: 4, bending constraint: 2}\n");
   auto sim = test_support::simulate({file});
   auto& world = *sim->world;
   auto& blob = world.softBody("blob");
@@ -129,7 +113,7 @@ TEST(Contact, SoftBodyNodeBoundsAreSizedByItsOwnMargin) {
   // voxel outside a shape's bounds).
   test_support::TempDir dir;
   const double margin = 0.0005;
-  const auto file = dir.write("blob.yaml", "soft bodies: [BODY blob]\n" + softBall(margin));
+  const auto file = dir.write("blob.yaml", "soft bodies: [BODY blob]\n" + softBallBody(margin));
   auto sim = test_support::simulate({file});
   auto& body = sim->world->softBody("blob").bullet();
   for (int step = 0; step < 2; ++step) {

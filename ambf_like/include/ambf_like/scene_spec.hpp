@@ -24,6 +24,18 @@ struct ModelSpec {
   std::optional<Vec3> gravity;  ///< model-wide override of the world gravity
 };
 
+/// When resting soft bodies stop being simulated. Bullet deactivates resting rigid bodies but
+/// never soft ones; a sleeping soft body costs nothing until a moving body comes near it.
+struct SoftBodySleep {
+  bool enabled = true;
+  /// A body rests while every node stays within `distance` (m) of where it was `time` (s)
+  /// ago, and then falls asleep. Nodes in contact jitter by a few mm/s, so speed is no test.
+  double distance = 0.001;
+  double time = 0.5;
+  /// A body moving faster than distance / time this close (m) to a sleeper's bounds wakes it.
+  double wake_distance = 0.01;
+};
+
 /// World-file settings that matter to the physics.
 struct WorldSpec {
   std::filesystem::path file;  ///< empty when defaults are used
@@ -34,6 +46,7 @@ struct WorldSpec {
   /// code take precedence.
   std::optional<int> solver_iterations;
   std::optional<double> sdf_voxel_size;
+  SoftBodySleep soft_body_sleep;
 };
 
 /// Everything needed to build a simulation.

@@ -28,6 +28,8 @@ class SoftBody {
   std::vector<Vec3> nodePositions() const;
   Vec3 centerOfMass() const;
   bool isFinite() const;
+  /// True while the world skips this body because it rests (see SoftBodySleep).
+  bool isAsleep() const;
 
   btSoftBody& bullet() { return *body_; }
   const btSoftBody& bullet() const { return *body_; }

@@ -25,6 +25,8 @@ struct WorldOptions {
   /// 0.25 m cannot represent rigid parts thinner than a few voxels (a 10 mm board lets soft
   /// bodies sink through it).
   std::optional<double> sdf_voxel_size;
+  /// Overrides the world file's `soft body sleep: {enabled}` (benchmarks compare both).
+  std::optional<bool> soft_body_sleep;
 };
 
 /// One contact point between two bodies after the last step.
