@@ -18,7 +18,7 @@ TEST(ControllerOverRos, BothPlatformsGetTheSameCommandsAndTheirDivergenceIsRepor
       "Y Button,Back Button,Start Button\n";
   for (int i = 0; i < 40; ++i) ci += "0.8,0.0,0.0,0.0,0.0,-0.6,2.0,0.0,0.0,0.0,0.0,0.0,0.0,0.0\n";
   const auto inputs = dir.write("inputs_ci.csv", ci);
-  test_support::ChildProcess controller(
+  harness::ChildProcess controller(
       {RAVEN_CONTROLLER, "--platform", "both", "--physical-ns", robot.ns(), "--no-gamepad",
        "--no-keyboard", "--replay-ci", inputs.string(), "--record", "both", "--out",
        (dir.path() / "out").string()},

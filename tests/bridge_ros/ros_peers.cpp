@@ -7,7 +7,7 @@ namespace ros_test {
 TwinNode::TwinNode(const std::string& ns, const std::vector<std::string>& args) : ns_(ns) {
   std::vector<std::string> argv{RAVEN_TWIN_NODE, "__ns:=" + ns, "__name:=twin"};
   argv.insert(argv.end(), args.begin(), args.end());
-  process_ = std::make_unique<test_support::ChildProcess>(argv, dir_.path() / "node.log");
+  process_ = std::make_unique<harness::ChildProcess>(argv, dir_.path() / "node.log");
 }
 
 std::string TwinNode::stopAndReadLog() {

@@ -14,7 +14,8 @@
 #include <vector>
 
 #include "bridge/ros/command_topics.hpp"
-#include "ros_master.hpp"
+#include "harness/ros_master.hpp"
+#include "test_files.hpp"
 
 namespace ros_test {
 
@@ -31,7 +32,7 @@ class TwinNode {
  private:
   std::string ns_;
   test_support::TempDir dir_;
-  std::unique_ptr<test_support::ChildProcess> process_;
+  std::unique_ptr<harness::ChildProcess> process_;
 };
 
 /// A unique namespace per call: "/t1", "/t2", ...

@@ -3,11 +3,11 @@
 #include <gtest/gtest.h>
 
 #include "bridge/ros/ros_runtime.hpp"
-#include "ros_master.hpp"
+#include "harness/ros_master.hpp"
 
 int main(int argc, char** argv) {
   testing::InitGoogleTest(&argc, argv);
-  test_support::RosMaster master;  // sets ROS_MASTER_URI before ros::init reads it
+  harness::RosMaster master;  // sets ROS_MASTER_URI before ros::init reads it
   bridge::ros1::initRos(argc, argv, "bridge_ros_tests");
   return RUN_ALL_TESTS();
 }

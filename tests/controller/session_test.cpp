@@ -8,10 +8,9 @@
 #include <SDL2/SDL.h>
 #include <gtest/gtest.h>
 
-#include <atomic>
-
 #include "analysis/disparity.hpp"
 #include "bridge/twin_platform.hpp"
+#include "harness/virtual_gamepad.hpp"
 #include "test_files.hpp"
 #include "twin_fixtures.hpp"
 
@@ -34,48 +33,7 @@ Eigen::Vector3d leftWrist(const bridge::RavenPlatform& robot) {
   return kin.wristPoint(robot.measuredJs(Arm::Left).position);
 }
 
-/// An SDL virtual game controller (SDL_JoystickAttachVirtualEx), counting rumble requests.
-class VirtualPad {
- public:
-  VirtualPad() {
-    SDL_InitSubSystem(SDL_INIT_JOYSTICK);
-    SDL_VirtualJoystickDesc desc{};
-    desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
-    desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
-    desc.naxes = SDL_CONTROLLER_AXIS_MAX;
-    desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
-    desc.name = "virtual test pad";
-    desc.userdata = this;
-    desc.Rumble = [](void* self, Uint16, Uint16) {
-      ++static_cast<VirtualPad*>(self)->rumbles;
-      return 0;
-    };
-    index_ = SDL_JoystickAttachVirtualEx(&desc);
-    joystick_ = SDL_JoystickOpen(index_);
-  }
-  ~VirtualPad() {
-    unplug();
-    SDL_QuitSubSystem(SDL_INIT_JOYSTICK);
-  }
-  bool ok() const { return joystick_ != nullptr; }
-  void axis(SDL_GameControllerAxis a, Sint16 value) {
-    SDL_JoystickSetVirtualAxis(joystick_, a, value);
-  }
-  void button(SDL_GameControllerButton b, bool down) {
-    SDL_JoystickSetVirtualButton(joystick_, b, down ? 1 : 0);
-  }
-  void unplug() {
-    if (!joystick_) return;
-    SDL_JoystickClose(joystick_);
-    SDL_JoystickDetachVirtual(index_);
-    joystick_ = nullptr;
-  }
-  std::atomic<int> rumbles{0};
-
- private:
-  int index_ = -1;
-  SDL_Joystick* joystick_ = nullptr;
-};
+using VirtualPad = harness::VirtualGamepad;
 
 TEST(Gamepad, AVirtualPadDrivesTheTwinAsTheMappingSays) {
   auto twin = readyTwin();
@@ -86,7 +44,7 @@ TEST(Gamepad, AVirtualPadDrivesTheTwinAsTheMappingSays) {
   pad.poll();
   ASSERT_TRUE(pad.read()) << "SDL did not see the virtual pad as a game controller";
   EXPECT_EQ(pad.read()->left_x, 0.5);
-  EXPECT_EQ(pad.name(), "virtual test pad");
+  EXPECT_EQ(pad.name(), "virtual gamepad");
 
   controller::DualPlatformController control(
       {{"twin", twin.get(), controller::CommandStyle::ServoJr}}, {});

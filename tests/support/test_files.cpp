@@ -2,31 +2,9 @@
 
 #include <fstream>
 #include <iterator>
-#include <random>
 #include <stdexcept>
 
 namespace test_support {
-
-TempDir::TempDir() {
-  std::random_device seed;
-  std::mt19937_64 random(seed());
-  path_ = std::filesystem::temp_directory_path() / ("raven_test_" + std::to_string(random()));
-  std::filesystem::create_directories(path_);
-}
-
-TempDir::~TempDir() {
-  std::error_code ignored;
-  std::filesystem::remove_all(path_, ignored);
-}
-
-std::filesystem::path TempDir::write(const std::string& name, const std::string& text) const {
-  const auto file = path_ / name;
-  std::filesystem::create_directories(file.parent_path());
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-  return file;
-}
 
 std::string readFile(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -41,6 +19,26 @@ std::filesystem::path sharedDataDir() {
 
 std::filesystem::path icosphereMesh() {
   return std::filesystem::path(AMBF_LIKE_EXAMPLES_DIR) / "demo" / "icosphere.obj";
+}
+
+std::string groundPlaneBody() {
+  return "BODY ground:\n"
+         "  name: ground\n"
+         "  mass: 0\n"
+         "  collision shape: PLANE\n"
+         "  collision geometry: {normal: {x: 0, y: 0, z: 1}, offset: 0}\n";
+}
+
+std::string softBallBody(double margin) {
+  return "BODY blob:\n"
+         "  name: blob\n"
+         "  mass: 0.05\n"
+         "  mesh: " +
+         icosphereMesh().string() +
+         "\n"
+         "  scale: 0.05\n"
+         "  collision margin: " +
+         std::to_string(margin) + "\n";
 }
 
 std::unique_ptr<Simulation> simulate(const std::vector<std::filesystem::path>& model_files,

@@ -1,5 +1,5 @@
 #pragma once
-// Test helpers: a private temporary directory for generated model files, and where the shared
+// Test helpers: generated model files in a private temporary directory, and where the shared
 // reference data lives.
 
 #include <filesystem>
@@ -7,24 +7,11 @@
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "harness/temp_dir.hpp"
 
 namespace test_support {
 
-/// A fresh directory under the system temp dir, removed when the object goes away.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-
-  const std::filesystem::path& path() const { return path_; }
-  /// Writes `text` to `name` inside the directory and returns its full path.
-  std::filesystem::path write(const std::string& name, const std::string& text) const;
-
- private:
-  std::filesystem::path path_;
-};
+using harness::TempDir;
 
 /// The whole content of a text file.
 std::string readFile(const std::filesystem::path& file);
@@ -34,6 +21,13 @@ std::filesystem::path sharedDataDir();
 
 /// The bundled unit icosphere (162 vertices) used for soft bodies.
 std::filesystem::path icosphereMesh();
+
+/// ADF text of a static body "ground": the plane z = 0.
+std::string groundPlaneBody();
+
+/// ADF text of a soft ball "blob" of 5 cm radius and 50 g (the icosphere) with `margin`; the
+/// caller appends its location and config lines.
+std::string softBallBody(double margin);
 
 /// A loaded scene and the World built from it, kept together.
 struct Simulation {

@@ -1,0 +1,28 @@
+#pragma once
+// A private rosmaster on a free port, with ROS_MASTER_URI, ROS_HOME and ROS_LOG_DIR pointing at
+// a temporary directory.
+
+#include <memory>
+#include <string>
+
+#include "harness/child_process.hpp"
+#include "harness/temp_dir.hpp"
+
+namespace harness {
+
+/// A rosmaster of this process alone. Sets the ROS environment variables of this process
+/// (inherited by every child) and waits until the master accepts connections.
+class RosMaster {
+ public:
+  RosMaster();
+  ~RosMaster();
+  const std::string& uri() const { return uri_; }
+  const std::filesystem::path& home() const { return dir_.path(); }
+
+ private:
+  TempDir dir_;
+  std::string uri_;
+  std::unique_ptr<ChildProcess> process_;
+};
+
+}  // namespace harness
