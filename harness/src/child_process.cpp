@@ -8,7 +8,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <string>
 #include <stdexcept>
 #include <thread>
 
@@ -52,6 +55,7 @@ ChildProcess::~ChildProcess() {
 
 void ChildProcess::stop(double grace) {
   if (pid_ <= 0) return;
+  notePeakResident();
   ::kill(pid_, SIGINT);
   if (!reap(pid_, grace)) {
     ::kill(pid_, SIGKILL);
@@ -71,7 +75,7 @@ int ChildProcess::wait(double timeout) {
   if (pid_ <= 0) return -1;
   const auto deadline = Clock::now() + std::chrono::duration<double>(timeout);
   int status = 0;
-  while (waitpid(pid_, &status, WNOHANG) != pid_) {
+  while (notePeakResident(), waitpid(pid_, &status, WNOHANG) != pid_) {
     if (Clock::now() > deadline) {
       kill();
       return -1;
@@ -80,6 +84,16 @@ int ChildProcess::wait(double timeout) {
   }
   pid_ = -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+void ChildProcess::notePeakResident() {
+  // VmHWM, not wait4's ru_maxrss: Linux carries the parent's peak over fork and exec into it.
+  std::ifstream status("/proc/" + std::to_string(pid_) + "/status");
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("VmHWM:", 0) == 0) {
+      peak_resident_kib_ = std::max(peak_resident_kib_, std::stol(line.substr(6)));
+    }
+  }
 }
 
 int freePort() {

@@ -49,23 +49,22 @@ int main(int argc, char** argv) {
             "# Both Raven-II arms.\n"
             "world config: world.yaml\n"
             "multibody configs:\n  - raven2_left.yaml   #0\n  - raven2_right.yaml  #1\n");
-  if (!dense) {
-    writePegScene(PegSceneDesign{}, out / "peg_transfer");
-    writeText(out / "peg_transfer" / "world.yaml",
-              "# The peg-transfer world: {B}, gravity along -z, and this simulator's settings.\n"
-              "namespace: /peg_transfer/\n"
-              "max iterations: 10\n"
-              "gravity: {x: 0.0, y: 0.0, z: -9.81}\n"
-              "ambf_like:\n"
-              "  solver iterations: 20  # the arms' joints hold to 0.05 mm under gravity\n"
-              "  soft body sdf voxel size: 0.002  # the posts are 5 mm thick\n");
-    writeText(out / "peg_transfer" / "launch.yaml",
-              "# The peg-transfer scene: both arms, the board and six soft pegs.\n"
-              "world config: world.yaml\n"
-              "multibody configs:\n  - ../raven2/raven2_left.yaml   #0\n"
-              "  - ../raven2/raven2_right.yaml  #1\n  - peg_board.yaml               #2\n"
-              "  - pegs.yaml                    #3\n");
-  }
+  // The same board and pegs beside either arm variant (the benchmarks compare the two).
+  writePegScene(PegSceneDesign{}, out / "peg_transfer");
+  writeText(out / "peg_transfer" / "world.yaml",
+            "# The peg-transfer world: {B}, gravity along -z, and this simulator's settings.\n"
+            "namespace: /peg_transfer/\n"
+            "max iterations: 10\n"
+            "gravity: {x: 0.0, y: 0.0, z: -9.81}\n"
+            "ambf_like:\n"
+            "  solver iterations: 20  # the arms' joints hold to 0.05 mm under gravity\n"
+            "  soft body sdf voxel size: 0.002  # the posts are 5 mm thick\n");
+  writeText(out / "peg_transfer" / "launch.yaml",
+            "# The peg-transfer scene: both arms, the board and six soft pegs.\n"
+            "world config: world.yaml\n"
+            "multibody configs:\n  - ../raven2/raven2_left.yaml   #0\n"
+            "  - ../raven2/raven2_right.yaml  #1\n  - peg_board.yaml               #2\n"
+            "  - pegs.yaml                    #3\n");
   std::cout << (dense ? "dense" : "simplified") << " Raven-II written to " << robot_dir << ": "
             << vertices << " collision mesh vertices\n";
   return 0;

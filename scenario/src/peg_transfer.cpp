@@ -16,8 +16,14 @@ namespace {
 bridge::TwinOptions twinOptions(const PegTransferOptions& options,
                                 const SceneVariation& variation) {
   bridge::TwinOptions twin;
-  twin.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
-  twin.adjust_scene = [variation](ambf_like::SceneSpec& scene) { variation.apply(scene); };
+  twin.launch_file = options.launch_file.empty()
+                         ? raven::modelDirectory() / "peg_transfer" / "launch.yaml"
+                         : options.launch_file;
+  twin.clock = options.clock;
+  twin.adjust_scene = [variation, sleep = options.soft_body_sleep](ambf_like::SceneSpec& scene) {
+    variation.apply(scene);
+    scene.world.soft_body_sleep.enabled = sleep;
+  };
   if (options.stand_in) twin.stand_in = bridge::CableActuationParams::physicalStandIn();
   return twin;
 }

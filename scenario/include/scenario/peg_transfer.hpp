@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "bridge/raven_platform.hpp"
 #include "scenario/peg_transfer_result.hpp"
 #include "scenario/run_progress.hpp"
 
@@ -20,6 +21,13 @@ struct PegTransferOptions {
   AssistMode assist = AssistMode::Off;
   /// The physical stand-in's actuation model instead of the twin's ideal servos.
   bool stand_in = false;
+  /// The scene's launch file; empty: raven_description's peg_transfer (the benchmarks pass the
+  /// dense-collision variant).
+  std::filesystem::path launch_file;
+  /// Simulated: as fast as the CPU allows; Wall: paced to real time (1 kHz physics).
+  bridge::ClockKind clock = bridge::ClockKind::Simulated;
+  /// Resting rings sleep (ambf_like's SoftBodySleep); false steps every ring at every step.
+  bool soft_body_sleep = true;
   /// Writes the rs recording here (one row per manual-loop iteration); empty: none.
   std::filesystem::path rs_file;
   /// Simulated seconds after which the run stops, whatever is left undone.

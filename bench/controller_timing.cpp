@@ -1,0 +1,150 @@
+// The controller's command thread on the wall clock: the rate it achieves, how regular its
+// periods are, and how long a gamepad event takes to become a command.
+
+#include <SDL2/SDL.h>
+#include <fmt/format.h>
+
+#include <atomic>
+#include <random>
+#include <thread>
+
+#include "bridge/enable_and_home.hpp"
+#include "bridge/twin_platform.hpp"
+#include "controller/session.hpp"
+#include "harness/virtual_gamepad.hpp"
+#include "sections.hpp"
+#include "stamping_platform.hpp"
+
+namespace bench {
+
+namespace {
+
+const char* kSection = "controller";
+using Clock = StampingPlatform::Clock;
+
+double seconds(Clock::duration d) {
+  return std::chrono::duration<double>(d).count();
+}
+
+/// The in-process twin (Raven-II alone) on the wall clock, enabled and homed.
+std::unique_ptr<bridge::TwinPlatform> wallTwin() {
+  bridge::TwinOptions options;
+  options.clock = bridge::ClockKind::Wall;
+  auto twin = std::make_unique<bridge::TwinPlatform>(options);
+  bridge::enableAndHome(*twin, 30.0);
+  return twin;
+}
+
+/// O5 for `duration` wall seconds at `rate`: the left arm's command rate and period jitter.
+void rateAndJitter(double rate, double duration, Report& report) {
+  auto twin = wallTwin();
+  StampingPlatform stamped(*twin);
+  controller::ControllerOptions options;
+  options.rate = rate;
+  controller::DualPlatformController control({{"twin", &stamped}}, options);
+  controller::ControllerSession session(control, {}, {});
+  session.select(controller::Mode::SineDance);
+  const auto end = Clock::now() + std::chrono::duration<double>(duration);
+  while (Clock::now() < end) session.turn();
+
+  std::vector<Clock::time_point> sent;
+  for (const auto& s : stamped.stamps()) {
+    if (s.arm == bridge::Arm::Left) sent.push_back(s.at);
+  }
+  std::vector<double> jitter_ms;
+  for (std::size_t i = 1; i < sent.size(); ++i) {
+    jitter_ms.push_back(1e3 * std::abs(seconds(sent[i] - sent[i - 1]) - 1.0 / rate));
+  }
+  const double achieved =
+      sent.size() > 1 ? (sent.size() - 1) / seconds(sent.back() - sent.front()) : 0.0;
+  const auto label = fmt::format("{:.0f} Hz", rate);
+  const auto how =
+      fmt::format("O5 on the wall-clock twin, {:.0f} s, {} periods", duration, jitter_ms.size());
+  report.add(measured(kSection, "command rate at " + label, Spread::of({achieved}), "Hz", how));
+  for (double p : {50.0, 99.0}) {
+    const auto item = fmt::format("period jitter p{:.0f} at {}", p, label);
+    const Spread value = Spread::of({percentile(jitter_ms, p)});
+    if (rate == 1000.0 && p == 99.0) {
+      report.add(atMost(kSection, item, value, "ms", 0.2, "|period - 1 ms|"));
+    } else {
+      report.add(measured(kSection, item, value, "ms", "|period - nominal|"));
+    }
+  }
+  report.add(measured(kSection, "period jitter max at " + label,
+                      Spread::of({percentile(jitter_ms, 100.0)}), "ms", "|period - nominal|"));
+}
+
+/// Pushes a virtual pad's stick `pushes` times; from each event to the first command that moves.
+void inputLatency(double rate, int pushes, Report& report) {
+  const auto item = fmt::format("virtual gamepad event to command at {:.0f} Hz", rate);
+  harness::VirtualGamepad device;
+  if (!device.ok()) {
+    report.skip(kSection, item, std::string("SDL refused a virtual joystick: ") + SDL_GetError());
+    return;
+  }
+  controller::SdlGamepad pad;  // its own 1 ms polling thread, as in raven_controller
+  for (int i = 0; i < 2000 && !pad.read(); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  auto twin = wallTwin();
+  StampingPlatform stamped(*twin);
+  controller::ControllerOptions options;
+  options.rate = rate;
+  controller::DualPlatformController control({{"twin", &stamped}}, options);
+  controller::SessionInputs inputs;
+  inputs.gamepad = &pad;
+  controller::ControllerSession session(control, std::move(inputs), {});
+  session.select(controller::Mode::Manual);
+  std::atomic<bool> stop{false};
+  std::thread command_thread([&] {
+    while (!stop) session.turn();
+  });
+
+  std::mt19937 random(1);
+  std::uniform_int_distribution<int> pause_us(3000, 12000);
+  auto firstAfter = [&](Clock::time_point t0, bool moves) -> std::optional<Clock::time_point> {
+    const auto deadline = t0 + std::chrono::milliseconds(200);
+    while (Clock::now() < deadline) {
+      for (const auto& s : stamped.stamps()) {
+        if (s.at >= t0 && s.moves == moves) return s.at;
+      }
+      std::this_thread::sleep_for(std::chrono::microseconds(100));
+    }
+    return std::nullopt;
+  };
+  std::vector<double> latency_ms;
+  int missed = 0;
+  for (int k = 0; k < pushes; ++k) {
+    std::this_thread::sleep_for(std::chrono::microseconds(pause_us(random)));
+    stamped.clear();
+    const auto t0 = Clock::now();
+    device.axis(SDL_CONTROLLER_AXIS_LEFTX, 32767);
+    if (const auto t1 = firstAfter(t0, true)) {
+      latency_ms.push_back(1e3 * seconds(*t1 - t0));
+    } else {
+      ++missed;
+    }
+    const auto released = Clock::now();
+    device.axis(SDL_CONTROLLER_AXIS_LEFTX, 0);
+    firstAfter(released, false);
+  }
+  stop = true;
+  command_thread.join();
+  const auto how =
+      fmt::format("{} pushes of the left stick; SDL polled every 1 ms{}", latency_ms.size(),
+                  missed ? fmt::format(", {} never arrived", missed) : std::string());
+  report.add(
+      atMost(kSection, item + ", p50", Spread::of({percentile(latency_ms, 50)}), "ms", 2.0, how));
+  report.add(
+      atMost(kSection, item + ", p99", Spread::of({percentile(latency_ms, 99)}), "ms", 2.0, how));
+  report.add(
+      measured(kSection, item + ", max", Spread::of({percentile(latency_ms, 100)}), "ms", how));
+}
+
+}  // namespace
+
+void measureController(const BenchSettings&, Report& report) {
+  for (double rate : {500.0, 1000.0}) rateAndJitter(rate, 5.0, report);
+  for (double rate : {500.0, 1000.0}) inputLatency(rate, 100, report);
+}
+
+}  // namespace bench

@@ -1,0 +1,132 @@
+// Dynamic loop frequency, measured the way the paper reports AMBF's: physics steps of 1 ms per
+// wall second, here with both arms moving the soft rings (the main job's first seconds).
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "ambf_like/scene_loader.hpp"
+#include "ambf_like/world.hpp"
+#include "raven/platform_profile.hpp"
+#include "raven/twin_arms.hpp"
+#include "scenario/peg_transfer.hpp"
+#include "sections.hpp"
+
+namespace bench {
+
+namespace {
+
+const char* kSection = "loop frequency";
+
+/// Loop frequencies of `repeat` runs of the peg scene's first `seconds`.
+std::vector<double> pegScene(const std::filesystem::path& launch, bridge::ClockKind clock,
+                             bool sleep, double seconds, int repeat) {
+  std::vector<double> rates;
+  for (int i = 0; i < repeat; ++i) {
+    scenario::PegTransferOptions options;
+    options.assist = scenario::AssistMode::Contact;
+    options.launch_file = launch;
+    options.clock = clock;
+    options.soft_body_sleep = sleep;
+    options.time_limit = seconds;
+    options.settle_time = 0.0;
+    rates.push_back(scenario::runPegTransfer(options).timing.loopFrequency());
+  }
+  return rates;
+}
+
+/// Steps per wall second of `world` over `steps` steps, `each` run before every step.
+template <typename Each>
+double stepsPerSecond(ambf_like::World& world, int steps, Each each) {
+  const auto start = std::chrono::steady_clock::now();
+  for (int i = 0; i < steps; ++i) {
+    each(i);
+    world.step();
+  }
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
+  return steps / wall.count();
+}
+
+/// Our Raven-II alone, both arms following a slow sine around home, gravity on.
+double ravenAloneMoving() {
+  const auto scene =
+      ambf_like::loadLaunchFile(raven::modelDirectory() / "raven2" / "launch.yaml", {});
+  ambf_like::MeshLibrary meshes;
+  ambf_like::World world(scene.spec, meshes);
+  raven::TwinArms arms(world, raven::ArmBindings::ourRaven());
+  const auto home = raven::builtinProfile("physical").home;
+  for (auto arm : raven::kArms) arms.command(arm, home);
+  world.step(500);
+  return stepsPerSecond(world, 20000, [&](int i) {
+    const double phase = 2.0 * M_PI * 0.5 * i * 0.001;  // 0.5 Hz
+    for (auto arm : raven::kArms) {
+      raven::ArmJoints q = home;
+      q[0] += 0.1 * std::sin(phase);
+      q[1] += 0.1 * std::sin(phase + 1.0);
+      q[2] += 0.01 * std::sin(phase + 2.0);
+      arms.command(arm, q);
+    }
+  });
+}
+
+double ambfRavenStill(const std::filesystem::path& launch) {
+  ambf_like::LoadOptions load;
+  load.skip_missing_files = true;
+  const auto scene = ambf_like::loadLaunchFile(launch, {}, load);
+  ambf_like::MeshLibrary meshes;
+  ambf_like::World world(scene.spec, meshes);
+  world.step(500);
+  return stepsPerSecond(world, 20000, [](int) {});
+}
+
+}  // namespace
+
+void measureLoopFrequency(const BenchSettings& s, Report& report) {
+  const auto simplified = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
+  const auto dense = s.dense_models / "peg_transfer" / "launch.yaml";
+  const double seconds = s.scene_seconds;
+  const std::string moving = fmt::format(
+      "main job's first {:.0f} s (both arms moving, rings grasped), {} runs", seconds, s.repeat);
+
+  const auto free_simplified =
+      Spread::of(pegScene(simplified, bridge::ClockKind::Simulated, true, seconds, s.repeat));
+  report.add(atLeast(kSection, "peg scene, simplified collision, free-running", free_simplified,
+                     "steps/s", 5000, moving));
+  const auto every_ring =
+      Spread::of(pegScene(simplified, bridge::ClockKind::Simulated, false, seconds, 1));
+  report.add(measured(kSection, "peg scene, simplified, every ring stepped (sleep off)", every_ring,
+                      "steps/s", "the same, resting rings never sleep; 1 run"));
+  if (std::filesystem::exists(dense)) {
+    const auto free_dense =
+        Spread::of(pegScene(dense, bridge::ClockKind::Simulated, true, seconds, 1));
+    report.add(measured(kSection, "peg scene, dense collision (~200k vertices), free-running",
+                        free_dense, "steps/s", "the same segment; 1 run"));
+    report.add(measured(kSection, "simplified / dense ratio",
+                        Spread::of({free_simplified.median / free_dense.median}), "x", "medians"));
+    report.add(atLeast(kSection, "peg scene, dense, paced at 1 kHz",
+                       Spread::of(pegScene(dense, bridge::ClockKind::Wall, true, 10.0, 1)),
+                       "steps/s", 990, "first 10 s on the wall clock"));
+  } else {
+    report.skip(kSection, "peg scene, dense collision", "not built: " + dense.string());
+  }
+  report.add(atLeast(kSection, "peg scene, simplified, paced at 1 kHz",
+                     Spread::of(pegScene(simplified, bridge::ClockKind::Wall, true, 10.0, 1)),
+                     "steps/s", 990, "first 10 s on the wall clock"));
+
+  std::vector<double> alone;
+  for (int i = 0; i < s.repeat; ++i) alone.push_back(ravenAloneMoving());
+  report.add(atLeast(kSection, "Raven-II alone, both arms commanded, gravity on", Spread::of(alone),
+                     "steps/s", 46000, "20,000 steps, both arms on a 0.5 Hz sine about home"));
+  const auto ambf = s.shared_data / "ambf/ambf_controller/raven2/launch.yaml";
+  if (std::filesystem::exists(ambf)) {
+    std::vector<double> rates;
+    for (int i = 0; i < s.repeat; ++i) rates.push_back(ambfRavenStill(ambf));
+    report.add(measured(kSection, "AMBF's Raven-II model, standing still, no gravity",
+                        Spread::of(rates), "steps/s", "20,000 steps, 93,239 collision vertices"));
+  } else {
+    report.skip(kSection, "AMBF's Raven-II model", "../shared/data is absent");
+  }
+}
+
+}  // namespace bench

@@ -1,0 +1,33 @@
+#pragma once
+// The benchmark's sections; each measures one part of the pipeline and adds rows to a Report.
+
+#include <filesystem>
+
+#include "report.hpp"
+
+namespace bench {
+
+/// What every section needs to know.
+struct BenchSettings {
+  int repeat = 3;                      ///< repetitions of each timed run
+  double scene_seconds = 30.0;         ///< simulated seconds of the moving peg scene per run
+  std::filesystem::path shared_data;   ///< ../shared/data (may be absent)
+  std::filesystem::path dense_models;  ///< the build's dense-collision models
+  std::filesystem::path programs;      ///< the build directory (main job, twin node, micro bench)
+};
+
+/// Dynamic loop frequency: the moving peg scene (simplified vs dense collision, free-running and
+/// paced), the Raven-II alone, AMBF's Raven-II.
+void measureLoopFrequency(const BenchSettings& settings, Report& report);
+/// Command rate and period jitter at 500 Hz and 1 kHz; virtual-gamepad-to-command latency.
+void measureController(const BenchSettings& settings, Report& report);
+/// The paper's 2arm inputs replayed on the twin in lock-step, as a multiple of real time.
+void measureReplay(const BenchSettings& settings, Report& report);
+/// The twin node's publish rate and command-to-state latency over loopback ROS.
+void measureRosEdge(const BenchSettings& settings, Report& report);
+/// Peak resident size of the main job and of the twin node.
+void measureMemory(const BenchSettings& settings, Report& report);
+/// The Google Benchmark micro-benchmarks (IK, interpolation, a physics step).
+void measureMicro(const BenchSettings& settings, Report& report);
+
+}  // namespace bench
