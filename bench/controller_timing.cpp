@@ -65,13 +65,13 @@ void rateAndJitter(double rate, double duration, Report& report) {
     const auto item = fmt::format("period jitter p{:.0f} at {}", p, label);
     const Spread value = Spread::of({percentile(jitter_ms, p)});
     if (rate == 1000.0 && p == 99.0) {
-      report.add(atMost(kSection, item, value, "ms", 0.2, "|period - 1 ms|"));
+      report.add(atMost(kSection, item, value, "ms", 0.2, "abs(period - 1 ms)"));
     } else {
-      report.add(measured(kSection, item, value, "ms", "|period - nominal|"));
+      report.add(measured(kSection, item, value, "ms", "abs(period - nominal)"));
     }
   }
   report.add(measured(kSection, "period jitter max at " + label,
-                      Spread::of({percentile(jitter_ms, 100.0)}), "ms", "|period - nominal|"));
+                      Spread::of({percentile(jitter_ms, 100.0)}), "ms", "abs(period - nominal)"));
 }
 
 /// Pushes a virtual pad's stick `pushes` times; from each event to the first command that moves.
