@@ -5,13 +5,13 @@
 #include <sys/utsname.h>
 
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <ctime>
 #include <fstream>
-#include <functional>
-#include <map>
 #include <set>
+#include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "sections.hpp"
 
@@ -48,10 +48,13 @@ int main(int argc, char** argv) {
   settings.programs = RAVEN_BUILD_DIR;
   std::string out = "bench_results.json", markdown;
   std::vector<std::string> only;
-  const std::map<std::string, std::function<void(const bench::BenchSettings&, bench::Report&)>>
-      sections{{"loop", bench::measureLoopFrequency}, {"controller", bench::measureController},
-               {"replay", bench::measureReplay},      {"ros", bench::measureRosEdge},
-               {"memory", bench::measureMemory},      {"micro", bench::measureMicro}};
+  using Section = void (*)(const bench::BenchSettings&, bench::Report&);
+  const std::vector<std::pair<std::string, Section>> sections{
+      {"loop", bench::measureLoopFrequency}, {"controller", bench::measureController},
+      {"replay", bench::measureReplay},      {"ros", bench::measureRosEdge},
+      {"memory", bench::measureMemory},      {"micro", bench::measureMicro}};
+  std::vector<std::string> names;
+  for (const auto& section : sections) names.push_back(section.first);
 
   CLI::App app{"Measures the Raven-II twin's pipeline; prints a table and writes JSON"};
   app.add_option("--repeat", settings.repeat, "repetitions of each timed run")
@@ -59,19 +62,19 @@ int main(int argc, char** argv) {
   app.add_option("--scene-seconds", settings.scene_seconds,
                  "simulated seconds of the moving peg scene per run")
       ->check(CLI::Range(1.0, 300.0));
-  app.add_option("--only", only, "sections: loop, controller, replay, ros, memory, micro")
-      ->check(CLI::IsMember({"loop", "controller", "replay", "ros", "memory", "micro"}));
+  app.add_option("--only", only, "sections to run (default: all, in this order)")
+      ->check(CLI::IsMember(names));
   app.add_option("--out", out, "JSON results file");
   app.add_option("--markdown", markdown, "also write the table to this file");
   CLI11_PARSE(app, argc, argv);
 
   const std::set<std::string> chosen(only.begin(), only.end());
   bench::Report report;
-  for (const char* name : {"loop", "controller", "replay", "ros", "memory", "micro"}) {
+  for (const auto& [name, measure] : sections) {
     if (!chosen.empty() && !chosen.count(name)) continue;
     spdlog::info("measuring: {}", name);
     try {
-      sections.at(name)(settings, report);
+      measure(settings, report);
     } catch (const std::exception& e) {
       report.skip(name, "(section)", std::string("failed: ") + e.what());
     }

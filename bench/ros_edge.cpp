@@ -5,7 +5,7 @@
 #include <ros/ros.h>
 #include <sensor_msgs/JointState.h>
 
-#include <atomic>
+#include <array>
 #include <chrono>
 #include <mutex>
 #include <thread>
@@ -28,10 +28,9 @@ using Clock = std::chrono::steady_clock;
 /// What arrives on the topics the benchmark listens to, stamped on arrival.
 struct Listener {
   std::mutex mutex;
-  std::vector<Clock::time_point> measured;  ///< arm1/measured_js arrivals
-  Clock::time_point setpoint_at;            ///< last setpoint_js arrival
-  std::vector<double> setpoint;             ///< both arms' setpoints, arm1 first
-  std::array<std::vector<double>, 2> per_arm;
+  std::vector<Clock::time_point> measured;      ///< arm1/measured_js arrivals
+  Clock::time_point setpoint_at;                ///< last setpoint_js arrival
+  std::array<std::vector<double>, 2> setpoint;  ///< arm1's and arm2's latest setpoint_js
 
   void onMeasured(const sensor_msgs::JointState::ConstPtr&) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -39,9 +38,7 @@ struct Listener {
   }
   void onSetpoint(int arm, const sensor_msgs::JointState::ConstPtr& msg) {
     std::lock_guard<std::mutex> lock(mutex);
-    per_arm[static_cast<std::size_t>(arm)] = msg->position;
-    setpoint = per_arm[0];
-    setpoint.insert(setpoint.end(), per_arm[1].begin(), per_arm[1].end());
+    setpoint[static_cast<std::size_t>(arm)] = msg->position;
     setpoint_at = Clock::now();
   }
 };
@@ -50,10 +47,14 @@ double seconds(Clock::duration d) {
   return std::chrono::duration<double>(d).count();
 }
 
-bool differs(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size()) return true;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (std::abs(a[i] - b[i]) > 0.0005) return true;
+/// True when any joint of either arm moved by more than 0.5 mrad (or 0.5 mm).
+bool differs(const std::array<std::vector<double>, 2>& a,
+             const std::array<std::vector<double>, 2>& b) {
+  for (std::size_t arm = 0; arm < 2; ++arm) {
+    if (a[arm].size() != b[arm].size()) return true;
+    for (std::size_t i = 0; i < a[arm].size(); ++i) {
+      if (std::abs(a[arm][i] - b[arm][i]) > 0.0005) return true;
+    }
   }
   return false;
 }
@@ -113,7 +114,7 @@ void measureRosEdge(const BenchSettings& s, Report& report) {
   std::vector<double> latency_ms;
   for (int k = 0; k < 100; ++k) {
     client.advance(0.02);
-    std::vector<double> before;
+    std::array<std::vector<double>, 2> before;
     {
       std::lock_guard<std::mutex> lock(listener.mutex);
       before = listener.setpoint;

@@ -84,7 +84,6 @@ bool SoftBodySleeper::approached(const SoftBody& sleeper,
 
 void SoftBodySleeper::beforeStep(const std::vector<std::unique_ptr<SoftBody>>& soft,
                                  const std::vector<std::unique_ptr<RigidBody>>& rigid) {
-  rest_.resize(soft.size());
   for (std::size_t i = 0; i < soft.size(); ++i) {
     SoftBody& body = *soft[i];
     if (!body.isAsleep()) continue;
@@ -99,7 +98,6 @@ void SoftBodySleeper::beforeStep(const std::vector<std::unique_ptr<SoftBody>>& s
 }
 
 void SoftBodySleeper::afterStep(const std::vector<std::unique_ptr<SoftBody>>& soft, double h) {
-  rest_.resize(soft.size());
   const double reach2 = settings_.distance * settings_.distance;
   for (std::size_t i = 0; i < soft.size(); ++i) {
     if (soft[i]->isAsleep()) continue;

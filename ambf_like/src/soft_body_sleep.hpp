@@ -5,14 +5,14 @@
 #include <LinearMath/btVector3.h>
 
 #include <memory>
-
-class btCollisionObject;
-class btCollisionWorld;
 #include <vector>
 
 #include "ambf_like/rigid_body.hpp"
 #include "ambf_like/scene_spec.hpp"
 #include "ambf_like/soft_body.hpp"
+
+class btCollisionObject;
+class btCollisionWorld;
 
 namespace ambf_like::detail {
 
@@ -27,9 +27,10 @@ struct Box {
 /// then skips them) and wakes them when a moving body comes near or an anchor holds them.
 class SoftBodySleeper {
  public:
-  /// `world` answers the precise proximity queries (shapes, not just their bounding boxes).
-  SoftBodySleeper(const SoftBodySleep& settings, btCollisionWorld& world)
-      : settings_(settings), world_(world) {}
+  /// For a world of `soft_bodies` soft bodies; `world` answers the precise proximity queries
+  /// (shapes, not just their bounding boxes).
+  SoftBodySleeper(const SoftBodySleep& settings, btCollisionWorld& world, std::size_t soft_bodies)
+      : settings_(settings), world_(world), rest_(soft_bodies) {}
 
   /// Before a step: wakes sleepers that something moving approaches or an anchor holds. A
   /// sleeper keeps reporting the contacts it fell asleep on; what it collected since is dropped

@@ -82,7 +82,7 @@ struct World::Impl {
   std::vector<std::unique_ptr<RigidBody>> bodies;
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
-  std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when soft bodies never sleep
+  std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
   double time = 0.0;
@@ -101,9 +101,6 @@ struct World::Impl {
     info.m_sparsesdf.setDefaultVoxelsz(
         options.sdf_voxel_size.value_or(settings.sdf_voxel_size.value_or(0.01)));
     info.m_sparsesdf.Reset();
-    auto sleep = settings.soft_body_sleep;
-    sleep.enabled = options.soft_body_sleep.value_or(sleep.enabled);
-    if (sleep.enabled) sleeper.emplace(sleep, world);
   }
 
   ~Impl() {
@@ -196,6 +193,10 @@ World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
   if (!(options.step_size > 0.0)) throw std::invalid_argument("step size must be positive");
   for (std::size_t m = 0; m < scene.models.size(); ++m) {
     impl_->addModel(scene.models[m], static_cast<int>(m), meshes);
+  }
+  if (options.soft_body_sleep.value_or(scene.world.soft_body_sleep.enabled) &&
+      !impl_->soft_bodies.empty()) {
+    impl_->sleeper.emplace(scene.world.soft_body_sleep, impl_->world, impl_->soft_bodies.size());
   }
 }
 

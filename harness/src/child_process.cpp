@@ -8,11 +8,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <fstream>
-#include <string>
 #include <stdexcept>
+#include <string>
 #include <thread>
 
 namespace harness {
@@ -55,7 +54,6 @@ ChildProcess::~ChildProcess() {
 
 void ChildProcess::stop(double grace) {
   if (pid_ <= 0) return;
-  notePeakResident();
   ::kill(pid_, SIGINT);
   if (!reap(pid_, grace)) {
     ::kill(pid_, SIGKILL);
@@ -75,7 +73,7 @@ int ChildProcess::wait(double timeout) {
   if (pid_ <= 0) return -1;
   const auto deadline = Clock::now() + std::chrono::duration<double>(timeout);
   int status = 0;
-  while (notePeakResident(), waitpid(pid_, &status, WNOHANG) != pid_) {
+  while (waitpid(pid_, &status, WNOHANG) != pid_) {
     if (Clock::now() > deadline) {
       kill();
       return -1;
@@ -86,14 +84,14 @@ int ChildProcess::wait(double timeout) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-void ChildProcess::notePeakResident() {
-  // VmHWM, not wait4's ru_maxrss: Linux carries the parent's peak over fork and exec into it.
+long ChildProcess::peakResidentKiB() const {
+  // The running program's own high-water mark. Not wait4's ru_maxrss: Linux carries the
+  // forking parent's peak over fork and exec into the child's.
   std::ifstream status("/proc/" + std::to_string(pid_) + "/status");
   for (std::string line; std::getline(status, line);) {
-    if (line.rfind("VmHWM:", 0) == 0) {
-      peak_resident_kib_ = std::max(peak_resident_kib_, std::stol(line.substr(6)));
-    }
+    if (line.rfind("VmHWM:", 0) == 0) return std::stol(line.substr(6));
   }
+  return -1;
 }
 
 int freePort() {

@@ -25,15 +25,11 @@ class ChildProcess {
   /// Waits up to `timeout` wall seconds for the program to end; its exit code, or -1 if it had
   /// to be killed.
   int wait(double timeout);
-  /// The program's peak resident set size (KiB) as last sampled: by wait() while it waits and
-  /// by stop() before it signals; -1 before any sample.
-  long peakResidentKiB() const { return peak_resident_kib_; }
+  /// The running program's peak resident set size so far (KiB); -1 once it has ended.
+  long peakResidentKiB() const;
 
  private:
-  void notePeakResident();
-
   pid_t pid_ = -1;
-  long peak_resident_kib_ = -1;
 };
 
 /// A free TCP port on localhost (bound once by the kernel, then released).
