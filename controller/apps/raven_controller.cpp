@@ -44,6 +44,7 @@ struct Settings {
   bool no_gamepad = false, no_keyboard = false;
   double duration = 0.0;
   double rate = 500.0;
+  int man_steps = 10;
 };
 
 /// Owns whichever platforms the settings ask for.
@@ -131,6 +132,7 @@ int run(const Settings& s) {
 
   controller::ControllerOptions options;
   options.rate = s.rate;
+  options.caps.min_steps = s.man_steps;
   options.scheme = s.mapping == "m1-left"    ? controller::MappingScheme::M1Left
                    : s.mapping == "m1-right" ? controller::MappingScheme::M1Right
                                              : controller::MappingScheme::M2;
@@ -253,6 +255,10 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--rate", s.rate, "command steps per second (1..1000)")
       ->check(CLI::Range(1.0, 1000.0));
+  app.add_option("--man-steps", s.man_steps,
+                 "least steps per manual iteration; the pad is read between iterations, so this "
+                 "bounds the input latency (10, the paper's, is needed to replay its recordings)")
+      ->check(CLI::Range(1, 100));
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, [](int) { interrupted = true; });
   std::signal(SIGTERM, [](int) { interrupted = true; });
