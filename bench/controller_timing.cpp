@@ -97,7 +97,7 @@ void inputLatency(double rate, int man_steps, int pushes, Report& report) {
     report.skip(kSection, item, std::string("SDL refused a virtual joystick: ") + SDL_GetError());
     return;
   }
-  controller::SdlGamepad pad;  // its own 1 ms polling thread, as in raven_controller
+  controller::SdlGamepad pad;  // its own polling thread, as in raven_controller
   for (int i = 0; i < 2000 && !pad.read(); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   auto twin = wallTwin();
@@ -149,9 +149,9 @@ void inputLatency(double rate, int man_steps, int pushes, Report& report) {
   stop = true;
   command_thread.join();
   const auto how = fmt::format(
-      "{} pushes from idle; SDL polled every 1 ms; the pad is read once per manual iteration "
+      "{} pushes from idle; SDL polled every {} us; the pad is read once per manual iteration "
       "(at least {} periods){}",
-      latency_ms.size(), idle_iteration,
+      latency_ms.size(), controller::SdlGamepad::kPollPeriod.count(), idle_iteration,
       missed ? fmt::format(", {} never arrived", missed) : std::string());
   report.add(
       atMost(kSection, item + ", p50", Spread::of({percentile(latency_ms, 50)}), "ms", 2.0, how));

@@ -12,6 +12,7 @@ packages=(
   ros-std-msgs ros-sensor-msgs ros-geometry-msgs
   python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag
   python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg python3-genpy
+  python3-matplotlib python3-numpy
 )
 
 missing=()

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Replays the paper's recorded gamepad inputs (2arm_ci.csv) with O3 on the twin, in lock-step,
-# records the twin, and compares it with the three physical replays of the same inputs as
-# ../shared/reference/recordings.md does (mean absolute joint difference, no offsets removed).
+# records the twin, and writes the disparity report of the twin, AMBF and the physical robot
+# (raven_analyze: ../shared/reference/recordings.md's figures per joint, correlating factors and
+# figures) to $OUT_DIR/report (default build/replay/report).
 #   scripts/replay-paper.sh [raven_controller flags, e.g. --stand-in]
 # Needs a build (scripts/build.sh) and ../shared/data.
 set -euo pipefail
@@ -15,5 +16,4 @@ out="${OUT_DIR:-$build/replay}"
 "$build/controller/raven_controller" --lock-step --paper-deadzone --replay-ci "$data/2arm_ci.csv" \
   --record twin_2arm --out "$out" "$@"
 latest="$(ls -t "$out"/twin_2arm_*_rs.csv | head -1)"
-"$build/analysis/raven_disparity" --sim "$latest" --physical "$data"/2arm_physical_{1,2,3}.csv \
-  --velocities
+"$build/analysis/raven_analyze" "$data" "$latest" --out "$out/report"

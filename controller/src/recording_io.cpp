@@ -185,7 +185,7 @@ raven::ArmJoints RsRecording::joints(std::size_t row, raven::Arm arm) const {
   return q;
 }
 
-RsRecording readRs(const std::filesystem::path& path) {
+RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite) {
   const auto lines = readLines(path);
   RsRecording rec;
   rec.path = path;
@@ -225,6 +225,7 @@ RsRecording readRs(const std::filesystem::path& path) {
   }
   if (rec.rows.empty()) throw RecordingError(path.string() + ": no rows after the header");
   for (const auto& name : required) {
+    if (non_finite == NonFiniteJoints::Keep && name != "time") continue;
     const std::size_t c = rec.column(name);
     for (std::size_t r = 0; r < rec.rows.size(); ++r) {
       if (!std::isfinite(rec.rows[r][c])) {
@@ -234,7 +235,11 @@ RsRecording readRs(const std::filesystem::path& path) {
   }
   // An insertion of more than 2 "m" is degrees; AMBF rows leave the robot-only fields empty.
   const std::size_t insertion = rec.column("jpos2");
-  rec.variant.jpos_in_degrees = std::abs(rec.rows[0][insertion]) > 2.0;
+  const auto first_insertion = std::find_if(rec.rows.begin(), rec.rows.end(), [&](const auto& row) {
+    return std::isfinite(row[insertion]);
+  });
+  rec.variant.jpos_in_degrees =
+      first_insertion != rec.rows.end() && std::abs((*first_insertion)[insertion]) > 2.0;
   rec.variant.from_ambf = has("runlevel") && std::isnan(rec.rows[0][rec.column("runlevel")]);
   if (rec.variant.jpos_in_degrees) {
     for (auto& row : rec.rows) {

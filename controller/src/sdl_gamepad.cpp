@@ -41,7 +41,7 @@ SdlGamepad::SdlGamepad(TriggerScale scale, Polling polling)
     thread_ = std::thread([this] {
       while (!stop_) {
         poll();
-        SDL_Delay(1);
+        std::this_thread::sleep_for(kPollPeriod);
       }
     });
   }

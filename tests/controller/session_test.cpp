@@ -8,7 +8,7 @@
 #include <SDL2/SDL.h>
 #include <gtest/gtest.h>
 
-#include "analysis/disparity.hpp"
+#include "analysis/metrics.hpp"
 #include "bridge/twin_platform.hpp"
 #include "harness/virtual_gamepad.hpp"
 #include "test_files.hpp"
@@ -152,36 +152,27 @@ TEST(Replay, ThePapersInputsOnTheTwinLandWithinThePhysicalRobotsRepeatability) {
   while (session.turn()) {
   }
   session.stopRecording();
-  std::vector<controller::RsRecording> sim{controller::readRs(session.recordings().front())};
-  ASSERT_EQ(sim.front().rows.size(), 1351u);
-  std::vector<controller::RsRecording> physical;
-  for (int k = 1; k <= 3; ++k) {
-    physical.push_back(controller::readRs(dir / ("2arm_physical_" + std::to_string(k) + ".csv")));
-  }
-  const double revolute = analysis::acrossSets(sim, physical, analysis::revoluteJoints());
-  const double insertion = analysis::acrossSets(sim, physical, analysis::prismaticJoints());
+  ASSERT_EQ(controller::readRs(session.recordings().front()).rows.size(), 1351u);
+  // Named as the twin's, beside the three physical replays of the same inputs.
+  const auto twin_file = out.path() / "twin_paper_2arm_rs.csv";
+  std::filesystem::rename(session.recordings().front(), twin_file);
+  std::vector<std::filesystem::path> files{twin_file};
+  for (int k = 1; k <= 3; ++k)
+    files.push_back(dir / ("2arm_physical_" + std::to_string(k) + ".csv"));
+  const auto set =
+      analysis::loadTrials(files, analysis::readProfiles(analysis::defaultProfilesFile()));
+  ASSERT_NE(set.find("twin"), nullptr);
+  ASSERT_NE(set.find("physical"), nullptr);
+  const analysis::Comparison twin_vs_physical{set.find("twin"), set.find("physical")};
+  const auto position = analysis::Quantity::Position;
+  const double revolute =
+      analysis::groupFigure(twin_vs_physical, analysis::revoluteJoints(), position, false);
+  const double insertion =
+      analysis::groupFigure(twin_vs_physical, analysis::prismaticJoints(), position, false);
   RecordProperty("revolute_rad", std::to_string(revolute));
   RecordProperty("insertion_mm", std::to_string(insertion));
   EXPECT_LE(revolute, 0.0135);
   EXPECT_LE(insertion, 1.4);
-}
-
-TEST(Analysis, ReproducesTheReferencesFiguresForAmbf) {
-  const auto shared = test_support::sharedDataDir();
-  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
-  const auto dir = shared / "recordings/paper_2arm";
-  std::vector<controller::RsRecording> ambf, physical;
-  for (int k = 1; k <= 3; ++k) {
-    ambf.push_back(controller::readRs(dir / ("2arm_ambf_" + std::to_string(k) + ".csv")));
-    physical.push_back(controller::readRs(dir / ("2arm_physical_" + std::to_string(k) + ".csv")));
-  }
-  // ../shared/reference/recordings.md: T_SS 0.0006 / 1.73, T_PP 0.0135 / 1.40, T_PS 0.0218 / 11.27.
-  EXPECT_NEAR(analysis::withinSet(ambf, analysis::revoluteJoints()), 0.0006, 5e-5);
-  EXPECT_NEAR(analysis::withinSet(ambf, analysis::prismaticJoints()), 1.73, 0.005);
-  EXPECT_NEAR(analysis::withinSet(physical, analysis::revoluteJoints()), 0.0135, 5e-5);
-  EXPECT_NEAR(analysis::withinSet(physical, analysis::prismaticJoints()), 1.40, 0.005);
-  EXPECT_NEAR(analysis::acrossSets(ambf, physical, analysis::revoluteJoints()), 0.0218, 5e-5);
-  EXPECT_NEAR(analysis::acrossSets(ambf, physical, analysis::prismaticJoints()), 11.27, 0.005);
 }
 
 }  // namespace

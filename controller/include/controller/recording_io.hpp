@@ -94,7 +94,13 @@ struct RsRecording {
   raven::ArmJoints joints(std::size_t row, raven::Arm arm) const;
 };
 
-/// Reads any rs variant. Throws RecordingError with the file and row on bad input.
-RsRecording readRs(const std::filesystem::path& path);
+/// What readRs does with a NaN or infinite joint position: refuse the file (anything that will
+/// command a robot) or keep it as NaN (analysis, which reports and skips such rows).
+enum class NonFiniteJoints { Refuse, Keep };
+
+/// Reads any rs variant. Throws RecordingError with the file and row on bad input (the time
+/// column must always be finite).
+RsRecording readRs(const std::filesystem::path& path,
+                   NonFiniteJoints non_finite = NonFiniteJoints::Refuse);
 
 }  // namespace controller

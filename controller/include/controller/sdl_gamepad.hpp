@@ -3,6 +3,7 @@
 // its own thread and normalised to the paper's scale.
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -27,9 +28,12 @@ enum class TriggerScale {
 /// caller through poll() (deterministic: tests, single-threaded tools).
 enum class Polling { OwnThread, Caller };
 
-/// The first game controller connected, polled every millisecond.
+/// The first game controller connected, polled every half millisecond (so at a 1 kHz command
+/// rate an input is at most one poll plus one period old).
 class SdlGamepad {
  public:
+  static constexpr std::chrono::microseconds kPollPeriod{500};
+
   /// Starts SDL's game-controller subsystem (and the polling thread). Throws std::runtime_error
   /// if SDL cannot start.
   explicit SdlGamepad(TriggerScale scale = TriggerScale::XboxOne,

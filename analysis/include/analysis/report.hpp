@@ -1,0 +1,28 @@
+#pragma once
+// The disparity report on disk: every metric as JSON and CSV, the data behind each figure as
+// CSV, and the figures themselves (PNG and an HTML page) drawn by analysis/report/draw_report.py.
+
+#include <filesystem>
+#include <string>
+
+#include "analysis/trial_set.hpp"
+
+namespace analysis {
+
+/// What the report's header says about how trials were aligned.
+struct ReportSettings {
+  std::string alignment = "row index";
+  std::size_t scatter_points = 4000;  ///< per joint and factor in scatter.csv (evenly thinned)
+};
+
+/// Writes metrics.json, metrics.csv, correlations.csv, issues.csv, trajectories.csv,
+/// scatter.csv and lowess.csv into `dir` (created). Throws std::runtime_error naming a file it
+/// cannot write.
+void writeReportData(const TrialSet& set, const ReportSettings& settings,
+                     const std::filesystem::path& dir);
+
+/// Runs the drawing script on `dir` (PNG figures and index.html). Returns an empty string on
+/// success, otherwise why the figures are missing (the data files stay).
+std::string drawFigures(const std::filesystem::path& dir);
+
+}  // namespace analysis

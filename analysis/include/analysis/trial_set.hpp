@@ -1,0 +1,56 @@
+#pragma once
+// Recordings grouped into platforms, in the physical robot's joint convention, with every file
+// the analysis could not use (or uses with a caveat) and why.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "analysis/platform_profile.hpp"
+
+namespace analysis {
+
+/// One replay: joint positions (profile offsets applied) and velocities per row.
+struct Trial {
+  std::filesystem::path path;
+  std::vector<double> time;  ///< seconds from the first row
+  std::vector<JointRow> position;
+  std::vector<JointRow> velocity;
+  std::size_t rows() const { return time.size(); }
+};
+
+/// The trials of one platform.
+struct PlatformTrials {
+  PlatformProfile profile;
+  std::vector<Trial> trials;
+};
+
+/// What was wrong with a file: `excluded` files are left out of every figure; the others are
+/// used as described (e.g. compared over their common rows, NaN rows skipped).
+struct FileIssue {
+  std::filesystem::path path;
+  std::string reason;
+  bool excluded = true;
+};
+
+/// Everything the metrics work on.
+struct TrialSet {
+  std::vector<PlatformTrials> platforms;  ///< in profile order, only those with trials
+  std::vector<FileIssue> issues;
+  const PlatformTrials* find(const std::string& name) const;
+};
+
+/// A run of at least this many rows with NaN in a joint column is reported.
+constexpr std::size_t kNanRunReported = 5;
+
+/// Reads every file (directories: their *.csv files that are not ci recordings), assigns each
+/// to the first profile that claims it and checks it. Never throws for a bad file: the reason
+/// goes into `issues`.
+TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
+                    const std::vector<PlatformProfile>& profiles);
+
+/// Resamples every trial onto one time grid (linear interpolation, `period` apart, up to the
+/// shortest trial), for aligning by time instead of by row index.
+void resampleOnTime(TrialSet& set, double period);
+
+}  // namespace analysis

@@ -1,0 +1,218 @@
+#!/usr/bin/python3
+"""Draws the disparity report's figures from the data raven_analyze wrote (PNG and index.html).
+
+  draw_report.py REPORT_DIR
+
+Fig. 6: each joint's trajectory per platform, the band between the smallest and largest trial.
+Fig. 7: mean absolute difference per joint for every comparison (positions and velocities).
+Fig. 8: simulation-minus-physical difference against time, joint position and joint velocity,
+        with the LOWESS trend and the marginal densities.
+The numbers come from the C++ analysis; this script only draws them.
+"""
+import csv
+import html
+import json
+import sys
+from collections import defaultdict
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+COLOURS = {"physical": "#1b6ca8", "ambf": "#d1495b", "twin": "#2a9d8f"}
+
+
+def colour(name, index):
+    return COLOURS.get(name, plt.cm.tab10(index % 10))
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def joint_scale(joint):
+    """Insertion in mm, revolute joints in rad."""
+    return (1000.0, "mm") if joint["unit"] == "m" else (1.0, "rad")
+
+
+def trajectories(out, metrics, joints):
+    rows = defaultdict(lambda: defaultdict(list))
+    for r in read_rows(out / "trajectories.csv"):
+        series = rows[r["platform"]][int(r["column"])]
+        series.append((float(r["time"]), float(r["min"]), float(r["max"]), float(r["mean"])))
+    fig, axes = plt.subplots(2, 7, figsize=(24, 7), sharex=True)
+    for k, joint in enumerate(joints):
+        ax = axes[k // 7][k % 7]
+        scale, unit = joint_scale(joint)
+        for i, platform in enumerate(p["name"] for p in metrics["inputs"]["platforms"]):
+            data = np.array(rows[platform][joint["column"]])
+            if data.size == 0:
+                continue
+            c = colour(platform, i)
+            ax.fill_between(data[:, 0], scale * data[:, 1], scale * data[:, 2], color=c, alpha=0.3,
+                            linewidth=0)
+            ax.plot(data[:, 0], scale * data[:, 3], color=c, linewidth=0.8, label=platform)
+        ax.set_title(joint["name"], fontsize=10)
+        ax.set_ylabel(unit)
+        if k // 7 == 1:
+            ax.set_xlabel("time (s)")
+    axes[0][0].legend(fontsize=8)
+    fig.suptitle("Joint trajectories: mean across trials, band = min-max across trials (Fig. 6)")
+    fig.tight_layout()
+    fig.savefig(out / "fig6_trajectories.png", dpi=90)
+    plt.close(fig)
+    return ["fig6_trajectories.png"]
+
+
+def inconsistencies(out, metrics, joints):
+    files = []
+    comparisons = list(dict.fromkeys(r["comparison"] for r in metrics["per joint"]))
+    for quantity in ("position", "velocity"):
+        fig, (rev, ins) = plt.subplots(1, 2, figsize=(16, 5), gridspec_kw={"width_ratios": [6, 1]})
+        value = {(r["comparison"], r["column"]): r for r in metrics["per joint"]
+                 if r["quantity"] == quantity}
+        revolute = [j for j in joints if j["unit"] == "rad"]
+        prismatic = [j for j in joints if j["unit"] == "m"]
+        width = 0.8 / max(len(comparisons), 1)
+        for ax, group, scale in ((rev, revolute, 1.0), (ins, prismatic, 1000.0)):
+            x = np.arange(len(group))
+            for i, comparison in enumerate(comparisons):
+                rows = [value[(comparison, j["column"])] for j in group]
+                symbol = rows[0]["symbol"]
+                heights = [scale * (r["as recorded"]["mean_abs"] or 0.0) for r in rows]
+                removed = [scale * (r["first row removed"]["mean_abs"] or 0.0) for r in rows]
+                ax.bar(x + i * width, heights, width, label=f"{symbol} {comparison}")
+                ax.scatter(x + i * width, removed, marker="_", color="black", s=60, zorder=3,
+                           label="first row removed" if i == 0 else None)
+            ax.set_xticks(x + width * (len(comparisons) - 1) / 2)
+            ax.set_xticklabels([j["name"] for j in group], rotation=45, ha="right", fontsize=8)
+        per_second = "/s" if quantity == "velocity" else ""
+        rev.set_ylabel(f"mean absolute difference (rad{per_second})")
+        ins.set_ylabel(f"mm{per_second}")
+        rev.legend(fontsize=8)
+        fig.suptitle(f"Inconsistency per joint, {quantity} (Fig. 7)")
+        fig.tight_layout()
+        name = f"fig7_inconsistency_{quantity}.png"
+        fig.savefig(out / name, dpi=90)
+        plt.close(fig)
+        files.append(name)
+    return files
+
+
+def density(values, grid):
+    """Gaussian kernel density (Scott's bandwidth)."""
+    values = np.asarray(values)
+    if values.size < 2 or np.std(values) == 0:
+        return np.zeros_like(grid)
+    bandwidth = 1.06 * np.std(values) * values.size ** (-0.2)
+    u = (grid[:, None] - values[None, :]) / bandwidth
+    return np.exp(-0.5 * u * u).sum(axis=1) / (values.size * bandwidth * np.sqrt(2 * np.pi))
+
+
+def factors(out, metrics, joints):
+    files = []
+    scatter = defaultdict(list)
+    for r in read_rows(out / "scatter.csv"):
+        scatter[(r["comparison"], int(r["column"]), r["factor"])].append(
+            (float(r["value"]), float(r["difference"])))
+    trend = defaultdict(list)
+    for r in read_rows(out / "lowess.csv"):
+        trend[(r["comparison"], int(r["column"]), r["factor"])].append(
+            (float(r["value"]), float(r["difference"])))
+    correlation = {(r["comparison"], r["column"], r["factor"]): r for r in metrics["correlations"]}
+    comparisons = list(dict.fromkeys(r["comparison"] for r in metrics["correlations"]))
+    for comparison in comparisons:
+        for factor in ("time", "joint position", "joint velocity"):
+            fig, axes = plt.subplots(2, 7, figsize=(24, 8))
+            for k, joint in enumerate(joints):
+                ax = axes[k // 7][k % 7]
+                key = (comparison, joint["column"], factor)
+                points = np.array(scatter[key])
+                if points.size == 0:
+                    ax.set_axis_off()
+                    continue
+                scale, unit = joint_scale(joint)
+                ax.scatter(points[:, 0], scale * points[:, 1], s=2, alpha=0.25, color="#555555")
+                line = np.array(trend[key])
+                if line.size:
+                    ax.plot(line[:, 0], scale * line[:, 1], color="#d1495b", linewidth=1.5)
+                r = correlation[key]
+                rho = r["pearson_r_difference"]
+                ax.set_title(f"{joint['name']}  r={rho:.2f}" if rho is not None else joint["name"],
+                             fontsize=9)
+                ax.set_ylabel(f"difference ({unit})", fontsize=8)
+                ax.tick_params(labelsize=7)
+                top = ax.inset_axes([0, 1.0, 1, 0.15], sharex=ax)
+                side = ax.inset_axes([1.0, 0, 0.15, 1], sharey=ax)
+                gx = np.linspace(points[:, 0].min(), points[:, 0].max(), 100)
+                gy = np.linspace(scale * points[:, 1].min(), scale * points[:, 1].max(), 100)
+                top.fill_between(gx, density(points[:, 0], gx), color="#1b6ca8", alpha=0.5)
+                side.fill_betweenx(gy, density(scale * points[:, 1], gy), color="#1b6ca8",
+                                   alpha=0.5)
+                for a in (top, side):
+                    a.set_axis_off()
+            fig.suptitle(f"{comparison}: joint-position difference against {factor}, LOWESS in red, "
+                         f"marginal densities (Fig. 8)", y=1.0)
+            fig.tight_layout()
+            name = f"fig8_{comparison.replace(' ', '_')}_{factor.replace(' ', '_')}.png"
+            fig.savefig(out / name, dpi=80, bbox_inches="tight")
+            plt.close(fig)
+            files.append(name)
+    return files
+
+
+def table(rows, columns):
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
+    body = "".join("<tr>" + "".join(f"<td>{html.escape(str(r.get(c, '')))}</td>" for c in columns)
+                   + "</tr>" for r in rows)
+    return f"<table><tr>{head}</tr>{body}</table>"
+
+
+def page(out, metrics, figures):
+    fmt = lambda v: "n/a" if v is None else f"{v:.4f}"  # noqa: E731
+    summary = [dict(r, mean_abs=fmt(r["mean_abs"]),
+                    mean_abs_first_row_removed=fmt(r["mean_abs_first_row_removed"]))
+               for r in metrics["summary"]]
+    platforms = [{"platform": p["label"], "role": p["role"], "trials": len(p["trials"]),
+                  "files": ", ".join(Path(t["file"]).name for t in p["trials"])}
+                 for p in metrics["inputs"]["platforms"]]
+    issues = [{"file": Path(i["file"]).name, "excluded": "yes" if i["excluded"] else "no",
+               "reason": i["reason"]} for i in metrics["inputs"]["file issues"]]
+    images = "".join(f'<h3>{html.escape(f)}</h3><img src="{html.escape(f)}" alt="{html.escape(f)}">'
+                     for f in figures)
+    text = f"""<!doctype html>
+<html><head><meta charset="utf-8"><title>Raven-II disparity report</title>
+<style>body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse;margin:1em 0}}
+td,th{{border:1px solid #ccc;padding:3px 8px;font-size:13px}} img{{max-width:100%}}</style></head>
+<body><h1>Raven-II disparity report</h1>
+<p>Trials aligned by {html.escape(metrics["inputs"]["alignment"])}. Metrics: metrics.json,
+metrics.csv, correlations.csv; figure data: trajectories.csv, scatter.csv, lowess.csv.</p>
+<h2>Platforms</h2>{table(platforms, ["platform", "role", "trials", "files"])}
+<h2>Files with problems</h2>{table(issues, ["file", "excluded", "reason"]) if issues else "<p>none</p>"}
+<h2>Summary (mean absolute difference, averaged over trial pairs)</h2>
+{table(summary, ["symbol", "comparison", "quantity", "group", "unit", "mean_abs",
+                 "mean_abs_first_row_removed"])}
+<h2>Figures</h2>{images}
+</body></html>
+"""
+    (out / "index.html").write_text(text)
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit(__doc__)
+    out = Path(sys.argv[1])
+    metrics = json.loads((out / "metrics.json").read_text())
+    joints = metrics["joints"]
+    figures = trajectories(out, metrics, joints) + inconsistencies(out, metrics, joints)
+    figures += factors(out, metrics, joints)
+    page(out, metrics, figures)
+    print(f"draw_report: {len(figures)} figures and index.html in {out}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,70 @@
+#include "analysis/platform_profile.hpp"
+
+#include "common/yaml_view.hpp"
+
+namespace analysis {
+
+bool PlatformProfile::claims(const std::filesystem::path& file,
+                             const controller::RsVariant& variant) const {
+  if (ambf_rows && variant.from_ambf) return true;
+  const std::string file_name = file.filename().string();
+  for (const auto& pattern : file_patterns) {
+    if (file_name.find(pattern) != std::string::npos) return true;
+  }
+  return false;
+}
+
+std::vector<PlatformProfile> readProfiles(const std::filesystem::path& file) {
+  const auto root = common::YamlView::parseFile(file);
+  std::vector<common::LoadIssue> warnings;
+  const common::KeyCheck strict{true, warnings};
+  root.checkKeys({"platforms"}, strict);
+  std::vector<PlatformProfile> profiles;
+  for (const auto& entry : root["platforms"].elements()) {
+    entry.checkKeys({"name", "label", "role", "files", "ambf rows", "position offsets"}, strict);
+    PlatformProfile p;
+    p.name = entry["name"].asString();
+    p.label = entry.find("label") ? entry["label"].asString() : p.name;
+    const auto role = entry["role"];
+    if (role.asKeyword() == "physical") {
+      p.role = Role::Physical;
+    } else if (role.asKeyword() != "simulation") {
+      role.fail("role must be 'physical' or 'simulation'");
+    }
+    if (auto files = entry.find("files")) {
+      for (const auto& f : files->elements()) p.file_patterns.push_back(f.asString());
+    }
+    p.ambf_rows = entry.getBool("ambf rows", false);
+    if (auto offsets = entry.find("position offsets")) {
+      for (const auto& key : offsets->keys()) {
+        int column = -1;
+        for (int c = 0; c < kJointColumns; ++c) {
+          if (key == "jpos" + std::to_string(c)) column = c;
+        }
+        if (column < 0) (*offsets)[key].fail("not a joint column (jpos0..jpos15)");
+        p.position_offset[static_cast<std::size_t>(column)] = (*offsets)[key].asDouble();
+      }
+    }
+    for (const auto& other : profiles) {
+      if (other.name == p.name) entry["name"].fail("platform '" + p.name + "' is defined twice");
+    }
+    profiles.push_back(std::move(p));
+  }
+  if (profiles.empty()) root["platforms"].fail("no platforms");
+  return profiles;
+}
+
+std::filesystem::path defaultProfilesFile() {
+  return RAVEN_ANALYSIS_PROFILES;
+}
+
+const PlatformProfile* profileFor(const std::vector<PlatformProfile>& profiles,
+                                  const std::filesystem::path& file,
+                                  const controller::RsVariant& variant) {
+  for (const auto& p : profiles) {
+    if (p.claims(file, variant)) return &p;
+  }
+  return nullptr;
+}
+
+}  // namespace analysis
