@@ -8,6 +8,7 @@
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "peg_scene.hpp"
 #include "raven/platform_profile.hpp"
 #include "raven/twin_arms.hpp"
 #include "scenario/peg_transfer.hpp"
@@ -18,23 +19,6 @@ namespace bench {
 namespace {
 
 const char* kSection = "loop frequency";
-
-/// Loop frequencies of `repeat` runs of the peg scene's first `seconds`.
-std::vector<double> pegScene(const std::filesystem::path& launch, bridge::ClockKind clock,
-                             bool sleep, double seconds, int repeat) {
-  std::vector<double> rates;
-  for (int i = 0; i < repeat; ++i) {
-    scenario::PegTransferOptions options;
-    options.assist = scenario::AssistMode::Contact;
-    options.launch_file = launch;
-    options.clock = clock;
-    options.soft_body_sleep = sleep;
-    options.time_limit = seconds;
-    options.settle_time = 0.0;
-    rates.push_back(scenario::runPegTransfer(options).timing.loopFrequency());
-  }
-  return rates;
-}
 
 /// Steps per wall second of `world` over `steps` steps, `each` run before every step.
 template <typename Each>
@@ -81,6 +65,24 @@ double ambfRavenStill(const std::filesystem::path& launch) {
 }
 
 }  // namespace
+
+std::vector<double> pegScene(const std::filesystem::path& launch, bridge::ClockKind clock,
+                             bool sleep, double seconds, int repeat,
+                             const scenario::WorldObserver& observe) {
+  std::vector<double> rates;
+  for (int i = 0; i < repeat; ++i) {
+    scenario::PegTransferOptions options;
+    options.assist = scenario::AssistMode::Contact;
+    options.launch_file = launch;
+    options.clock = clock;
+    options.soft_body_sleep = sleep;
+    options.time_limit = seconds;
+    options.settle_time = 0.0;
+    options.observe = observe;
+    rates.push_back(scenario::runPegTransfer(options).timing.loopFrequency());
+  }
+  return rates;
+}
 
 void measureLoopFrequency(const BenchSettings& s, Report& report) {
   const auto simplified = raven::modelDirectory() / "peg_transfer" / "launch.yaml";

@@ -52,7 +52,8 @@ int main(int argc, char** argv) {
   const std::vector<std::pair<std::string, Section>> sections{
       {"loop", bench::measureLoopFrequency}, {"controller", bench::measureController},
       {"replay", bench::measureReplay},      {"ros", bench::measureRosEdge},
-      {"memory", bench::measureMemory},      {"micro", bench::measureMicro}};
+      {"viewer", bench::measureViewer},      {"memory", bench::measureMemory},
+      {"micro", bench::measureMicro}};
   std::vector<std::string> names;
   for (const auto& section : sections) names.push_back(section.first);
 

@@ -27,6 +27,8 @@ void measureReplay(const BenchSettings& settings, Report& report);
 void measureRosEdge(const BenchSettings& settings, Report& report);
 /// Peak resident size of the main job and of the twin node.
 void measureMemory(const BenchSettings& settings, Report& report);
+/// The peg scene's loop frequency with the viewer window open against headless (needs a display).
+void measureViewer(const BenchSettings& settings, Report& report);
 /// The Google Benchmark micro-benchmarks (IK, interpolation, a physics step).
 void measureMicro(const BenchSettings& settings, Report& report);
 

@@ -7,7 +7,10 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
 "$root/scripts/build.sh" >/dev/null
-"$build/bench/raven_bench" --repeat 3 --out "$build/bench_results.json" \
+# The viewer section needs a display: without one, run the whole benchmark inside Xvfb.
+display=()
+[ -n "${DISPLAY:-}" ] || ! command -v xvfb-run >/dev/null || display=(xvfb-run -a)
+"${display[@]}" "$build/bench/raven_bench" --repeat 3 --out "$build/bench_results.json" \
   --markdown "$build/bench_results.md" "$@"
 /usr/bin/python3 - "$root/README.md" "$build/bench_results.json" "$build/bench_results.md" <<'PY'
 import json, re, sys

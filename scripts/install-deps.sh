@@ -13,6 +13,7 @@ packages=(
   python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag
   python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg python3-genpy
   python3-matplotlib python3-numpy
+  libglfw3-dev libgl-dev libgl1-mesa-dri libstb-dev xvfb xauth
 )
 
 missing=()

@@ -12,6 +12,8 @@
 #include "ambf_like/physics_loop.hpp"
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "viewer/snapshot_schedule.hpp"
+#include "viewer/viewer.hpp"
 
 namespace {
 
@@ -34,6 +36,10 @@ struct Options {
   bool lenient_keys = false;
   std::string summary_json;
   bool quiet = false;
+  std::string snapshot;
+  double snapshot_every = 0.0;
+  bool collision_view = false;
+  bool contacts = false;
 };
 
 ambf_like::LoadedScene load(const Options& o) {
@@ -134,7 +140,16 @@ int main(int argc, char** argv) {
   app.add_option("-t,--fixed_phx_timestep", o.fixed_time_step,
                  "advance exactly 1/p per iteration (false: follow the wall clock)");
   app.add_flag("--free-run", o.free_run, "do not pace the loop: run as fast as the CPU allows");
-  app.add_option("-g,--show_gui", o.show_gui, "open a viewer (not part of this build yet)");
+  app.add_option("-g,--show_gui", o.show_gui, "open a viewer window (AMBF's flag; also --gui)");
+  app.add_flag("--gui", o.show_gui, "open a viewer window");
+  app.add_option("--snapshot", o.snapshot,
+                 "write a PNG of the scene at the end (with --snapshot-every: a numbered series); "
+                 "needs a display or xvfb-run");
+  app.add_option("--snapshot-every", o.snapshot_every, "simulated seconds between snapshots")
+      ->check(CLI::PositiveNumber);
+  app.add_flag("--collision-view", o.collision_view,
+               "show Bullet's collision shapes instead of the visuals (key C in the window)");
+  app.add_flag("--contacts", o.contacts, "show contact points (key K in the window)");
   app.add_option("--steps", o.max_steps, "stop after this many internal steps");
   app.add_option("--duration", o.duration, "stop after this many simulated seconds")
       ->check(CLI::NonNegativeNumber);
@@ -147,8 +162,8 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", o.quiet, "no once-a-second loop report");
   CLI11_PARSE(app, argc, argv);
 
-  if (o.show_gui) {
-    spdlog::error("-g true: this build has no viewer yet; run headless (the default)");
+  if (o.snapshot_every > 0.0 && o.snapshot.empty()) {
+    spdlog::error("--snapshot-every needs --snapshot FILE.png to name the series");
     return 2;
   }
   const bool use_default = o.launch_file.empty() && o.extra_files.empty();
@@ -189,6 +204,22 @@ int main(int argc, char** argv) {
     };
   }
 
+  std::unique_ptr<viewer::Viewer> view;
+  std::optional<viewer::SnapshotSchedule> schedule;
+  if (o.show_gui || !o.snapshot.empty()) {
+    viewer::ViewerOptions view_options;
+    view_options.window = o.show_gui;
+    view_options.view = {o.collision_view, o.contacts};
+    view_options.title = "ambf_like " + (o.launch_file.empty() ? std::string() : o.launch_file);
+    try {
+      view = std::make_unique<viewer::Viewer>(*world, view_options);
+    } catch (const std::exception& e) {
+      spdlog::error("viewer: {}", e.what());
+      return 1;
+    }
+    if (o.snapshot_every > 0.0) schedule.emplace(o.snapshot, o.snapshot_every);
+  }
+
   std::signal(SIGINT, [](int) { g_stop = true; });
   std::signal(SIGTERM, [](int) { g_stop = true; });
   // Finiteness walks every body, so it is checked once per 1000 iterations (and at the end).
@@ -196,14 +227,35 @@ int main(int argc, char** argv) {
   bool blew_up = false;
   auto done = [&] {
     if (++iterations % 1000 == 0) blew_up = !world->isFinite();
-    return g_stop || blew_up || (o.max_steps > 0 && world->stepCount() >= o.max_steps) ||
+    return g_stop || blew_up || (view && view->closed()) ||
+           (o.max_steps > 0 && world->stepCount() >= o.max_steps) ||
            (o.duration > 0.0 && world->time() + world->stepSize() / 2 >= o.duration);
   };
   const auto start = std::chrono::steady_clock::now();
-  while (!done()) loop.iterate();
+  try {
+    while (!done()) {
+      loop.iterate();
+      if (view) {
+        view->publish(*world);
+        if (schedule) schedule->maybeTake(*view, *world);
+      }
+    }
+  } catch (const std::exception& e) {  // a snapshot that cannot be written
+    spdlog::error("{}", e.what());
+    return 1;
+  }
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  if (view && !o.snapshot.empty() && !schedule) {
+    try {
+      view->snapshot(*world, o.snapshot);
+      spdlog::info("snapshot: {}", o.snapshot);
+    } catch (const std::exception& e) {
+      spdlog::error("snapshot: {}", e.what());
+      return 1;
+    }
+  }
   const auto summary = summarize(scene, *world, loop.meter(), wall);
   printSummary(summary);
   if (!o.summary_json.empty()) std::ofstream(o.summary_json) << summary.dump(2) << "\n";

@@ -15,6 +15,7 @@
 #include "scenario/batch_summary.hpp"
 #include "scenario/console_report.hpp"
 #include "scenario/handover_reach.hpp"
+#include "viewer/viewer.hpp"
 
 namespace {
 
@@ -36,6 +37,8 @@ struct Settings {
   double time_limit = 240.0;
   double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
   bool quiet = false, verbose = false;
+  bool gui = false;
+  std::string snapshot;  ///< PREFIX: PREFIX_before.png and PREFIX_after.png
 };
 
 constexpr std::size_t kHandoverSamples = 100000;
@@ -61,6 +64,25 @@ void writeJson(const fs::path& path, const nlohmann::json& j) {
   std::ofstream file(path);
   file << j.dump(2) << '\n';
   if (!file) throw std::runtime_error("cannot write " + path.string());
+}
+
+/// The viewer window and the before/after snapshots of a single run.
+void watchWorld(std::unique_ptr<viewer::Viewer>& view, const Settings& s,
+                const ambf_like::World& world, scenario::WorldMoment moment) {
+  if (moment == scenario::WorldMoment::Start) {
+    viewer::ViewerOptions options;
+    options.window = s.gui;
+    options.title = "raven_peg_transfer";
+    view.reset();  // one viewer at a time
+    view = std::make_unique<viewer::Viewer>(world, options);
+  }
+  if (!s.snapshot.empty() && moment != scenario::WorldMoment::Iteration) {
+    const bool before = moment == scenario::WorldMoment::Start;
+    const fs::path file = s.snapshot + (before ? "_before.png" : "_after.png");
+    view->snapshot(world, file);
+    spdlog::info("snapshot: {}", file.string());
+  }
+  view->publish(world);
 }
 
 int runPegTransfers(const Settings& s) {
@@ -102,6 +124,12 @@ int runPegTransfers(const Settings& s) {
     if (record)
       options.rs_file = out / ("peg_transfer_seed" + std::to_string(options.seed) + "_rs.csv");
     options.progress = [&bar](const scenario::RunProgress& p) { bar.show(p); };
+    std::unique_ptr<viewer::Viewer> view;
+    if (s.gui || !s.snapshot.empty()) {
+      options.observe = [&view, &s](const ambf_like::World& world, scenario::WorldMoment moment) {
+        watchWorld(view, s, world, moment);
+      };
+    }
     results.push_back(scenario::runPegTransfer(options));
     jsonl << results.back().json().dump() << '\n' << std::flush;
   } else {
@@ -210,11 +238,20 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   app.add_option("--rect-depth", s.rect_depth_mm, "rectangle task: the side along y (mm)")
       ->check(CLI::PositiveNumber);
+  app.add_option("-g,--show_gui", s.gui, "watch the run in a viewer window (AMBF's -g true)");
+  app.add_flag("--gui", s.gui, "the same as -g true");
+  app.add_option("--snapshot", s.snapshot,
+                 "PREFIX: write PREFIX_before.png and PREFIX_after.png of a single run (needs a "
+                 "display or xvfb-run)");
   app.add_flag("-q,--quiet", s.quiet, "warnings and errors only");
   app.add_flag("-v,--verbose", s.verbose, "log every phase of every transfer");
   CLI11_PARSE(app, argc, argv);
   setUpLogging(s);
   try {
+    if ((s.gui || !s.snapshot.empty()) && (s.runs > 1 || s.task != "peg")) {
+      spdlog::error("--gui and --snapshot watch a single peg transfer (no --runs, no --task)");
+      return 2;
+    }
     return s.task == "rectangle" ? runRectangleTask(s) : runPegTransfers(s);
   } catch (const std::invalid_argument& e) {
     spdlog::error("{}", e.what());

@@ -67,6 +67,10 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   if (!options.rs_file.empty()) rs = std::make_unique<controller::RsWriter>(options.rs_file);
 
   RunProgress progress{twin.now(), 0, layout.jobs.size()};
+  auto show = [&](WorldMoment moment) {
+    if (options.observe) options.observe(world, moment);
+  };
+  show(WorldMoment::Start);
   auto done = [&] { return routines[0].done() && routines[1].done(); };
   while (!done() && twin.now() < options.time_limit) {
     const controller::ArmPair current = controller.commanded();
@@ -83,13 +87,16 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     progress.sim_time = twin.now();
     progress.done = routines[0].finished() + routines[1].finished();
     if (options.progress) options.progress(progress);
+    show(WorldMoment::Iteration);
   }
   result.timed_out = !done();
   const double settle_end = twin.now() + options.settle_time;
   while (twin.now() < settle_end) {
     controller.idle();
     watch.observe();
+    show(WorldMoment::Iteration);
   }
+  show(WorldMoment::End);
 
   result.pegs = watch.finish();
   result.grasps = assist ? assist->grasps() : 0;

@@ -36,6 +36,9 @@ struct PegTransferOptions {
   double settle_time = 1.0;
   /// Called after every manual-loop iteration.
   ProgressCallback progress;
+  /// Shown the world before the first move, after every manual-loop iteration (settling too)
+  /// and once the pegs are judged: the viewer's hook.
+  WorldObserver observe;
 };
 
 /// Runs the scenario once. Throws common::LoadError if the scene's files are bad.

@@ -4,6 +4,10 @@
 #include <cstddef>
 #include <functional>
 
+namespace ambf_like {
+class World;
+}
+
 namespace scenario {
 
 /// A run's position: simulated time, and units of work done.
@@ -15,5 +19,9 @@ struct RunProgress {
 
 /// Called after every manual-loop iteration.
 using ProgressCallback = std::function<void(const RunProgress&)>;
+
+/// When a run shows its world to an observer.
+enum class WorldMoment { Start, Iteration, End };
+using WorldObserver = std::function<void(const ambf_like::World&, WorldMoment)>;
 
 }  // namespace scenario

@@ -1,0 +1,238 @@
+// The viewer renders the peg-transfer scene offscreen: robot and pegs where the camera puts them,
+// a collision view that differs from the visual one, numbered snapshot series. Runs under
+// xvfb-run (CMake sets it as the launcher); without a display every test skips.
+
+#include <gtest/gtest.h>
+
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#include <BulletSoftBody/btSoftBody.h>
+#include <stb/stb_image.h>
+
+#include <cstdlib>
+#include <memory>
+
+#include "ambf_like/scene_loader.hpp"
+#include "ambf_like/world.hpp"
+#include "test_files.hpp"
+#include "viewer/scene_geometry.hpp"
+#include "viewer/snapshot_schedule.hpp"
+#include "viewer/viewer.hpp"
+
+namespace {
+
+const std::filesystem::path kModels = RAVEN_MODELS_DIR;
+constexpr int kWidth = 640, kHeight = 400;
+
+/// An RGB image read back from a PNG.
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+  const unsigned char* at(int x, int y) const {
+    return &rgb[(static_cast<std::size_t>(y) * width + x) * 3];
+  }
+  static Image read(const std::filesystem::path& file) {
+    Image image;
+    int channels = 0;
+    unsigned char* data = stbi_load(file.c_str(), &image.width, &image.height, &channels, 3);
+    if (!data) throw std::runtime_error("cannot read " + file.string());
+    image.rgb.assign(data, data + static_cast<std::size_t>(image.width) * image.height * 3);
+    stbi_image_free(data);
+    return image;
+  }
+};
+
+bool isBackground(const unsigned char* p) {
+  const unsigned char* corner = p;  // compared against the known clear colour (0.91, 0.93, 0.95)
+  return std::abs(corner[0] - 232) < 4 && std::abs(corner[1] - 237) < 4 &&
+         std::abs(corner[2] - 242) < 4;
+}
+
+bool isPegRed(const unsigned char* p) {
+  return p[0] > p[1] + 40 && p[0] > p[2] + 30;
+}
+
+bool isCollisionOrange(const unsigned char* p) {
+  return p[0] > 150 && p[1] > 60 && p[1] < p[0] - 40 && p[2] < p[1] - 30;
+}
+
+/// Share of the pixels in a box around `centre` for which `test` holds.
+template <typename Test>
+double shareNear(const Image& image, const Eigen::Vector2d& centre, int half, Test test) {
+  int hits = 0, all = 0;
+  for (int y = static_cast<int>(centre.y()) - half; y <= static_cast<int>(centre.y()) + half; ++y) {
+    for (int x = static_cast<int>(centre.x()) - half; x <= static_cast<int>(centre.x()) + half;
+         ++x) {
+      if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+      ++all;
+      hits += test(image.at(x, y));
+    }
+  }
+  return all ? static_cast<double>(hits) / all : 0.0;
+}
+
+/// The peg-transfer scene after its pegs settled, with a snapshot-only viewer; null if there is
+/// no display.
+struct Scene {
+  ambf_like::MeshLibrary meshes;
+  std::unique_ptr<ambf_like::World> world;
+  std::unique_ptr<viewer::Viewer> view;
+  test_support::TempDir dir;
+
+  Scene() {
+    const auto scene = ambf_like::loadLaunchFile(kModels / "peg_transfer/launch.yaml", {});
+    world = std::make_unique<ambf_like::World>(scene.spec, meshes);
+    world->step(200);
+    viewer::ViewerOptions options;
+    options.window = false;
+    options.width = kWidth;
+    options.height = kHeight;
+    try {
+      view = std::make_unique<viewer::Viewer>(*world, options);
+    } catch (const viewer::NoDisplay&) {
+    }
+  }
+};
+
+#define SKIP_WITHOUT_DISPLAY(scene) \
+  if (!(scene).view) GTEST_SKIP() << "no display: run the viewer tests under xvfb-run -a"
+
+TEST(Viewer, RendersTheRobotAndThePegsWhereTheCameraPutsThem) {
+  Scene scene;
+  SKIP_WITHOUT_DISPLAY(scene);
+  const auto file = scene.dir.path() / "visual.png";
+  scene.view->snapshot(*scene.world, file);
+  const Image image = Image::read(file);
+  ASSERT_EQ(image.width, kWidth);
+  ASSERT_EQ(image.height, kHeight);
+  const viewer::Camera& camera = scene.view->initialCamera();
+
+  // Every peg: its centre projects onto red pixels.
+  ASSERT_EQ(scene.world->softBodyCount(), 6u);
+  for (std::size_t i = 0; i < scene.world->softBodyCount(); ++i) {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    const auto nodes = scene.world->softBody(i).nodePositions();
+    for (const auto& n : nodes) centre += n;
+    centre /= static_cast<double>(nodes.size());
+    const auto pixel = camera.toPixel(centre, kWidth, kHeight);
+    ASSERT_TRUE(pixel) << "peg " << i << " is behind the camera";
+    EXPECT_GT(shareNear(image, *pixel, 4, isPegRed), 0.2)
+        << scene.world->softBody(i).name() << " at pixel " << pixel->transpose();
+  }
+  // Each arm: the box its moving bodies project into is mostly drawn, not background.
+  for (const char* arm : {"/left/", "/right/"}) {
+    Eigen::AlignedBox2d box;
+    for (std::size_t b = 0; b < scene.world->bodyCount(); ++b) {
+      const auto& body = scene.world->body(b);
+      if (body.isStatic() || body.qualifiedName().find(arm) == std::string::npos) continue;
+      if (auto p = camera.toPixel(body.pose().translation(), kWidth, kHeight)) box.extend(*p);
+    }
+    ASSERT_FALSE(box.isEmpty()) << arm;
+    EXPECT_TRUE(
+        Eigen::AlignedBox2d(Eigen::Vector2d(0, 0), Eigen::Vector2d(kWidth, kHeight)).contains(box))
+        << arm << " leaves the frame";
+    int drawn = 0, all = 0;
+    for (int y = static_cast<int>(box.min().y()); y < static_cast<int>(box.max().y()); ++y) {
+      for (int x = static_cast<int>(box.min().x()); x < static_cast<int>(box.max().x()); ++x) {
+        ++all;
+        drawn += !isBackground(image.at(x, y));
+      }
+    }
+    EXPECT_GT(static_cast<double>(drawn) / all, 0.05) << arm;
+  }
+  // The frame's corners are background: the scene is framed, not cropped.
+  EXPECT_TRUE(isBackground(image.at(2, 2)));
+  EXPECT_TRUE(isBackground(image.at(kWidth - 3, kHeight - 3)));
+}
+
+TEST(Viewer, TheCollisionViewDiffersFromTheVisualView) {
+  Scene scene;
+  SKIP_WITHOUT_DISPLAY(scene);
+  const auto visual_file = scene.dir.path() / "visual.png";
+  const auto collision_file = scene.dir.path() / "collision.png";
+  scene.view->snapshot(*scene.world, visual_file, {false, false});
+  scene.view->snapshot(*scene.world, collision_file, {true, false});
+  const Image visual = Image::read(visual_file), collision = Image::read(collision_file);
+  int differ = 0, orange_collision = 0, orange_visual = 0, drawn = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      const auto *v = visual.at(x, y), *c = collision.at(x, y);
+      differ += std::abs(v[0] - c[0]) + std::abs(v[1] - c[1]) + std::abs(v[2] - c[2]) > 30;
+      orange_collision += isCollisionOrange(c);
+      orange_visual += isCollisionOrange(v);
+      drawn += !isBackground(v);
+    }
+  }
+  ASSERT_GT(drawn, 1000);
+  EXPECT_GT(differ, drawn / 2) << "of " << drawn << " drawn pixels";
+  EXPECT_GT(orange_collision, drawn / 4);
+  EXPECT_LT(orange_visual, orange_collision / 10);
+}
+
+TEST(Viewer, ShowsTheRingsDeforming) {
+  Scene scene;
+  SKIP_WITHOUT_DISPLAY(scene);
+  // Squash one ring by moving half of its nodes: the snapshot shows the change where it is.
+  const auto before = scene.dir.path() / "before.png";
+  const auto after = scene.dir.path() / "after.png";
+  scene.view->snapshot(*scene.world, before);
+  auto& ring = scene.world->softBody(0).bullet();
+  for (int n = 0; n < ring.m_nodes.size(); n += 2) ring.m_nodes[n].m_x += btVector3(0, 0, 0.01);
+  scene.view->snapshot(*scene.world, after);
+  const Image a = Image::read(before), b = Image::read(after);
+  int changed = 0;
+  for (std::size_t i = 0; i < a.rgb.size(); ++i) changed += a.rgb[i] != b.rgb[i];
+  EXPECT_GT(changed, 30);
+}
+
+TEST(Viewer, WithoutADisplayItSaysWhatToDo) {
+  const char* display = std::getenv("DISPLAY");
+  const std::string saved = display ? display : "";
+  unsetenv("DISPLAY");
+  ambf_like::MeshLibrary meshes;
+  const auto scene = ambf_like::loadLaunchFile(kModels / "raven2/launch.yaml", {});
+  ambf_like::World world(scene.spec, meshes);
+  viewer::ViewerOptions options;
+  options.window = false;
+  try {
+    viewer::Viewer view(world, options);
+    ADD_FAILURE() << "a viewer without DISPLAY";
+  } catch (const viewer::NoDisplay& e) {
+    EXPECT_NE(std::string(e.what()).find("xvfb-run"), std::string::npos) << e.what();
+  }
+  if (!saved.empty()) setenv("DISPLAY", saved.c_str(), 1);
+}
+
+TEST(Viewer, SnapshotSeriesAreNumberedBySimulatedTime) {
+  Scene scene;
+  SKIP_WITHOUT_DISPLAY(scene);
+  viewer::SnapshotSchedule schedule(scene.dir.path() / "run.png", 0.05);
+  int taken = 0;
+  const double start = scene.world->time();
+  while (scene.world->time() < start + 0.12) {
+    taken += schedule.maybeTake(*scene.view, *scene.world);
+    scene.world->step();
+  }
+  EXPECT_EQ(taken, 3);
+  for (int n = 0; n < 3; ++n) EXPECT_TRUE(std::filesystem::exists(schedule.fileFor(n))) << n;
+  EXPECT_EQ(schedule.fileFor(2).filename(), "run_0002.png");
+}
+
+TEST(SceneGeometry, TessellatesEveryBodyOfTheRaven) {
+  ambf_like::MeshLibrary meshes;
+  const auto scene = ambf_like::loadLaunchFile(kModels / "peg_transfer/launch.yaml", {});
+  ambf_like::World world(scene.spec, meshes);
+  const auto geometry = viewer::SceneGeometry::of(world, meshes);
+  ASSERT_EQ(geometry.bodies.size(), world.bodyCount());
+  for (const auto& body : geometry.bodies) {
+    EXPECT_GT(body.collision.triangles(), 0u) << body.name;
+    EXPECT_GT(body.visual.triangles(), 0u) << body.name;
+  }
+  ASSERT_EQ(geometry.soft_bodies.size(), 6u);
+  for (const auto& soft : geometry.soft_bodies) EXPECT_GT(soft.faces.size(), 20u) << soft.name;
+  // The scene's bounds hold the robot and the board, not a floor plane's 2 m.
+  EXPECT_LT(geometry.bounds.sizes().maxCoeff(), 1.5);
+  EXPECT_GT(geometry.bounds.sizes().maxCoeff(), 0.2);
+}
+
+}  // namespace

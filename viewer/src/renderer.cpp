@@ -1,0 +1,152 @@
+#include "renderer.hpp"
+
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+
+#include <stdexcept>
+
+namespace viewer::detail {
+
+namespace {
+
+const Eigen::Vector3f kBackground(0.91f, 0.93f, 0.95f);
+const Eigen::Vector3f kCollisionColour(0.95f, 0.55f, 0.15f);
+const Eigen::Vector3f kSoftColour(0.85f, 0.25f, 0.30f);
+
+void lights() {
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glEnable(GL_LIGHT1);
+  glEnable(GL_NORMALIZE);
+  glEnable(GL_COLOR_MATERIAL);
+  glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
+  glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
+  const GLfloat key[] = {0.4f, 0.3f, 1.0f, 0.0f}, fill[] = {-0.5f, -0.6f, 0.3f, 0.0f};
+  const GLfloat key_colour[] = {0.75f, 0.75f, 0.72f, 1.0f},
+                fill_colour[] = {0.3f, 0.3f, 0.35f, 1.0f};
+  const GLfloat ambient[] = {0.25f, 0.25f, 0.25f, 1.0f};
+  glLightfv(GL_LIGHT0, GL_POSITION, key);
+  glLightfv(GL_LIGHT0, GL_DIFFUSE, key_colour);
+  glLightfv(GL_LIGHT1, GL_POSITION, fill);
+  glLightfv(GL_LIGHT1, GL_DIFFUSE, fill_colour);
+  glLightModelfv(GL_LIGHT_MODEL_AMBIENT, ambient);
+}
+
+void triangles(const TriangleMesh& m) {
+  if (m.positions.empty()) return;
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glEnableClientState(GL_NORMAL_ARRAY);
+  glVertexPointer(3, GL_FLOAT, sizeof(Eigen::Vector3f), m.positions.data());
+  glNormalPointer(GL_FLOAT, sizeof(Eigen::Vector3f), m.normals.data());
+  glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(m.positions.size()));
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_VERTEX_ARRAY);
+}
+
+void colour(const Eigen::Vector3f& c) {
+  glColor3f(c.x(), c.y(), c.z());
+}
+
+void softBody(const SoftGeometry& g, const std::vector<Eigen::Vector3f>& nodes) {
+  colour(kSoftColour);
+  if (!g.faces.empty()) {
+    glBegin(GL_TRIANGLES);
+    for (const auto& f : g.faces) {
+      const auto &a = nodes[f[0]], &b = nodes[f[1]], &c = nodes[f[2]];
+      const Eigen::Vector3f n = (b - a).cross(c - a).normalized();
+      glNormal3fv(n.data());
+      glVertex3fv(a.data());
+      glVertex3fv(b.data());
+      glVertex3fv(c.data());
+    }
+    glEnd();
+    return;
+  }
+  glDisable(GL_LIGHTING);
+  glBegin(GL_LINES);
+  for (const auto& l : g.links) {
+    glVertex3fv(nodes[l[0]].data());
+    glVertex3fv(nodes[l[1]].data());
+  }
+  glEnd();
+  glEnable(GL_LIGHTING);
+}
+
+void contacts(const std::vector<ambf_like::Contact>& list, double scale) {
+  glDisable(GL_LIGHTING);
+  glDisable(GL_DEPTH_TEST);
+  glPointSize(6.0f);
+  glColor3f(0.1f, 0.6f, 0.1f);
+  glBegin(GL_POINTS);
+  for (const auto& c : list) glVertex3dv(c.position_on_b.data());
+  glEnd();
+  glBegin(GL_LINES);
+  for (const auto& c : list) {
+    glVertex3dv(c.position_on_b.data());
+    const Eigen::Vector3d tip = c.position_on_b + scale * c.normal_on_b;
+    glVertex3dv(tip.data());
+  }
+  glEnd();
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_LIGHTING);
+}
+
+}  // namespace
+
+void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
+          int height, const ViewOptions& view) {
+  glViewport(0, 0, width, height);
+  glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_DEPTH_TEST);
+  glMatrixMode(GL_PROJECTION);
+  const Eigen::Matrix4d projection = camera.projection(static_cast<double>(width) / height);
+  glLoadMatrixd(projection.data());
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  lights();  // in eye coordinates: the light moves with the camera
+  const Eigen::Matrix4d v = camera.view();
+  glLoadMatrixd(v.data());
+  for (std::size_t i = 0; i < scene.bodies.size() && i < frame.body_poses.size(); ++i) {
+    const BodyGeometry& body = scene.bodies[i];
+    glPushMatrix();
+    glMultMatrixd(frame.body_poses[i].matrix().data());
+    if (view.collision) {
+      colour(kCollisionColour);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(1.0f, 1.0f);
+      triangles(body.collision);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+      glDisable(GL_LIGHTING);
+      glColor3f(0.25f, 0.12f, 0.0f);
+      glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+      triangles(body.collision);
+      glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+      glEnable(GL_LIGHTING);
+    } else {
+      colour(body.colour);
+      triangles(body.visual);
+    }
+    glPopMatrix();
+  }
+  for (std::size_t i = 0; i < scene.soft_bodies.size() && i < frame.soft_nodes.size(); ++i) {
+    softBody(scene.soft_bodies[i], frame.soft_nodes[i]);
+  }
+  if (view.contacts) contacts(frame.contacts, 0.02 * camera.distance);
+}
+
+std::vector<std::uint8_t> readPixels(int width, int height) {
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width) * height * 3);
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+  // OpenGL's rows start at the bottom.
+  const std::size_t row = static_cast<std::size_t>(width) * 3;
+  for (int y = 0; y < height / 2; ++y) {
+    std::swap_ranges(rgb.begin() + y * row, rgb.begin() + (y + 1) * row,
+                     rgb.begin() + (height - 1 - y) * row);
+  }
+  return rgb;
+}
+
+}  // namespace viewer::detail

@@ -1,0 +1,25 @@
+#pragma once
+// Draws a SceneGeometry at a FrameState with OpenGL 2.1 (fixed function: any Mesa works, llvmpipe
+// included), into whatever context is current.
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+#include "viewer/camera.hpp"
+#include "viewer/scene_geometry.hpp"
+#include "viewer/viewer.hpp"
+
+namespace viewer::detail {
+
+void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
+          int height, const ViewOptions& view);
+
+/// The current framebuffer as RGB rows, top row first.
+std::vector<std::uint8_t> readPixels(int width, int height);
+
+/// Throws std::runtime_error naming the file if it cannot be written.
+void writePng(const std::filesystem::path& file, const std::vector<std::uint8_t>& rgb, int width,
+              int height);
+
+}  // namespace viewer::detail
