@@ -3,6 +3,8 @@
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
+#include <cstdlib>
+
 #include "renderer.hpp"
 #include "viewer/scene_geometry.hpp"
 
@@ -146,6 +148,10 @@ void Viewer::serve(Request& request) {
 }
 
 void Viewer::run(std::promise<void>* started) {
+  // With Mesa's software renderer (llvmpipe: no GPU, or Xvfb), rasterise on this thread only
+  // instead of one worker per core, so drawing cannot take the physics thread's core. A value
+  // the user set wins.
+  setenv("LP_NUM_THREADS", "0", 0);
   if (!glfwInit()) {
     start_error_ = "no display for an OpenGL context (DISPLAY unset?): run under xvfb-run -a";
     started->set_value();
