@@ -5,6 +5,15 @@
 
 #include <stdexcept>
 
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wshadow"
+#pragma GCC diagnostic ignored "-Wconversion"
+#pragma GCC diagnostic ignored "-Wunused-function"
+#pragma GCC diagnostic ignored "-Wsign-compare"
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+#include <stb/stb_easy_font.h>
+#pragma GCC diagnostic pop
+
 namespace viewer::detail {
 
 namespace {
@@ -133,6 +142,27 @@ void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& cam
     softBody(scene.soft_bodies[i], frame.soft_nodes[i]);
   }
   if (view.contacts) contacts(frame.contacts, 0.02 * camera.distance);
+}
+
+void overlay(const std::string& text, int width, int height) {
+  constexpr float kScale = 2.0f;  // stb_easy_font's glyphs are 7 pixels tall
+  static char quads[64 * 1024];
+  const int count = stb_easy_font_print(5.0f, 5.0f, const_cast<char*>(text.c_str()), nullptr, quads,
+                                        sizeof quads);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, width, height, 0, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glScalef(kScale, kScale, 1.0f);
+  glDisable(GL_LIGHTING);
+  glDisable(GL_DEPTH_TEST);
+  glColor3f(0.15f, 0.15f, 0.2f);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glVertexPointer(2, GL_FLOAT, 16, quads);
+  glDrawArrays(GL_QUADS, 0, count * 4);
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glEnable(GL_DEPTH_TEST);
 }
 
 std::vector<std::uint8_t> readPixels(int width, int height) {

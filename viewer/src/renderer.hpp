@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "viewer/camera.hpp"
@@ -14,6 +15,9 @@ namespace viewer::detail {
 
 void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
           int height, const ViewOptions& view);
+
+/// A line of text in the top left corner, over whatever is drawn (the window's status line).
+void overlay(const std::string& text, int width, int height);
 
 /// The current framebuffer as RGB rows, top row first.
 std::vector<std::uint8_t> readPixels(int width, int height);

@@ -186,8 +186,9 @@ void Viewer::renderLoop() {
   const auto period = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(1.0 / options_.render_hz));
   auto next_frame = Clock::now();
-  auto title_due = Clock::now();
-  std::uint64_t frames_at_title = 0;
+  auto status_due = Clock::now();
+  std::uint64_t frames_at_status = 0;
+  std::string status;
   int shots = 0;
   while (!stop_) {
     std::unique_ptr<Request> request;
@@ -212,25 +213,26 @@ void Viewer::renderLoop() {
     glfwGetFramebufferSize(window, &width, &height);
     if (width > 0 && height > 0) {
       detail::draw(*geometry_, frame, state.camera, width, height, state.view);
-      if (state.snapshot) {
+      if (state.snapshot) {  // the scene as drawn, without the status line
         state.snapshot = false;
         const auto file = fmt::format("snapshot_{}.png", ++shots);
         detail::writePng(file, detail::readPixels(width, height), width, height);
       }
+      detail::overlay(status, width, height);
       glfwSwapBuffers(window);
       ++frames_;
     }
     glfwPollEvents();
     if (glfwWindowShouldClose(window)) closed_ = true;
-    if (Clock::now() >= title_due) {
-      const double render_hz = static_cast<double>(frames_ - frames_at_title);
-      frames_at_title = frames_;
-      title_due = Clock::now() + std::chrono::seconds(1);
-      const auto title =
-          fmt::format("{}  |  physics {:.0f} Hz  |  render {:.0f} fps  |  t = {:.2f} s{}",
-                      options_.title, physics_hz_.load(), render_hz, frame.sim_time,
-                      state.view.collision ? "  |  collision view" : "");
-      glfwSetWindowTitle(window, title.c_str());
+    if (Clock::now() >= status_due) {  // once a second, on screen and in the title
+      const double render_hz = static_cast<double>(frames_ - frames_at_status);
+      frames_at_status = frames_;
+      status_due = Clock::now() + std::chrono::seconds(1);
+      status = fmt::format(
+          "physics {:.0f} Hz   render {:.0f} fps   t = {:.2f} s{}   [C] collision  [K] contacts",
+          physics_hz_.load(), render_hz, frame.sim_time,
+          state.view.collision ? "   (collision view)" : "");
+      glfwSetWindowTitle(window, (options_.title + "  |  " + status).c_str());
     }
   }
 }
