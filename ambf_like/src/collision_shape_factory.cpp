@@ -12,7 +12,7 @@
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <BulletCollision/Gimpact/btGImpactShape.h>
 
-#include "bullet_conversions.hpp"
+#include "ambf_like/bullet_conversions.hpp"
 
 namespace ambf_like::detail {
 

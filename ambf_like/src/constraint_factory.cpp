@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "bullet_conversions.hpp"
+#include "ambf_like/bullet_conversions.hpp"
 
 namespace ambf_like::detail {
 

@@ -8,14 +8,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "bullet_conversions.hpp"
+#include "ambf_like/bullet_conversions.hpp"
 #include "joint_frames.hpp"
 
 namespace ambf_like {
 
 namespace {
-
-using detail::toEigen;
 
 double wrapToPi(double angle) {
   return std::remainder(angle, 2.0 * M_PI);
@@ -198,7 +196,7 @@ void Joint::driveMotor(bool on, double velocity, double max_impulse, double dt) 
 void Joint::applyEffort(double effort) {
   actuator_effort_ = effort;
   if (effort == 0.0) return;
-  const btVector3 generalized = detail::toBt(axisInWorld() * effort);
+  const btVector3 generalized = toBt(axisInWorld() * effort);
   if (isAngular(spec_.type)) {
     parent_.applyTorque(-generalized);
     child_.applyTorque(generalized);

@@ -2,11 +2,9 @@
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
-#include "bullet_conversions.hpp"
+#include "ambf_like/bullet_conversions.hpp"
 
 namespace ambf_like {
-
-using detail::toEigen;
 
 RigidBody::RigidBody(BodySpec spec, std::string qualified_name, std::unique_ptr<btRigidBody> body,
                      const Transform& com_in_body, std::size_t collision_vertices)

@@ -2,11 +2,9 @@
 
 #include <BulletSoftBody/btSoftBody.h>
 
-#include "bullet_conversions.hpp"
+#include "ambf_like/bullet_conversions.hpp"
 
 namespace ambf_like {
-
-using detail::toEigen;
 
 SoftBody::SoftBody(SoftBodySpec spec, std::string qualified_name, std::unique_ptr<btSoftBody> body)
     : spec_(std::move(spec)), qualified_name_(std::move(qualified_name)), body_(std::move(body)) {}

@@ -12,7 +12,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "bullet_conversions.hpp"
+#include "ambf_like/bullet_conversions.hpp"
 #include "collision_filter.hpp"
 #include "collision_shape_factory.hpp"
 #include "constraint_factory.hpp"
@@ -20,9 +20,6 @@
 #include "soft_body_sleep.hpp"
 
 namespace ambf_like {
-
-using detail::toBt;
-using detail::toEigen;
 
 namespace {
 

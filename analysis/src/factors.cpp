@@ -20,22 +20,18 @@ const char* factorName(Factor f) {
 FactorSamples factorSamples(const Comparison& c, int column, Factor factor) {
   FactorSamples s{column, factor, {}, {}};
   const auto col = static_cast<std::size_t>(column);
-  for (std::size_t i = 0; i < c.a->trials.size(); ++i) {
-    for (std::size_t j = c.within() ? i + 1 : 0; j < c.b->trials.size(); ++j) {
-      const Trial& a = c.a->trials[i];
-      const Trial& b = c.b->trials[j];
-      const std::size_t rows = std::min(a.rows(), b.rows());
-      for (std::size_t r = 0; r < rows; ++r) {
-        const double d = a.position[r][col] - b.position[r][col];
-        const double v = factor == Factor::Time       ? b.time[r]
-                         : factor == Factor::Position ? b.position[r][col]
-                                                      : b.velocity[r][col];
-        if (!std::isfinite(d) || !std::isfinite(v)) continue;
-        s.value.push_back(v);
-        s.difference.push_back(d);
-      }
+  forEachPair(c, [&](const Trial& a, const Trial& b) {
+    const std::size_t rows = std::min(a.rows(), b.rows());
+    for (std::size_t r = 0; r < rows; ++r) {
+      const double d = a.position[r][col] - b.position[r][col];
+      const double v = factor == Factor::Time       ? b.time[r]
+                       : factor == Factor::Position ? b.position[r][col]
+                                                    : b.velocity[r][col];
+      if (!std::isfinite(d) || !std::isfinite(v)) continue;
+      s.value.push_back(v);
+      s.difference.push_back(d);
     }
-  }
+  });
   return s;
 }
 

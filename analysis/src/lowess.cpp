@@ -16,20 +16,30 @@ struct Points {
   std::vector<double> x, y;
 };
 
-/// The finite pairs, sorted by x.
-Points finiteSorted(const std::vector<double>& x, const std::vector<double>& y) {
+/// The pairs where both values are finite, in their order.
+Points finitePairs(const std::vector<double>& x, const std::vector<double>& y) {
   if (x.size() != y.size()) throw std::invalid_argument("x and y differ in length");
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (std::isfinite(x[i]) && std::isfinite(y[i])) order.push_back(i);
-  }
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return x[a] < x[b]; });
   Points p;
-  for (auto i : order) {
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i]) || !std::isfinite(y[i])) continue;
     p.x.push_back(x[i]);
     p.y.push_back(y[i]);
   }
   return p;
+}
+
+/// The finite pairs, sorted by x.
+Points finiteSorted(const std::vector<double>& x, const std::vector<double>& y) {
+  const Points p = finitePairs(x, y);
+  std::vector<std::size_t> order(p.x.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return p.x[a] < p.x[b]; });
+  Points sorted;
+  for (auto i : order) {
+    sorted.x.push_back(p.x[i]);
+    sorted.y.push_back(p.y[i]);
+  }
+  return sorted;
 }
 
 /// The weighted local line through the `k` points nearest x[i] (window [lo, lo + k)), at x[i].
@@ -121,7 +131,7 @@ Curve lowess(const std::vector<double>& x, const std::vector<double>& y,
 }
 
 double pearson(const std::vector<double>& x, const std::vector<double>& y) {
-  const Points p = finiteSorted(x, y);
+  const Points p = finitePairs(x, y);
   const std::size_t n = p.x.size();
   if (n < 3) return kNaN;
   const double mx = std::accumulate(p.x.begin(), p.x.end(), 0.0) / static_cast<double>(n);
@@ -136,7 +146,7 @@ double pearson(const std::vector<double>& x, const std::vector<double>& y) {
 }
 
 double spearman(const std::vector<double>& x, const std::vector<double>& y) {
-  const Points p = finiteSorted(x, y);
+  const Points p = finitePairs(x, y);
   return pearson(ranks(p.x), ranks(p.y));
 }
 

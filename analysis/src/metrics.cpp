@@ -15,16 +15,6 @@ const std::vector<JointRow>& rowsOf(const Trial& t, Quantity q) {
   return q == Quantity::Position ? t.position : t.velocity;
 }
 
-/// Calls `pair(a, b)` for every trial pair of the comparison (each unordered pair once when a
-/// platform is compared with itself).
-void forEachPair(const Comparison& c, const std::function<void(const Trial&, const Trial&)>& pair) {
-  const auto& as = c.a->trials;
-  const auto& bs = c.b->trials;
-  for (std::size_t i = 0; i < as.size(); ++i) {
-    for (std::size_t j = c.within() ? i + 1 : 0; j < bs.size(); ++j) pair(as[i], bs[j]);
-  }
-}
-
 /// Calls `difference(d)` for every finite row difference of one column between two trials.
 template <typename Sink>
 void differences(const Trial& a, const Trial& b, Quantity q, std::size_t column,
@@ -41,6 +31,14 @@ void differences(const Trial& a, const Trial& b, Quantity q, std::size_t column,
 }
 
 }  // namespace
+
+void forEachPair(const Comparison& c, const std::function<void(const Trial&, const Trial&)>& pair) {
+  const auto& as = c.a->trials;
+  const auto& bs = c.b->trials;
+  for (std::size_t i = 0; i < as.size(); ++i) {
+    for (std::size_t j = c.within() ? i + 1 : 0; j < bs.size(); ++j) pair(as[i], bs[j]);
+  }
+}
 
 const char* quantityName(Quantity q) {
   return q == Quantity::Position ? "position" : "velocity";

@@ -58,6 +58,50 @@ json statsJson(const DifferenceStats& s) {
   return {{"mean_abs", number(s.mean_abs)}, {"rms", number(s.rms)}, {"max", number(s.max)}};
 }
 
+/// Fig. 8's numbers for every simulation-vs-physical comparison: correlations.csv, and the points
+/// (thinned) and LOWESS trends it is drawn from; returns the correlations for metrics.json.
+json writeCorrelations(const ReportSettings& settings, const std::vector<Comparison>& list,
+                       const std::filesystem::path& dir) {
+  json correlations = json::array();
+  auto corr_csv = openFile(dir / "correlations.csv");
+  corr_csv << "comparison,joint,column,factor,pearson_r_difference,spearman_rho_abs_difference,"
+              "samples\n";
+  auto scatter = openFile(dir / "scatter.csv");
+  scatter << "comparison,column,factor,value,difference\n";
+  auto trend = openFile(dir / "lowess.csv");
+  trend << "comparison,column,factor,value,difference\n";
+  for (const auto& c : list) {
+    if (c.symbol() != "T_PS") continue;
+    for (const auto& joint : recordedJoints()) {
+      for (Factor f : kFactors) {
+        const FactorSamples samples = factorSamples(c, joint.column, f);
+        const FactorCorrelation r = correlate(samples);
+        correlations.push_back({{"comparison", c.describe()},
+                                {"joint", joint.name},
+                                {"column", joint.column},
+                                {"factor", factorName(f)},
+                                {"pearson_r_difference", number(r.pearson_difference)},
+                                {"spearman_rho_abs_difference", number(r.spearman_magnitude)},
+                                {"samples", r.samples}});
+        corr_csv << fmt::format("{},{},{},{},{},{},{}\n", c.describe(), joint.name, joint.column,
+                                factorName(f), r.pearson_difference, r.spearman_magnitude,
+                                r.samples);
+        const std::size_t n = samples.value.size();
+        const std::size_t stride = std::max<std::size_t>(1, n / settings.scatter_points);
+        for (std::size_t i = 0; i < n; i += stride) {
+          scatter << fmt::format("{},{},{},{},{}\n", c.describe(), joint.column, factorName(f),
+                                 samples.value[i], samples.difference[i]);
+        }
+        for (std::size_t i = 0; i < r.trend.x.size(); ++i) {
+          trend << fmt::format("{},{},{},{},{}\n", c.describe(), joint.column, factorName(f),
+                               r.trend.x[i], r.trend.y[i]);
+        }
+      }
+    }
+  }
+  return correlations;
+}
+
 void writeMetrics(const TrialSet& set, const ReportSettings& settings,
                   const std::vector<Comparison>& list, const std::filesystem::path& dir) {
   json summary = json::array(), joints = json::array();
@@ -96,43 +140,7 @@ void writeMetrics(const TrialSet& set, const ReportSettings& settings,
       }
     }
   }
-  json correlations = json::array();
-  auto corr_csv = openFile(dir / "correlations.csv");
-  corr_csv << "comparison,joint,column,factor,pearson_r_difference,spearman_rho_abs_difference,"
-              "samples\n";
-  auto scatter = openFile(dir / "scatter.csv");
-  scatter << "comparison,column,factor,value,difference\n";
-  auto trend = openFile(dir / "lowess.csv");
-  trend << "comparison,column,factor,value,difference\n";
-  for (const auto& c : list) {
-    if (c.symbol() != "T_PS") continue;
-    for (const auto& joint : recordedJoints()) {
-      for (Factor f : kFactors) {
-        const FactorSamples samples = factorSamples(c, joint.column, f);
-        const FactorCorrelation r = correlate(samples);
-        correlations.push_back({{"comparison", c.describe()},
-                                {"joint", joint.name},
-                                {"column", joint.column},
-                                {"factor", factorName(f)},
-                                {"pearson_r_difference", number(r.pearson_difference)},
-                                {"spearman_rho_abs_difference", number(r.spearman_magnitude)},
-                                {"samples", r.samples}});
-        corr_csv << fmt::format("{},{},{},{},{},{},{}\n", c.describe(), joint.name, joint.column,
-                                factorName(f), r.pearson_difference, r.spearman_magnitude,
-                                r.samples);
-        const std::size_t n = samples.value.size();
-        const std::size_t stride = std::max<std::size_t>(1, n / settings.scatter_points);
-        for (std::size_t i = 0; i < n; i += stride) {
-          scatter << fmt::format("{},{},{},{},{}\n", c.describe(), joint.column, factorName(f),
-                                 samples.value[i], samples.difference[i]);
-        }
-        for (std::size_t i = 0; i < r.trend.x.size(); ++i) {
-          trend << fmt::format("{},{},{},{},{}\n", c.describe(), joint.column, factorName(f),
-                               r.trend.x[i], r.trend.y[i]);
-        }
-      }
-    }
-  }
+  const json correlations = writeCorrelations(settings, list, dir);
   json joint_names = json::array();
   for (const auto& j : recordedJoints()) {
     joint_names.push_back({{"column", j.column}, {"name", j.name}, {"unit", j.unit}});

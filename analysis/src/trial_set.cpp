@@ -22,7 +22,8 @@ std::vector<std::filesystem::path> expand(const std::vector<std::filesystem::pat
     std::vector<std::filesystem::path> inside;
     for (const auto& entry : std::filesystem::directory_iterator(input)) {
       const auto name = entry.path().filename().string();
-      if (entry.path().extension() == ".csv" && name.find("_ci") == std::string::npos) {
+      const bool gamepad_inputs = name.ends_with("_ci.csv");
+      if (entry.path().extension() == ".csv" && !gamepad_inputs) {
         inside.push_back(entry.path());
       }
     }

@@ -56,12 +56,16 @@ void BM_PegTransferSceneAtRest(benchmark::State& state) {
 }
 BENCHMARK(BM_PegTransferSceneAtRest);
 
+/// Marks the benchmark skipped when a file of ../shared/data is not there.
+bool sharedFileMissing(benchmark::State& state, const std::filesystem::path& file) {
+  if (std::filesystem::exists(file)) return false;
+  state.SkipWithError("../shared/data is absent");
+  return true;
+}
+
 void BM_AmbfRaven(benchmark::State& state) {
   const auto launch = kShared / "ambf/ambf_controller/raven2/launch.yaml";
-  if (!std::filesystem::exists(launch)) {
-    state.SkipWithError("../shared/data is absent");
-    return;
-  }
+  if (sharedFileMissing(state, launch)) return;
   ambf_like::LoadOptions options;
   options.skip_missing_files = true;
   stepScene(state, ambf_like::loadLaunchFile(launch, {}, options));
@@ -70,10 +74,7 @@ BENCHMARK(BM_AmbfRaven);
 
 void BM_PegAndBaseOnFloor(benchmark::State& state) {
   const auto peg = kShared / "ambf/ambf_models/descriptions/multi-bodies/puzzles/peg_and_base.yaml";
-  if (!std::filesystem::exists(peg)) {
-    state.SkipWithError("../shared/data is absent");
-    return;
-  }
+  if (sharedFileMissing(state, peg)) return;
   stepScene(state, ambf_like::loadModelFiles({peg, kExamples / "floor.yaml"}));
 }
 BENCHMARK(BM_PegAndBaseOnFloor);

@@ -5,6 +5,7 @@
 
 #include <functional>
 
+#include "ambf_like/bullet_conversions.hpp"
 #include "tessellation.hpp"
 
 namespace viewer {
@@ -20,14 +21,10 @@ Eigen::Vector3f colourFor(const std::string& name) {
   return palette[std::hash<std::string>{}(name) % palette.size()];
 }
 
+/// The centre-of-mass frame in the body frame: where Bullet's collision shape sits, and where an
+/// ADF primitive without an offset goes (AMBF's legacy rule, already applied by the loader).
 Eigen::Isometry3d comInBody(const ambf_like::RigidBody& body) {
-  const btTransform& t = body.bullet().getCenterOfMassTransform();
-  Eigen::Isometry3d com = Eigen::Isometry3d::Identity();
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) com.linear()(r, c) = t.getBasis()[r][c];
-    com.translation()[r] = t.getOrigin()[r];
-  }
-  return body.pose().inverse() * com;
+  return body.pose().inverse() * body.centerOfMassPose();
 }
 
 TriangleMesh visualOf(const ambf_like::RigidBody& body, ambf_like::MeshLibrary& meshes) {
@@ -108,10 +105,7 @@ SceneGeometry SceneGeometry::of(const ambf_like::World& world, ambf_like::MeshLi
       s.links.push_back({static_cast<int>(soft.m_links[l].m_n[0] - first),
                          static_cast<int>(soft.m_links[l].m_n[1] - first)});
     }
-    for (int n = 0; n < soft.m_nodes.size(); ++n) {
-      const btVector3& x = soft.m_nodes[n].m_x;
-      g.bounds.extend(Eigen::Vector3d(x.x(), x.y(), x.z()));
-    }
+    for (const auto& x : world.softBody(i).nodePositions()) g.bounds.extend(x);
     g.soft_bodies.push_back(std::move(s));
   }
   if (g.bounds.isEmpty())
@@ -127,10 +121,10 @@ FrameState FrameState::of(const ambf_like::World& world, bool with_contacts) {
   for (std::size_t i = 0; i < world.bodyCount(); ++i) f.body_poses.push_back(world.body(i).pose());
   for (std::size_t i = 0; i < world.softBodyCount(); ++i) {
     const btSoftBody& soft = world.softBody(i).bullet();
-    std::vector<Eigen::Vector3f> nodes(static_cast<std::size_t>(soft.m_nodes.size()));
+    std::vector<Eigen::Vector3f> nodes;
+    nodes.reserve(static_cast<std::size_t>(soft.m_nodes.size()));
     for (int n = 0; n < soft.m_nodes.size(); ++n) {
-      const btVector3& x = soft.m_nodes[n].m_x;
-      nodes[static_cast<std::size_t>(n)] = Eigen::Vector3d(x.x(), x.y(), x.z()).cast<float>();
+      nodes.push_back(ambf_like::toEigen(soft.m_nodes[n].m_x).cast<float>());
     }
     f.soft_nodes.push_back(std::move(nodes));
   }

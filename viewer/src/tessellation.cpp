@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "ambf_like/bullet_conversions.hpp"
+
 namespace viewer::detail {
 
 namespace {
@@ -121,29 +123,21 @@ ambf_like::Axis axisOf(int up) {
   return up == 0 ? ambf_like::Axis::X : up == 1 ? ambf_like::Axis::Y : ambf_like::Axis::Z;
 }
 
+V toFloat(const btVector3& p) {
+  return ambf_like::toEigen(p).cast<float>();
+}
+
 /// Collects a concave shape's triangles.
 class TriangleCollector : public btTriangleCallback {
  public:
   explicit TriangleCollector(TriangleMesh& mesh) : mesh_(mesh) {}
   void processTriangle(btVector3* t, int, int) override {
-    auto v = [](const btVector3& p) {
-      return V(static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z()));
-    };
-    mesh_.add(v(t[0]), v(t[1]), v(t[2]));
+    mesh_.add(toFloat(t[0]), toFloat(t[1]), toFloat(t[2]));
   }
 
  private:
   TriangleMesh& mesh_;
 };
-
-Eigen::Isometry3d toEigen(const btTransform& t) {
-  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) out.linear()(r, c) = t.getBasis()[r][c];
-    out.translation()[r] = t.getOrigin()[r];
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -173,12 +167,11 @@ TriangleMesh tessellate(const btCollisionShape& shape) {
   TriangleMesh m;
   if (const auto* compound = dynamic_cast<const btCompoundShape*>(&shape)) {
     for (int i = 0; i < compound->getNumChildShapes(); ++i) {
-      m.append(tessellate(*compound->getChildShape(i)), toEigen(compound->getChildTransform(i)));
+      m.append(tessellate(*compound->getChildShape(i)),
+               ambf_like::toEigen(compound->getChildTransform(i)));
     }
   } else if (const auto* b = dynamic_cast<const btBoxShape*>(&shape)) {
-    const btVector3 half = b->getHalfExtentsWithMargin();
-    box(m, V(static_cast<float>(half.x()), static_cast<float>(half.y()),
-             static_cast<float>(half.z())));
+    box(m, toFloat(b->getHalfExtentsWithMargin()));
   } else if (const auto* s = dynamic_cast<const btSphereShape*>(&shape)) {
     m = sphere(static_cast<float>(s->getRadius()));
   } else if (const auto* c = dynamic_cast<const btCapsuleShape*>(&shape)) {
@@ -193,18 +186,13 @@ TriangleMesh tessellate(const btCollisionShape& shape) {
     m = cone(static_cast<float>(cn->getRadius()), static_cast<float>(cn->getHeight()),
              zTo(axisOf(cn->getConeUpIndex())));
   } else if (const auto* p = dynamic_cast<const btStaticPlaneShape*>(&shape)) {
-    const btVector3 n = p->getPlaneNormal();
-    m = plane(V(static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())),
-              static_cast<float>(p->getPlaneConstant()));
+    m = plane(toFloat(p->getPlaneNormal()), static_cast<float>(p->getPlaneConstant()));
   } else if (const auto* convex = dynamic_cast<const btConvexShape*>(&shape)) {
     btShapeHull hull(convex);
     hull.buildHull(convex->getMargin());
     const btVector3* v = hull.getVertexPointer();
     const unsigned int* index = hull.getIndexPointer();
-    auto at = [&](int i) {
-      const btVector3& q = v[index[i]];
-      return V(static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()));
-    };
+    auto at = [&](int i) { return toFloat(v[index[i]]); };
     for (int t = 0; t + 2 < hull.numIndices(); t += 3) m.add(at(t), at(t + 1), at(t + 2));
   } else if (const auto* concave = dynamic_cast<const btConcaveShape*>(&shape)) {
     TriangleCollector collect(m);

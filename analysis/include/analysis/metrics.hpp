@@ -3,6 +3,7 @@
 // mean absolute, RMS and maximum difference between trials aligned by row, averaged over every
 // pair of trials, as recorded and after removing each trial's first-row value.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,10 @@ struct Comparison {
   std::string symbol() const;
   std::string describe() const;  ///< "ambf vs physical"
 };
+/// Calls `pair(a, b)` for every trial pair of the comparison (each unordered pair once when a
+/// platform is compared with itself).
+void forEachPair(const Comparison& c, const std::function<void(const Trial&, const Trial&)>& pair);
+
 /// Every platform with two or more trials against itself, then every pair of platforms.
 std::vector<Comparison> comparisons(const TrialSet& set);
 

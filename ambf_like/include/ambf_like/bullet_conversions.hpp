@@ -5,7 +5,7 @@
 
 #include "ambf_like/transform.hpp"
 
-namespace ambf_like::detail {
+namespace ambf_like {
 
 inline btVector3 toBt(const Vec3& v) {
   return btVector3(v.x(), v.y(), v.z());
@@ -40,4 +40,4 @@ inline Transform toEigen(const btTransform& t) {
   return out;
 }
 
-}  // namespace ambf_like::detail
+}  // namespace ambf_like
