@@ -2,9 +2,7 @@
 
 #include <BulletCollision/CollisionShapes/btEmptyShape.h>
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
-#include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
 #include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
-#include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -16,6 +14,8 @@
 #include "collision_filter.hpp"
 #include "collision_shape_factory.hpp"
 #include "constraint_factory.hpp"
+#include "dynamics_world.hpp"
+#include "sequential_impulse_solver.hpp"
 #include "soft_body_factory.hpp"
 #include "soft_body_sleep.hpp"
 
@@ -70,8 +70,8 @@ struct World::Impl {
   btSoftBodyRigidBodyCollisionConfiguration collision_config;
   btCollisionDispatcher dispatcher{&collision_config};
   btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
-  btSoftRigidDynamicsWorld world{&dispatcher, &broadphase, &solver, &collision_config};
+  detail::SequentialImpulseSolver solver;
+  detail::DynamicsWorld world{&dispatcher, &broadphase, &solver, &collision_config};
   detail::CollisionFilter filter;
   detail::ShapeStore shapes;
   btEmptyShape no_geometry;  ///< for bodies without collision geometry

@@ -78,7 +78,7 @@ TEST(TwinOverRos, EnableHomeAndAServoJrStreamIsFollowed) {
   }
   EXPECT_LT(maxAbs(robot.setpointJs(Arm::Left).position - start - sum), 1e-12);
   robot.advance(0.05);
-  EXPECT_LT(maxAbs(robot.measuredJs(Arm::Left).position - start - sum), 1e-5);
+  EXPECT_LT(maxAbs(robot.measuredJs(Arm::Left).position - start - sum), 3e-5);  // at rest
 }
 
 TEST(TwinOverRos, EveryTransitionAmongDisabledEnabledAndPausedValidOrNot) {
