@@ -35,8 +35,15 @@ std::unique_ptr<bridge::TwinPlatform> wallTwin() {
   return twin;
 }
 
-/// O5 for `duration` wall seconds at `rate`: the left arm's command rate and period jitter.
-void rateAndJitter(double rate, double duration, Report& report) {
+/// One O5 run's left-arm command rate and period jitter.
+struct JitterRun {
+  double achieved_hz = 0.0;
+  double p50_ms = 0.0, p99_ms = 0.0, max_ms = 0.0;
+  std::size_t periods = 0;
+};
+
+/// O5 for `duration` wall seconds at `rate` on a fresh wall-clock twin.
+JitterRun jitterRun(double rate, double duration) {
   auto twin = wallTwin();
   StampingPlatform stamped(*twin);
   controller::ControllerOptions options;
@@ -55,23 +62,41 @@ void rateAndJitter(double rate, double duration, Report& report) {
   for (std::size_t i = 1; i < sent.size(); ++i) {
     jitter_ms.push_back(1e3 * std::abs(seconds(sent[i] - sent[i - 1]) - 1.0 / rate));
   }
-  const double achieved =
-      sent.size() > 1 ? (sent.size() - 1) / seconds(sent.back() - sent.front()) : 0.0;
+  JitterRun run;
+  run.achieved_hz = sent.size() > 1 ? (sent.size() - 1) / seconds(sent.back() - sent.front()) : 0.0;
+  run.p50_ms = percentile(jitter_ms, 50.0);
+  run.p99_ms = percentile(jitter_ms, 99.0);
+  run.max_ms = percentile(jitter_ms, 100.0);
+  run.periods = jitter_ms.size();
+  return run;
+}
+
+/// `repeat` O5 runs of `duration` s at `rate`: command rate and period jitter, median and range.
+void rateAndJitter(double rate, double duration, int repeat, Report& report) {
+  std::vector<JitterRun> runs;
+  for (int i = 0; i < repeat; ++i) runs.push_back(jitterRun(rate, duration));
+  auto spread = [&runs](double JitterRun::*field) {
+    std::vector<double> values;
+    for (const auto& run : runs) values.push_back(run.*field);
+    return Spread::of(values);
+  };
   const auto label = fmt::format("{:.0f} Hz", rate);
-  const auto how =
-      fmt::format("O5 on the wall-clock twin, {:.0f} s, {} periods", duration, jitter_ms.size());
-  report.add(measured(kSection, "command rate at " + label, Spread::of({achieved}), "Hz", how));
-  for (double p : {50.0, 99.0}) {
-    const auto item = fmt::format("period jitter p{:.0f} at {}", p, label);
-    const Spread value = Spread::of({percentile(jitter_ms, p)});
-    if (rate == 1000.0 && p == 99.0) {
-      report.add(atMost(kSection, item, value, "ms", 0.2, "abs(period - 1 ms)"));
-    } else {
-      report.add(measured(kSection, item, value, "ms", "abs(period - nominal)"));
-    }
+  const auto how = fmt::format("O5 on the wall-clock twin, {} runs of {:.0f} s ({} periods each)",
+                               repeat, duration, runs.front().periods);
+  report.add(
+      measured(kSection, "command rate at " + label, spread(&JitterRun::achieved_hz), "Hz", how));
+  report.add(measured(kSection, "period jitter p50 at " + label, spread(&JitterRun::p50_ms), "ms",
+                      "abs(period - nominal), " + how));
+  const auto p99 = "period jitter p99 at " + label;
+  if (rate == 1000.0) {
+    report.add(
+        atMost(kSection, p99, spread(&JitterRun::p99_ms), "ms", 0.2, "abs(period - 1 ms), " + how));
+  } else {
+    report.add(
+        measured(kSection, p99, spread(&JitterRun::p99_ms), "ms", "abs(period - nominal), " + how));
   }
-  report.add(measured(kSection, "period jitter max at " + label,
-                      Spread::of({percentile(jitter_ms, 100.0)}), "ms", "abs(period - nominal)"));
+  report.add(measured(kSection, "period jitter max at " + label, spread(&JitterRun::max_ms), "ms",
+                      "abs(period - nominal), " + how));
 }
 
 /// True once the left arm's last `count` commands all held still: the controller has finished
@@ -163,8 +188,8 @@ void inputLatency(double rate, int man_steps, int pushes, Report& report) {
 
 }  // namespace
 
-void measureController(const BenchSettings&, Report& report) {
-  for (double rate : {500.0, 1000.0}) rateAndJitter(rate, 5.0, report);
+void measureController(const BenchSettings& settings, Report& report) {
+  for (double rate : {500.0, 1000.0}) rateAndJitter(rate, 5.0, settings.repeat, report);
   for (int man_steps : {10, 1}) {  // the paper's C_V, then one step per idle iteration
     for (double rate : {500.0, 1000.0}) inputLatency(rate, man_steps, 100, report);
   }
