@@ -140,15 +140,14 @@ void inputLatency(double rate, int man_steps, int pushes, Report& report) {
     while (!stop) session.turn();
   });
 
-  const int idle_iteration = man_steps;
   const auto poll = std::chrono::microseconds(100);
   std::mt19937 random(1);
-  std::uniform_int_distribution<int> phase_us(0, static_cast<int>(2e6 * idle_iteration / rate));
+  std::uniform_int_distribution<int> phase_us(0, static_cast<int>(2e6 * man_steps / rate));
   std::vector<double> latency_ms;
   int missed = 0;
   for (int k = 0; k < pushes; ++k) {
     const auto quiet_deadline = Clock::now() + std::chrono::seconds(2);
-    while (!leftArmQuiet(stamped.stamps(), idle_iteration) && Clock::now() < quiet_deadline)
+    while (!leftArmQuiet(stamped.stamps(), man_steps) && Clock::now() < quiet_deadline)
       std::this_thread::sleep_for(poll);
     std::this_thread::sleep_for(std::chrono::microseconds(phase_us(random)));
     stamped.clear();
@@ -176,7 +175,7 @@ void inputLatency(double rate, int man_steps, int pushes, Report& report) {
   const auto how = fmt::format(
       "{} pushes from idle; SDL polled every {} us; the pad is read once per manual iteration "
       "(at least {} periods){}",
-      latency_ms.size(), controller::SdlGamepad::kPollPeriod.count(), idle_iteration,
+      latency_ms.size(), controller::SdlGamepad::kPollPeriod.count(), man_steps,
       missed ? fmt::format(", {} never arrived", missed) : std::string());
   report.add(
       atMost(kSection, item + ", p50", Spread::of({percentile(latency_ms, 50)}), "ms", 2.0, how));

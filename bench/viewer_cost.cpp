@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <functional>
 #include <memory>
 
 #include "peg_scene.hpp"
@@ -46,9 +47,7 @@ void measureViewer(const BenchSettings& s, Report& report) {
   const std::string how = fmt::format("main job's first {:.0f} s, {} runs", seconds, s.repeat);
   // Headless and windowed runs alternate, so a drift of the machine's speed hits both alike.
   Watcher watcher;
-  const auto observe = [&watcher](const ambf_like::World& w, scenario::WorldMoment m) {
-    watcher(w, m);
-  };
+  const scenario::WorldObserver observe = std::ref(watcher);
   std::vector<double> headless, windowed, ratios;
   for (int i = 0; i < s.repeat; ++i) {
     headless.push_back(pegScene(launch, bridge::ClockKind::Simulated, true, seconds, 1).front());

@@ -143,6 +143,7 @@ TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
 }
 
 void resampleOnTime(TrialSet& set, double period) {
+  if (set.platforms.empty()) return;
   double end = std::numeric_limits<double>::infinity();
   for (const auto& p : set.platforms) {
     for (const auto& t : p.trials) end = std::min(end, t.time.back());

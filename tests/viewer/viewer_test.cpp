@@ -42,10 +42,9 @@ struct Image {
   }
 };
 
+/// The clear colour (0.91, 0.93, 0.95).
 bool isBackground(const unsigned char* p) {
-  const unsigned char* corner = p;  // compared against the known clear colour (0.91, 0.93, 0.95)
-  return std::abs(corner[0] - 232) < 4 && std::abs(corner[1] - 237) < 4 &&
-         std::abs(corner[2] - 242) < 4;
+  return std::abs(p[0] - 232) < 4 && std::abs(p[1] - 237) < 4 && std::abs(p[2] - 242) < 4;
 }
 
 bool isPegRed(const unsigned char* p) {

@@ -5,7 +5,6 @@
 
 #include <functional>
 
-#include "ambf_like/bullet_conversions.hpp"
 #include "tessellation.hpp"
 
 namespace viewer {
@@ -120,12 +119,8 @@ FrameState FrameState::of(const ambf_like::World& world, bool with_contacts) {
   f.body_poses.reserve(world.bodyCount());
   for (std::size_t i = 0; i < world.bodyCount(); ++i) f.body_poses.push_back(world.body(i).pose());
   for (std::size_t i = 0; i < world.softBodyCount(); ++i) {
-    const btSoftBody& soft = world.softBody(i).bullet();
     std::vector<Eigen::Vector3f> nodes;
-    nodes.reserve(static_cast<std::size_t>(soft.m_nodes.size()));
-    for (int n = 0; n < soft.m_nodes.size(); ++n) {
-      nodes.push_back(ambf_like::toEigen(soft.m_nodes[n].m_x).cast<float>());
-    }
+    for (const auto& x : world.softBody(i).nodePositions()) nodes.push_back(x.cast<float>());
     f.soft_nodes.push_back(std::move(nodes));
   }
   if (with_contacts) f.contacts = world.contacts();

@@ -79,7 +79,7 @@ Viewer::Viewer(const ambf_like::World& world, ViewerOptions options)
   ambf_like::MeshLibrary meshes;
   geometry_ = std::make_unique<const SceneGeometry>(SceneGeometry::of(world, meshes));
   initial_camera_ = options_.camera.value_or(Camera::framing(geometry_->bounds));
-  latest_ = std::make_unique<FrameState>(FrameState::of(world, options_.view.contacts));
+  latest_ = std::make_unique<FrameState>(FrameState::of(world, true));
   last_steps_ = world.stepCount();
   last_publish_ = std::chrono::steady_clock::now();
   std::promise<void> started;
@@ -102,7 +102,8 @@ Viewer::~Viewer() {
 
 void Viewer::publish(const ambf_like::World& world) {
   if (!wants_frame_.load(std::memory_order_relaxed)) return;
-  auto frame = std::make_unique<FrameState>(FrameState::of(world, options_.view.contacts));
+  // With contacts always: the window's K key may show them at any frame.
+  auto frame = std::make_unique<FrameState>(FrameState::of(world, true));
   const auto now = std::chrono::steady_clock::now();
   const double wall = std::chrono::duration<double>(now - last_publish_).count();
   if (wall > 0.0) physics_hz_ = static_cast<double>(frame->steps - last_steps_) / wall;
