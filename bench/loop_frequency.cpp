@@ -31,12 +31,15 @@ double stepsPerSecond(ambf_like::World& world, int steps, Each each) {
   return steps / wall.count();
 }
 
-/// Our Raven-II alone, both arms following a slow sine around home, gravity on.
-double ravenAloneMoving() {
+/// Our Raven-II alone, both arms following a slow sine around home, gravity on, its arms in
+/// the given formulation (the model's own is reduced coordinates).
+double ravenAloneMoving(ambf_like::Articulation articulation) {
   const auto scene =
       ambf_like::loadLaunchFile(raven::modelDirectory() / "raven2" / "launch.yaml", {});
   ambf_like::MeshLibrary meshes;
-  ambf_like::World world(scene.spec, meshes);
+  ambf_like::WorldOptions options;
+  options.articulation = articulation;
+  ambf_like::World world(scene.spec, meshes, options);
   raven::TwinArms arms(world, raven::ArmBindings::ourRaven());
   const auto home = raven::builtinProfile("physical").home;
   for (auto arm : raven::kArms) arms.command(arm, home);
@@ -97,18 +100,25 @@ void measureLoopFrequency(const BenchSettings& s, Report& report) {
                      Spread::of(pegScene(simplified, bridge::ClockKind::Wall, true, 10.0, 1)),
                      "steps/s", 990, "first 10 s on the wall clock"));
 
-  // Our arms and AMBF's model alternate run by run, so a slow spell of the machine hits both.
+  // Our arms (in both formulations) and AMBF's model alternate run by run, so a slow spell of
+  // the machine hits all three.
   const auto ambf = s.shared_data / "ambf/ambf_controller/raven2/launch.yaml";
   const bool have_ambf = std::filesystem::exists(ambf);
-  std::vector<double> alone, ambf_rates, ratios;
+  std::vector<double> alone, constrained, ambf_rates, ratios;
   for (int i = 0; i < s.repeat; ++i) {
-    alone.push_back(ravenAloneMoving());
+    alone.push_back(ravenAloneMoving(ambf_like::Articulation::Reduced));
+    constrained.push_back(ravenAloneMoving(ambf_like::Articulation::Maximal));
     if (!have_ambf) continue;
     ambf_rates.push_back(ambfRavenStill(ambf));
     ratios.push_back(alone.back() / ambf_rates.back());
   }
   report.add(atLeast(kSection, "Raven-II alone, both arms commanded, gravity on", Spread::of(alone),
-                     "steps/s", 46000, "20,000 steps, both arms on a 0.5 Hz sine about home"));
+                     "steps/s", 46000,
+                     "20,000 steps, both arms on a 0.5 Hz sine about home; reduced coordinates "
+                     "(the model's own)"));
+  report.add(measured(kSection, "Raven-II alone, AMBF's formulation (joints as constraints)",
+                      Spread::of(constrained), "steps/s",
+                      "the same, `articulation: maximal`, 10 solver iterations"));
   if (have_ambf) {
     report.add(measured(kSection, "AMBF's Raven-II model, standing still, no gravity",
                         Spread::of(ambf_rates), "steps/s",

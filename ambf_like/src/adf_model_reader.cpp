@@ -181,8 +181,9 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
     if (world.max_iterations < 1) iterations->fail("max iterations must be at least 1");
   }
   if (auto own = root.find("ambf_like")) {
-    own->checkKeys({"solver iterations", "soft body sdf voxel size", "soft body sleep"},
-                   context.keyCheck());
+    own->checkKeys(
+        {"solver iterations", "soft body sdf voxel size", "soft body sleep", "articulation"},
+        context.keyCheck());
     if (auto v = own->find("solver iterations")) {
       world.solver_iterations = v->asInt();
       if (*world.solver_iterations < 1) v->fail("solver iterations must be at least 1");
@@ -193,6 +194,16 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
     }
     if (auto v = own->find("soft body sleep"))
       world.soft_body_sleep = readSoftBodySleep(*v, context);
+    if (auto v = own->find("articulation")) {
+      const std::string mode = v->asString();
+      if (mode == "maximal") {
+        world.articulation = Articulation::Maximal;
+      } else if (mode == "reduced") {
+        world.articulation = Articulation::Reduced;
+      } else {
+        v->fail("articulation must be 'maximal' or 'reduced', not '" + mode + "'");
+      }
+    }
   }
   environment.reset();
   if (auto env = root.find("environment")) {

@@ -2,7 +2,7 @@
 
 #include <BulletCollision/CollisionShapes/btEmptyShape.h>
 #include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
-#include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
+#include <BulletSoftBody/btSoftBody.h>
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
@@ -11,11 +11,12 @@
 #include <stdexcept>
 
 #include "ambf_like/bullet_conversions.hpp"
+#include "articulation.hpp"
+#include "bullet_world.hpp"
 #include "collision_filter.hpp"
 #include "collision_shape_factory.hpp"
 #include "constraint_factory.hpp"
-#include "dynamics_world.hpp"
-#include "sequential_impulse_solver.hpp"
+#include "constraint_joint.hpp"
 #include "soft_body_factory.hpp"
 #include "soft_body_sleep.hpp"
 
@@ -67,11 +68,8 @@ struct NamedJoint {
 struct World::Impl {
   WorldSpec settings;
   WorldOptions options;
-  btSoftBodyRigidBodyCollisionConfiguration collision_config;
-  btCollisionDispatcher dispatcher{&collision_config};
-  btDbvtBroadphase broadphase;
-  detail::SequentialImpulseSolver solver;
-  detail::DynamicsWorld world{&dispatcher, &broadphase, &solver, &collision_config};
+  detail::BulletWorld bullet;
+  btDiscreteDynamicsWorld& world;
   detail::CollisionFilter filter;
   detail::ShapeStore shapes;
   btEmptyShape no_geometry;  ///< for bodies without collision geometry
@@ -79,19 +77,27 @@ struct World::Impl {
   std::vector<std::unique_ptr<RigidBody>> bodies;
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
+  std::vector<btTypedConstraint*> constraints;  ///< of the maximal-coordinate joints
+  std::vector<std::unique_ptr<detail::Articulation>> articulations;
+  std::vector<btRigidBody*> bodies_in_world;  ///< articulated links' bodies are mirrors, not in it
   std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
   double time = 0.0;
   std::uint64_t steps = 0;
 
-  Impl(const WorldSpec& spec, const WorldOptions& opts) : settings(spec), options(opts) {
-    btGImpactCollisionAlgorithm::registerAlgorithm(&dispatcher);
+  Impl(const SceneSpec& scene, const WorldOptions& opts)
+      : settings(scene.world),
+        options(opts),
+        bullet(std::any_of(scene.models.begin(), scene.models.end(),
+                           [this](const ModelSpec& m) { return articulates(m); })),
+        world(bullet.dynamics()) {
+    btGImpactCollisionAlgorithm::registerAlgorithm(&bullet.dispatcher());
     world.getPairCache()->setOverlapFilterCallback(&filter);
     world.setGravity(toBt(settings.gravity));
     world.getSolverInfo().m_numIterations =
         options.solver_iterations.value_or(settings.solver_iterations.value_or(10));
-    auto& info = world.getWorldInfo();
+    auto& info = bullet.softBodyInfo();
     info.m_gravity = toBt(settings.gravity);
     info.air_density = 1.2;
     info.m_sparsesdf.Initialize(kSdfHashBuckets);
@@ -101,14 +107,27 @@ struct World::Impl {
   }
 
   ~Impl() {
-    for (auto& j : joints) world.removeConstraint(&j->joint->constraint());
-    for (auto& s : soft_bodies) world.removeSoftBody(&s->bullet());
-    for (auto& b : bodies) world.removeRigidBody(&b->bullet());
+    for (auto* c : constraints) world.removeConstraint(c);
+    articulations.clear();
+    for (auto& s : soft_bodies) bullet.removeSoftBody(s->bullet());
+    for (auto* b : bodies_in_world) world.removeRigidBody(b);
   }
 
+  /// True when `model` is to be simulated in reduced coordinates.
+  bool articulates(const ModelSpec& model) const {
+    return options.articulation.value_or(settings.articulation) == Articulation::Reduced &&
+           !detail::whyNotArticulable(model);
+  }
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
   RigidBody& addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
                      MeshLibrary& meshes, Transform& com_in_body);
+  void addToWorld(RigidBody& body);
+  void addConstraintJoints(const ModelSpec& model,
+                           const std::map<std::string, detail::PlacedBody>& by_name);
+  void addArticulation(const ModelSpec& model,
+                       const std::map<std::string, detail::PlacedBody>& by_name);
+  void addJoint(const ModelSpec& model, const JointSpec& spec,
+                std::unique_ptr<detail::JointDynamics> dynamics);
 };
 
 RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
@@ -136,7 +155,6 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
   auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name, model_index,
                                                      model.ignore_inter_collision, false, groups});
   rigid->setUserPointer(&tag);
-  world.addRigidBody(rigid.get());
   if (const auto gravity = spec.gravity ? spec.gravity : model.gravity) {
     rigid->setFlags(rigid->getFlags() | BT_DISABLE_WORLD_GRAVITY);
     rigid->setGravity(toBt(*gravity));
@@ -146,28 +164,21 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
   return *bodies.back();
 }
 
-void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes) {
-  struct Placed {
-    RigidBody* body;
-    Transform com_in_body;
-  };
-  std::map<std::string, Placed> by_name;
-  for (const auto& spec : model.bodies) {
-    Transform com_in_body;
-    auto& body = addBody(spec, model, model_index, meshes, com_in_body);
-    by_name[spec.name] = {&body, com_in_body};
-  }
-  for (const auto& spec : model.soft_bodies) {
-    SourceRef where = spec.where;
-    where.key_path += "/mesh";
-    const auto mesh = meshes.load(spec.mesh, where);
-    auto soft = detail::makeSoftBody(spec, *mesh, world.getWorldInfo());
-    auto& tag = tags.emplace_back(detail::CollisionTag{
-        model.name_space + spec.name, model_index, model.ignore_inter_collision, true, {}});
-    soft->setUserPointer(&tag);
-    world.addSoftBody(soft.get());
-    soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
-  }
+void World::Impl::addToWorld(RigidBody& body) {
+  world.addRigidBody(&body.bullet());
+  bodies_in_world.push_back(&body.bullet());
+}
+
+void World::Impl::addJoint(const ModelSpec& model, const JointSpec& spec,
+                           std::unique_ptr<detail::JointDynamics> dynamics) {
+  auto named = std::make_unique<detail::NamedJoint>();
+  named->qualified = model.name_space + spec.name;
+  named->joint = std::make_unique<Joint>(spec, std::move(dynamics));
+  joints.push_back(std::move(named));
+}
+
+void World::Impl::addConstraintJoints(const ModelSpec& model,
+                                      const std::map<std::string, detail::PlacedBody>& by_name) {
   for (const auto& spec : model.joints) {
     const auto& parent = by_name.at(spec.parent);
     const auto& child = by_name.at(spec.child);
@@ -177,19 +188,61 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     auto constraint =
         detail::makeConstraint(spec, parent.body->bullet(), child.body->bullet(), frames);
     world.addConstraint(constraint.get(), spec.ignore_inter_collision);
-    auto named = std::make_unique<detail::NamedJoint>();
-    named->qualified = model.name_space + spec.name;
-    named->joint = std::make_unique<Joint>(spec, std::move(constraint), parent.body->bullet(),
-                                           child.body->bullet(), frames.in_parent);
-    joints.push_back(std::move(named));
+    constraints.push_back(constraint.get());
+    addJoint(model, spec,
+             std::make_unique<detail::ConstraintJoint>(spec, std::move(constraint),
+                                                       parent.body->bullet(), child.body->bullet(),
+                                                       frames.in_parent));
+  }
+}
+
+void World::Impl::addArticulation(const ModelSpec& model,
+                                  const std::map<std::string, detail::PlacedBody>& by_name) {
+  auto& articulation = *articulations.emplace_back(
+      std::make_unique<detail::Articulation>(model, by_name, bullet.articulations()));
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    addJoint(model, model.joints[j], articulation.jointDynamics(j));
+  }
+}
+
+void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes) {
+  const bool articulate = articulates(model);
+  std::map<std::string, detail::PlacedBody> by_name;
+  for (const auto& spec : model.bodies) {
+    Transform com_in_body;
+    auto& body = addBody(spec, model, model_index, meshes, com_in_body);
+    by_name[spec.name] = {&body, com_in_body};
+    // An articulation's links collide through their own colliders; their bodies are mirrors.
+    if (!articulate || body.isStatic()) addToWorld(body);
+  }
+  for (const auto& spec : model.soft_bodies) {
+    SourceRef where = spec.where;
+    where.key_path += "/mesh";
+    const auto mesh = meshes.load(spec.mesh, where);
+    auto soft = detail::makeSoftBody(spec, *mesh, bullet.softBodyInfo());
+    auto& tag = tags.emplace_back(detail::CollisionTag{
+        model.name_space + spec.name, model_index, model.ignore_inter_collision, true, {}});
+    soft->setUserPointer(&tag);
+    bullet.addSoftBody(*soft);
+    soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
+  }
+  if (articulate) {
+    addArticulation(model, by_name);
+  } else {
+    addConstraintJoints(model, by_name);
   }
 }
 
 World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
-    : impl_(std::make_unique<Impl>(scene.world, options)) {
+    : impl_(std::make_unique<Impl>(scene, options)) {
   if (!(options.step_size > 0.0)) throw std::invalid_argument("step size must be positive");
   for (std::size_t m = 0; m < scene.models.size(); ++m) {
     impl_->addModel(scene.models[m], static_cast<int>(m), meshes);
+  }
+  if (!impl_->articulations.empty()) {
+    impl_->bullet.setFreeMotionListener([impl = impl_.get()] {
+      for (auto& a : impl->articulations) a->afterFreeMotion();
+    });
   }
   if (options.soft_body_sleep.value_or(scene.world.soft_body_sleep.enabled) &&
       !impl_->soft_bodies.empty()) {
@@ -202,14 +255,16 @@ World::~World() = default;
 void World::step() {
   const double h = impl_->options.step_size;
   for (auto& j : impl_->joints) j->joint->applyControl(h);
+  for (auto& a : impl_->articulations) a->beforeStep(h);
   if (impl_->sleeper) impl_->sleeper->beforeStep(impl_->soft_bodies, impl_->bodies);
   impl_->world.stepSimulation(h, 0, h);
+  for (auto& a : impl_->articulations) a->afterStep();
   if (impl_->sleeper) impl_->sleeper->afterStep(impl_->soft_bodies, h);
   for (auto& j : impl_->joints) j->joint->updateCoordinate();
   // The sparse SDF frees cells unused for 256 collections; a collection walks every hash bucket,
   // so it runs every 64 steps (cells then live 16k steps unused).
   if (!impl_->soft_bodies.empty() && impl_->steps % 64 == 0) {
-    impl_->world.getWorldInfo().m_sparsesdf.GarbageCollect();
+    impl_->bullet.softBodyInfo().m_sparsesdf.GarbageCollect();
   }
   ++impl_->steps;
   impl_->time = static_cast<double>(impl_->steps) * h;
@@ -286,7 +341,7 @@ std::vector<Contact> World::contacts() const {
     const auto* tag = static_cast<const detail::CollisionTag*>(object->getUserPointer());
     return tag ? tag->name : std::string("?");
   };
-  auto& dispatcher = impl_->dispatcher;
+  auto& dispatcher = impl_->bullet.dispatcher();
   for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
     for (int k = 0; k < manifold->getNumContacts(); ++k) {
@@ -314,6 +369,10 @@ bool World::isFinite() const {
                      [](const auto& b) { return b->isFinite(); }) &&
          std::all_of(impl_->soft_bodies.begin(), impl_->soft_bodies.end(),
                      [](const auto& s) { return s->isFinite(); });
+}
+
+std::size_t World::articulatedModelCount() const {
+  return impl_->articulations.size();
 }
 
 std::size_t World::collisionVertexCount() const {

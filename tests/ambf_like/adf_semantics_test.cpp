@@ -212,6 +212,14 @@ TEST(AdfSemantics, WorldFileCarriesThisSimulatorsOwnSettings) {
   dir.write("world.yaml", "ambf_like: {solver iteration: 25}\n");
   EXPECT_THAT(test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); }),
               testing::HasSubstr("did you mean 'solver iterations'"));
+  EXPECT_EQ(scene.spec.world.articulation, ambf_like::Articulation::Maximal);  // AMBF's way
+  dir.write("world.yaml", "ambf_like: {articulation: reduced}\n");
+  EXPECT_EQ(ambf_like::loadLaunchFile(launch, {}).spec.world.articulation,
+            ambf_like::Articulation::Reduced);
+  dir.write("world.yaml", "ambf_like:\n  articulation: sideways\n");
+  const auto error = test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); });
+  EXPECT_THAT(error, testing::HasSubstr("world.yaml:2"));
+  EXPECT_THAT(error, testing::HasSubstr("'maximal' or 'reduced', not 'sideways'"));
 }
 
 TEST(AdfSemantics, ModelAndBodyGravityOverrideTheWorld) {

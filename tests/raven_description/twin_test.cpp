@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <random>
 
@@ -43,6 +44,14 @@ struct Twin {
         .translation();
   }
 };
+
+/// A measurement for RecordProperty, in three significant figures (std::to_string rounds
+/// micrometres to zero).
+std::string measured(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", value);
+  return text;
+}
 
 std::set<std::filesystem::path> filesUnder(const std::filesystem::path& dir) {
   std::set<std::filesystem::path> out;
@@ -122,8 +131,8 @@ TEST(Twin, SettledPosesMatchTheKinematicsWithinATenthOfAMillimetre) {
           std::max(worst_tool, (twin.toolPoint(arm) - kin.toolPose(q).translation()).norm());
     }
     const std::string side(raven::armName(arm));
-    RecordProperty(side + "_worst_wrist_point_error_m", std::to_string(worst_wrist));
-    RecordProperty(side + "_worst_tool_point_error_m", std::to_string(worst_tool));
+    RecordProperty(side + "_worst_wrist_point_error_m", measured(worst_wrist));
+    RecordProperty(side + "_worst_tool_point_error_m", measured(worst_tool));
     EXPECT_EQ(contacts, 0u) << side;
     EXPECT_LT(worst_wrist, 1e-4) << side;
     EXPECT_LT(worst_tool, 1e-4) << side;
@@ -151,10 +160,9 @@ TEST(Twin, FollowsAJointStepAtTheVelocityCapsUnderGravity) {
   for (Arm arm : raven::kArms) {
     const ArmJoints error = (twin.arms.measured(arm) - goal).cwiseAbs();
     const std::string side(raven::armName(arm));
-    RecordProperty(side + "_insertion_error_m", std::to_string(error(raven::kInsertion)));
-    RecordProperty(
-        side + "_worst_revolute_error_rad",
-        std::to_string(std::max(error.head<2>().maxCoeff(), error.tail<4>().maxCoeff())));
+    RecordProperty(side + "_insertion_error_m", measured(error(raven::kInsertion)));
+    RecordProperty(side + "_worst_revolute_error_rad",
+                   measured(std::max(error.head<2>().maxCoeff(), error.tail<4>().maxCoeff())));
     EXPECT_LT(error(raven::kInsertion), 0.05e-3) << raven::armName(arm);
     for (int i : {0, 1, 3, 4, 5, 6})
       EXPECT_LT(error(i), 1e-3) << raven::armName(arm) << " joint " << i;

@@ -7,11 +7,12 @@
 #include "ambf_like/joint_spec.hpp"
 #include "ambf_like/pid_controller.hpp"
 
-class btRigidBody;
-class btTypedConstraint;
-struct btJointFeedback;
-
 namespace ambf_like {
+
+namespace detail {
+class JointDynamics;
+struct JointActuation;
+}  // namespace detail
 
 /// What currently drives a joint.
 enum class JointDrive { Free, Position, Velocity, Effort };
@@ -19,9 +20,8 @@ enum class JointDrive { Free, Position, Velocity, Effort };
 /// One joint of a World. Commands persist until replaced; the controller runs every step.
 class Joint {
  public:
-  /// Built by World; `frame_in_parent` is the constraint frame in the parent's COM frame.
-  Joint(JointSpec spec, std::unique_ptr<btTypedConstraint> constraint, btRigidBody& parent,
-        btRigidBody& child, const Transform& frame_in_parent);
+  /// Built by World over the physics of its formulation (maximal or reduced coordinates).
+  Joint(JointSpec spec, std::unique_ptr<detail::JointDynamics> dynamics);
   ~Joint();
   Joint(const Joint&) = delete;
   Joint& operator=(const Joint&) = delete;
@@ -52,29 +52,20 @@ class Joint {
   /// World internals: apply the controller before a step, read the coordinate after it.
   void applyControl(double dt);
   void updateCoordinate();
-  btTypedConstraint& constraint() { return *constraint_; }
 
  private:
-  double rawCoordinate() const;
-  Vec3 axisInWorld() const;
   void requireCommandable(const char* what, double value) const;
   void setDrive(JointDrive drive, double target);
-  void driveMotor(bool on, double velocity, double max_impulse, double dt);
-  double drivenEffort(double dt);
-  void applyEffort(double effort);
+  void setMotor(detail::JointActuation& actuation, double velocity) const;
+  detail::JointActuation drivenActuation(double dt);
 
   JointSpec spec_;
-  std::unique_ptr<btTypedConstraint> constraint_;
-  std::unique_ptr<btJointFeedback> feedback_;
-  btRigidBody& parent_;
-  btRigidBody& child_;
-  Transform frame_in_parent_;
+  std::unique_ptr<detail::JointDynamics> dynamics_;
   PidController pid_;
   JointDrive drive_ = JointDrive::Free;
   double target_ = 0.0;
   double position_ = 0.0;
   double last_raw_ = 0.0;
-  double actuator_effort_ = 0.0;
 };
 
 }  // namespace ambf_like

@@ -35,6 +35,8 @@ class RigidBody {
   std::size_t collisionVertexCount() const { return collision_vertices_; }
   bool isFinite() const;
 
+  /// The Bullet body. For a link of an articulation (reduced coordinates) it is a mirror outside
+  /// the Bullet world, updated after every step: read it, do not push it.
   btRigidBody& bullet() { return *body_; }
   const btRigidBody& bullet() const { return *body_; }
 

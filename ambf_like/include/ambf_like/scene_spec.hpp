@@ -36,6 +36,12 @@ struct SoftBodySleep {
   double wake_distance = 0.01;
 };
 
+/// How jointed models are simulated. Maximal: every body is a rigid body and every joint a
+/// constraint the solver iterates on (AMBF's way). Reduced: a model whose joints form a tree on
+/// one static body becomes a Featherstone articulation whose joints are its coordinates; other
+/// models stay maximal.
+enum class Articulation { Maximal, Reduced };
+
 /// World-file settings that matter to the physics.
 struct WorldSpec {
   std::filesystem::path file;  ///< empty when defaults are used
@@ -47,6 +53,7 @@ struct WorldSpec {
   std::optional<int> solver_iterations;
   std::optional<double> sdf_voxel_size;
   SoftBodySleep soft_body_sleep;
+  Articulation articulation = Articulation::Maximal;
 };
 
 /// Everything needed to build a simulation.

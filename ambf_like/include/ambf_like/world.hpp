@@ -27,6 +27,8 @@ struct WorldOptions {
   std::optional<double> sdf_voxel_size;
   /// Overrides the world file's `soft body sleep: {enabled}` (benchmarks compare both).
   std::optional<bool> soft_body_sleep;
+  /// Overrides the world file's `articulation` (benchmarks and tests compare both).
+  std::optional<Articulation> articulation;
 };
 
 /// One contact point between two bodies after the last step.
@@ -82,6 +84,8 @@ class World {
   std::vector<Contact> contacts() const;
   /// False as soon as any pose, velocity or soft-body node is NaN or infinite.
   bool isFinite() const;
+  /// Models simulated in reduced coordinates (see Articulation).
+  std::size_t articulatedModelCount() const;
   /// Vertices of every mesh collision shape (primitives count as none).
   std::size_t collisionVertexCount() const;
   /// Primitive collision shapes (boxes, spheres, cylinders, capsules, cones, planes).

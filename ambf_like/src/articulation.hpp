@@ -1,0 +1,81 @@
+#pragma once
+// A model's joint tree in reduced coordinates: one Featherstone btMultiBody on its static root.
+
+#include <LinearMath/btVector3.h>
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ambf_like/rigid_body.hpp"
+#include "ambf_like/scene_spec.hpp"
+#include "joint_dynamics.hpp"
+#include "joint_frames.hpp"
+#include "joint_space_servo.hpp"
+
+class btMultiBody;
+class btMultiBodyDynamicsWorld;
+class btMultiBodyLinkCollider;
+
+namespace ambf_like::detail {
+
+/// A loaded rigid body and its centre-of-mass frame in its body frame.
+struct PlacedBody {
+  RigidBody* body = nullptr;
+  Transform com_in_body = Transform::Identity();
+};
+
+/// Why a model cannot be one articulation, or nothing when it can: its joints must be revolute,
+/// continuous, prismatic or fixed and form a tree hanging from its one static body, and its
+/// moving bodies must have no damping and no gravity of their own.
+std::optional<std::string> whyNotArticulable(const ModelSpec& model);
+
+/// One model as a btMultiBody with a fixed base at its static root body. The joints are its
+/// degrees of freedom (no constraint rows), so a step costs one articulated-body pass instead
+/// of an iterative solve over 5-6 rows per joint. The root stays a static rigid body in the
+/// world; every other body's btRigidBody leaves the world and mirrors its link's pose and
+/// velocity after each step, so RigidBody reads the same either way.
+class Articulation {
+ public:
+  /// The bodies must be at their loaded poses, the moving ones not in `world`; `model` must be
+  /// articulable.
+  Articulation(const ModelSpec& model, const std::map<std::string, PlacedBody>& bodies,
+               btMultiBodyDynamicsWorld& world);
+  ~Articulation();
+  Articulation(const Articulation&) = delete;
+  Articulation& operator=(const Articulation&) = delete;
+
+  /// The coordinate of joint `index` (of the model's joints) as a degree of freedom.
+  std::unique_ptr<JointDynamics> jointDynamics(std::size_t index);
+  /// A joint's motor and effort for the coming step (`dof` as Bullet numbers them).
+  void request(int dof, const JointActuation& actuation) { servo_.request(dof, actuation); }
+  /// Torque given to `dof` in the last step.
+  double appliedTorque(int dof) const { return servo_.appliedTorque(dof); }
+  /// Applies the joints' torques for the coming step.
+  void beforeStep(double dt);
+  /// Called once the step's free motion is in the velocities (see ArticulatedDynamicsWorld).
+  void afterFreeMotion();
+  /// Copies the links' poses and velocities to their bodies; refreshes the inverse inertia.
+  void afterStep();
+
+ private:
+  struct Link;
+  void addLink(int index, const JointSpec& joint, const JointFrames& frames,
+               const PlacedBody& parent, const PlacedBody& child, int parent_link);
+  void addCollider(int index);
+  void refreshInverseInertia();
+  Eigen::VectorXd jointVelocities() const;
+
+  btMultiBodyDynamicsWorld& world_;
+  std::unique_ptr<btMultiBody> multibody_;
+  std::vector<Link> links_;         ///< in multibody link order (parents first)
+  std::vector<int> link_of_joint_;  ///< model joint index -> link
+  JointSpaceServo servo_;
+  int steps_since_refresh_ = 0;
+  std::vector<btVector3> omega_;  ///< scratch for the link velocities
+  std::vector<btVector3> velocity_;
+};
+
+}  // namespace ambf_like::detail

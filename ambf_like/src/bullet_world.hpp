@@ -1,0 +1,40 @@
+#pragma once
+// The Bullet objects a World steps: collision pipeline, solver and dynamics world.
+
+#include <functional>
+#include <memory>
+
+class btCollisionDispatcher;
+class btDiscreteDynamicsWorld;
+class btMultiBodyDynamicsWorld;
+class btSoftBody;
+struct btSoftBodyWorldInfo;
+
+namespace ambf_like::detail {
+
+/// Bullet's soft-rigid world with its solver, or, when articulations are to be stepped too,
+/// its soft-multibody world. The soft-rigid one is kept whenever it suffices: the two differ in
+/// their island and solver set-up, and the peg-transfer scene's outcomes are measured on it.
+class BulletWorld {
+ public:
+  explicit BulletWorld(bool with_articulations);
+  ~BulletWorld();
+  BulletWorld(const BulletWorld&) = delete;
+  BulletWorld& operator=(const BulletWorld&) = delete;
+
+  btDiscreteDynamicsWorld& dynamics();
+  btCollisionDispatcher& dispatcher();
+  btSoftBodyWorldInfo& softBodyInfo();
+  void addSoftBody(btSoftBody& body);
+  void removeSoftBody(btSoftBody& body);
+  /// The world articulations go into; only when built with articulations.
+  btMultiBodyDynamicsWorld& articulations();
+  /// Called in every step once the articulations' free motion is in their velocities.
+  void setFreeMotionListener(std::function<void()> listener);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ambf_like::detail

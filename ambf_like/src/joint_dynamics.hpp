@@ -1,0 +1,28 @@
+#pragma once
+// How a Joint reads and actuates its coordinate in one Bullet formulation.
+
+namespace ambf_like::detail {
+
+/// What a joint's drive asks of the physics for the next step.
+struct JointActuation {
+  bool motor_on = false;
+  double motor_velocity = 0.0;     ///< rad/s or m/s, already within the joint's speed limit
+  double motor_max_impulse = 0.0;  ///< N m s or N s per step
+  double effort = 0.0;             ///< N m or N, on top of the motor
+};
+
+/// A joint's coordinate as the physics sees it: maximal coordinates (a constraint between two
+/// rigid bodies) or reduced ones (a degree of freedom of an articulation).
+class JointDynamics {
+ public:
+  virtual ~JointDynamics() = default;
+  /// Joint coordinate (rad or m); angular ones may wrap at +-pi.
+  virtual double coordinate() const = 0;
+  virtual double velocity() const = 0;
+  /// Generalised force the motor, the limits and the effort applied in the last step.
+  virtual double effort() const = 0;
+  /// Sets the motor and applies the effort for the coming step.
+  virtual void actuate(const JointActuation& actuation, double dt) = 0;
+};
+
+}  // namespace ambf_like::detail

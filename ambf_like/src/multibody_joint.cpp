@@ -1,0 +1,50 @@
+#include "multibody_joint.hpp"
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+
+#include "articulation.hpp"
+
+namespace ambf_like::detail {
+
+MultiBodyJoint::MultiBodyJoint(JointType type, Articulation& articulation, btMultiBody& multibody,
+                               int link, double coordinate_at_load,
+                               btMultiBodyJointLimitConstraint* limit)
+    : type_(type),
+      articulation_(articulation),
+      multibody_(multibody),
+      link_(link),
+      dof_(multibody.getLink(link).m_dofOffset),
+      coordinate_at_load_(coordinate_at_load),
+      limit_(limit) {}
+
+double MultiBodyJoint::coordinate() const {
+  return hasCoordinate() ? coordinate_at_load_ + multibody_.getJointPos(link_) : 0.0;
+}
+
+double MultiBodyJoint::velocity() const {
+  return hasCoordinate() ? multibody_.getJointVel(link_) : 0.0;
+}
+
+double MultiBodyJoint::effort() const {
+  if (!hasCoordinate()) return 0.0;
+  double limit_effort = 0.0;
+  if (limit_ && last_step_ > 0.0) {
+    // Row 0 pushes the coordinate up from its lower bound, row 1 down from its upper one.
+    limit_effort = (limit_->getAppliedImpulse(0) - limit_->getAppliedImpulse(1)) / last_step_;
+  }
+  return articulation_.appliedTorque(dof_) + limit_effort;
+}
+
+void MultiBodyJoint::actuate(const JointActuation& actuation, double dt) {
+  if (!hasCoordinate()) return;
+  articulation_.request(dof_, actuation);
+  if (limit_) {
+    // The solver writes a row's impulse only in steps where the bound is reached.
+    limit_->internalSetAppliedImpulse(0, 0.0);
+    limit_->internalSetAppliedImpulse(1, 0.0);
+  }
+  last_step_ = dt;
+}
+
+}  // namespace ambf_like::detail

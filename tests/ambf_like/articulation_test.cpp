@@ -1,0 +1,201 @@
+// Reduced coordinates: a joint tree on a static body becomes one Featherstone articulation that
+// starts where its bodies were loaded, moves as the constraint formulation does, holds loaded
+// joints exactly, keeps its limits, and reads the same through Joint and RigidBody.
+
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_files.hpp"
+
+namespace {
+
+using ambf_like::Articulation;
+using ambf_like::Vec3;
+
+/// A horizontal double pendulum on a static anchor, hinged about y (so gravity swings it),
+/// with a small tip fixed to its lower link and `extra` spliced into the lower link's joint.
+std::filesystem::path doublePendulum(const test_support::TempDir& dir,
+                                     const std::string& extra = "",
+                                     const std::string& damping = "{linear: 0, angular: 0}") {
+  auto box = [&](const std::string& name, double mass, double x, double length) {
+    return "BODY " + name + ":\n  mass: " + std::to_string(mass) +
+           "\n  collision shape: BOX\n  collision geometry: {x: " + std::to_string(length) +
+           ", y: 0.02, z: 0.02}\n  damping: " + damping +
+           "\n  location: {position: {x: " + std::to_string(x) + ", y: 0, z: 0}}\n";
+  };
+  auto hinge = [](const std::string& name, const std::string& parent, const std::string& child,
+                  double parent_x, double child_x, const std::string& type) {
+    return "JOINT " + name + ":\n  parent: BODY " + parent + "\n  child: BODY " + child +
+           "\n  parent pivot: {x: " + std::to_string(parent_x) +
+           ", y: 0, z: 0}\n  child pivot: {x: " + std::to_string(child_x) +
+           ", y: 0, z: 0}\n  parent axis: {x: 0, y: 1, z: 0}\n  child axis: {x: 0, y: 1, z: 0}\n"
+           "  type: " +
+           type + "\n  controller output type: POSITION\n  max motor impulse: 0.05\n";
+  };
+  return dir.write(
+      "pendulum.yaml",
+      "bodies: [BODY anchor, BODY upper, BODY lower, BODY tip]\n"
+      "joints: [JOINT shoulder, JOINT elbow, JOINT tip_mount]\n"
+      "ignore inter-collision: true\n"
+      "BODY anchor: {mass: 0, collision shape: BOX, collision geometry: {x: 0.02, y: 0.02, z: "
+      "0.02}}\n" +
+          box("upper", 1.0, 0.1, 0.2) + box("lower", 0.5, 0.3, 0.2) + box("tip", 0.1, 0.4, 0.02) +
+          hinge("shoulder", "anchor", "upper", 0.0, -0.1, "revolute") +
+          hinge("elbow", "upper", "lower", 0.1, -0.1, "revolute") + extra +
+          hinge("tip_mount", "lower", "tip", 0.1, 0.0, "fixed"));
+}
+
+std::unique_ptr<test_support::Simulation> load(const std::filesystem::path& model,
+                                               Articulation articulation) {
+  ambf_like::WorldOptions options;
+  options.articulation = articulation;
+  options.solver_iterations = 50;  // the constraint formulation as tight as it gets
+  return test_support::simulate({model}, options);
+}
+
+TEST(Articulation, AJointTreeOnAStaticBodyStartsWhereItsBodiesWereLoaded) {
+  test_support::TempDir dir;
+  // The elbow's zero is turned by 0.3 rad: the loaded pose reads -0.3 either way.
+  const auto model = doublePendulum(dir, "  offset: 0.3\n");
+  auto reduced = load(model, Articulation::Reduced);
+  auto maximal = load(model, Articulation::Maximal);
+  EXPECT_EQ(reduced->world->articulatedModelCount(), 1u);
+  EXPECT_EQ(maximal->world->articulatedModelCount(), 0u);
+  for (std::size_t j = 0; j < 3; ++j) {
+    EXPECT_NEAR(reduced->world->joint(j).position(), maximal->world->joint(j).position(), 1e-12)
+        << reduced->world->joint(j).name();
+  }
+  EXPECT_NEAR(reduced->world->joint("elbow").position(), -0.3, 1e-12);
+  for (std::size_t b = 0; b < 4; ++b) {
+    const auto a = reduced->world->body(b).pose();
+    const auto m = maximal->world->body(b).pose();
+    EXPECT_LT((a.translation() - m.translation()).norm(), 1e-12) << reduced->world->body(b).name();
+    EXPECT_LT((a.linear() - m.linear()).norm(), 1e-12) << reduced->world->body(b).name();
+  }
+}
+
+TEST(Articulation, AFreeDoublePendulumSwingsAsWithConstraintsAndHoldsItsEnergy) {
+  test_support::TempDir dir;
+  const auto model = doublePendulum(dir);
+  auto reduced = load(model, Articulation::Reduced);
+  auto maximal = load(model, Articulation::Maximal);
+  auto energy = [](ambf_like::World& world) {
+    double total = 0.0;
+    for (std::size_t b = 0; b < world.bodyCount(); ++b) {
+      const auto& body = world.body(b);
+      if (body.isStatic()) continue;
+      const Vec3 w = body.angularVelocity();
+      const auto inertia = body.bullet().getLocalInertia();
+      const Vec3 w_local = body.centerOfMassPose().linear().transpose() * w;
+      total +=
+          0.5 * body.mass() * body.linearVelocity().squaredNorm() +
+          0.5 * (w_local.array().square() * Eigen::Array3d(inertia.x(), inertia.y(), inertia.z()))
+                    .sum() +
+          body.mass() * 9.81 * body.centerOfMassPose().translation().z();
+    }
+    return total;
+  };
+  const double reduced_start = energy(*reduced->world);
+  const double maximal_start = energy(*maximal->world);
+  double worst_gap = 0.0, reduced_drift = 0.0, maximal_drift = 0.0, lowest = 0.0;
+  for (int i = 0; i < 500; ++i) {  // half a second: the tip falls through the bottom of its arc
+    reduced->world->step();
+    maximal->world->step();
+    const Vec3 tip = reduced->world->body("tip").pose().translation();
+    worst_gap =
+        std::max(worst_gap, (tip - maximal->world->body("tip").pose().translation()).norm());
+    reduced_drift = std::max(reduced_drift, std::abs(energy(*reduced->world) - reduced_start));
+    maximal_drift = std::max(maximal_drift, std::abs(energy(*maximal->world) - maximal_start));
+    lowest = std::min(lowest, tip.z());
+  }
+  RecordProperty("tip_gap_m", std::to_string(worst_gap));
+  RecordProperty("reduced_energy_drift_j", std::to_string(reduced_drift));
+  RecordProperty("maximal_energy_drift_j", std::to_string(maximal_drift));
+  EXPECT_LT(lowest, -0.2) << "it should swing down";
+  EXPECT_LT(worst_gap, 5e-3);
+  // Both integrators are semi-implicit Euler: energy wanders within O(dt) of its start, not
+  // away from it. 1 % of what the fall through 0.4 m releases (0.5 % measured, 0.1 % with
+  // constraints).
+  EXPECT_LT(reduced_drift, 0.01 * 1.6 * 9.81 * 0.4);
+}
+
+TEST(Articulation, BodiesMirrorTheirLinksVelocities) {
+  test_support::TempDir dir;
+  auto sim = load(doublePendulum(dir), Articulation::Reduced);
+  auto& world = *sim->world;
+  world.step(200);
+  // Both hinges turn about y: the lower link spins at the sum of their rates, and its centre
+  // moves with each rate about its own pivot.
+  const double shoulder = world.joint("shoulder").velocity();
+  const double elbow = world.joint("elbow").velocity();
+  const Vec3 axis = Vec3::UnitY();
+  const Vec3 centre = world.body("lower").centerOfMassPose().translation();
+  const Vec3 elbow_pivot = world.body("upper").pose() * Vec3(0.1, 0, 0);
+  const Vec3 expected = shoulder * axis.cross(centre) + elbow * axis.cross(centre - elbow_pivot);
+  ASSERT_GT(expected.norm(), 0.5) << "the arm should be swinging";
+  EXPECT_LT((world.body("lower").linearVelocity() - expected).norm(), 1e-9);
+  EXPECT_LT((world.body("lower").angularVelocity() - (shoulder + elbow) * axis).norm(), 1e-9);
+}
+
+TEST(Articulation, PositionServoHoldsALoadedJointExactlyAndReportsTheTorque) {
+  test_support::TempDir dir;
+  auto sim = load(doublePendulum(dir), Articulation::Reduced);
+  auto& world = *sim->world;
+  world.joint("shoulder").commandPosition(-0.2);  // about y: the arm tips upwards
+  world.joint("elbow").commandPosition(0.0);
+  world.step(1000);
+  EXPECT_NEAR(world.joint("shoulder").position(), -0.2, 1e-9);
+  EXPECT_NEAR(world.joint("elbow").position(), 0.0, 1e-9);
+  // The shoulder carries the whole arm's weight: the moment of every moving body about it.
+  double moment = 0.0;
+  for (const char* name : {"upper", "lower", "tip"}) {
+    const auto& body = world.body(name);
+    moment += body.mass() * 9.81 * body.centerOfMassPose().translation().x();
+  }
+  // Gravity turns the arm down (+y about the shoulder); the servo's torque balances it.
+  EXPECT_NEAR(world.joint("shoulder").effort(), -moment, 1e-6 * moment);
+}
+
+TEST(Articulation, LimitsHoldAgainstAnEffortAndReportTheirTorque) {
+  test_support::TempDir dir;
+  auto sim =
+      load(doublePendulum(dir, "  joint limits: {low: -0.5, high: 0.4}\n"), Articulation::Reduced);
+  auto& world = *sim->world;
+  world.joint("shoulder").commandPosition(0.0);
+  world.joint("elbow").commandEffort(1.0);  // pushes the elbow up against its upper limit
+  world.step(1000);
+  EXPECT_NEAR(world.joint("elbow").position(), 0.4, 1e-3);
+  EXPECT_NEAR(world.joint("elbow").velocity(), 0.0, 1e-6);
+  // At rest the limit holds both the 1 N m and gravity's torque; the joint's effort (the 1 N m
+  // plus the limit's) is then minus gravity's torque about the elbow.
+  const Vec3 pivot = world.body("upper").pose() * Vec3(0.1, 0, 0);
+  double gravity_torque = 0.0;
+  for (const char* name : {"lower", "tip"}) {
+    const auto& body = world.body(name);
+    gravity_torque += body.mass() * 9.81 * (body.centerOfMassPose().translation() - pivot).x();
+  }
+  EXPECT_NEAR(world.joint("elbow").effort(), -gravity_torque, 1e-3);
+}
+
+TEST(Articulation, ModelsThatAreNotJointTreesOnOneStaticBodyStayInMaximalCoordinates) {
+  test_support::TempDir dir;
+  // AMBF's default body damping: not representable per body in an articulation.
+  EXPECT_EQ(load(doublePendulum(dir, "", "{linear: 0.04, angular: 0.1}"), Articulation::Reduced)
+                ->world->articulatedModelCount(),
+            0u);
+  // A spring is not a degree of freedom Bullet's articulations have.
+  const auto spring = dir.write(
+      "spring.yaml",
+      "bodies: [BODY a, BODY b]\njoints: [JOINT s]\n"
+      "BODY a: {mass: 0}\n"
+      "BODY b: {mass: 1, inertia: {ix: 1, iy: 1, iz: 1}, damping: {linear: 0, angular: 0}}\n"
+      "JOINT s: {parent: BODY a, child: BODY b, type: linear spring, stiffness: 10}\n");
+  auto sim = load(spring, Articulation::Reduced);
+  EXPECT_EQ(sim->world->articulatedModelCount(), 0u);
+  sim->world->step(10);
+  EXPECT_TRUE(sim->world->isFinite());
+}
+
+}  // namespace
