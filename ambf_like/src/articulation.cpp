@@ -162,9 +162,15 @@ void Articulation::addCollider(int index) {
   multibody_->getLink(index).m_collider = link.collider.get();
   world_.addCollisionObject(link.collider.get(), btBroadphaseProxy::DefaultFilter,
                             btBroadphaseProxy::AllFilter);
-  if (link.limit) {
-    link.limit->finalizeMultiDof();  // sizes its rows for the now final degrees of freedom
-    world_.addMultiBodyConstraint(link.limit.get());
+  // Sizes its rows for the now final degrees of freedom; the joint engages it near a bound.
+  if (link.limit) link.limit->finalizeMultiDof();
+}
+
+void Articulation::engageLimit(btMultiBodyJointLimitConstraint& limit, bool engaged) {
+  if (engaged) {
+    world_.addMultiBodyConstraint(&limit);
+  } else {
+    world_.removeMultiBodyConstraint(&limit);
   }
 }
 
@@ -277,7 +283,7 @@ void Articulation::afterStep() {
   for (std::size_t i = 0; i < links_.size(); ++i) {
     btRigidBody& mirror = links_[i].body->bullet();
     const btTransform& pose = links_[i].collider->getWorldTransform();
-    mirror.setCenterOfMassTransform(pose);
+    mirror.setWorldTransform(pose);  // all a reader uses (no inertia tensor, no interpolation)
     mirror.setAngularVelocity(pose.getBasis() * omega_[i + 1]);
     mirror.setLinearVelocity(pose.getBasis() * velocity_[i + 1]);
   }

@@ -17,6 +17,7 @@
 
 class btMultiBody;
 class btMultiBodyDynamicsWorld;
+class btMultiBodyJointLimitConstraint;
 class btMultiBodyLinkCollider;
 
 namespace ambf_like::detail {
@@ -51,6 +52,8 @@ class Articulation {
   std::unique_ptr<JointDynamics> jointDynamics(std::size_t index);
   /// A joint's motor and effort for the coming step (`dof` as Bullet numbers them).
   void request(int dof, const JointActuation& actuation) { servo_.request(dof, actuation); }
+  /// Puts a joint's limit constraint into the world or takes it out (see MultiBodyJoint).
+  void engageLimit(btMultiBodyJointLimitConstraint& limit, bool engaged);
   /// Torque given to `dof` in the last step.
   double appliedTorque(int dof) const { return servo_.appliedTorque(dof); }
   /// Applies the joints' torques for the coming step.

@@ -1,12 +1,13 @@
 #include "joint_space_servo.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace ambf_like::detail {
 
 namespace {
 
-/// Gauss-Seidel sweeps over the motors (a Raven arm has 7; unsaturated, 3-4 sweeps converge).
+/// Gauss-Seidel sweeps over the motors once a bound is hit, from the unbounded solution.
 constexpr int kSweeps = 8;
 
 }  // namespace
@@ -23,6 +24,7 @@ JointSpaceServo::JointSpaceServo(int dofs)
 
 void JointSpaceServo::setInverseInertia(const Eigen::MatrixXd& inverse_inertia) {
   inverse_inertia_ = inverse_inertia;
+  factored_.clear();
 }
 
 void JointSpaceServo::request(int dof, const JointActuation& actuation) {
@@ -49,14 +51,29 @@ void JointSpaceServo::observeFreeMotion(const Eigen::VectorXd& velocity) {
 }
 
 void JointSpaceServo::solveMotors(const Eigen::VectorXd& velocity_change, double dt) {
-  const Eigen::Index n = velocity_change.size();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    if (motor_impulse_(i) == 0.0) motor_torque_(i) = 0.0;  // warm start from the last step
+  motors_.clear();
+  for (Eigen::Index i = 0; i < velocity_change.size(); ++i) {
+    if (motor_impulse_(i) > 0.0) motors_.push_back(i);
   }
+  motor_torque_.setZero();
+  if (motors_.empty()) return;
+  if (motors_ != factored_) {
+    factor_.compute(inverse_inertia_(motors_, motors_));
+    factored_ = motors_;
+  }
+  const Eigen::VectorXd unbounded = factor_.solve(velocity_change(motors_) / dt);
+  motor_torque_(motors_) = unbounded;
+  for (const auto i : motors_) {
+    if (std::abs(motor_torque_(i)) > motor_impulse_(i) / dt)
+      return boundMotors(velocity_change, dt);
+  }
+}
+
+void JointSpaceServo::boundMotors(const Eigen::VectorXd& velocity_change, double dt) {
   for (int sweep = 0; sweep < kSweeps; ++sweep) {
-    for (Eigen::Index i = 0; i < n; ++i) {
-      if (motor_impulse_(i) == 0.0) continue;
-      const double residual = velocity_change(i) / dt - inverse_inertia_.row(i).dot(motor_torque_);
+    for (const auto i : motors_) {
+      // M^-1 is symmetric: its column is its row, and contiguous.
+      const double residual = velocity_change(i) / dt - inverse_inertia_.col(i).dot(motor_torque_);
       const double cap = motor_impulse_(i) / dt;
       motor_torque_(i) =
           std::clamp(motor_torque_(i) + residual / inverse_inertia_(i, i), -cap, cap);

@@ -2,6 +2,7 @@
 // The motors of one articulation, solved together in joint space.
 
 #include <Eigen/Dense>
+#include <vector>
 
 #include "joint_dynamics.hpp"
 
@@ -11,7 +12,8 @@ namespace ambf_like::detail {
 /// impulse) into joint torques, as Bullet's constraint motors do but exactly and without solver
 /// rows: with the joint-space inverse inertia M^-1 and the free acceleration a (gravity,
 /// Coriolis, contacts, limits) the step's velocity change is dt (a + M^-1 tau), and the motor
-/// torques solve that for the targets, bounded, by projected Gauss-Seidel on the few motors.
+/// torques solve that for the targets: directly (a Cholesky factor of the motors' block of
+/// M^-1), and by projected Gauss-Seidel from there when a bound is hit.
 /// `a` is measured each step: the velocity change of the free motion (before contacts and
 /// limits act) beyond what the torques explain.
 class JointSpaceServo {
@@ -31,6 +33,7 @@ class JointSpaceServo {
 
  private:
   void solveMotors(const Eigen::VectorXd& velocity_change, double dt);
+  void boundMotors(const Eigen::VectorXd& velocity_change, double dt);
 
   Eigen::MatrixXd inverse_inertia_;
   Eigen::VectorXd free_acceleration_;
@@ -39,6 +42,9 @@ class JointSpaceServo {
   Eigen::VectorXd motor_impulse_;  ///< bound per step (N m s or N s); 0: no motor
   Eigen::VectorXd motor_torque_;
   Eigen::VectorXd torque_;
+  std::vector<Eigen::Index> motors_;    ///< dofs with a motor on this step
+  std::vector<Eigen::Index> factored_;  ///< the motors `factor_` is of
+  Eigen::LLT<Eigen::MatrixXd> factor_;
   Eigen::VectorXd velocity_before_;  ///< at the start of the step under way
   double step_ = 0.0;
 };

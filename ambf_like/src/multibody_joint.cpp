@@ -3,9 +3,20 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 
+#include <cmath>
+
 #include "articulation.hpp"
 
 namespace ambf_like::detail {
+
+namespace {
+
+/// How near a bound (rad or m), beyond two steps of travel, a joint's limit is put into the
+/// world. Each engaged limit costs the solver's set-up and island work every step even while
+/// its bound is far (Bullet makes its rows only once the bound is reached).
+constexpr double kLimitWatchBand = 1e-3;
+
+}  // namespace
 
 MultiBodyJoint::MultiBodyJoint(JointType type, Articulation& articulation, btMultiBody& multibody,
                                int link, double coordinate_at_load,
@@ -39,12 +50,21 @@ double MultiBodyJoint::effort() const {
 void MultiBodyJoint::actuate(const JointActuation& actuation, double dt) {
   if (!hasCoordinate()) return;
   articulation_.request(dof_, actuation);
-  if (limit_) {
-    // The solver writes a row's impulse only in steps where the bound is reached.
-    limit_->internalSetAppliedImpulse(0, 0.0);
-    limit_->internalSetAppliedImpulse(1, 0.0);
-  }
+  if (limit_) watchLimit(dt);
   last_step_ = dt;
+}
+
+void MultiBodyJoint::watchLimit(double dt) {
+  // The solver writes a row's impulse only in steps where the bound is reached.
+  limit_->internalSetAppliedImpulse(0, 0.0);
+  limit_->internalSetAppliedImpulse(1, 0.0);
+  const double q = multibody_.getJointPos(link_);
+  const double reach = 2.0 * dt * std::abs(velocity()) + kLimitWatchBand;
+  const bool near = q - reach <= limit_->getLowerBound() || q + reach >= limit_->getUpperBound();
+  if (near != limit_engaged_) {
+    articulation_.engageLimit(*limit_, near);
+    limit_engaged_ = near;
+  }
 }
 
 }  // namespace ambf_like::detail

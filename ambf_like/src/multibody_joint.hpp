@@ -26,6 +26,7 @@ class MultiBodyJoint final : public JointDynamics {
 
  private:
   bool hasCoordinate() const { return type_ != JointType::Fixed; }
+  void watchLimit(double dt);
 
   JointType type_;
   Articulation& articulation_;
@@ -34,6 +35,7 @@ class MultiBodyJoint final : public JointDynamics {
   int dof_;
   double coordinate_at_load_;
   btMultiBodyJointLimitConstraint* limit_;
+  bool limit_engaged_ = false;
   double last_step_ = 0.0;  ///< 0 until the first step
 };
 

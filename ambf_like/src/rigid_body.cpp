@@ -2,6 +2,8 @@
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
+#include <cmath>
+
 #include "ambf_like/bullet_conversions.hpp"
 
 namespace ambf_like {
@@ -33,8 +35,12 @@ Vec3 RigidBody::angularVelocity() const {
 }
 
 bool RigidBody::isFinite() const {
-  return centerOfMassPose().matrix().allFinite() && linearVelocity().allFinite() &&
-         angularVelocity().allFinite();
+  // On Bullet's own values: the twin asks this of every body every cycle.
+  const btTransform& pose = body_->getCenterOfMassTransform();
+  const btMatrix3x3& basis = pose.getBasis();
+  const btVector3 sum = pose.getOrigin() + basis[0] + basis[1] + basis[2] +
+                        body_->getLinearVelocity() + body_->getAngularVelocity();
+  return std::isfinite(sum.x()) && std::isfinite(sum.y()) && std::isfinite(sum.z());
 }
 
 }  // namespace ambf_like
