@@ -31,15 +31,13 @@ double stepsPerSecond(ambf_like::World& world, int steps, Each each) {
   return steps / wall.count();
 }
 
-/// Our Raven-II alone, both arms following a slow sine around home, gravity on, its arms in
-/// the given formulation (the model's own is reduced coordinates).
-double ravenAloneMoving(ambf_like::Articulation articulation) {
-  const auto scene =
-      ambf_like::loadLaunchFile(raven::modelDirectory() / "raven2" / "launch.yaml", {});
+/// Our Raven-II alone (`scene`), both arms following a slow sine around home, gravity on, its
+/// arms in the given formulation (the model's own is reduced coordinates).
+double ravenAloneMoving(const ambf_like::SceneSpec& scene, ambf_like::Articulation articulation) {
   ambf_like::MeshLibrary meshes;
   ambf_like::WorldOptions options;
   options.articulation = articulation;
-  ambf_like::World world(scene.spec, meshes, options);
+  ambf_like::World world(scene, meshes, options);
   raven::TwinArms arms(world, raven::ArmBindings::ourRaven());
   const auto home = raven::builtinProfile("physical").home;
   for (auto arm : raven::kArms) arms.command(arm, home);
@@ -104,10 +102,12 @@ void measureLoopFrequency(const BenchSettings& s, Report& report) {
   // the machine hits all three.
   const auto ambf = s.shared_data / "ambf/ambf_controller/raven2/launch.yaml";
   const bool have_ambf = std::filesystem::exists(ambf);
+  const auto raven_scene =
+      ambf_like::loadLaunchFile(raven::modelDirectory() / "raven2" / "launch.yaml", {}).spec;
   std::vector<double> alone, constrained, ambf_rates, ratios;
   for (int i = 0; i < s.repeat; ++i) {
-    alone.push_back(ravenAloneMoving(ambf_like::Articulation::Reduced));
-    constrained.push_back(ravenAloneMoving(ambf_like::Articulation::Maximal));
+    alone.push_back(ravenAloneMoving(raven_scene, ambf_like::Articulation::Reduced));
+    constrained.push_back(ravenAloneMoving(raven_scene, ambf_like::Articulation::Maximal));
     if (!have_ambf) continue;
     ambf_rates.push_back(ambfRavenStill(ambf));
     ratios.push_back(alone.back() / ambf_rates.back());

@@ -131,6 +131,12 @@ Articulation::Articulation(const ModelSpec& model, const std::map<std::string, P
     addLink(link_of_joint_[j], joint, frames, parent, child, link_of_body.at(joint.parent));
   }
   multibody_->finalizeMultiDof();
+  omega_.resize(links_.size() + 1);  // the base's first
+  velocity_.resize(links_.size() + 1);
+  const auto dofs = static_cast<std::size_t>(multibody_->getNumDofs());
+  unit_force_.assign(6 + dofs, 0.0);  // the base's six first
+  acceleration_.assign(6 + dofs, 0.0);
+  inverse_inertia_.resize(multibody_->getNumDofs(), multibody_->getNumDofs());
   multibody_->setLinearDamping(0.0);
   multibody_->setAngularDamping(0.0);
   multibody_->setHasSelfCollision(!model.ignore_inter_collision);
@@ -233,26 +239,21 @@ void Articulation::addLink(int index, const JointSpec& joint, const JointFrames&
 
 void Articulation::refreshInverseInertia() {
   const int dofs = multibody_->getNumDofs();
-  std::vector<btScalar> force(static_cast<std::size_t>(6 + dofs), 0.0);
-  std::vector<btScalar> acceleration(force.size(), 0.0);
-  btAlignedObjectArray<btScalar> scalars;
-  btAlignedObjectArray<btVector3> vectors;
-  Eigen::MatrixXd inverse_inertia(dofs, dofs);
   for (int dof = 0; dof < dofs; ++dof) {
-    force[static_cast<std::size_t>(6 + dof)] = 1.0;
-    multibody_->calcAccelerationDeltasMultiDof(force.data(), acceleration.data(), scalars, vectors);
-    force[static_cast<std::size_t>(6 + dof)] = 0.0;
-    for (int row = 0; row < dofs; ++row) {
-      inverse_inertia(row, dof) = acceleration[static_cast<std::size_t>(6 + row)];
-    }
+    // Column `dof` of M^-1: the joint accelerations a unit generalised force there causes.
+    unit_force_[static_cast<std::size_t>(6 + dof)] = 1.0;
+    multibody_->calcAccelerationDeltasMultiDof(unit_force_.data(), acceleration_.data(),
+                                               scratch_scalars_, scratch_vectors_);
+    unit_force_[static_cast<std::size_t>(6 + dof)] = 0.0;
+    inverse_inertia_.col(dof) = Eigen::Map<const Eigen::VectorXd>(acceleration_.data() + 6, dofs);
   }
-  servo_.setInverseInertia(inverse_inertia);
+  servo_.setInverseInertia(inverse_inertia_);
   steps_since_refresh_ = 0;
 }
 
-Eigen::VectorXd Articulation::jointVelocities() const {
+Eigen::Map<const Eigen::VectorXd> Articulation::jointVelocities() const {
   const btScalar* velocities = multibody_->getVelocityVector() + 6;  // after the base's
-  return Eigen::Map<const Eigen::VectorXd>(velocities, multibody_->getNumDofs());
+  return {velocities, multibody_->getNumDofs()};
 }
 
 void Articulation::afterFreeMotion() {
@@ -275,9 +276,6 @@ std::unique_ptr<JointDynamics> Articulation::jointDynamics(std::size_t index) {
 }
 
 void Articulation::afterStep() {
-  const auto count = static_cast<std::size_t>(multibody_->getNumLinks()) + 1;
-  omega_.resize(count);
-  velocity_.resize(count);
   // Each link's angular and linear velocity (of its centre of mass) in its own frame.
   multibody_->compTreeLinkVelocities(omega_.data(), velocity_.data());
   for (std::size_t i = 0; i < links_.size(); ++i) {

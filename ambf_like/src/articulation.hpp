@@ -1,6 +1,7 @@
 #pragma once
 // A model's joint tree in reduced coordinates: one Featherstone btMultiBody on its static root.
 
+#include <LinearMath/btAlignedObjectArray.h>
 #include <LinearMath/btVector3.h>
 
 #include <map>
@@ -69,7 +70,7 @@ class Articulation {
                const PlacedBody& parent, const PlacedBody& child, int parent_link);
   void addCollider(int index);
   void refreshInverseInertia();
-  Eigen::VectorXd jointVelocities() const;
+  Eigen::Map<const Eigen::VectorXd> jointVelocities() const;
 
   btMultiBodyDynamicsWorld& world_;
   std::unique_ptr<btMultiBody> multibody_;
@@ -77,8 +78,14 @@ class Articulation {
   std::vector<int> link_of_joint_;  ///< model joint index -> link
   JointSpaceServo servo_;
   int steps_since_refresh_ = 0;
-  std::vector<btVector3> omega_;  ///< scratch for the link velocities
+  // Scratch, sized once: link velocities, and the inverse-inertia queries.
+  std::vector<btVector3> omega_;
   std::vector<btVector3> velocity_;
+  std::vector<btScalar> unit_force_;
+  std::vector<btScalar> acceleration_;
+  btAlignedObjectArray<btScalar> scratch_scalars_;
+  btAlignedObjectArray<btVector3> scratch_vectors_;
+  Eigen::MatrixXd inverse_inertia_;
 };
 
 }  // namespace ambf_like::detail

@@ -13,6 +13,7 @@ ConstraintJoint::ConstraintJoint(const JointSpec& spec,
                                  std::unique_ptr<btTypedConstraint> constraint, btRigidBody& parent,
                                  btRigidBody& child, const Transform& frame_in_parent)
     : type_(spec.type),
+      angular_(spec.isAngular()),
       constraint_(std::move(constraint)),
       feedback_(std::make_unique<btJointFeedback>()),
       parent_(parent),
@@ -25,11 +26,6 @@ ConstraintJoint::ConstraintJoint(const JointSpec& spec,
 }
 
 ConstraintJoint::~ConstraintJoint() = default;
-
-bool ConstraintJoint::isAngular() const {
-  return type_ == JointType::Revolute || type_ == JointType::Continuous ||
-         type_ == JointType::TorsionSpring;
-}
 
 double ConstraintJoint::coordinate() const {
   switch (type_) {
@@ -58,7 +54,7 @@ Vec3 ConstraintJoint::axisInWorld() const {
 
 double ConstraintJoint::velocity() const {
   const Vec3 axis = axisInWorld();
-  if (isAngular()) {
+  if (angular_) {
     return (toEigen(child_.getAngularVelocity()) - toEigen(parent_.getAngularVelocity())).dot(axis);
   }
   const Vec3 point = toEigen(parent_.getCenterOfMassTransform()) * frame_in_parent_.translation();
@@ -72,7 +68,7 @@ double ConstraintJoint::velocity() const {
 double ConstraintJoint::effort() const {
   const Vec3 axis = axisInWorld();
   const Vec3 force = toEigen(feedback_->m_appliedForceBodyB);
-  if (!isAngular()) return applied_effort_ + force.dot(axis);
+  if (!angular_) return applied_effort_ + force.dot(axis);
   // Bullet reports the constraint's torque about the child's centre of mass; the pivot force's
   // moment is not the joint's doing, so take the torque about the pivot instead.
   const Vec3 pivot = toEigen(parent_.getCenterOfMassTransform()) * frame_in_parent_.translation();
@@ -96,7 +92,7 @@ void ConstraintJoint::actuate(const JointActuation& actuation, double dt) {
   applied_effort_ = actuation.effort;
   if (actuation.effort == 0.0) return;
   const btVector3 generalized = toBt(axisInWorld() * actuation.effort);
-  if (isAngular()) {
+  if (angular_) {
     parent_.applyTorque(-generalized);
     child_.applyTorque(generalized);
   } else {

@@ -29,9 +29,9 @@ class ConstraintJoint final : public JointDynamics {
 
  private:
   Vec3 axisInWorld() const;
-  bool isAngular() const;
 
   JointType type_;
+  bool angular_;
   std::unique_ptr<btTypedConstraint> constraint_;
   std::unique_ptr<btJointFeedback> feedback_;
   btRigidBody& parent_;

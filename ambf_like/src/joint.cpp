@@ -14,11 +14,6 @@ double wrapToPi(double angle) {
   return std::remainder(angle, 2.0 * M_PI);
 }
 
-bool isAngular(JointType type) {
-  return type == JointType::Revolute || type == JointType::Continuous ||
-         type == JointType::TorsionSpring;
-}
-
 const char* typeName(JointType type) {
   switch (type) {
     case JointType::Revolute:
@@ -64,7 +59,7 @@ bool Joint::isControllable() const {
 
 void Joint::updateCoordinate() {
   const double raw = dynamics_->coordinate();
-  if (isAngular(spec_.type)) {
+  if (spec_.isAngular()) {
     position_ += wrapToPi(raw - last_raw_);
   } else {
     position_ = raw;

@@ -20,6 +20,7 @@ JointSpaceServo::JointSpaceServo(int dofs)
       motor_impulse_(Eigen::VectorXd::Zero(dofs)),
       motor_torque_(Eigen::VectorXd::Zero(dofs)),
       torque_(Eigen::VectorXd::Zero(dofs)),
+      velocity_change_(Eigen::VectorXd::Zero(dofs)),
       velocity_before_(Eigen::VectorXd::Zero(dofs)) {}
 
 void JointSpaceServo::setInverseInertia(const Eigen::MatrixXd& inverse_inertia) {
@@ -33,26 +34,26 @@ void JointSpaceServo::request(int dof, const JointActuation& actuation) {
   motor_impulse_(dof) = actuation.motor_on ? actuation.motor_max_impulse : 0.0;
 }
 
-const Eigen::VectorXd& JointSpaceServo::torques(
-    const Eigen::VectorXd& velocity,
-    double
-        dt) {  // Velocity change the motors must add to what the efforts and the free motion give.
-  const Eigen::VectorXd coasting =
-      velocity + dt * (free_acceleration_ + inverse_inertia_ * effort_);
-  solveMotors(motor_velocity_ - coasting, dt);
+const Eigen::VectorXd& JointSpaceServo::torques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                                                double dt) {
+  // What the motors must add to where the joints coast: velocity + dt (a + M^-1 effort).
+  velocity_change_.noalias() = motor_velocity_ - velocity - dt * free_acceleration_;
+  velocity_change_.noalias() -= dt * inverse_inertia_ * effort_;
+  solveMotors(dt);
   torque_ = effort_ + motor_torque_;
   velocity_before_ = velocity;
   step_ = dt;
   return torque_;
 }
 
-void JointSpaceServo::observeFreeMotion(const Eigen::VectorXd& velocity) {
-  free_acceleration_ = (velocity - velocity_before_) / step_ - inverse_inertia_ * torque_;
+void JointSpaceServo::observeFreeMotion(const Eigen::Ref<const Eigen::VectorXd>& velocity) {
+  free_acceleration_.noalias() = (velocity - velocity_before_) / step_;
+  free_acceleration_.noalias() -= inverse_inertia_ * torque_;
 }
 
-void JointSpaceServo::solveMotors(const Eigen::VectorXd& velocity_change, double dt) {
+void JointSpaceServo::solveMotors(double dt) {
   motors_.clear();
-  for (Eigen::Index i = 0; i < velocity_change.size(); ++i) {
+  for (Eigen::Index i = 0; i < motor_impulse_.size(); ++i) {
     if (motor_impulse_(i) > 0.0) motors_.push_back(i);
   }
   motor_torque_.setZero();
@@ -61,19 +62,19 @@ void JointSpaceServo::solveMotors(const Eigen::VectorXd& velocity_change, double
     factor_.compute(inverse_inertia_(motors_, motors_));
     factored_ = motors_;
   }
-  const Eigen::VectorXd unbounded = factor_.solve(velocity_change(motors_) / dt);
-  motor_torque_(motors_) = unbounded;
+  motor_solution_ = velocity_change_(motors_) / dt;
+  factor_.solveInPlace(motor_solution_);
+  motor_torque_(motors_) = motor_solution_;
   for (const auto i : motors_) {
-    if (std::abs(motor_torque_(i)) > motor_impulse_(i) / dt)
-      return boundMotors(velocity_change, dt);
+    if (std::abs(motor_torque_(i)) > motor_impulse_(i) / dt) return boundMotors(dt);
   }
 }
 
-void JointSpaceServo::boundMotors(const Eigen::VectorXd& velocity_change, double dt) {
+void JointSpaceServo::boundMotors(double dt) {
   for (int sweep = 0; sweep < kSweeps; ++sweep) {
     for (const auto i : motors_) {
       // M^-1 is symmetric: its column is its row, and contiguous.
-      const double residual = velocity_change(i) / dt - inverse_inertia_.col(i).dot(motor_torque_);
+      const double residual = velocity_change_(i) / dt - inverse_inertia_.col(i).dot(motor_torque_);
       const double cap = motor_impulse_(i) / dt;
       motor_torque_(i) =
           std::clamp(motor_torque_(i) + residual / inverse_inertia_(i, i), -cap, cap);

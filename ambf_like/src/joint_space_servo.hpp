@@ -25,15 +25,15 @@ class JointSpaceServo {
   /// Records one joint's request for the coming step.
   void request(int dof, const JointActuation& actuation);
   /// The torques for the coming step, given the joints' velocities now.
-  const Eigen::VectorXd& torques(const Eigen::VectorXd& velocity, double dt);
+  const Eigen::VectorXd& torques(const Eigen::Ref<const Eigen::VectorXd>& velocity, double dt);
   /// The joints' velocities once the step's free motion has been applied.
-  void observeFreeMotion(const Eigen::VectorXd& velocity);
+  void observeFreeMotion(const Eigen::Ref<const Eigen::VectorXd>& velocity);
   /// Torque given to `dof` for the last step (motor plus effort).
   double appliedTorque(int dof) const { return torque_(dof); }
 
  private:
-  void solveMotors(const Eigen::VectorXd& velocity_change, double dt);
-  void boundMotors(const Eigen::VectorXd& velocity_change, double dt);
+  void solveMotors(double dt);
+  void boundMotors(double dt);
 
   Eigen::MatrixXd inverse_inertia_;
   Eigen::VectorXd free_acceleration_;
@@ -45,6 +45,8 @@ class JointSpaceServo {
   std::vector<Eigen::Index> motors_;    ///< dofs with a motor on this step
   std::vector<Eigen::Index> factored_;  ///< the motors `factor_` is of
   Eigen::LLT<Eigen::MatrixXd> factor_;
+  Eigen::VectorXd motor_solution_;   ///< scratch: the motors' torques, unbounded
+  Eigen::VectorXd velocity_change_;  ///< what the motors must add to the coasting velocities
   Eigen::VectorXd velocity_before_;  ///< at the start of the step under way
   double step_ = 0.0;
 };

@@ -77,9 +77,7 @@ struct World::Impl {
   std::vector<std::unique_ptr<RigidBody>> bodies;
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
-  std::vector<btTypedConstraint*> constraints;  ///< of the maximal-coordinate joints
   std::vector<std::unique_ptr<detail::Articulation>> articulations;
-  std::vector<btRigidBody*> bodies_in_world;  ///< articulated links' bodies are mirrors, not in it
   std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
@@ -107,10 +105,15 @@ struct World::Impl {
   }
 
   ~Impl() {
-    for (auto* c : constraints) world.removeConstraint(c);
+    while (world.getNumConstraints() > 0) {
+      world.removeConstraint(world.getConstraint(world.getNumConstraints() - 1));
+    }
     articulations.clear();
     for (auto& s : soft_bodies) bullet.removeSoftBody(s->bullet());
-    for (auto* b : bodies_in_world) world.removeRigidBody(b);
+    for (auto& b : bodies) {
+      // An articulation's link bodies are mirrors that never entered the world.
+      if (b->bullet().getBroadphaseHandle()) world.removeRigidBody(&b->bullet());
+    }
   }
 
   /// True when `model` is to be simulated in reduced coordinates.
@@ -121,7 +124,6 @@ struct World::Impl {
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
   RigidBody& addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
                      MeshLibrary& meshes, Transform& com_in_body);
-  void addToWorld(RigidBody& body);
   void addConstraintJoints(const ModelSpec& model,
                            const std::map<std::string, detail::PlacedBody>& by_name);
   void addArticulation(const ModelSpec& model,
@@ -164,11 +166,6 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
   return *bodies.back();
 }
 
-void World::Impl::addToWorld(RigidBody& body) {
-  world.addRigidBody(&body.bullet());
-  bodies_in_world.push_back(&body.bullet());
-}
-
 void World::Impl::addJoint(const ModelSpec& model, const JointSpec& spec,
                            std::unique_ptr<detail::JointDynamics> dynamics) {
   auto named = std::make_unique<detail::NamedJoint>();
@@ -188,7 +185,6 @@ void World::Impl::addConstraintJoints(const ModelSpec& model,
     auto constraint =
         detail::makeConstraint(spec, parent.body->bullet(), child.body->bullet(), frames);
     world.addConstraint(constraint.get(), spec.ignore_inter_collision);
-    constraints.push_back(constraint.get());
     addJoint(model, spec,
              std::make_unique<detail::ConstraintJoint>(spec, std::move(constraint),
                                                        parent.body->bullet(), child.body->bullet(),
@@ -213,7 +209,7 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     auto& body = addBody(spec, model, model_index, meshes, com_in_body);
     by_name[spec.name] = {&body, com_in_body};
     // An articulation's links collide through their own colliders; their bodies are mirrors.
-    if (!articulate || body.isStatic()) addToWorld(body);
+    if (!articulate || body.isStatic()) world.addRigidBody(&body.bullet());
   }
   for (const auto& spec : model.soft_bodies) {
     SourceRef where = spec.where;
