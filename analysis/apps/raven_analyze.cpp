@@ -19,13 +19,17 @@ void printSummary(const analysis::TrialSet& set) {
     std::printf("%s %s: %s\n", issue.excluded ? "excluded" : "note    ",
                 issue.path.string().c_str(), issue.reason.c_str());
   }
-  std::printf("\nmean absolute joint-position difference (as recorded / first row removed)\n");
+  // The paper's summary figures (Fig. 7): joint positions j_P and joint velocities j_V.
+  std::printf("\nmean absolute difference    j_P as recorded / first row removed    j_V\n");
   for (const auto& c : analysis::comparisons(set)) {
     for (const auto& g : {analysis::revoluteJoints(), analysis::prismaticJoints()}) {
-      const double raw = analysis::groupFigure(c, g, analysis::Quantity::Position, false);
-      const double removed = analysis::groupFigure(c, g, analysis::Quantity::Position, true);
-      std::printf("  %-4s %-22s %-9s %9.4f / %9.4f %s\n", c.symbol().c_str(), c.describe().c_str(),
-                  g.name.c_str(), raw, removed, g.unit.c_str());
+      using analysis::Quantity;
+      const double raw = analysis::groupFigure(c, g, Quantity::Position, false);
+      const double removed = analysis::groupFigure(c, g, Quantity::Position, true);
+      const double velocity = analysis::groupFigure(c, g, Quantity::Velocity, false);
+      std::printf("  %-4s %-22s %-9s %9.4f / %9.4f %-3s  %9.4f %s/s\n", c.symbol().c_str(),
+                  c.describe().c_str(), g.name.c_str(), raw, removed, g.unit.c_str(), velocity,
+                  g.unit.c_str());
     }
   }
 }

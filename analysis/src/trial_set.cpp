@@ -33,6 +33,27 @@ std::vector<std::filesystem::path> expand(const std::vector<std::filesystem::pat
   return files;
 }
 
+/// Runs of NaN in a joint position column, e.g. "jpos2 rows 40-59"; empty when none is long.
+std::vector<std::string> nanRuns(const Trial& t) {
+  std::vector<std::string> runs;
+  for (std::size_t c = 0; c < kJointColumns; ++c) {
+    std::size_t start = 0, length = 0;
+    for (std::size_t r = 0; r <= t.rows(); ++r) {
+      if (r < t.rows() && std::isnan(t.position[r][c])) {
+        if (length++ == 0) start = r;
+        continue;
+      }
+      if (length >= kNanRunReported) {
+        runs.push_back(fmt::format("jpos{} rows {}-{}", c, start + 2, start + length + 1));
+      }
+      length = 0;
+    }
+  }
+  return runs;
+}
+
+}  // namespace
+
 Trial toTrial(const controller::RsRecording& rs, const PlatformProfile& profile) {
   Trial t;
   t.path = rs.path;
@@ -55,27 +76,6 @@ Trial toTrial(const controller::RsRecording& rs, const PlatformProfile& profile)
   }
   return t;
 }
-
-/// Runs of NaN in a joint position column, e.g. "jpos2 rows 40-59"; empty when none is long.
-std::vector<std::string> nanRuns(const Trial& t) {
-  std::vector<std::string> runs;
-  for (std::size_t c = 0; c < kJointColumns; ++c) {
-    std::size_t start = 0, length = 0;
-    for (std::size_t r = 0; r <= t.rows(); ++r) {
-      if (r < t.rows() && std::isnan(t.position[r][c])) {
-        if (length++ == 0) start = r;
-        continue;
-      }
-      if (length >= kNanRunReported) {
-        runs.push_back(fmt::format("jpos{} rows {}-{}", c, start + 2, start + length + 1));
-      }
-      length = 0;
-    }
-  }
-  return runs;
-}
-
-}  // namespace
 
 const PlatformTrials* TrialSet::find(const std::string& name) const {
   for (const auto& p : platforms) {

@@ -4,6 +4,7 @@
 #include <unsupported/Eigen/MatrixFunctions>
 
 #include "common/yaml_view.hpp"
+#include "yaml_joints.hpp"
 
 namespace bridge {
 
@@ -11,17 +12,6 @@ namespace {
 
 using raven::ArmJoints;
 using raven::kJointCount;
-
-ArmJoints readJoints(const common::YamlView& node, double minimum, bool strictly_above) {
-  const auto values = node.asDoubleList(kJointCount);
-  for (double v : values) {
-    if (strictly_above ? v <= minimum : v < minimum) {
-      node.fail(std::string("every value must be ") + (strictly_above ? "> " : ">= ") +
-                std::to_string(minimum));
-    }
-  }
-  return Eigen::Map<const ArmJoints>(values.data());
-}
 
 double readPositive(const common::YamlView& node) {
   const double v = node.asDouble();

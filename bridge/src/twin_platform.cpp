@@ -25,10 +25,16 @@ ambf_like::WorldOptions worldOptions(const ServoLimits& limits) {
 
 std::unique_ptr<Actuation> makeActuation(raven::TwinArms& arms, const DriveTrain& drive,
                                          const TwinOptions& options) {
+  std::unique_ptr<Actuation> actuation;
   if (options.stand_in) {
-    return std::make_unique<CableActuation>(arms, drive, *options.stand_in, options.limits.cycle);
+    actuation =
+        std::make_unique<CableActuation>(arms, drive, *options.stand_in, options.limits.cycle);
+  } else {
+    actuation = std::make_unique<IdealActuation>(arms, drive);
   }
-  return std::make_unique<IdealActuation>(arms, drive);
+  if (!options.tracking) return actuation;
+  return std::make_unique<TrackingActuation>(std::move(actuation), *options.tracking,
+                                             options.limits.cycle);
 }
 
 ambf_like::LoadedScene loadScene(const TwinOptions& options) {

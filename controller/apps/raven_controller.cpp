@@ -10,7 +10,9 @@
 #include <csignal>
 #include <map>
 #include <memory>
+#include <optional>
 
+#include "bridge/calibration_profile.hpp"
 #include "bridge/enable_and_home.hpp"
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_runtime.hpp"
@@ -31,6 +33,7 @@ struct Settings {
   std::string twin_ns = "/twin";
   std::string physical_ns;
   bool stand_in = false;
+  std::optional<bridge::CalibrationProfile> calibration;
   std::string twin_launch;
   bool lock_step = false;
   bool no_arm_swap = false;
@@ -76,6 +79,7 @@ Platforms makePlatforms(const Settings& s) {
     if (!s.twin_launch.empty()) o.launch_file = s.twin_launch;
     o.clock = s.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
     if (s.stand_in) o.stand_in = bridge::CableActuationParams::physicalStandIn();
+    if (s.calibration) o.tracking = s.calibration->tracking;
     p.twin = std::make_unique<bridge::TwinPlatform>(o);
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
@@ -137,6 +141,7 @@ int run(const Settings& s) {
                    : s.mapping == "m1-right" ? controller::MappingScheme::M1Right
                                              : controller::MappingScheme::M2;
   options.mapping.deadzone_reads_y_twice = s.paper_deadzone;
+  if (s.calibration) options.iteration_overhead = s.calibration->iteration_overhead;
   controller::DualPlatformController control(platforms.slots, options);
 
   std::unique_ptr<controller::SdlGamepad> pad;
@@ -228,6 +233,11 @@ int main(int argc, char** argv) {
   app.add_option("--physical-ns", s.physical_ns, "the physical robot's ROS namespace");
   app.add_flag("--no-arm-swap", s.no_arm_swap, "the robot publishes each arm on its own topic");
   app.add_flag("--stand-in", s.stand_in, "in-process twin with the physical stand-in actuation");
+  std::string calibration;
+  app.add_option("--calibration", calibration,
+                 "a profile fitted by raven_calibrate (YAML): the in-process twin's tracking "
+                 "response, and replays timed as the recording controller's iterations were")
+      ->check(CLI::ExistingFile);
   app.add_option("--twin-launch", s.twin_launch, "launch file of the twin's scene")
       ->check(CLI::ExistingFile);
   app.add_flag("--lock-step", s.lock_step,
@@ -263,6 +273,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, [](int) { interrupted = true; });
   std::signal(SIGTERM, [](int) { interrupted = true; });
   try {
+    if (!calibration.empty()) s.calibration = bridge::CalibrationProfile::load(calibration);
     return run(s);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());

@@ -25,6 +25,9 @@ DualPlatformController::DualPlatformController(std::vector<PlatformSlot> platfor
   if (!(options_.rate >= 1.0 && options_.rate <= 1000.0)) {
     throw std::invalid_argument("the command rate must be 1..1000 Hz (the robot's cycle is 1 ms)");
   }
+  if (!(options_.iteration_overhead >= 0.0 && options_.iteration_overhead <= 1.0)) {
+    throw std::invalid_argument("the iteration overhead must be within 0..1 s");
+  }
 }
 
 ArmPair DualPlatformController::measured(const PlatformSlot& slot) const {
@@ -78,12 +81,20 @@ IterationReport DualPlatformController::home() {
 }
 
 IterationReport DualPlatformController::manual(const GamepadState& pad) {
-  const MappingResult mapped = mapping_.apply(pad, measured(platforms_.front()));
+  const ArmPair now = measured(platforms_.front());
+  // A re-reads the pose: this iteration's move starts where the arms are, so a re-read alone
+  // sends no motion (servo_jr increments are taken from the re-read joints, as the released
+  // controller takes them).
+  if (pad.a) commanded_ = now;
+  const MappingResult mapped = mapping_.apply(pad, now);
   ArmPair next = mapped.joints;
   IterationReport clamp_report;
   clamp(next, clamp_report);
   IterationReport report = execute(next);
   report.clamped = mapped.clamped || clamp_report.clamped;
+  if (options_.iteration_overhead > 0.0) {
+    for (const PlatformSlot& slot : platforms_) slot.platform->advance(options_.iteration_overhead);
+  }
   return report;
 }
 

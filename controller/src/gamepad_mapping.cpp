@@ -1,6 +1,5 @@
 #include "controller/gamepad_mapping.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace controller {
@@ -59,6 +58,20 @@ void GamepadMapping::translate(Arm arm, double x, double y, bool bumper) {
   t.tool.translation() += step;
 }
 
+void GamepadMapping::turnWrist(Arm arm, double rx, double ry) {
+  ArmTarget& t = targets_[slot(arm)];
+  // An increment that would reach the joint's range is skipped, not clamped.
+  auto turn = [](double& joint, double increment, double range) {
+    if (std::abs(joint + increment) < range) joint += increment;
+  };
+  if (std::abs(rx) > constants_.deadzone) {
+    turn(t.roll, -rx / constants_.wrist_divisor, constants_.roll_range);
+  }
+  if (std::abs(ry) > constants_.deadzone) {
+    turn(t.wrist, ry / constants_.wrist_divisor, constants_.wrist_range);
+  }
+}
+
 bool GamepadMapping::solve(Arm arm, IkMode mode, MappingResult& result) {
   const ArmTarget t = targets_[slot(arm)];
   const auto& kin = kinematics_[slot(arm)];
@@ -106,30 +119,21 @@ MappingResult GamepadMapping::apply(const GamepadState& pad, const ArmPair& meas
 
   auto grasp = [&](double trigger) { return 1.0 - trigger / constants_.trigger_full; };
   MappingResult result;
-  IkMode mode = ik_mode_;
   if (scheme_ == MappingScheme::M2) {
     translate(Arm::Left, pad.left_x, pad.left_y, pad.left_bumper);
     translate(Arm::Right, pad.right_x, pad.right_y, pad.right_bumper);
     targets_[slot(Arm::Left)].grasp = grasp(pad.left_trigger);
     targets_[slot(Arm::Right)].grasp = grasp(pad.right_trigger);
+    for (Arm arm : raven::kArms) solve(arm, ik_mode_, result);
   } else {
     const Arm arm = scheme_ == MappingScheme::M1Left ? Arm::Left : Arm::Right;
     translate(arm, pad.left_x, pad.left_y, pad.left_bumper);
     targets_[slot(arm)].grasp = grasp(pad.right_trigger);
-    // The right stick turns joints 4 and 5 of both arms, as the released controller does.
-    for (ArmTarget& t : targets_) {
-      if (std::abs(pad.right_x) > constants_.deadzone) {
-        t.roll = std::clamp(t.roll - pad.right_x / constants_.wrist_divisor, -constants_.roll_range,
-                            constants_.roll_range);
-      }
-      if (std::abs(pad.right_y) > constants_.deadzone) {
-        t.wrist = std::clamp(t.wrist + pad.right_y / constants_.wrist_divisor,
-                             -constants_.wrist_range, constants_.wrist_range);
-      }
-    }
-    mode = IkMode::WristLocked;  // M1 always places the wrist point
+    turnWrist(arm, pad.right_x, pad.right_y);
+    // Only the selected arm is planned: the other arm's joints stay exactly as they were (its
+    // stored values, e.g. a wrist reset, take effect when it is next driven).
+    solve(arm, IkMode::WristLocked, result);  // M1 always places the wrist point
   }
-  for (Arm arm : raven::kArms) solve(arm, mode, result);
   result.joints = joints_;
   return result;
 }

@@ -92,12 +92,15 @@ std::size_t ControllerSession::stopRecording() {
 }
 
 void ControllerSession::record(const std::optional<GamepadState>& pad) {
-  if (!recording()) return;
+  if (!recording() && !options_.on_state) return;
   const auto& platforms = controller_.platforms();
   for (std::size_t i = 0; i < platforms.size(); ++i) {
-    if (const auto state = platforms[i].platform->ravenState()) rs_[i]->write(*state);
+    const auto state = platforms[i].platform->ravenState();
+    if (!state) continue;
+    if (options_.on_state) options_.on_state(i, *state);
+    if (recording()) rs_[i]->write(*state);
   }
-  if (pad) ci_->write(*pad);
+  if (pad && ci_) ci_->write(*pad);
 }
 
 void ControllerSession::report(const IterationReport& r) {

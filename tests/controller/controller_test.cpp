@@ -21,7 +21,7 @@ class CommandLog final : public bridge::RavenPlatform {
  public:
   explicit CommandLog(bridge::RavenPlatform& inner) : inner_(inner) {}
   bridge::CommandResult send(const bridge::PlatformCommand& c) override {
-    if (const auto* jr = std::get_if<bridge::ServoJr>(&c)) increments.push_back(jr->increment);
+    if (const auto* jr = std::get_if<bridge::ServoJr>(&c)) servo_jr.push_back(*jr);
     return inner_.send(c);
   }
   bridge::OperatingStatus operatingStatus() const override { return inner_.operatingStatus(); }
@@ -36,7 +36,7 @@ class CommandLog final : public bridge::RavenPlatform {
   double now() const override { return inner_.now(); }
   void advance(double s) override { inner_.advance(s); }
 
-  std::vector<ArmJoints> increments;
+  std::vector<bridge::ServoJr> servo_jr;
 
  private:
   bridge::RavenPlatform& inner_;
@@ -104,10 +104,10 @@ TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
           << q.transpose();
     }
   }
-  ASSERT_FALSE(log.increments.empty());
-  for (const auto& increment : log.increments) {
-    ASSERT_TRUE((increment.cwiseAbs().array() <= cap.array() * (1.0 + 1e-12)).all())
-        << increment.transpose();
+  ASSERT_FALSE(log.servo_jr.empty());
+  for (const auto& command : log.servo_jr) {
+    ASSERT_TRUE((command.increment.cwiseAbs().array() <= cap.array() * (1.0 + 1e-12)).all())
+        << command.increment.transpose();
   }
   for (Arm arm : raven::kArms) {  // the robot's own setpoints stayed inside too
     const ArmJoints q = twin->setpointJs(arm).position;
@@ -115,6 +115,42 @@ TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
                 (q.array() <= limits.high.array()).all());
   }
   EXPECT_GT(clamped, 0u) << "the adversarial pads should have hit a limit";
+}
+
+TEST(ControllerProperty, UnderM1NoCommandMovesTheOtherArm) {
+  for (Arm selected : raven::kArms) {
+    auto twin = test_support::readyTwin();
+    CommandLog log(*twin);
+    controller::ControllerOptions options;
+    options.scheme = selected == Arm::Left ? controller::MappingScheme::M1Left
+                                           : controller::MappingScheme::M1Right;
+    controller::DualPlatformController control({{"twin", &log, controller::CommandStyle::ServoJr}},
+                                               options);
+    const ArmJoints other_start = twin->setpointJs(raven::other(selected)).position;
+    std::mt19937_64 random(23);
+    GamepadState pad;
+    for (int i = 0; i < 150; ++i) {
+      if (i % 5 == 0) {
+        pad = randomPad(random, /*adversarial=*/i % 2 == 0);
+        // Every input but the one that would select the other arm (A's re-read included).
+        if (selected == Arm::Left)
+          pad.start = false;
+        else
+          pad.back = false;
+      }
+      ASSERT_EQ(control.manual(pad).refused, 0u);
+    }
+    std::size_t selected_moves = 0;
+    for (const auto& command : log.servo_jr) {
+      if (command.arm == selected) {
+        selected_moves += !command.increment.isZero();
+      } else {
+        ASSERT_TRUE(command.increment.isZero()) << command.increment.transpose();
+      }
+    }
+    EXPECT_GT(selected_moves, 0u);
+    EXPECT_EQ(twin->setpointJs(raven::other(selected)).position, other_start);
+  }
 }
 
 TEST(ControllerModes, O1HomesUnderTheCaps) {
@@ -149,8 +185,8 @@ TEST(ControllerModes, O5DancesEveryJointWithinTheCaps) {
   }
   EXPECT_GT(travelled.minCoeff(), 0.01) << "every joint moves: " << travelled.transpose();
   const ArmJoints cap = controller::VelocityCaps{}.perStep(control.period());
-  for (const auto& increment : log.increments) {
-    ASSERT_TRUE((increment.cwiseAbs().array() <= cap.array() * (1.0 + 1e-12)).all());
+  for (const auto& command : log.servo_jr) {
+    ASSERT_TRUE((command.increment.cwiseAbs().array() <= cap.array() * (1.0 + 1e-12)).all());
   }
 }
 

@@ -1,7 +1,11 @@
-// The paper's mappings against hand-computed cases: M2 and M1, the deadzone boundary, the IK
-// choice, the wrist resets, grasping, and the released controller's deadzone quirk.
+// The paper's mappings against hand-computed cases from the reference's rules
+// (../shared/reference/dual-platform-controller.md), each rule its own test: M2 and M1, the
+// deadzone boundary, the IK choice, the wrist resets, grasping, the released controller's deadzone
+// quirk; and a property test: under M1 no pad sequence ever changes the other arm's target.
 
 #include <gtest/gtest.h>
+
+#include <random>
 
 #include "controller/gamepad_mapping.hpp"
 #include "twin_fixtures.hpp"
@@ -124,46 +128,193 @@ TEST(Mapping, SchemeSelectionIsLevelTriggered) {
   EXPECT_EQ(m.scheme(), MappingScheme::M2);
 }
 
-TEST(Mapping, M1DrivesOneArmAndTurnsBothWristsWithTheRightStick) {
+/// The firmware's home with `arm`'s joint `joint` at `value`.
+ArmPair homeWith(Arm arm, int joint, double value) {
+  ArmPair q = home();
+  q[static_cast<std::size_t>(raven::index(arm))](joint) = value;
+  return q;
+}
+
+MappingScheme m1(Arm arm) {
+  return arm == Arm::Left ? MappingScheme::M1Left : MappingScheme::M1Right;
+}
+
+TEST(MappingM1, TheLeftStickMovesTheSelectedArmOnlyAndZWithTheLeftBumper) {
+  for (Arm arm : raven::kArms) {
+    GamepadMapping m(test_support::physicalProfile(), m1(arm), home());
+    const Arm other = raven::other(arm);
+    GamepadState pad;
+    pad.left_x = -0.4;  // -0.2 mm in x
+    pad.left_y = 0.6;   // -0.3 mm in y
+    EXPECT_LT((wristStep(m, pad, arm) - Eigen::Vector3d(-0.0002, -0.0003, 0)).norm(), 1e-12);
+    pad.left_bumper = true;  // now z: -y / 2000
+    EXPECT_LT((wristStep(m, pad, arm) - Eigen::Vector3d(0, 0, -0.0003)).norm(), 1e-12);
+    pad = {};
+    pad.right_bumper = true;  // M1 has no use for RB
+    pad.left_y = -1.0;
+    EXPECT_EQ(wristStep(m, pad, other).norm(), 0.0) << "the other arm never moves";
+  }
+}
+
+TEST(MappingM1, TheRightTriggerGraspsWithTheSelectedArmAndTheLeftTriggerIsIgnored) {
   GamepadMapping m(test_support::physicalProfile(), MappingScheme::M1Right, home());
   GamepadState pad;
-  pad.left_x = -0.4;        // the right arm: -0.2 mm in x
-  pad.right_x = 0.5;        // joint 4 of BOTH arms: -0.5 / 10 = -0.05 rad
-  pad.right_y = 0.14;       // per-axis deadzone: ignored
-  pad.right_trigger = 1.0;  // the right arm's grasp: 0.75
-  pad.left_trigger = 4.0;   // M1 ignores it
-  const auto before = m.targets();
+  pad.right_trigger = 1.0;  // grasp = 1 - 1/4
+  pad.left_trigger = 4.0;
   const auto q = m.apply(pad, home()).joints;
-  EXPECT_LT((wristPoint(Arm::Right, q[1]) - wristPoint(Arm::Right, before[1]) -
-             Eigen::Vector3d(-0.0002, 0, 0))
+  EXPECT_NEAR(q[1](raven::kJaw1) + q[1](raven::kJaw2), 0.75, 1e-15);
+  EXPECT_EQ(q[0], home()[0]) << "left grasp kept, bit for bit";
+}
+
+TEST(MappingM1, TheRightStickTurnsJoints4And5OfTheSelectedArmOnly) {
+  for (Arm arm : raven::kArms) {
+    GamepadMapping m(test_support::physicalProfile(), m1(arm), home());
+    const auto a = static_cast<std::size_t>(raven::index(arm));
+    GamepadState pad;
+    pad.right_x = 0.5;  // joint 4: -0.5 / 10
+    pad.right_y = 0.3;  // joint 5: +0.3 / 10
+    const auto q = m.apply(pad, home()).joints;
+    EXPECT_NEAR(q[a](raven::kRoll), -0.05, 1e-15);
+    EXPECT_NEAR(q[a](raven::kWrist), 0.03, 1e-15);
+    EXPECT_EQ(q[1 - a], home()[1 - a]) << "the other arm's wrist never moves under M1";
+  }
+}
+
+TEST(MappingM1, EachWristAxisHasItsOwnDeadzone) {
+  GamepadMapping m(test_support::physicalProfile(), MappingScheme::M1Left, home());
+  GamepadState pad;
+  pad.right_x = 0.15;  // on the boundary: inside (|v| > 0.15 moves)
+  pad.right_y = 0.14;  // radially 0.205, but each axis is tested alone
+  auto q = m.apply(pad, home()).joints;
+  EXPECT_EQ(q[0](raven::kRoll), 0.0);
+  EXPECT_EQ(q[0](raven::kWrist), 0.0);
+  pad.right_x = 0.1501;
+  q = m.apply(pad, home()).joints;
+  EXPECT_NEAR(q[0](raven::kRoll), -0.01501, 1e-15);
+  EXPECT_EQ(q[0](raven::kWrist), 0.0);
+}
+
+TEST(MappingM1, ARollIncrementReachingPiIsSkippedNotClamped) {
+  GamepadMapping m(test_support::physicalProfile(), MappingScheme::M1Left,
+                   homeWith(Arm::Left, raven::kRoll, 3.1));
+  GamepadState pad;
+  pad.right_x = -1.0;  // +0.1: 3.2 is beyond pi, skipped
+  EXPECT_EQ(m.apply(pad, home()).joints[0](raven::kRoll), 3.1);
+  pad.right_x = -0.3;  // +0.03: 3.13 < pi, taken
+  EXPECT_NEAR(m.apply(pad, home()).joints[0](raven::kRoll), 3.13, 1e-15);
+  pad.right_x = -0.2;  // +0.02: 3.15 > pi, skipped (a clamp would give pi)
+  EXPECT_NEAR(m.apply(pad, home()).joints[0](raven::kRoll), 3.13, 1e-15);
+  GamepadMapping n(test_support::physicalProfile(), MappingScheme::M1Right,
+                   homeWith(Arm::Right, raven::kRoll, -M_PI + 0.04));
+  pad.right_x = 0.5;  // -0.05: beyond -pi, skipped on the negative side too
+  EXPECT_EQ(n.apply(pad, home()).joints[1](raven::kRoll), -M_PI + 0.04);
+}
+
+TEST(MappingM1, AWristIncrementReachingHalfPiIsSkippedNotClamped) {
+  GamepadMapping m(test_support::physicalProfile(), MappingScheme::M1Left,
+                   homeWith(Arm::Left, raven::kWrist, 1.5));
+  GamepadState pad;
+  pad.right_y = 1.0;  // +0.1: 1.6 > pi/2, skipped
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(m.apply(pad, home()).joints[0](raven::kWrist), 1.5);
+  pad.right_y = 0.5;  // +0.05: 1.55, taken
+  EXPECT_NEAR(m.apply(pad, home()).joints[0](raven::kWrist), 1.55, 1e-15);
+  pad.right_y = -1.0;  // and back down by 0.1
+  EXPECT_NEAR(m.apply(pad, home()).joints[0](raven::kWrist), 1.45, 1e-15);
+}
+
+TEST(MappingM1, AlwaysPlacesTheWristPointEvenInFullIkMode) {
+  GamepadMapping m(test_support::physicalProfile(), MappingScheme::M1Left, home());
+  GamepadState b;
+  b.b = true;
+  m.apply(b, home());
+  EXPECT_EQ(m.ikMode(), controller::IkMode::Full);
+  GamepadState push;
+  push.left_x = 1.0;
+  push.right_x = 1.0;  // the roll turns: a full IK would have kept the tool's orientation
+  const auto q = m.apply(push, home()).joints;
+  EXPECT_NEAR(q[0](raven::kRoll), -0.1, 1e-15);
+  EXPECT_LT((wristPoint(Arm::Left, q[0]) - wristPoint(Arm::Left, home()[0]) -
+             Eigen::Vector3d(0.0005, 0, 0))
                 .norm(),
             1e-12);
-  EXPECT_LT((wristPoint(Arm::Left, q[0]) - wristPoint(Arm::Left, before[0])).norm(), 1e-12);
-  for (const auto& arm : q) {
-    EXPECT_NEAR(arm(raven::kRoll), -0.05, 1e-15);
-    EXPECT_EQ(arm(raven::kWrist), 0.0);
-  }
-  EXPECT_NEAR(q[1](raven::kJaw1) + q[1](raven::kJaw2), 0.75, 1e-15);
-  EXPECT_NEAR(q[0](raven::kJaw1) + q[0](raven::kJaw2), M_PI / 2, 1e-15) << "left grasp kept";
-  // Joint 5 follows +RY / 10 once past the deadzone, and stops at +-pi/2.
-  pad = {};
-  pad.right_y = 1.0;
-  for (int i = 0; i < 30; ++i) m.apply(pad, home());
-  EXPECT_DOUBLE_EQ(m.targets()[0](raven::kWrist), M_PI / 2);
 }
 
 TEST(Mapping, XAndYResetTheWristsToHome) {
-  GamepadMapping m(test_support::physicalProfile(), MappingScheme::M1Left, home());
+  const auto& profile = test_support::physicalProfile();
+  GamepadMapping m(profile, MappingScheme::M1Left, home());
   GamepadState turn;
   turn.right_x = 1.0;
   turn.right_y = 1.0;
-  m.apply(turn, home());
+  EXPECT_NEAR(m.apply(turn, home()).joints[0](raven::kRoll), -0.1, 1e-15);
   GamepadState reset_left;
   reset_left.x = true;
   const auto q = m.apply(reset_left, home()).joints;
-  EXPECT_EQ(q[0](raven::kRoll), test_support::physicalProfile().home(raven::kRoll));
-  EXPECT_EQ(q[0](raven::kWrist), test_support::physicalProfile().home(raven::kWrist));
-  EXPECT_NEAR(q[1](raven::kRoll), -0.1, 1e-15) << "the right arm is not reset by X";
+  EXPECT_EQ(q[0](raven::kRoll), profile.home(raven::kRoll));
+  EXPECT_EQ(q[0](raven::kWrist), profile.home(raven::kWrist));
+}
+
+TEST(Mapping, AWristResetWaitsUntilItsArmIsDriven) {
+  const auto& profile = test_support::physicalProfile();
+  GamepadMapping m(profile, MappingScheme::M1Right, home());
+  GamepadState turn;
+  turn.right_x = 1.0;
+  const ArmJoints turned = m.apply(turn, home()).joints[1];
+  GamepadState y_under_m1_left;
+  y_under_m1_left.back = true;  // M1 left
+  y_under_m1_left.y = true;     // reset the right wrist
+  EXPECT_EQ(m.apply(y_under_m1_left, home()).joints[1], turned) << "the right arm is not driven";
+  GamepadState m2;
+  m2.back = m2.start = true;
+  const auto q = m.apply(m2, home()).joints;
+  EXPECT_EQ(q[1](raven::kRoll), profile.home(raven::kRoll)) << "applied once the arm is driven";
+  EXPECT_EQ(q[1](raven::kWrist), profile.home(raven::kWrist));
+}
+
+/// Random pads of every kind except the button selecting the other arm (Start under M1-left,
+/// Back under M1-right), some saturated, each held for a few iterations.
+GamepadState randomM1Pad(std::mt19937_64& random, Arm selected) {
+  std::uniform_real_distribution<double> axis(-1.0, 1.0), trigger(0.0, 3.996);
+  std::bernoulli_distribution coin(0.3);
+  auto stick = [&] { return coin(random) ? (coin(random) ? 1.0 : -1.0) : axis(random); };
+  GamepadState p;
+  p.left_x = stick();
+  p.left_y = stick();
+  p.right_x = stick();
+  p.right_y = stick();
+  p.left_trigger = trigger(random);
+  p.right_trigger = trigger(random);
+  p.left_bumper = coin(random);
+  p.right_bumper = coin(random);
+  p.a = coin(random);
+  p.b = coin(random);
+  p.x = coin(random);
+  p.y = coin(random);
+  (selected == Arm::Left ? p.back : p.start) = coin(random);
+  return p;
+}
+
+TEST(MappingM1Property, NoPadSequenceUnderM1EverChangesTheOtherArmsTarget) {
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> offset(-0.3, 0.3);
+  for (Arm selected : raven::kArms) {
+    const auto other = static_cast<std::size_t>(1 - raven::index(selected));
+    for (int sequence = 0; sequence < 20; ++sequence) {
+      ArmPair start = home();  // both arms anywhere near home, wrists off home too
+      for (auto& q : start) {
+        for (int j : {raven::kShoulder, raven::kElbow, raven::kRoll, raven::kWrist}) {
+          q(j) += offset(random);
+        }
+      }
+      GamepadMapping m(test_support::physicalProfile(), m1(selected), start);
+      GamepadState pad;
+      for (int i = 0; i < 200; ++i) {
+        if (i % 7 == 0) pad = randomM1Pad(random, selected);
+        // A re-reads the pose: a settled arm reports what it was commanded.
+        const auto q = m.apply(pad, m.targets()).joints;
+        ASSERT_EQ(q[other], start[other]) << "sequence " << sequence << ", iteration " << i;
+      }
+    }
+  }
 }
 
 TEST(Mapping, ARereadsThePoseAndBSwitchesToFullIkKeepingTheToolOrientation) {

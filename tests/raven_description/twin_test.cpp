@@ -113,7 +113,7 @@ TEST(Twin, SettledPosesMatchTheKinematicsWithinATenthOfAMillimetre) {
   std::mt19937_64 random(2024);
   const auto& limits = test_support::physicalProfile().limits;
   for (Arm arm : raven::kArms) {
-    const Arm other = arm == Arm::Left ? Arm::Right : Arm::Left;
+    const Arm other = raven::other(arm);
     const auto kin = raven::ArmKinematics::of(test_support::physicalProfile(), arm);
     double worst_wrist = 0.0, worst_tool = 0.0;
     std::size_t contacts = 0;

@@ -14,6 +14,7 @@
 #include "bridge/drive_train.hpp"
 #include "bridge/raven_core.hpp"
 #include "bridge/raven_platform.hpp"
+#include "bridge/tracking_response.hpp"
 #include "bridge/wall_pacer.hpp"
 #include "raven/twin_arms.hpp"
 
@@ -35,6 +36,8 @@ struct TwinOptions {
   ClockKind clock = ClockKind::Simulated;
   /// Set: the physical stand-in's actuation model; unset: the twin's ideal servos.
   std::optional<CableActuationParams> stand_in;
+  /// Set: the robot's tracking response (a calibration) in front of either actuation.
+  std::optional<TrackingParams> tracking;
   ServoLimits limits;
 };
 

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 
+#include "bridge/calibration_profile.hpp"
 #include "bridge/ros/raven_ros_server.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "bridge/twin_platform.hpp"
@@ -30,6 +31,10 @@ int main(int argc, char** argv) {
                  "run as the physical stand-in: actuation model parameters (default: "
                  "bridge/config/physical_stand_in.yaml)")
       ->expected(0, 1);
+  std::string calibration;
+  app.add_option("--calibration", calibration,
+                 "a tracking response fitted by raven_calibrate (YAML), in front of the actuation")
+      ->check(CLI::ExistingFile);
   std::optional<double> noise;
   app.add_option("--encoder-noise", noise, "stand-in encoder noise, counts (standard deviation)")
       ->check(CLI::NonNegativeNumber);
@@ -55,6 +60,8 @@ int main(int argc, char** argv) {
                                         : bridge::CableActuationParams::load(*stand_in);
       if (noise) twin.stand_in->encoder_noise_counts = *noise;
     }
+    if (!calibration.empty())
+      twin.tracking = bridge::CalibrationProfile::load(calibration).tracking;
     server.arm_swap = !no_arm_swap;
     bridge::TwinPlatform platform(twin);
     bridge::ros1::RavenRosServer ros_server(platform, "", server);

@@ -33,6 +33,10 @@ struct ControllerOptions {
   MappingScheme scheme = MappingScheme::M2;
   VelocityCaps caps;
   MappingConstants mapping;
+  /// Platform time each manual-loop iteration takes besides its command steps: 0 for this
+  /// controller; the paper's released controller took 1 ms (its recordings' rows are 2 ms per
+  /// step + 1 ms apart), which replays of its recordings reproduce (raven_calibrate measures it).
+  double iteration_overhead = 0.0;
 };
 
 /// What one iteration did.

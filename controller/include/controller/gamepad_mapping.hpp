@@ -24,8 +24,8 @@ struct MappingConstants {
   double divisor = 2000.0;          ///< stick value / divisor = metres per loop (0.5 mm at most)
   double trigger_full = 4.0;        ///< grasp = 1 - trigger / trigger_full
   double wrist_divisor = 10.0;      ///< M1: rad per loop = stick / wrist_divisor
-  double roll_range = M_PI;         ///< M1 keeps the roll within +-roll_range
-  double wrist_range = M_PI / 2.0;  ///< and the wrist within +-wrist_range
+  double roll_range = M_PI;         ///< M1 skips a roll increment reaching +-roll_range
+  double wrist_range = M_PI / 2.0;  ///< and a wrist increment reaching +-wrist_range
   /// The released controller's radial test, as its recordings show it: sqrt(y^2 + y^2) > 0.15,
   /// so a stick pushed nearly sideways (|y| < 0.106) moves nothing. Off: the documented
   /// sqrt(x^2 + y^2). On to replay the paper's recordings faithfully.
@@ -77,6 +77,9 @@ class GamepadMapping {
   void selectScheme(const GamepadState& pad);
   /// Moves `arm`'s target by the stick (x, y), or along z when `bumper` is held.
   void translate(Arm arm, double x, double y, bool bumper);
+  /// M1's right stick on the selected arm: joint 4 by -rx / wrist_divisor, joint 5 by
+  /// +ry / wrist_divisor, each past its own deadzone; a step reaching the range is skipped.
+  void turnWrist(Arm arm, double rx, double ry);
   /// Solves `arm`'s joints for its targets; false if unreachable.
   bool solve(Arm arm, IkMode mode, MappingResult& result);
 

@@ -3,6 +3,7 @@
 // live pad, replayed inputs or joints), and the recorder.
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,9 @@ struct SessionOptions {
   double replay_delay = 1.0;  ///< O3 waits this long after loading (s of platform time)
   /// After O3 or O4 reach the end of their file the session ends (else it idles).
   bool end_after_replay = false;
+  /// Called with each platform's state (its index in the controller's platforms) at every
+  /// iteration a recording would write a row for, whether or not files are being written.
+  std::function<void(std::size_t, const bridge::RavenStateSnapshot&)> on_state;
 };
 
 /// One controller session: modes, inputs and recordings.

@@ -24,6 +24,9 @@ inline constexpr std::array<std::string_view, kJointCount> kJointNames{
 inline int index(Arm arm) {
   return static_cast<int>(arm);
 }
+inline Arm other(Arm arm) {
+  return arm == Arm::Left ? Arm::Right : Arm::Left;
+}
 inline std::string_view armName(Arm arm) {
   return arm == Arm::Left ? "left" : "right";
 }

@@ -1,0 +1,24 @@
+#pragma once
+// Reading per-joint value lists from bridge configuration files, with file/line/key errors.
+
+#include <string>
+
+#include "common/yaml_view.hpp"
+#include "raven/arm.hpp"
+
+namespace bridge {
+
+/// A list of exactly 7 numbers, each >= `minimum` (> `minimum` when `strictly_above`).
+inline raven::ArmJoints readJoints(const common::YamlView& node, double minimum,
+                                   bool strictly_above) {
+  const auto values = node.asDoubleList(raven::kJointCount);
+  for (double v : values) {
+    if (strictly_above ? v <= minimum : v < minimum) {
+      node.fail(std::string("every value must be ") + (strictly_above ? "> " : ">= ") +
+                std::to_string(minimum));
+    }
+  }
+  return Eigen::Map<const raven::ArmJoints>(values.data());
+}
+
+}  // namespace bridge

@@ -1,0 +1,26 @@
+#pragma once
+// Writes the calibration profile raven_calibrate produces: the fitted tracking response, the
+// recording controller's measured iteration overhead, and a `fit` section saying what it was
+// fitted on and how well it did (--calibration on raven_controller and raven_twin_node).
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "bridge/calibration_profile.hpp"
+
+namespace calibration {
+
+/// Provenance written beside the parameters (free text lines, one per entry).
+struct FitProvenance {
+  std::string inputs;                 ///< the ci file
+  std::vector<std::string> physical;  ///< the physical trials fitted on
+  std::vector<std::string> notes;     ///< scores, options, stop reason
+};
+
+/// Writes `profile` and `provenance` as YAML (bridge::CalibrationProfile::load reads it back);
+/// throws std::runtime_error when it cannot.
+void writeCalibration(const std::filesystem::path& file, const bridge::CalibrationProfile& profile,
+                      const FitProvenance& provenance);
+
+}  // namespace calibration

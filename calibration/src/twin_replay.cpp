@@ -1,0 +1,41 @@
+#include "calibration/twin_replay.hpp"
+
+#include "bridge/enable_and_home.hpp"
+#include "controller/recording_format.hpp"
+#include "controller/session.hpp"
+
+namespace calibration {
+
+analysis::Trial replayOnTwin(const ReplaySetup& setup,
+                             const std::optional<bridge::TrackingParams>& tracking) {
+  bridge::TwinOptions twin_options = setup.twin;
+  twin_options.clock = bridge::ClockKind::Simulated;
+  twin_options.tracking = tracking;
+  bridge::TwinPlatform twin(twin_options);
+  bridge::enableAndHome(twin, 30.0);
+  controller::DualPlatformController control({{"twin", &twin, controller::CommandStyle::ServoJr}},
+                                             setup.controller);
+
+  controller::RsRecording rs;
+  rs.path = "twin replay";
+  rs.names = controller::rsColumnNames();
+  double t0 = 0.0;
+  controller::SessionOptions options;
+  options.replay_delay = setup.replay_delay;
+  options.end_after_replay = true;
+  options.on_state = [&](std::size_t, const bridge::RavenStateSnapshot& state) {
+    if (rs.rows.empty()) t0 = state.time;
+    rs.rows.push_back(controller::rsRow(state, t0));
+  };
+  controller::SessionInputs inputs;
+  inputs.inputs = setup.inputs;
+  controller::ControllerSession session(control, std::move(inputs), options);
+  session.select(controller::Mode::ReplayInputs);
+  while (session.turn()) {
+  }
+  analysis::PlatformProfile twin_profile;  // the twin records in the robot's convention
+  twin_profile.name = "twin";
+  return analysis::toTrial(rs, twin_profile);
+}
+
+}  // namespace calibration
