@@ -10,9 +10,9 @@ CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
   std::vector<common::LoadIssue> warnings;
   root.checkKeys({"tracking", "replay", "fit"}, {true, warnings});
   const auto node = root["tracking"];
-  node.checkKeys(
-      {"latency_cycles", "bandwidth_hz", "damping_ratio", "max_velocity", "max_acceleration"},
-      {true, warnings});
+  node.checkKeys({"latency_cycles", "bandwidth_hz", "damping_ratio", "friction_deadband",
+                  "max_velocity", "max_acceleration"},
+                 {true, warnings});
   const auto replay = root.find("replay");
   if (replay) replay->checkKeys({"iteration_overhead"}, {true, warnings});
   if (!warnings.empty()) throw common::LoadError(warnings);
@@ -26,6 +26,7 @@ CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
   }
   t.bandwidth_hz = readJoints(node["bandwidth_hz"], 0.0, true);
   t.damping_ratio = readJoints(node["damping_ratio"], 0.0, true);
+  if (auto f = node.find("friction_deadband")) t.friction_deadband = readJoints(*f, 0.0, false);
   if (auto v = node.find("max_velocity")) t.max_velocity = readJoints(*v, 0.0, true);
   if (auto a = node.find("max_acceleration")) t.max_acceleration = readJoints(*a, 0.0, true);
   if (replay) {

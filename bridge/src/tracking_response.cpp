@@ -24,6 +24,18 @@ std::string checkJoints(const char* field, const ArmJoints& values, bool infinit
   return {};
 }
 
+/// "friction_deadband[2] (insertion) must be finite and >= 0, not -1", or empty.
+std::string checkNonNegative(const char* field, const ArmJoints& values) {
+  for (int j = 0; j < raven::kJointCount; ++j) {
+    if (!(values(j) >= 0.0 && std::isfinite(values(j)))) {
+      return std::string(field) + "[" + std::to_string(j) + "] (" +
+             std::string(raven::kJointNames[static_cast<std::size_t>(j)]) +
+             ") must be finite and >= 0, not " + std::to_string(values(j));
+    }
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string TrackingParams::invalidReason() const {
@@ -33,6 +45,7 @@ std::string TrackingParams::invalidReason() const {
   }
   for (const auto& reason : {checkJoints("bandwidth_hz", bandwidth_hz, true),
                              checkJoints("damping_ratio", damping_ratio, false),
+                             checkNonNegative("friction_deadband", friction_deadband),
                              checkJoints("max_velocity", max_velocity, true),
                              checkJoints("max_acceleration", max_acceleration, true)}) {
     if (!reason.empty()) return reason;
@@ -65,11 +78,24 @@ void TrackingActuation::respond(ArmState& s, const ArmJoints& reference) const {
     if (std::isinf(params_.bandwidth_hz(j))) {
       v = (reference(j) - s.position(j)) / dt;
     } else {
-      // Backward Euler on x'' = w^2 (r - x) - 2 zeta w x': stable at any bandwidth.
+      // Backward Euler on x'' = w^2 (r - x) - 2 zeta w x' - f sign(x'): stable at any bandwidth.
       const double w = 2.0 * M_PI * params_.bandwidth_hz(j);
       const double zeta = params_.damping_ratio(j);
-      v = (s.velocity(j) + dt * w * w * (reference(j) - s.position(j))) /
-          (1.0 + 2.0 * zeta * w * dt + w * w * dt * dt);
+      const double drive = w * w * (reference(j) - s.position(j));
+      const double friction = params_.friction_deadband(j) * w * w;
+      const double was = s.velocity(j);
+      if (was == 0.0 && std::abs(drive) <= friction) {
+        v = 0.0;  // stuck: the servo's pull does not overcome static friction
+      } else {
+        const double direction = was != 0.0 ? std::copysign(1.0, was) : std::copysign(1.0, drive);
+        v = (was + dt * (drive - friction * direction)) /
+            (1.0 + 2.0 * zeta * w * dt + w * w * dt * dt);
+        // Friction stops the joint (it never reverses it), and holds it once it could bring it
+        // to rest within the cycle while the servo's pull is at breakaway (the slide approaches
+        // it only asymptotically: within 0.1 %).
+        const bool stops = std::abs(v) < friction * dt && std::abs(drive) <= 1.001 * friction;
+        if (v * direction < 0.0 || stops) v = 0.0;
+      }
     }
     const double dv = params_.max_acceleration(j) * dt;
     v = std::clamp(v, s.velocity(j) - dv, s.velocity(j) + dv);

@@ -1,6 +1,7 @@
 #pragma once
 // Reading per-joint value lists from bridge configuration files, with file/line/key errors.
 
+#include <sstream>
 #include <string>
 
 #include "common/yaml_view.hpp"
@@ -14,8 +15,10 @@ inline raven::ArmJoints readJoints(const common::YamlView& node, double minimum,
   const auto values = node.asDoubleList(raven::kJointCount);
   for (double v : values) {
     if (strictly_above ? v <= minimum : v < minimum) {
+      std::ostringstream bound;
+      bound << minimum;
       node.fail(std::string("every value must be ") + (strictly_above ? "> " : ">= ") +
-                std::to_string(minimum));
+                bound.str());
     }
   }
   return Eigen::Map<const raven::ArmJoints>(values.data());

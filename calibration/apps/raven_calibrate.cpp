@@ -31,7 +31,7 @@ struct Settings {
   std::string mapping = "m2";
   double rate = 500.0;
   int man_steps = 10;
-  int max_evaluations = 150;
+  int max_evaluations = 200;
   int threads = 2;
   bool leave_one_out = true;
 };
@@ -41,9 +41,7 @@ calibration::ReplaySetup replaySetup(const Settings& s) {
   setup.inputs = controller::readCi(s.ci);
   setup.controller.rate = s.rate;
   setup.controller.caps.min_steps = s.man_steps;
-  setup.controller.scheme = s.mapping == "m1-left"    ? controller::MappingScheme::M1Left
-                            : s.mapping == "m1-right" ? controller::MappingScheme::M1Right
-                                                      : controller::MappingScheme::M2;
+  setup.controller.scheme = controller::mappingSchemeNamed(s.mapping);
   setup.controller.mapping.deadzone_reads_y_twice = s.paper_deadzone;
   if (s.stand_in) setup.twin.stand_in = bridge::CableActuationParams::physicalStandIn();
   return setup;
@@ -156,7 +154,7 @@ int run(const Settings& s) {
       f.fit = calibration::fitTracking(
           setup, f.train, scaleFor(f.train), fit_options, [&](int n, double score) {
             if (n % 25 == 0) {
-              spdlog::info("{}: {} replays, score {:.4f}", f.name, n, score);
+              std::fprintf(stderr, "  %s: %d replays, score %.4f\n", f.name.c_str(), n, score);
             }
           });
       if (!f.test.trials.empty()) {
@@ -164,8 +162,8 @@ int run(const Settings& s) {
             calibration::twinVsPhysical(calibration::replayOnTwin(setup, f.fit.tracking), f.test);
         f.held_out_before = calibration::twinVsPhysical(before, f.test);
       }
-      spdlog::info("{}: score {:.4f} after {} replays ({})", f.name, f.fit.score, f.fit.evaluations,
-                   f.fit.stop_reason);
+      std::fprintf(stderr, "  %s: score %.4f after %d replays (%s)\n", f.name.c_str(), f.fit.score,
+                   f.fit.evaluations, f.fit.stop_reason.c_str());
     }
   };
   std::vector<std::thread> pool;
@@ -264,7 +262,10 @@ int main(int argc, char** argv) {
   app.add_option("--threads", s.threads, "fits run in parallel (one per core)")
       ->check(CLI::Range(1, 64));
   app.add_flag("!--no-leave-one-out", s.leave_one_out, "fit on every trial only");
+  bool verbose = false;
+  app.add_flag("-v,--verbose", verbose, "log every replay's mode changes");
   CLI11_PARSE(app, argc, argv);
+  spdlog::set_level(verbose ? spdlog::level::info : spdlog::level::warn);
   try {
     return run(s);
   } catch (const std::exception& e) {

@@ -26,6 +26,8 @@ void writeCalibration(const std::filesystem::path& file, const bridge::Calibrati
   out << YAML::Key << "bandwidth_hz" << YAML::Value << YAML::Flow << listOf(tracking.bandwidth_hz);
   out << YAML::Key << "damping_ratio" << YAML::Value << YAML::Flow
       << listOf(tracking.damping_ratio);
+  out << YAML::Key << "friction_deadband" << YAML::Value << YAML::Flow
+      << listOf(tracking.friction_deadband);
   out << YAML::EndMap;
   out << YAML::Key << "replay" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "iteration_overhead" << YAML::Value << profile.iteration_overhead;

@@ -50,6 +50,8 @@ const std::vector<Parameter>& trackingParameters() {
     for (const auto& [name, joints] : driveGroups()) {
       list.push_back({name + " bandwidth_hz", 0.5, 200.0, 20.0, true});
       list.push_back({name + " damping_ratio", 0.2, 4.0, 1.0, true});
+      const double deadband = name == "insertion" ? 0.002 : 0.02;  // m, rad
+      list.push_back({name + " friction_deadband", 0.0, deadband, 0.0, false});
     }
     return list;
   }();
@@ -68,8 +70,9 @@ bridge::TrackingParams toTracking(const std::vector<double>& values) {
     for (int j : joints) {
       t.bandwidth_hz(j) = values[next];
       t.damping_ratio(j) = values[next + 1];
+      t.friction_deadband(j) = values[next + 2];
     }
-    next += 2;
+    next += 3;
   }
   return t;
 }

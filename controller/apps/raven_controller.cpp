@@ -137,9 +137,7 @@ int run(const Settings& s) {
   controller::ControllerOptions options;
   options.rate = s.rate;
   options.caps.min_steps = s.man_steps;
-  options.scheme = s.mapping == "m1-left"    ? controller::MappingScheme::M1Left
-                   : s.mapping == "m1-right" ? controller::MappingScheme::M1Right
-                                             : controller::MappingScheme::M2;
+  options.scheme = controller::mappingSchemeNamed(s.mapping);
   options.mapping.deadzone_reads_y_twice = s.paper_deadzone;
   if (s.calibration) options.iteration_overhead = s.calibration->iteration_overhead;
   controller::DualPlatformController control(platforms.slots, options);

@@ -1,8 +1,18 @@
 #include "controller/gamepad_mapping.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace controller {
+
+MappingScheme mappingSchemeNamed(std::string_view name) {
+  if (name == "m2") return MappingScheme::M2;
+  if (name == "m1-left") return MappingScheme::M1Left;
+  if (name == "m1-right") return MappingScheme::M1Right;
+  throw std::invalid_argument("unknown mapping scheme '" + std::string(name) +
+                              "' (m2, m1-left or m1-right)");
+}
 
 GamepadMapping::GamepadMapping(const raven::PlatformProfile& profile, MappingScheme scheme,
                                const ArmPair& joints, MappingConstants constants)

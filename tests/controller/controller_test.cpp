@@ -7,6 +7,7 @@
 
 #include "bridge/twin_platform.hpp"
 #include "controller/dual_platform_controller.hpp"
+#include "random_pad.hpp"
 #include "twin_fixtures.hpp"
 
 namespace {
@@ -57,31 +58,6 @@ TEST(VelocityCap, AtLeastTenStepsMoreWhenAJointWouldExceedItsCap) {
   EXPECT_EQ(controller::planMove(start, next, caps, 0.001).steps, 101);
 }
 
-/// Random and adversarial pads: saturated sticks, triggers slammed, every button at random.
-GamepadState randomPad(std::mt19937_64& random, bool adversarial) {
-  std::uniform_real_distribution<double> axis(-1.0, 1.0), trigger(0.0, 3.996);
-  std::bernoulli_distribution coin(adversarial ? 0.5 : 0.05);
-  auto stick = [&] {
-    return adversarial ? (coin(random) ? 1.0 : -1.0) * (coin(random) ? 1.0 : 0.999) : axis(random);
-  };
-  GamepadState p;
-  p.left_x = stick();
-  p.left_y = stick();
-  p.right_x = stick();
-  p.right_y = stick();
-  p.left_trigger = adversarial ? (coin(random) ? 3.996 : 0.0) : trigger(random);
-  p.right_trigger = adversarial ? (coin(random) ? 3.996 : 0.0) : trigger(random);
-  p.left_bumper = coin(random);
-  p.right_bumper = coin(random);
-  p.a = coin(random);
-  p.b = coin(random);
-  p.x = coin(random);
-  p.y = coin(random);
-  p.back = coin(random);
-  p.start = coin(random);
-  return p;
-}
-
 TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
   auto twin = test_support::readyTwin();
   CommandLog log(*twin);
@@ -94,7 +70,7 @@ TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
   GamepadState pad;
   for (int i = 0; i < 240; ++i) {
     // Random readings, and adversarial ones held for 40 iterations to drive into the limits.
-    if (i % 40 == 0 || i >= 200) pad = randomPad(random, /*adversarial=*/i < 200);
+    if (i % 40 == 0 || i >= 200) pad = test_support::randomPad(random, /*adversarial=*/i < 200);
     const auto report = control.manual(pad);
     clamped += report.clamped;
     ASSERT_EQ(report.refused, 0u) << report.refusal;
@@ -131,7 +107,7 @@ TEST(ControllerProperty, UnderM1NoCommandMovesTheOtherArm) {
     GamepadState pad;
     for (int i = 0; i < 150; ++i) {
       if (i % 5 == 0) {
-        pad = randomPad(random, /*adversarial=*/i % 2 == 0);
+        pad = test_support::randomPad(random, /*adversarial=*/i % 2 == 0);
         // Every input but the one that would select the other arm (A's re-read included).
         if (selected == Arm::Left)
           pad.start = false;

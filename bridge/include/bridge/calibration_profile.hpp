@@ -15,9 +15,9 @@ struct CalibrationProfile {
   /// steps (its pad read, IK and recorder), in seconds.
   double iteration_overhead = 0.0;
 
-  /// Reads `tracking: {latency_cycles, bandwidth_hz, damping_ratio[, max_velocity,
-  /// max_acceleration]}`, `replay: {iteration_overhead}` and ignores `fit` (what the values were
-  /// fitted on). Throws common::LoadError naming file, line and key.
+  /// Reads `tracking: {latency_cycles, bandwidth_hz, damping_ratio[, friction_deadband,
+  /// max_velocity, max_acceleration]}`, `replay: {iteration_overhead}` and ignores `fit` (what the
+  /// values were fitted on). Throws common::LoadError naming file, line and key.
   static CalibrationProfile load(const std::filesystem::path& file);
 };
 

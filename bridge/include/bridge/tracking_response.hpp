@@ -1,7 +1,8 @@
 #pragma once
 // The physical robot's tracking behaviour, placed in front of any actuation: each joint's
 // setpoint reaches the servo a latency later and through a second-order response (natural
-// frequency, damping ratio) under velocity and acceleration limits. Off unless a calibration
+// frequency, damping ratio, Coulomb friction that makes small motions stick) under velocity and
+// acceleration limits. Off unless a calibration
 // (raven_calibrate's profile, loaded with --calibration) asks for it.
 
 #include <deque>
@@ -21,6 +22,9 @@ struct TrackingParams {
   /// Natural frequency of each joint's response (Hz); infinite: the setpoint passes straight on.
   raven::ArmJoints bandwidth_hz = raven::ArmJoints::Constant(kUnlimited);
   raven::ArmJoints damping_ratio = raven::ArmJoints::Constant(1.0);
+  /// Coulomb friction, as the position error the servo needs to break the joint away from rest
+  /// (and holds against while the joint slides): friction = deadband * (2 pi bandwidth)^2.
+  raven::ArmJoints friction_deadband = raven::ArmJoints::Zero();
   raven::ArmJoints max_velocity = raven::ArmJoints::Constant(kUnlimited);      ///< per s
   raven::ArmJoints max_acceleration = raven::ArmJoints::Constant(kUnlimited);  ///< per s^2
 

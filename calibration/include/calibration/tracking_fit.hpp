@@ -20,9 +20,10 @@ struct Parameter {
   bool log_scale = false;
 };
 
-/// The response's fitted parameters: the latency, and a natural frequency and damping ratio for
-/// each drive group (shoulder, elbow, insertion, and the instrument's four cable-driven joints,
-/// which share motors of one kind and are not all exercised by every recording).
+/// The response's fitted parameters: the latency, and a natural frequency, damping ratio and
+/// friction deadband for each drive group (shoulder, elbow, insertion, and the instrument's four
+/// cable-driven joints, which share motors of one kind and are not all exercised by every
+/// recording).
 const std::vector<Parameter>& trackingParameters();
 /// Parameter values (in trackingParameters() order) as a tracking response.
 bridge::TrackingParams toTracking(const std::vector<double>& values);
@@ -32,7 +33,7 @@ bridge::TrackingParams toTracking(const std::vector<double>& values);
 double fidelityScore(const Figures& twin_vs_physical, const Figures& scale);
 
 struct FitOptions {
-  int max_evaluations = 150;
+  int max_evaluations = 200;
   double tolerance = 1e-3;  ///< relative, on the normalised parameters
 };
 

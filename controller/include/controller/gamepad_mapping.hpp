@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <string_view>
 
 #include "controller/gamepad_state.hpp"
 #include "raven/arm_kinematics.hpp"
@@ -16,6 +17,8 @@ using raven::ArmJoints;
 using ArmPair = std::array<ArmJoints, 2>;
 
 enum class MappingScheme { M2, M1Left, M1Right };
+/// "m2", "m1-left", "m1-right" (the command-line names); throws std::invalid_argument otherwise.
+MappingScheme mappingSchemeNamed(std::string_view name);
 enum class IkMode { WristLocked, Full };
 
 /// The mapping's constants, as the paper's controller has them.
