@@ -292,6 +292,13 @@ TEST(RavenAnalyze, ReportsTheTwinAsAThirdPlatformWithFigures) {
       fmt::format("{} {} {} --out {} > {} 2>&1", RAVEN_ANALYZE, paper.string(), dir.path().string(),
                   report.string(), (dir.path() / "analyze.log").string());
   ASSERT_EQ(std::system(analyze.c_str()), 0) << test_support::readFile(dir.path() / "analyze.log");
+  // The summary prints j_V beside j_P: the robot's own T_PP velocities, to the printed decimals.
+  const std::string log = test_support::readFile(dir.path() / "analyze.log");
+  EXPECT_NE(log.find("j_V"), std::string::npos) << log;
+  EXPECT_NE(log.find("revolute     0.0135 /    0.0175 rad     0.0632 rad/s"), std::string::npos)
+      << log;
+  EXPECT_NE(log.find("prismatic    1.3951 /    0.0998 mm      0.2534 mm/s"), std::string::npos)
+      << log;
 
   const auto metrics = nlohmann::json::parse(test_support::readFile(report / "metrics.json"));
   std::vector<std::string> platforms;
