@@ -56,7 +56,6 @@ double ravenAloneMoving(const ambf_like::SceneSpec& scene, ambf_like::Articulati
 
 double ambfRavenStill(const std::filesystem::path& launch) {
   ambf_like::LoadOptions load;
-  load.skip_missing_files = true;
   const auto scene = ambf_like::loadLaunchFile(launch, {}, load);
   ambf_like::MeshLibrary meshes;
   ambf_like::World world(scene.spec, meshes);

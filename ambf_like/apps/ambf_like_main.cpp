@@ -32,8 +32,7 @@ struct Options {
   std::uint64_t max_steps = 0;
   double duration = 0.0;
   double step_size = 0.001;
-  bool skip_missing = false;
-  bool lenient_keys = false;
+  bool strict = false;
   std::string summary_json;
   bool quiet = false;
   std::string snapshot;
@@ -44,8 +43,7 @@ struct Options {
 
 ambf_like::LoadedScene load(const Options& o) {
   ambf_like::LoadOptions options;
-  options.skip_missing_files = o.skip_missing;
-  options.strict_keys = !o.lenient_keys;
+  options.strict = o.strict;
   std::vector<std::filesystem::path> extras(o.extra_files.begin(), o.extra_files.end());
   if (!o.launch_file.empty()) {
     ambf_like::LaunchSelection selection;
@@ -155,9 +153,9 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--step-size", o.step_size, "fixed internal step in seconds")
       ->check(CLI::PositiveNumber);
-  app.add_flag("--skip-missing", o.skip_missing,
-               "continue without missing mesh/environment files (each one is reported)");
-  app.add_flag("--lenient-keys", o.lenient_keys, "report unknown keys as warnings, not errors");
+  app.add_flag("--strict", o.strict,
+               "what AMBF tolerates (unknown keys, missing meshes or mass) is an error, not a "
+               "warning");
   app.add_option("--summary-json", o.summary_json, "also write the exit summary as JSON");
   app.add_flag("-q,--quiet", o.quiet, "no once-a-second loop report");
   CLI11_PARSE(app, argc, argv);

@@ -21,11 +21,7 @@ double nonNegative(const YamlView& node) {
 }
 
 void reportMissing(const SourceRef& where, const std::string& message, LoadContext& context) {
-  if (context.options().skip_missing_files) {
-    context.warn(where, message + "; continuing without it as requested");
-  } else {
-    context.defer(where, message);
-  }
+  context.tolerate(where, message + "; continuing without it");
 }
 
 std::vector<PrimitiveShape> readCollisionPrimitives(const YamlView& node, LoadContext& context) {
@@ -57,7 +53,8 @@ constexpr std::string_view kBodyKeys[] = {
     "collision margin", "collision groups", "friction", "restitution", "damping", "controller",
     "passive", "publish frequency", "publish joint names", "publish joint positions",
     "publish children names", "color", "color rgba", "color components", "visible", "shaders",
-    "plugins", "gravity", "high resolution path", "low resolution path"};
+    "plugins", "gravity", "high resolution path", "low resolution path", "use material",
+    "redundant", "detached"};
 // clang-format on
 
 }  // namespace
@@ -65,6 +62,7 @@ constexpr std::string_view kBodyKeys[] = {
 BodySpec readBody(const YamlView& node, const std::string& identifier, const MeshDirectories& dirs,
                   LoadContext& context) {
   node.checkKeys(kBodyKeys, context.keyCheck());
+  noteNotSimulated(node, context);
   BodySpec body;
   body.where = node.where();
   body.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
@@ -72,7 +70,14 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
 
   const MeshDirectories local = meshDirectoriesOf(node, dirs);
 
-  body.mass = nonNegative(node["mass"]);
+  if (auto mass = node.find("mass")) {
+    body.mass = nonNegative(*mass);
+  } else {  // AMBF warns and leaves the body's mass at its default: static
+    context.tolerate(node.where(), "body '" + body.name +
+                                       "': missing required key 'mass' (AMBF warns and loads "
+                                       "such a body static, mass 0)");
+    body.mass = 0.0;
+  }
   if (auto inertia = node.find("inertia")) {
     body.inertia = Vec3(nonNegative((*inertia)["ix"]), nonNegative((*inertia)["iy"]),
                         nonNegative((*inertia)["iz"]));
@@ -149,16 +154,16 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   if (collision_mesh) collision.mesh = *collision_mesh;
 
   const bool missing_geometry = wants_collision_mesh && !collision_mesh;
-  if (body.mass > 0.0 && !body.inertia && collision.empty() && !missing_geometry) {
-    node["mass"].fail(body_label +
-                      "a dynamic body needs 'inertia' when it has no collision geometry to "
-                      "compute it from");
-  }
-  if (body.mass > 0.0 && !body.inertia && missing_geometry &&
-      context.options().skip_missing_files) {
-    node["mass"].fail(body_label +
-                      "its inertia was to come from the missing mesh; give 'inertia' to "
-                      "continue without the mesh");
+  if (body.mass > 0.0 && !body.inertia && (collision.empty() || missing_geometry)) {
+    const double r = kFallbackInertiaRadius;
+    body.inertia = Vec3::Constant(0.4 * body.mass * r * r);
+    context.tolerate(node["mass"].where(),
+                     body_label +
+                         (missing_geometry ? "its inertia was to come from the missing mesh"
+                                           : "a dynamic body without collision geometry or "
+                                             "'inertia'") +
+                         "; using a solid sphere's of its mass and " + std::to_string(r) +
+                         " m radius (give 'inertia' to set it)");
   }
   for (const auto& primitive : collision.primitives) {
     if (primitive.type == PrimitiveType::Plane && body.mass > 0.0) {

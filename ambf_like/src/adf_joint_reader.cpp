@@ -108,7 +108,7 @@ constexpr std::string_view kJointKeys[] = {
     "child pivot", "type", "joint limits", "offset", "child offset", "joint offset", "controller",
     "controller output type", "max motor impulse", "max velocity", "damping", "stiffness", "equilibrium point",
     "enable motor", "enable feedback", "joint erp", "joint cfm", "ignore inter-collision",
-    "passive", "publish frequency"};
+    "passive", "publish frequency", "origin", "axis", "use material", "redundant", "detached"};
 // clang-format on
 
 }  // namespace
@@ -116,6 +116,7 @@ constexpr std::string_view kJointKeys[] = {
 JointSpec readJoint(const YamlView& node, const std::string& identifier,
                     const JointDefaults& defaults, LoadContext& context) {
   node.checkKeys(kJointKeys, context.keyCheck());
+  noteNotSimulated(node, context);
   JointSpec joint;
   joint.where = node.where();
   joint.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);

@@ -70,6 +70,12 @@ void checkJointBodies(const ModelSpec& model, const std::vector<YamlView>& joint
 
 }  // namespace
 
+void noteNotSimulated(const YamlView& node, LoadContext& context) {
+  for (const auto key : kNotSimulatedKeys) {
+    if (auto v = node.find(key)) context.acceptedNotSimulated(v->where(), std::string(key));
+  }
+}
+
 std::string stripPrefix(const std::string& identifier) {
   for (const char* prefix : {"BODY ", "JOINT ", "SOFTBODY ", "SOFT BODY "}) {
     const std::string p(prefix);
@@ -121,8 +127,14 @@ ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) 
                          "shaders",
                          "plugins",
                          "joint erp",
-                         "joint cfm"},
+                         "joint cfm",
+                         "parent",
+                         "use material",
+                         "redundant",
+                         "detached"},
                         context.keyCheck());
+  noteNotSimulated(root, context);
+  if (auto parent = root.find("parent")) context.acceptedNotSimulated(parent->where(), "parent");
   if (auto version = root.find("adf version"); version && version->asString() != "1.0") {
     version->fail("unsupported ADF version '" + version->asString() + "' (only 1.0 exists)");
   }
@@ -210,11 +222,9 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
     const auto path = (file.parent_path() / env->asString()).lexically_normal();
     if (std::filesystem::is_regular_file(path)) {
       environment = path;
-    } else if (context.options().skip_missing_files) {
-      context.warn(env->where(), "environment file " + path.string() +
-                                     " not found; continuing without it as requested");
     } else {
-      context.defer(env->where(), "environment file " + path.string() + " not found");
+      context.tolerate(env->where(),
+                       "environment file " + path.string() + " not found; continuing without it");
     }
   }
   return world;

@@ -56,4 +56,9 @@ std::optional<std::filesystem::path> findMesh(const std::string& name,
 /// Strips an ADF identifier prefix such as "BODY " or "JOINT ".
 std::string stripPrefix(const std::string& identifier);
 
+/// Keys AMBF's files carry that this simulator accepts without simulating them.
+inline constexpr std::string_view kNotSimulatedKeys[] = {"use material", "redundant", "detached"};
+/// Notes each not-simulated key `node` holds ("accepted, not simulated", once per load).
+void noteNotSimulated(const YamlView& node, LoadContext& context);
+
 }  // namespace ambf_like::detail

@@ -60,7 +60,7 @@ constexpr std::string_view kConfigKeys[] = {
     "kLST", "kAST", "kVST", "kVCF", "kDP", "kDG", "kLF", "kPR", "kVC", "kDF", "kMT", "kCHR",
     "kKHR", "kSHR", "kAHR", "kSRHR_CL", "kSKHR_CL", "kSSHR_CL", "kSR_SPLT_CL", "kSK_SPLT_CL",
     "kSS_SPLT_CL", "maxvolume", "timescale", "viterations", "piterations", "diterations",
-    "citerations", "flags", "bending constraint", "clusters", "fixed nodes", "margin"};
+    "citerations", "flags", "bending constraint", "clusters", "fixed nodes", "margin", "cutting"};
 // clang-format on
 
 SoftBodyConfig readConfig(const YamlView& node, LoadContext& context) {
@@ -115,7 +115,8 @@ constexpr std::string_view kSoftBodyKeys[] = {
     "name", "namespace", "mesh", "mass", "location", "scale", "collision margin",
     "randomize constraints", "config", "inertial offset", "color", "color rgba",
     "color components", "visible", "shaders", "plugins", "passive", "publish frequency",
-    "high resolution path", "low resolution path"};
+    "high resolution path", "low resolution path", "linear gain", "angular gain", "use material",
+    "redundant", "detached"};
 // clang-format on
 
 }  // namespace
@@ -123,6 +124,7 @@ constexpr std::string_view kSoftBodyKeys[] = {
 SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
                           const MeshDirectories& dirs, LoadContext& context) {
   node.checkKeys(kSoftBodyKeys, context.keyCheck());
+  noteNotSimulated(node, context);
   SoftBodySpec soft;
   soft.where = node.where();
   soft.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);

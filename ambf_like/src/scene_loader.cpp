@@ -87,8 +87,11 @@ LoadedScene loadLaunchFile(const std::filesystem::path& launch_file,
     const auto& entry = entries[static_cast<std::size_t>(index)];
     const auto path = (dir / entry.asString()).lexically_normal();
     if (!std::filesystem::is_regular_file(path)) {
-      entry.fail("multibody config " + std::to_string(index) + " (" + path.string() +
-                 ") not found");
+      const std::string missing =
+          "multibody config " + std::to_string(index) + " (" + path.string() + ") not found";
+      if (!selection.indices.empty()) entry.fail(missing);  // asked for by index: an error
+      context.tolerate(entry.where(), missing + "; skipped");
+      continue;
     }
     files.push_back(path);
   }

@@ -64,9 +64,9 @@ std::filesystem::path resolveMeshFile(const std::string& filename, const std::st
   if (name.rfind("file://", 0) == 0) name = name.substr(7);
   const auto resolved = (ctx.file.parent_path() / name).lexically_normal();
   if (!std::filesystem::is_regular_file(resolved)) {
-    if (ctx.load.options().skip_missing_files) {
-      ctx.load.warn(ctx.at(path), "mesh file " + resolved.string() +
-                                      " not found; continuing without it as requested");
+    if (!ctx.load.options().strict) {
+      ctx.load.warn(ctx.at(path),
+                    "mesh file " + resolved.string() + " not found; continuing without it");
       return {};
     }
     ctx.fail(path, "mesh file " + resolved.string() + " not found");

@@ -11,6 +11,9 @@ bool PlatformProfile::claims(const std::filesystem::path& file,
   for (const auto& pattern : file_patterns) {
     if (file_name.find(pattern) != std::string::npos) return true;
   }
+  for (const auto& pattern : file_regexes) {
+    if (std::regex_search(file_name, pattern)) return true;
+  }
   return false;
 }
 
@@ -21,7 +24,8 @@ std::vector<PlatformProfile> readProfiles(const std::filesystem::path& file) {
   root.checkKeys({"platforms"}, strict);
   std::vector<PlatformProfile> profiles;
   for (const auto& entry : root["platforms"].elements()) {
-    entry.checkKeys({"name", "label", "role", "files", "ambf rows", "position offsets"}, strict);
+    entry.checkKeys(
+        {"name", "label", "role", "files", "file regex", "ambf rows", "position offsets"}, strict);
     PlatformProfile p;
     p.name = entry["name"].asString();
     p.label = entry.find("label") ? entry["label"].asString() : p.name;
@@ -33,6 +37,15 @@ std::vector<PlatformProfile> readProfiles(const std::filesystem::path& file) {
     }
     if (auto files = entry.find("files")) {
       for (const auto& f : files->elements()) p.file_patterns.push_back(f.asString());
+    }
+    if (auto regexes = entry.find("file regex")) {
+      for (const auto& r : regexes->elements()) {
+        try {
+          p.file_regexes.emplace_back(r.asString());
+        } catch (const std::regex_error& e) {
+          r.fail(std::string("not a regular expression: ") + e.what());
+        }
+      }
     }
     p.ambf_rows = entry.getBool("ambf rows", false);
     if (auto offsets = entry.find("position offsets")) {

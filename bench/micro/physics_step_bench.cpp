@@ -67,7 +67,6 @@ void BM_AmbfRaven(benchmark::State& state) {
   const auto launch = kShared / "ambf/ambf_controller/raven2/launch.yaml";
   if (sharedFileMissing(state, launch)) return;
   ambf_like::LoadOptions options;
-  options.skip_missing_files = true;
   stepScene(state, ambf_like::loadLaunchFile(launch, {}, options));
 }
 BENCHMARK(BM_AmbfRaven);

@@ -148,9 +148,13 @@ int YamlView::asInt() const {
 
 bool YamlView::asBool() const {
   if (!node_.IsScalar()) fail("expected true or false");
+  // YAML 1.1's true/false, yes/no, on/off, y/n in any of their cases (yaml-cpp), and 0/1, as
+  // AMBF's own files write them.
+  const std::string& text = node_.Scalar();
+  if (text == "0" || text == "1") return text == "1";
   bool value = false;
   if (!YAML::convert<bool>::decode(node_, value)) {
-    fail("expected true or false, got '" + node_.Scalar() + "'");
+    fail("expected a boolean (true/false, yes/no, on/off or 1/0), got '" + text + "'");
   }
   return value;
 }

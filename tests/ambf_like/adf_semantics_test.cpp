@@ -210,8 +210,9 @@ TEST(AdfSemantics, WorldFileCarriesThisSimulatorsOwnSettings) {
   EXPECT_EQ(scene.spec.world.solver_iterations, 25);
   EXPECT_EQ(scene.spec.world.sdf_voxel_size, 0.002);
   dir.write("world.yaml", "ambf_like: {solver iteration: 25}\n");
-  EXPECT_THAT(test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); }),
-              testing::HasSubstr("did you mean 'solver iterations'"));
+  EXPECT_THAT(
+      test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}, {.strict = true}); }),
+      testing::HasSubstr("did you mean 'solver iterations'"));
   EXPECT_EQ(scene.spec.world.articulation, ambf_like::Articulation::Maximal);  // AMBF's way
   dir.write("world.yaml", "ambf_like: {articulation: reduced}\n");
   EXPECT_EQ(ambf_like::loadLaunchFile(launch, {}).spec.world.articulation,

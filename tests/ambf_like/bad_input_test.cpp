@@ -39,8 +39,9 @@ std::string model(const std::string& box_mass = "1.0", const std::string& box_ex
          joint_extra + "\n";
 }
 
+/// The error of a strict load (--strict): every case below is also an error there.
 std::string loadError(const std::filesystem::path& file) {
-  return loadErrorOf([&] { ambf_like::loadModelFiles({file}); });
+  return loadErrorOf([&] { ambf_like::loadModelFiles({file}, std::nullopt, {.strict = true}); });
 }
 
 TEST(BadInput, ValidModelLoads) {
@@ -127,10 +128,8 @@ TEST(BadInput, UnknownKeySuggestsTheRightOne) {
   EXPECT_THAT(loadError(file),
               AllOf(HasSubstr(file.string() + ":13"), HasSubstr("BODY box/frition"),
                     HasSubstr("did you mean 'friction'?")));
-  // Lenient mode loads the model and reports the key as a warning.
-  ambf_like::LoadOptions lenient;
-  lenient.strict_keys = false;
-  const auto scene = ambf_like::loadModelFiles({file}, std::nullopt, lenient);
+  // By default (AMBF's acceptance) the model loads and the key is a warning.
+  const auto scene = ambf_like::loadModelFiles({file});
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_THAT(scene.warnings[0].message, HasSubstr("unknown key 'frition'"));
 }
@@ -160,9 +159,7 @@ TEST(BadInput, MissingMeshNamesBodyAndEveryPathTried) {
   EXPECT_THAT(message, AllOf(HasSubstr(file.string() + ":4"), HasSubstr("BODY part/mesh"),
                              HasSubstr("body 'part'"), HasSubstr("low/part.STL"),
                              HasSubstr("high/part.STL")));
-  ambf_like::LoadOptions skip;
-  skip.skip_missing_files = true;
-  const auto scene = ambf_like::loadModelFiles({file}, std::nullopt, skip);
+  const auto scene = ambf_like::loadModelFiles({file});  // by default: a warning
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_THAT(scene.warnings[0].message, HasSubstr("continuing without it"));
   EXPECT_TRUE(scene.spec.models[0].bodies[0].collision.empty());
@@ -222,9 +219,21 @@ TEST(BadInput, LaunchIndexThatIsNotANumber) {
 TEST(BadInput, LaunchEntryPointingAtAMissingFile) {
   TempDir dir;
   const auto launch = dir.write("launch.yaml", "multibody configs:\n  - nowhere.yaml\n");
-  EXPECT_THAT(loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); }),
+  EXPECT_THAT(loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}, {.strict = true}); }),
               AllOf(HasSubstr(launch.string() + ":2"), HasSubstr("multibody config 0"),
                     HasSubstr("not found")));
+  // By default (every entry, as AMBF loads a launch file) a missing entry is skipped with a
+  // warning; asked for by index it is an error.
+  dir.write("m.yaml", model());
+  const auto both = dir.write("both.yaml", "multibody configs:\n  - m.yaml\n  - nowhere.yaml\n");
+  const auto scene = ambf_like::loadLaunchFile(both, {});
+  EXPECT_EQ(scene.spec.models.size(), 1u);
+  ASSERT_EQ(scene.warnings.size(), 1u);
+  EXPECT_THAT(scene.warnings[0].message, HasSubstr("not found; skipped"));
+  EXPECT_THAT(loadErrorOf([&] {
+                ambf_like::loadLaunchFile(launch, {{0}, {}});
+              }),
+              HasSubstr("multibody config 0"));
 }
 
 TEST(BadInput, MalformedUrdf) {

@@ -33,19 +33,17 @@ class SharedModels : public testing::Test {
   std::filesystem::path data_;
 };
 
-TEST_F(SharedModels, RavenReportsItsTwoMissingBaseMeshes) {
-  const auto message =
-      test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(ravenLaunch(), {}); });
+TEST_F(SharedModels, RavenReportsItsTwoMissingBaseMeshesAsErrorsUnderStrict) {
+  const auto message = test_support::loadErrorOf(
+      [&] { ambf_like::loadLaunchFile(ravenLaunch(), {}, {.strict = true}); });
   EXPECT_THAT(message, HasSubstr("body 'base_link_L': mesh file 'base_link_L.STL' not found"));
   EXPECT_THAT(message, HasSubstr("body 'base_link_R': mesh file 'base_link_R.STL' not found"));
   EXPECT_THAT(message, HasSubstr("raven_2/low_res/base_link_L.STL"));
   EXPECT_THAT(message, HasSubstr("blender-raven2.yaml:37: BODY base_link_L/mesh"));
 }
 
-TEST_F(SharedModels, RavenWithItsRealMeshesStepsWhenToldToSkipTheMissingOnes) {
-  ambf_like::LoadOptions options;
-  options.skip_missing_files = true;
-  const auto scene = ambf_like::loadLaunchFile(ravenLaunch(), {}, options);
+TEST_F(SharedModels, RavenWithItsRealMeshesLoadsAsAmbfLoadsItWithWarnings) {
+  const auto scene = ambf_like::loadLaunchFile(ravenLaunch(), {});
   std::string warnings;
   for (const auto& w : scene.warnings) warnings += w.str() + "\n";
   EXPECT_THAT(warnings, HasSubstr("base_link_L.STL"));
@@ -56,6 +54,24 @@ TEST_F(SharedModels, RavenWithItsRealMeshesStepsWhenToldToSkipTheMissingOnes) {
   EXPECT_EQ(raven.joints.size(), 16u);
   EXPECT_EQ(raven.gravity, ambf_like::Vec3::Zero());
   stepsWithoutNan(scene);
+}
+
+TEST_F(SharedModels, EveryDescriptionAndLaunchFileLoadsAndStepsWithDefaultFlags) {
+  std::size_t loaded = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(data_ / "ambf")) {
+    const auto& path = entry.path();
+    if (path.extension() != ".yaml") continue;
+    const auto name = path.filename().string();
+    const bool launch = name == "launch.yaml";
+    const bool model = path.string().find("multi-bodies") != std::string::npos;
+    if (!launch && !model) continue;  // worlds, colours, input devices: read through launches
+    SCOPED_TRACE(path.string());
+    const auto scene =
+        launch ? ambf_like::loadLaunchFile(path, {}) : ambf_like::loadModelFiles({path});
+    stepsWithoutNan(scene);
+    ++loaded;
+  }
+  EXPECT_GE(loaded, 6u) << "AMBF's launch files, the Raven, the puzzles and the cloth";
 }
 
 TEST_F(SharedModels, PegAndBase) {

@@ -274,6 +274,21 @@ TEST(Analysis, ResamplingOnTimeAlignsTrialsRecordedAtDifferentRates) {
   EXPECT_LT(analysis::jointStats(pp, Quantity::Position, 0, false).max, 1e-5);  // by time
 }
 
+TEST(Profiles, ThePapersDatasetNamesAreRecognised) {
+  const auto profiles = analysis::readProfiles(analysis::defaultProfilesFile());
+  auto platformOf = [&](const std::string& name) -> std::string {
+    const auto* p = analysis::profileFor(profiles, name, {});
+    return p ? p->name : "none";
+  };
+  EXPECT_EQ(platformOf("m1left_p1.csv"), "physical");
+  EXPECT_EQ(platformOf("2arm_p12.csv"), "physical");
+  EXPECT_EQ(platformOf("m1right_a3.csv"), "ambf");
+  EXPECT_EQ(platformOf("2arm_physical_2.csv"), "physical");
+  EXPECT_EQ(platformOf("twin_2arm_20261124_rs.csv"), "twin");
+  EXPECT_EQ(platformOf("set_px.csv"), "none");
+  EXPECT_EQ(platformOf("set_p1.csv.bak"), "none");
+}
+
 /// raven_analyze on the paper's recordings and a twin replay of the same inputs.
 TEST(RavenAnalyze, ReportsTheTwinAsAThirdPlatformWithFigures) {
   const auto shared = test_support::sharedDataDir();

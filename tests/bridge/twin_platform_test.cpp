@@ -187,7 +187,6 @@ TEST(TwinPlatform, AmbfsOwnRavenIsDrivenThroughTheSamePlatformWithTheAmbfProfile
   options.launch_file = shared / "ambf/ambf_controller/raven2/launch.yaml";
   options.bindings = raven::ArmBindings::ambfRaven();
   options.profile = "ambf";
-  options.load.skip_missing_files = true;  // base_link_L/R.STL are missing upstream
   TwinPlatform twin(options);
   makeReady(twin);
   const auto ambf = raven::builtinProfile("ambf");

@@ -216,7 +216,6 @@ TEST(Twin, AmbfsOwnRavenIsDrivableThroughTheSameArmLayer) {
   const auto shared = test_support::sharedDataDir();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent: AMBF's Raven model is not here";
   ambf_like::LoadOptions options;
-  options.skip_missing_files = true;  // its two base-link meshes are missing upstream
   const auto scene =
       ambf_like::loadLaunchFile(shared / "ambf/ambf_controller/raven2/launch.yaml", {}, options);
   ambf_like::MeshLibrary meshes;

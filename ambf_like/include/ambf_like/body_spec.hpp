@@ -12,6 +12,10 @@
 
 namespace ambf_like {
 
+/// A dynamic body with nothing to compute its inertia from (no collision geometry, or its mesh
+/// is missing) gets a uniform solid sphere's of its mass and this radius (m), with a warning.
+inline constexpr double kFallbackInertiaRadius = 0.05;
+
 /// Contact and damping properties of a rigid body (AMBF defaults).
 struct SurfaceSpec {
   double static_friction = 0.5;

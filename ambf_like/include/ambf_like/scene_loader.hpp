@@ -13,11 +13,13 @@ namespace ambf_like {
 
 /// How strict a load is.
 struct LoadOptions {
-  /// Continue without missing mesh or environment files (each one is reported as a warning and
-  /// the body is left without that geometry). Off: every missing file is an error.
-  bool skip_missing_files = false;
-  /// Unknown keys are errors (a typo must not silently fall back to a default). Off: warnings.
-  bool strict_keys = true;
+  /// Off (the default, AMBF's acceptance): what AMBF's own loader tolerates is a warning naming
+  /// file, line and key, and the load goes on: unknown keys (with a did-you-mean), missing mesh
+  /// and environment files (the body keeps its mass, without that geometry), a body without
+  /// `mass` (static, as AMBF leaves it), a dynamic body whose inertia has nothing to come from
+  /// (a stated fallback). On: each of these is an error, for users who want their files checked.
+  /// Malformed YAML, wrong types, NaNs and impossible values are errors either way.
+  bool strict = false;
 };
 
 /// Which multibody files of a launch file to load (AMBF's `-l` and `-a`).

@@ -5,6 +5,7 @@
 #include <array>
 #include <filesystem>
 #include <optional>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,10 @@ struct PlatformProfile {
   std::string label;  ///< for figures ("AMBF")
   Role role = Role::Simulation;
   std::vector<std::string> file_patterns;  ///< a file whose name contains one belongs here
-  bool ambf_rows = false;                  ///< also claims files the reader identifies as AMBF's
-  JointRow position_offset{};              ///< added to recorded jpos (rad, m)
+  /// A file whose name matches one (ECMAScript, anywhere in the name) belongs here too.
+  std::vector<std::regex> file_regexes;
+  bool ambf_rows = false;      ///< also claims files the reader identifies as AMBF's
+  JointRow position_offset{};  ///< added to recorded jpos (rad, m)
 
   /// Does this recording belong to the platform?
   bool claims(const std::filesystem::path& file, const controller::RsVariant& variant) const;

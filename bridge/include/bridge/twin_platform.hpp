@@ -24,7 +24,7 @@ namespace bridge {
 struct TwinOptions {
   /// A launch file with the robot (and perhaps a scene); default: our Raven-II alone.
   std::filesystem::path launch_file = raven::modelDirectory() / "raven2" / "launch.yaml";
-  /// How strictly the model files are read (AMBF's own Raven-II needs skip_missing_files: two of
+  /// How strictly the model files are read (AMBF's own Raven-II loads with warnings: two of
   /// its meshes are missing upstream).
   ambf_like::LoadOptions load;
   /// Applied to the loaded scene before the World is built (randomised batches vary friction,

@@ -24,8 +24,8 @@ int main(int argc, char** argv) {
   bool ambf_model = false;
   app.add_flag("--ambf-model", ambf_model,
                "the launch file holds AMBF's blender-raven2.yaml (AMBF joint names)");
-  app.add_flag("--skip-missing", twin.load.skip_missing_files,
-               "continue without missing mesh files (each is reported)");
+  app.add_flag("--strict", twin.load.strict,
+               "refuse model files AMBF would load with warnings (unknown keys, missing meshes)");
   std::optional<std::string> stand_in;
   app.add_option("--stand-in", stand_in,
                  "run as the physical stand-in: actuation model parameters (default: "
