@@ -44,8 +44,7 @@ std::vector<std::pair<std::string, YamlView>> listedDefinitions(const YamlView& 
 }
 
 void warnUnsupported(const YamlView& root, LoadContext& context) {
-  for (const char* section :
-       {"ghost objects", "sensors", "actuators", "cameras", "lights", "vehicles", "volumes"}) {
+  for (const char* section : {"ghost objects", "cameras", "lights", "vehicles", "volumes"}) {
     auto list = root.find(section);
     if (list && list->isSequence() && !list->elements().empty()) {
       context.warn(list->where(), std::string(section) + " are not simulated; ignored");
@@ -77,7 +76,8 @@ void noteNotSimulated(const YamlView& node, LoadContext& context) {
 }
 
 std::string stripPrefix(const std::string& identifier) {
-  for (const char* prefix : {"BODY ", "JOINT ", "SOFTBODY ", "SOFT BODY "}) {
+  for (const char* prefix :
+       {"BODY ", "JOINT ", "SOFTBODY ", "SOFT BODY ", "SENSOR ", "ACTUATOR "}) {
     const std::string p(prefix);
     if (identifier.rfind(p, 0) == 0) return identifier.substr(p.size());
   }
@@ -171,6 +171,26 @@ ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) 
     joint_nodes.push_back(node);
   }
   checkJointBodies(model, joint_nodes);
+  std::set<std::string> rigid;
+  for (const auto& body : model.bodies) rigid.insert(body.name);
+  auto parentKnown = [&](const std::string& parent, const std::string& what, const YamlView& node) {
+    if (rigid.count(parent)) return true;
+    context.tolerate(node["parent"].where(), what + ": parent body '" + parent +
+                                                 "' is not a rigid body of this model; ignored");
+    return false;
+  };
+  for (const auto& [identifier, node] : listedDefinitions(root, "sensors")) {
+    auto sensor = readSensor(node, identifier, context);
+    if (parentKnown(sensor.parent, "sensor '" + sensor.name + "'", node)) {
+      model.sensors.push_back(std::move(sensor));
+    }
+  }
+  for (const auto& [identifier, node] : listedDefinitions(root, "actuators")) {
+    auto actuator = readActuator(node, identifier, context);
+    if (parentKnown(actuator.parent, "actuator '" + actuator.name + "'", node)) {
+      model.actuators.push_back(std::move(actuator));
+    }
+  }
   warnUnsupported(root, context);
   return model;
 }

@@ -38,6 +38,12 @@ JointSpec readJoint(const YamlView& node, const std::string& identifier,
 SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
                           const MeshDirectories& dirs, LoadContext& context);
 
+/// A `sensors` entry (PROXIMITY / RAYTRACER / RESISTANCE with an `array` or `parametric` rays).
+SensorSpec readSensor(const YamlView& node, const std::string& identifier, LoadContext& context);
+/// An `actuators` entry (CONSTRAINT).
+ActuatorSpec readActuator(const YamlView& node, const std::string& identifier,
+                          LoadContext& context);
+
 /// A whole multibody (model) file.
 ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context);
 

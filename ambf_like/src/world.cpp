@@ -78,6 +78,8 @@ struct World::Impl {
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
   std::vector<std::unique_ptr<detail::Articulation>> articulations;
+  std::vector<std::unique_ptr<ProximitySensor>> sensors;
+  std::vector<std::unique_ptr<ConstraintActuator>> actuators;
   std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
@@ -227,6 +229,15 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
   } else {
     addConstraintJoints(model, by_name);
   }
+  for (const auto& spec : model.sensors) {
+    sensors.push_back(std::make_unique<ProximitySensor>(spec, model.name_space + spec.name,
+                                                        *by_name.at(spec.parent).body));
+  }
+  for (const auto& spec : model.actuators) {
+    RigidBody& parent = *by_name.at(spec.parent).body;
+    actuators.push_back(std::make_unique<ConstraintActuator>(
+        spec, model.name_space + spec.name, parent, !articulate || parent.isStatic(), world));
+  }
 }
 
 World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
@@ -255,6 +266,7 @@ void World::step() {
   if (impl_->sleeper) impl_->sleeper->beforeStep(impl_->soft_bodies, impl_->bodies);
   impl_->world.stepSimulation(h, 0, h);
   for (auto& a : impl_->articulations) a->afterStep();
+  for (auto& s : impl_->sensors) s->sense(impl_->world);
   if (impl_->sleeper) impl_->sleeper->afterStep(impl_->soft_bodies, h);
   for (auto& j : impl_->joints) j->joint->updateCoordinate();
   // The sparse SDF frees cells unused for 256 collections; a collection walks every hash bucket,
@@ -313,6 +325,19 @@ RigidBody& World::body(std::string_view name) {
 }
 const RigidBody& World::body(std::string_view name) const {
   return *impl_->bodies[requireByName(impl_->bodies, name, "body")];
+}
+
+std::size_t World::sensorCount() const {
+  return impl_->sensors.size();
+}
+ProximitySensor& World::sensor(std::string_view name) {
+  return *impl_->sensors[requireByName(impl_->sensors, name, "sensor")];
+}
+std::size_t World::actuatorCount() const {
+  return impl_->actuators.size();
+}
+ConstraintActuator& World::actuator(std::string_view name) {
+  return *impl_->actuators[requireByName(impl_->actuators, name, "actuator")];
 }
 
 std::size_t World::softBodyCount() const {

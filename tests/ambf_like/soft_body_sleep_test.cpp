@@ -102,9 +102,10 @@ TEST(SoftBodySleep, TheWorldFileSetsTheThresholdsAndRefusesBadOnes) {
   EXPECT_THAT(test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); }),
               testing::AllOf(testing::HasSubstr("soft body sleep/distance"),
                              testing::HasSubstr("must be positive")));
-  dir.write("world.yaml", "ambf_like: {soft body sleep: {speed: 0.1}}\n");
-  EXPECT_THAT(test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); }),
-              testing::HasSubstr("speed"));
+  dir.write("world.yaml", "ambf_like: {soft body sleep: {speed: 0.1}}\n");  // unknown key
+  EXPECT_THAT(
+      test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}, {.strict = true}); }),
+      testing::HasSubstr("speed"));
 }
 
 TEST(SoftBodySleep, ABodyFallingOntoASleeperWakesItBeforeArrivingAndRestsOnIt) {

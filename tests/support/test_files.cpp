@@ -21,6 +21,10 @@ std::filesystem::path icosphereMesh() {
   return std::filesystem::path(AMBF_LIKE_EXAMPLES_DIR) / "demo" / "icosphere.obj";
 }
 
+std::filesystem::path exampleFile(const std::string& name) {
+  return std::filesystem::path(AMBF_LIKE_EXAMPLES_DIR) / name;
+}
+
 std::string groundPlaneBody() {
   return "BODY ground:\n"
          "  name: ground\n"

@@ -21,6 +21,8 @@ std::filesystem::path sharedDataDir();
 
 /// The bundled unit icosphere (162 vertices) used for soft bodies.
 std::filesystem::path icosphereMesh();
+/// A file of ambf_like/examples.
+std::filesystem::path exampleFile(const std::string& name);
 
 /// ADF text of a static body "ground": the plane z = 0.
 std::string groundPlaneBody();

@@ -8,6 +8,7 @@
 
 #include "ambf_like/body_spec.hpp"
 #include "ambf_like/joint_spec.hpp"
+#include "ambf_like/sensor_spec.hpp"
 #include "ambf_like/soft_body_spec.hpp"
 
 namespace ambf_like {
@@ -19,6 +20,8 @@ struct ModelSpec {
   std::vector<BodySpec> bodies;
   std::vector<JointSpec> joints;
   std::vector<SoftBodySpec> soft_bodies;
+  std::vector<SensorSpec> sensors;
+  std::vector<ActuatorSpec> actuators;
   bool ignore_inter_collision =
       false;                    ///< no collisions between any two rigid bodies of this model
   std::optional<Vec3> gravity;  ///< model-wide override of the world gravity

@@ -8,8 +8,10 @@
 #include <string_view>
 #include <vector>
 
+#include "ambf_like/constraint_actuator.hpp"
 #include "ambf_like/joint.hpp"
 #include "ambf_like/mesh.hpp"
+#include "ambf_like/proximity_sensor.hpp"
 #include "ambf_like/rigid_body.hpp"
 #include "ambf_like/scene_spec.hpp"
 #include "ambf_like/soft_body.hpp"
@@ -79,6 +81,13 @@ class World {
   const SoftBody& softBody(std::size_t index) const;
   SoftBody& softBody(std::string_view name);
   const SoftBody& softBody(std::string_view name) const;
+
+  /// Proximity sensors (cast after every step) and constraint actuators, by (qualified) name;
+  /// unknown or ambiguous names throw std::out_of_range.
+  std::size_t sensorCount() const;
+  ProximitySensor& sensor(std::string_view name);
+  std::size_t actuatorCount() const;
+  ConstraintActuator& actuator(std::string_view name);
 
   /// Every contact point of the last step, rigid-rigid and soft-rigid.
   std::vector<Contact> contacts() const;
