@@ -116,7 +116,7 @@ constexpr std::string_view kSoftBodyKeys[] = {
     "randomize constraints", "config", "inertial offset", "color", "color rgba",
     "color components", "visible", "shaders", "plugins", "passive", "publish frequency",
     "high resolution path", "low resolution path", "linear gain", "angular gain", "use material",
-    "redundant", "detached"};
+    "redundant", "detached", "contact friction"};
 // clang-format on
 
 }  // namespace
@@ -136,6 +136,15 @@ SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
     if (soft.scale <= 0.0) v->fail("scale must be greater than zero");
   }
   soft.randomize_constraints = node.getBool("randomize constraints", false);
+  if (auto friction = node.find("contact friction")) {
+    const std::string model = friction->asString();
+    if (model == "coulomb") {
+      soft.contact_friction = SoftContactFriction::Coulomb;
+    } else if (model != "bullet") {
+      friction->fail("contact friction must be 'bullet' (AMBF's) or 'coulomb', not '" + model +
+                     "'");
+    }
+  }
   if (auto config = node.find("config")) soft.config = readConfig(*config, context);
 
   const auto margin = node.find("collision margin");

@@ -9,6 +9,7 @@
 
 #include <stdexcept>
 
+#include "coulomb_contact_solver.hpp"
 #include "dynamics_world.hpp"
 #include "sequential_impulse_solver.hpp"
 
@@ -19,6 +20,7 @@ struct BulletWorld::Impl {
   btCollisionDispatcher dispatcher{&collision_config};
   btDbvtBroadphase broadphase;
   std::unique_ptr<btConstraintSolver> solver;
+  CoulombContactSolver soft_solver;  ///< outlives the world that uses it
   std::unique_ptr<btDiscreteDynamicsWorld> world;
   btSoftRigidDynamicsWorld* soft_rigid = nullptr;      ///< world, when without articulations
   ArticulatedDynamicsWorld* soft_multibody = nullptr;  ///< world, when with them
@@ -28,15 +30,15 @@ BulletWorld::BulletWorld(bool with_articulations) : impl_(std::make_unique<Impl>
   auto& i = *impl_;
   if (with_articulations) {
     auto solver = std::make_unique<SequentialImpulseSolver<btMultiBodyConstraintSolver>>();
-    auto world = std::make_unique<ArticulatedDynamicsWorld>(&i.dispatcher, &i.broadphase,
-                                                            solver.get(), &i.collision_config);
+    auto world = std::make_unique<ArticulatedDynamicsWorld>(
+        &i.dispatcher, &i.broadphase, solver.get(), &i.collision_config, &i.soft_solver);
     i.soft_multibody = world.get();
     i.solver = std::move(solver);
     i.world = std::move(world);
   } else {
     i.solver = std::make_unique<SequentialImpulseSolver<btSequentialImpulseConstraintSolver>>();
     auto world = std::make_unique<DynamicsWorld<btSoftRigidDynamicsWorld>>(
-        &i.dispatcher, &i.broadphase, i.solver.get(), &i.collision_config);
+        &i.dispatcher, &i.broadphase, i.solver.get(), &i.collision_config, &i.soft_solver);
     i.soft_rigid = world.get();
     i.world = std::move(world);
   }
@@ -59,7 +61,8 @@ btSoftBodyWorldInfo& BulletWorld::softBodyInfo() {
                            : impl_->soft_multibody->getWorldInfo();
 }
 
-void BulletWorld::addSoftBody(btSoftBody& body) {
+void BulletWorld::addSoftBody(btSoftBody& body, bool coulomb_contacts) {
+  if (coulomb_contacts) impl_->soft_solver.useCoulombContacts(body);
   if (impl_->soft_rigid) {
     impl_->soft_rigid->addSoftBody(&body);
   } else {
@@ -68,11 +71,16 @@ void BulletWorld::addSoftBody(btSoftBody& body) {
 }
 
 void BulletWorld::removeSoftBody(btSoftBody& body) {
+  impl_->soft_solver.forget(body);
   if (impl_->soft_rigid) {
     impl_->soft_rigid->removeSoftBody(&body);
   } else {
     impl_->soft_multibody->removeSoftBody(&body);
   }
+}
+
+const std::vector<NodeContactImpulse>& BulletWorld::coulombImpulses() const {
+  return impl_->soft_solver.lastImpulses();
 }
 
 btMultiBodyDynamicsWorld& BulletWorld::articulations() {

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <vector>
 
 class btCollisionDispatcher;
 class btDiscreteDynamicsWorld;
@@ -11,6 +12,8 @@ class btSoftBody;
 struct btSoftBodyWorldInfo;
 
 namespace ambf_like::detail {
+
+struct NodeContactImpulse;
 
 /// Bullet's soft-rigid world with its solver, or, when articulations are to be stepped too,
 /// its soft-multibody world. The soft-rigid one is kept whenever it suffices: the two differ in
@@ -25,8 +28,11 @@ class BulletWorld {
   btDiscreteDynamicsWorld& dynamics();
   btCollisionDispatcher& dispatcher();
   btSoftBodyWorldInfo& softBodyInfo();
-  void addSoftBody(btSoftBody& body);
+  /// `coulomb_contacts`: its rigid contacts get Coulomb friction (CoulombContactSolver).
+  void addSoftBody(btSoftBody& body, bool coulomb_contacts);
   void removeSoftBody(btSoftBody& body);
+  /// The impulses of the last step's Coulomb contacts.
+  const std::vector<NodeContactImpulse>& coulombImpulses() const;
   /// The world articulations go into; only when built with articulations.
   btMultiBodyDynamicsWorld& articulations();
   /// Called in every step once the articulations' free motion is in their velocities.

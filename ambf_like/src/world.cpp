@@ -17,6 +17,7 @@
 #include "collision_shape_factory.hpp"
 #include "constraint_factory.hpp"
 #include "constraint_joint.hpp"
+#include "coulomb_contact_solver.hpp"
 #include "soft_body_factory.hpp"
 #include "soft_body_sleep.hpp"
 
@@ -68,6 +69,7 @@ struct NamedJoint {
 struct World::Impl {
   WorldSpec settings;
   WorldOptions options;
+  bool articulated;  ///< some model is simulated in reduced coordinates
   detail::BulletWorld bullet;
   btDiscreteDynamicsWorld& world;
   detail::CollisionFilter filter;
@@ -89,8 +91,9 @@ struct World::Impl {
   Impl(const SceneSpec& scene, const WorldOptions& opts)
       : settings(scene.world),
         options(opts),
-        bullet(std::any_of(scene.models.begin(), scene.models.end(),
-                           [this](const ModelSpec& m) { return articulates(m); })),
+        articulated(std::any_of(scene.models.begin(), scene.models.end(),
+                                [this](const ModelSpec& m) { return articulates(m); })),
+        bullet(articulated),
         world(bullet.dynamics()) {
     btGImpactCollisionAlgorithm::registerAlgorithm(&bullet.dispatcher());
     world.getPairCache()->setOverlapFilterCallback(&filter);
@@ -214,6 +217,14 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     if (!articulate || body.isStatic()) world.addRigidBody(&body.bullet());
   }
   for (const auto& spec : model.soft_bodies) {
+    const bool coulomb = spec.contact_friction == SoftContactFriction::Coulomb;
+    if (coulomb && articulated) {
+      SourceRef at = spec.where;
+      at.key_path += "/contact friction";
+      throw LoadError(at, "soft body '" + spec.name +
+                              "': Coulomb contacts act on rigid bodies only; this world has "
+                              "articulations (set 'articulation: maximal' in its world file)");
+    }
     SourceRef where = spec.where;
     where.key_path += "/mesh";
     const auto mesh = meshes.load(spec.mesh, where);
@@ -221,7 +232,7 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     auto& tag = tags.emplace_back(detail::CollisionTag{
         model.name_space + spec.name, model_index, model.ignore_inter_collision, true, {}});
     soft->setUserPointer(&tag);
-    bullet.addSoftBody(*soft);
+    bullet.addSoftBody(*soft, coulomb);
     soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
   }
   if (articulate) {
@@ -381,6 +392,21 @@ std::vector<Contact> World::contacts() const {
                      toEigen(contact.m_cti.m_normal),
                      contact.m_cti.m_normal.dot(node) + contact.m_cti.m_offset, 0.0});
     }
+  }
+  return out;
+}
+
+std::vector<SoftContactForce> World::softContactForces() const {
+  const double h = impl_->options.step_size;
+  auto nameOf = [](const btCollisionObject* object) {
+    const auto* tag = static_cast<const detail::CollisionTag*>(object->getUserPointer());
+    return tag ? tag->name : std::string("?");
+  };
+  std::vector<SoftContactForce> out;
+  for (const auto& impulse : impl_->bullet.coulombImpulses()) {
+    out.push_back({nameOf(impulse.soft), nameOf(impulse.rigid), toEigen(impulse.position),
+                   toEigen(impulse.normal), toEigen(impulse.normal_impulse) / h,
+                   toEigen(impulse.friction_impulse) / h});
   }
   return out;
 }

@@ -282,4 +282,25 @@ TEST(BadInput, SoftBodyConfigOutOfRange) {
               AllOf(HasSubstr("BODY blob/config/kLST"), HasSubstr("kLST must be in [0, 1]")));
 }
 
+TEST(BadInput, SoftBodyContactFrictionModel) {
+  TempDir dir;
+  const std::string blob =
+      "BODY blob: {name: blob, mass: 1, mesh: " + test_support::icosphereMesh().string() +
+      ", contact friction: ";
+  const auto unknown = dir.write("m.yaml", "soft bodies: [BODY blob]\n" + blob + "glue}\n");
+  EXPECT_THAT(loadError(unknown),
+              AllOf(HasSubstr("BODY blob/contact friction"), HasSubstr("not 'glue'")));
+  // Coulomb contacts push on rigid bodies; an articulation's links are not rigid bodies.
+  const auto articulated =
+      dir.write("a.yaml", model("1.0", "  damping: {linear: 0, angular: 0}\n") +
+                              "soft bodies: [BODY blob]\n" + blob +
+                              "coulomb, location: " + "{position: {x: 0, y: 0, z: 1}}}\n");
+  ambf_like::WorldOptions options;
+  options.articulation = ambf_like::Articulation::Reduced;
+  EXPECT_THAT(loadErrorOf([&] { test_support::simulate({articulated}, options); }),
+              AllOf(HasSubstr("BODY blob/contact friction"), HasSubstr("articulation: maximal")));
+  options.articulation = ambf_like::Articulation::Maximal;
+  EXPECT_NO_THROW(test_support::simulate({articulated}, options));
+}
+
 }  // namespace

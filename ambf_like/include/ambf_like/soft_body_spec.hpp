@@ -25,6 +25,12 @@ struct SoftBodyConfig {
   std::vector<int> fixed_nodes;
 };
 
+/// How a soft body's nodes take friction from rigid bodies.
+enum class SoftContactFriction {
+  Bullet,   ///< Bullet's rigid-contact projection, as AMBF has it (sticks regardless of load)
+  Coulomb,  ///< |friction impulse| <= mu x normal impulse per node (CoulombContactSolver)
+};
+
 /// A soft body: the mesh it is built from, mass, pose, margin and material/solver config.
 struct SoftBodySpec {
   std::string name;
@@ -34,6 +40,7 @@ struct SoftBodySpec {
   double scale = 1.0;
   double margin = 0.001;  ///< set explicitly: Bullet's own default is 0.25 m
   bool randomize_constraints = false;
+  SoftContactFriction contact_friction = SoftContactFriction::Bullet;  ///< `contact friction`
   SoftBodyConfig config;
   SourceRef where;
 };

@@ -43,6 +43,16 @@ struct Contact {
   double normal_impulse = 0.0;
 };
 
+/// The force a rigid body put on one node of a soft body with Coulomb contacts in the last step.
+struct SoftContactForce {
+  std::string soft_body;  ///< qualified names
+  std::string rigid_body;
+  Vec3 position = Vec3::Zero();        ///< the node
+  Vec3 normal = Vec3::Zero();          ///< of the rigid surface, towards the node
+  Vec3 normal_force = Vec3::Zero();    ///< on the node (N)
+  Vec3 friction_force = Vec3::Zero();  ///< on the node, tangential (N)
+};
+
 /// Mutable simulation state built once from an immutable SceneSpec (MuJoCo's model/data split).
 /// Bodies and joints are indexed in load order; names may be plain (if unique) or qualified
 /// with their model namespace.
@@ -91,6 +101,9 @@ class World {
 
   /// Every contact point of the last step, rigid-rigid and soft-rigid.
   std::vector<Contact> contacts() const;
+  /// Per node, the forces of the last step's Coulomb contacts (soft bodies with
+  /// `contact friction: coulomb`); the rigid body felt the opposite.
+  std::vector<SoftContactForce> softContactForces() const;
   /// False as soon as any pose, velocity or soft-body node is NaN or infinite.
   bool isFinite() const;
   /// Models simulated in reduced coordinates (see Articulation).

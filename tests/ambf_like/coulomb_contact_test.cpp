@@ -1,0 +1,159 @@
+// Coulomb contacts of soft bodies (`contact friction: coulomb`): the friction cone on an
+// incline, the contact forces against the weight, and a pinch that holds only when squeezed.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "test_files.hpp"
+
+namespace {
+
+constexpr double kGravity = 9.81;
+constexpr double kCubeMass = 0.02;  // kg
+constexpr double kCubeSide = 0.02;  // m
+
+/// A closed cube surface of side 1 centred on the origin, `n` x `n` squares per face.
+std::string subdividedCubeObj(int n) {
+  std::ostringstream obj;
+  int base = 1;
+  // Each face: an origin corner and two edge directions, outward by the right-hand rule.
+  const int faces[6][3][3] = {
+      {{-1, -1, -1}, {0, 1, 0}, {1, 0, 0}}, {{-1, -1, 1}, {1, 0, 0}, {0, 1, 0}},
+      {{-1, -1, -1}, {1, 0, 0}, {0, 0, 1}}, {{-1, 1, -1}, {0, 0, 1}, {1, 0, 0}},
+      {{-1, -1, -1}, {0, 0, 1}, {0, 1, 0}}, {{1, -1, -1}, {0, 1, 0}, {0, 0, 1}}};
+  for (const auto& f : faces) {
+    for (int i = 0; i <= n; ++i) {
+      for (int j = 0; j <= n; ++j) {
+        const double u = 2.0 * i / n, v = 2.0 * j / n;
+        obj << "v";
+        for (int k = 0; k < 3; ++k) obj << ' ' << 0.5 * (f[0][k] + u * f[1][k] + v * f[2][k]);
+        obj << '\n';
+      }
+    }
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        const int a = base + i * (n + 1) + j, b = a + (n + 1), c = b + 1, d = a + 1;
+        obj << "f " << a << ' ' << b << ' ' << c << "\nf " << a << ' ' << c << ' ' << d << '\n';
+      }
+    }
+    base += (n + 1) * (n + 1);
+  }
+  return obj.str();
+}
+
+/// ADF of a soft cube "cube" (2 cm, 20 g) at `z` with Coulomb contacts and friction factor kDF.
+std::string softCube(double x, double z, double kdf) {
+  std::ostringstream s;
+  s << "BODY cube:\n  name: cube\n  mesh: cube.obj\n  mass: " << kCubeMass
+    << "\n  scale: " << kCubeSide << "\n  location: {position: {x: " << x << ", y: 0, z: " << z
+    << "}}\n  collision margin: 0.0005\n  contact friction: coulomb\n"
+    << "  config: {kDF: " << kdf << ", kMT: 0.2, kVC: 10, piterations: 4, kDP: 0.001}\n";
+  return s.str();
+}
+
+/// Static ground plane tilted by `angle` about y (uphill towards -x), friction 1.
+std::string tiltedGround(double angle) {
+  std::ostringstream s;
+  s << "BODY ground:\n  name: ground\n  mass: 0\n  friction: {static: 1.0}\n"
+    << "  collision shape: PLANE\n  collision geometry: {normal: {x: " << std::sin(angle)
+    << ", y: 0, z: " << std::cos(angle) << "}, offset: 0}\n";
+  return s.str();
+}
+
+struct Scene {
+  test_support::TempDir dir;
+  std::unique_ptr<test_support::Simulation> sim;
+  explicit Scene(const std::string& adf) {
+    dir.write("cube.obj", subdividedCubeObj(4));
+    // Awake throughout: a sleeping body has no contacts to read.
+    ambf_like::WorldOptions options;
+    options.soft_body_sleep = false;
+    sim = test_support::simulate({dir.write("scene.yaml", adf)}, options);
+  }
+  ambf_like::World& world() { return *sim->world; }
+};
+
+/// How far the cube's centre moves along the incline in `seconds` once it has settled.
+double slideOnIncline(double angle, double kdf, double seconds) {
+  Scene scene("bodies: [BODY ground]\nsoft bodies: [BODY cube]\n" + tiltedGround(angle) +
+              softCube(0.0, 0.5 * kCubeSide / std::cos(angle) + 0.001, kdf));
+  auto& world = scene.world();
+  auto& cube = world.softBody("cube");
+  world.step(300);
+  const Eigen::Vector3d start = cube.centerOfMass();
+  world.step(static_cast<std::uint64_t>(seconds / world.stepSize()));
+  EXPECT_TRUE(cube.isFinite());
+  const Eigen::Vector3d downhill(std::cos(angle), 0.0, -std::sin(angle));
+  return (cube.centerOfMass() - start).dot(downhill);
+}
+
+TEST(CoulombContact, ACubeStaysOnAnInclineInsideTheFrictionCone) {
+  // tan(16.7 deg) = 0.3 < mu = kDF x 1 = 0.6: static friction holds it.
+  const double slide = slideOnIncline(std::atan(0.3), 0.6, 1.0);
+  EXPECT_LT(std::abs(slide), 0.001) << "moved " << slide << " m along the incline";
+}
+
+TEST(CoulombContact, ACubeSlidesOnAnInclineOutsideTheFrictionCone) {
+  // tan = 0.3 > mu = 0.15: it slides with a = g (sin - mu cos) = 1.41 m/s^2, 0.70 m in 1 s.
+  const double angle = std::atan(0.3);
+  const double expected = 0.5 * kGravity * (std::sin(angle) - 0.15 * std::cos(angle));
+  const double slide = slideOnIncline(angle, 0.15, 1.0);
+  EXPECT_GT(slide, 0.5 * expected);
+  EXPECT_LT(slide, 1.2 * expected);
+}
+
+TEST(CoulombContact, ContactForcesOnACubeAtRestCarryItsWeight) {
+  Scene scene("bodies: [BODY ground]\nsoft bodies: [BODY cube]\n" + tiltedGround(0.0) +
+              softCube(0.0, 0.5 * kCubeSide + 0.001, 0.6));
+  auto& world = scene.world();
+  world.step(500);
+  Eigen::Vector3d total = Eigen::Vector3d::Zero();
+  const int steps = 200;
+  for (int i = 0; i < steps; ++i) {
+    world.step();
+    for (const auto& f : world.softContactForces()) {
+      EXPECT_EQ(f.rigid_body, "/ambf/env/ground");
+      EXPECT_GE(f.normal_force.dot(f.normal), 0.0) << "contacts push, never pull";
+      EXPECT_NEAR(f.friction_force.dot(f.normal), 0.0, 1e-12);
+      total += f.normal_force + f.friction_force;
+    }
+  }
+  total /= steps;
+  EXPECT_NEAR(total.z(), kCubeMass * kGravity, 0.1 * kCubeMass * kGravity);
+  EXPECT_LT(total.head<2>().norm(), 0.05 * kCubeMass * kGravity);
+}
+
+/// The cube hung between two vertical walls `gap` apart (no floor): how far it falls in
+/// `seconds` after its first 0.3 s (the grip settling).
+double fallBetweenWalls(double gap, double seconds) {
+  std::ostringstream walls;
+  for (int side : {-1, 1}) {
+    walls << "BODY wall" << (side < 0 ? "L" : "R") << ":\n  name: wall" << (side < 0 ? "L" : "R")
+          << "\n  mass: 0\n  friction: {static: 1.0}\n  collision shape: BOX\n"
+          << "  collision geometry: {x: 0.01, y: 0.04, z: 0.04}\n"
+          << "  location: {position: {x: " << side * (0.5 * gap + 0.005) << ", y: 0, z: 0}}\n";
+  }
+  Scene scene("bodies: [BODY wallL, BODY wallR]\nsoft bodies: [BODY cube]\n" + walls.str() +
+              softCube(0.0, 0.0, 1.0));
+  auto& world = scene.world();
+  auto& cube = world.softBody("cube");
+  world.step(300);
+  const double start = cube.centerOfMass().z();
+  world.step(static_cast<std::uint64_t>(seconds / world.stepSize()));
+  EXPECT_TRUE(cube.isFinite());
+  return start - cube.centerOfMass().z();
+}
+
+TEST(CoulombContact, APinchHoldsWhenSqueezedAndLetsGoWhenNot) {
+  const double squeezed = fallBetweenWalls(0.7 * kCubeSide, 1.0);
+  const double squeezed_less = fallBetweenWalls(0.9 * kCubeSide, 1.0);
+  // The walls' surfaces at the cube's faces' collision margin (0.5 mm).
+  const double touching = fallBetweenWalls(kCubeSide + 2 * 0.0005, 1.0);
+  EXPECT_LT(squeezed, 0.0005) << "a cube squeezed by 30 % slid " << squeezed << " m in 1 s";
+  EXPECT_LT(squeezed_less, 0.0005) << "a cube squeezed by 10 % slid " << squeezed_less << " m";
+  EXPECT_GT(touching, 0.1) << "a cube merely touching both walls fell only " << touching << " m";
+}
+
+}  // namespace
