@@ -378,9 +378,11 @@ std::vector<Contact> World::contacts() const {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
     for (int k = 0; k < manifold->getNumContacts(); ++k) {
       const auto& point = manifold->getContactPoint(k);
+      const btVector3 friction = point.m_lateralFrictionDir1 * point.m_appliedImpulseLateral1 +
+                                 point.m_lateralFrictionDir2 * point.m_appliedImpulseLateral2;
       out.push_back({nameOf(manifold->getBody0()), nameOf(manifold->getBody1()),
                      toEigen(point.getPositionWorldOnB()), toEigen(point.m_normalWorldOnB),
-                     point.getDistance(), point.getAppliedImpulse()});
+                     point.getDistance(), point.getAppliedImpulse(), toEigen(friction)});
     }
   }
   for (const auto& soft : impl_->soft_bodies) {
@@ -390,7 +392,8 @@ std::vector<Contact> World::contacts() const {
       const btVector3& node = contact.m_node->m_x;
       out.push_back({soft->qualifiedName(), nameOf(contact.m_cti.m_colObj), toEigen(node),
                      toEigen(contact.m_cti.m_normal),
-                     contact.m_cti.m_normal.dot(node) + contact.m_cti.m_offset, 0.0});
+                     contact.m_cti.m_normal.dot(node) + contact.m_cti.m_offset, 0.0, Vec3::Zero(),
+                     true});
     }
   }
   return out;

@@ -106,6 +106,11 @@ PoseSample TwinPlatform::setpointCp(Arm arm) const {
   return {now(), core_.reportedPose(arm, core_.setpoint(arm))};
 }
 
+std::optional<GrasperForces> TwinPlatform::measuredCf(Arm arm) const {
+  const auto& jaws = arms_.jawBodies(arm);
+  return graspForces(world_, jaws, arms_.bodies(arm), world_.body(jaws[0]).pose().translation());
+}
+
 std::optional<RavenStateSnapshot> TwinPlatform::ravenState() const {
   return makeRavenState({core_, drive_, readings_, previous_position_});
 }

@@ -1,5 +1,6 @@
 #include "raven/twin_arms.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -37,12 +38,40 @@ ArmBindings ArmBindings::ambfRaven() {
   return b;
 }
 
+namespace {
+
+/// The qualified name of a body a joint (found by `joint_name`) names by its plain name: the
+/// joint's namespace, when `joint_name` is qualified, else the body's own unique name.
+std::string bodyOf(const ambf_like::World& world, const std::string& joint_name,
+                   const ambf_like::Joint& joint, const std::string& body) {
+  const std::string& plain = joint.name();
+  const bool qualified =
+      joint_name.size() > plain.size() &&
+      joint_name.compare(joint_name.size() - plain.size(), plain.size(), plain) == 0;
+  const std::string prefix =
+      qualified ? joint_name.substr(0, joint_name.size() - plain.size()) : "";
+  return world.body(prefix + body).qualifiedName();
+}
+
+}  // namespace
+
 TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings) {
   for (std::size_t a = 0; a < 2; ++a) {
     for (std::size_t i = 0; i < kJointCount; ++i) {
       const auto& b = bindings.joints[a][i];
-      bound_[a][i] = {&world.joint(b.name), b.scale, b.offset};
+      ambf_like::Joint& joint = world.joint(b.name);
+      bound_[a][i] = {&joint, b.scale, b.offset};
+      for (const auto& body : {joint.spec().parent, joint.spec().child}) {
+        const std::string name = bodyOf(world, b.name, joint, body);
+        if (std::find(bodies_[a].begin(), bodies_[a].end(), name) == bodies_[a].end()) {
+          bodies_[a].push_back(name);
+        }
+      }
     }
+    jaws_[a] = {bodyOf(world, bindings.joints[a][kJaw1].name, *bound_[a][kJaw1].joint,
+                       bound_[a][kJaw1].joint->spec().child),
+                bodyOf(world, bindings.joints[a][kJaw2].name, *bound_[a][kJaw2].joint,
+                       bound_[a][kJaw2].joint->spec().child)};
   }
 }
 

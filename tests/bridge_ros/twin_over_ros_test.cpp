@@ -3,11 +3,14 @@
 // identical trajectories in-process and over ROS, bad messages, losing either side.
 
 #include <crtk_msgs/StringStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
 #include <gtest/gtest.h>
 #include <raven_2/raven_state.h>
+#include <raven_twin/GraspForces.h>
 #include <sensor_msgs/JointState.h>
 
 #include <cmath>
+#include <optional>
 
 #include "bridge/ros/low_latency.hpp"
 #include "bridge/ros/raven_ros_client.hpp"
@@ -462,6 +465,41 @@ TEST(TwinOverRos, TheWallClockTwinFollowsAServoStreamInRealTime) {
   }
   robot.advance(0.1);
   EXPECT_NEAR(robot.measuredJs(Arm::Left).position(raven::kRoll) - start(raven::kRoll), 0.1, 1e-4);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(TwinOverRos, TheTwinPublishesEachGraspersContactForces) {
+  Rig rig({});
+  auto& robot = rig.client;
+  makeReady(robot);
+  ros::NodeHandle node(rig.node.ns());
+  ros::CallbackQueue queue;
+  node.setCallbackQueue(&queue);
+  std::optional<geometry_msgs::WrenchStamped> wrench;
+  std::optional<raven_twin::GraspForces> jaws;
+  auto on_wrench = node.subscribe<geometry_msgs::WrenchStamped>(
+      "grasp2/measured_cf", 10,
+      [&](const geometry_msgs::WrenchStamped::ConstPtr& m) { wrench = *m; }, {},
+      bridge::ros1::lowLatency());
+  auto on_jaws = node.subscribe<raven_twin::GraspForces>(
+      "grasp2/jaw_forces", 10, [&](const raven_twin::GraspForces::ConstPtr& m) { jaws = *m; }, {},
+      bridge::ros1::lowLatency());
+  for (int i = 0;
+       i < 1000 && (on_wrench.getNumPublishers() == 0 || on_jaws.getNumPublishers() == 0); ++i) {
+    queue.callAvailable(ros::WallDuration(0.01));
+  }
+  robot.advance(0.001);
+  for (int i = 0; i < 500 && !(wrench && jaws); ++i) queue.callAvailable(ros::WallDuration(0.01));
+  ASSERT_TRUE(wrench && jaws) << "grasp2/measured_cf and grasp2/jaw_forces are published";
+  EXPECT_EQ(wrench->header.frame_id, "world");
+  EXPECT_EQ(wrench->header.stamp, jaws->header.stamp);
+  // At home the jaws touch nothing but each other, which is no object.
+  EXPECT_EQ(jaws->contacts[0] + jaws->contacts[1], 0u);
+  EXPECT_EQ(wrench->wrench.force.x, 0.0);
+  EXPECT_EQ(wrench->wrench.force.z, 0.0);
 }
 
 }  // namespace

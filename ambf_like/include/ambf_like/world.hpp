@@ -38,9 +38,11 @@ struct Contact {
   std::string body_a;  ///< qualified names
   std::string body_b;
   Vec3 position_on_b = Vec3::Zero();
-  Vec3 normal_on_b = Vec3::Zero();  ///< points from b towards a
-  double distance = 0.0;            ///< negative when penetrating
-  double normal_impulse = 0.0;
+  Vec3 normal_on_b = Vec3::Zero();       ///< points from b towards a
+  double distance = 0.0;                 ///< negative when penetrating
+  double normal_impulse = 0.0;           ///< on a, along normal_on_b (N s)
+  Vec3 friction_impulse = Vec3::Zero();  ///< on a, tangential (N s)
+  bool soft = false;  ///< a soft body's node (a) on a rigid body: no impulses recorded
 };
 
 /// The force a rigid body put on one node of a soft body with Coulomb contacts in the last step.

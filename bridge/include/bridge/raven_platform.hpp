@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bridge/command_result.hpp"
+#include "bridge/grasp_forces.hpp"
 #include "bridge/operating_state.hpp"
 #include "bridge/platform_command.hpp"
 #include "bridge/raven_state.hpp"
@@ -46,6 +47,9 @@ class RavenPlatform {
   virtual JointSample setpointJs(Arm arm) const = 0;
   virtual PoseSample measuredCp(Arm arm) const = 0;
   virtual PoseSample setpointCp(Arm arm) const = 0;
+  /// measured_cf: what the grasper's jaws push on, when the platform can tell (the physical
+  /// Raven-II has no force sensing: none).
+  virtual std::optional<GrasperForces> measuredCf(Arm /*arm*/) const { return std::nullopt; }
   /// The latest raven_state sample, when the platform has one.
   virtual std::optional<RavenStateSnapshot> ravenState() const = 0;
 

@@ -53,6 +53,8 @@ class TwinPlatform final : public RavenPlatform {
   JointSample measuredJs(Arm arm) const override;
   JointSample setpointJs(Arm arm) const override;
   PoseSample measuredCp(Arm arm) const override;
+  /// Contact forces of the jaws in the last physics step (GrasperForces).
+  std::optional<GrasperForces> measuredCf(Arm arm) const override;
   PoseSample setpointCp(Arm arm) const override;
   std::optional<RavenStateSnapshot> ravenState() const override;
   ClockKind clockKind() const override { return clock_; }

@@ -66,7 +66,7 @@ IncomingCommand automoveFrom(const raven_2::raven_automove& message) {
 struct Publishers {
   ::ros::Publisher operating_state, ravenstate, joint_states, step_done, refusals;
   std::array<::ros::Publisher, 2> arm_operating_state, measured_js, setpoint_js, measured_cp,
-      setpoint_cp, grasp_measured_js;
+      setpoint_cp, grasp_measured_js, grasp_measured_cf, grasp_jaw_forces;
 };
 
 /// The server's ROS side: a private callback queue spun by the serving loop (one thread, no
@@ -150,6 +150,12 @@ RavenRosServer::Impl::Impl(RavenPlatform& platform, const std::string& ros_names
         node_.advertise<geometry_msgs::TransformStamped>(ns + "setpoint_cp", kStateQueue);
     p.grasp_measured_js[a] =
         node_.advertise<sensor_msgs::JointState>(graspNamespace(arm) + "/measured_js", kStateQueue);
+    if (platform_.measuredCf(arm)) {  // a platform that senses forces (the twin)
+      p.grasp_measured_cf[a] = node_.advertise<geometry_msgs::WrenchStamped>(
+          graspNamespace(arm) + "/measured_cf", kStateQueue);
+      p.grasp_jaw_forces[a] = node_.advertise<raven_twin::GraspForces>(
+          graspNamespace(arm) + "/jaw_forces", kStateQueue);
+    }
   }
   subscribeCommands();
   publishState();
@@ -298,6 +304,12 @@ void RavenRosServer::Impl::publishState() {
     p.setpoint_cp[a].publish(toTransformStamped(platform_.setpointCp(arm).pose, now, base, tool));
     const JointSample measured = platform_.measuredJs(arm);
     p.grasp_measured_js[a].publish(toGraspState(measured, colour, now));
+    if (p.grasp_measured_cf[a]) {
+      if (const auto forces = platform_.measuredCf(arm)) {
+        p.grasp_measured_cf[a].publish(toWrenchStamped(*forces, now, "world"));
+        p.grasp_jaw_forces[a].publish(toGraspForces(*forces, now, "world"));
+      }
+    }
     if (cycles_published_ % kJointStatesEvery == 0) {
       const auto arm_state = toJointState(measured, colour, now);
       both.name.insert(both.name.end(), arm_state.name.begin(), arm_state.name.end());

@@ -169,6 +169,41 @@ geometry_msgs::TransformStamped toTransformStamped(const Eigen::Isometry3d& pose
   return m;
 }
 
+namespace {
+
+geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v) {
+  geometry_msgs::Vector3 m;
+  m.x = v.x();
+  m.y = v.y();
+  m.z = v.z();
+  return m;
+}
+
+}  // namespace
+
+geometry_msgs::WrenchStamped toWrenchStamped(const GrasperForces& forces, ::ros::Time stamp,
+                                             std::string frame) {
+  geometry_msgs::WrenchStamped m;
+  m.header.stamp = stamp;
+  m.header.frame_id = std::move(frame);
+  m.wrench.force = toVector3(forces.force);
+  m.wrench.torque = toVector3(forces.torque);
+  return m;
+}
+
+raven_twin::GraspForces toGraspForces(const GrasperForces& forces, ::ros::Time stamp,
+                                      std::string frame) {
+  raven_twin::GraspForces m;
+  m.header.stamp = stamp;
+  m.header.frame_id = std::move(frame);
+  for (std::size_t j = 0; j < 2; ++j) {
+    m.normal[j] = toVector3(forces.jaws[j].normal);
+    m.friction[j] = toVector3(forces.jaws[j].friction);
+    m.contacts[j] = static_cast<std::uint32_t>(forces.jaws[j].contacts);
+  }
+  return m;
+}
+
 crtk_msgs::operating_state toOperatingState(const OperatingStatus& status, ::ros::Time stamp) {
   crtk_msgs::operating_state m;
   m.header.stamp = stamp;

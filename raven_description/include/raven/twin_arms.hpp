@@ -4,6 +4,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "ambf_like/world.hpp"
 #include "raven/arm.hpp"
@@ -41,6 +42,14 @@ class TwinArms {
   ArmJoints velocities(Arm arm) const;
   /// Joint torques (N m) and the insertion force (N) the drives exert, in the arm's sense.
   ArmJoints efforts(Arm arm) const;
+  /// The two jaw bodies of `arm` (the jaw joints' children), qualified names.
+  const std::array<std::string, 2>& jawBodies(Arm arm) const {
+    return jaws_[static_cast<std::size_t>(index(arm))];
+  }
+  /// Every body the arm's joints connect, qualified names.
+  const std::vector<std::string>& bodies(Arm arm) const {
+    return bodies_[static_cast<std::size_t>(index(arm))];
+  }
 
  private:
   struct Bound {
@@ -50,6 +59,8 @@ class TwinArms {
   template <typename Read>
   ArmJoints read(Arm arm, Read read) const;
   std::array<std::array<Bound, kJointCount>, 2> bound_;
+  std::array<std::array<std::string, 2>, 2> jaws_;
+  std::array<std::vector<std::string>, 2> bodies_;
 };
 
 }  // namespace raven

@@ -6,7 +6,9 @@
 #include <crtk_msgs/operating_state.h>
 #include <geometry_msgs/Transform.h>
 #include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
 #include <raven_2/raven_state.h>
+#include <raven_twin/GraspForces.h>
 #include <sensor_msgs/JointState.h>
 
 #include <optional>
@@ -47,6 +49,13 @@ sensor_msgs::JointState toGraspState(const JointSample& sample, std::string_view
 
 geometry_msgs::TransformStamped toTransformStamped(const Eigen::Isometry3d& pose, ::ros::Time stamp,
                                                    std::string frame, std::string child_frame);
+
+/// measured_cf as CRTK carries it: the grasper's total force and torque, `frame` named.
+geometry_msgs::WrenchStamped toWrenchStamped(const GrasperForces& forces, ::ros::Time stamp,
+                                             std::string frame);
+/// Each jaw's normal and friction forces and contact count.
+raven_twin::GraspForces toGraspForces(const GrasperForces& forces, ::ros::Time stamp,
+                                      std::string frame);
 
 crtk_msgs::operating_state toOperatingState(const OperatingStatus& status, ::ros::Time stamp);
 Parsed<OperatingStatus> operatingStatusFrom(const crtk_msgs::operating_state& message);
