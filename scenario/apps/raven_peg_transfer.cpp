@@ -29,6 +29,7 @@ struct Settings {
   std::string shard = "1/1";
   bool randomize = false;
   std::string assist = "off";
+  std::string launch;  ///< empty: the shipped peg-transfer scene
   std::size_t threads = 0;
   std::string out_dir = "peg_transfer_results";
   std::string record = "auto";
@@ -104,6 +105,7 @@ int runPegTransfers(const Settings& s) {
   options.assist =
       s.assist == "contact" ? scenario::AssistMode::Contact : scenario::AssistMode::Off;
   options.stand_in = s.stand_in;
+  options.launch_file = s.launch;
   options.time_limit = s.time_limit;
   const bool single = seeds.size() == 1;
   const std::string which =
@@ -226,6 +228,9 @@ int main(int argc, char** argv) {
                  "off (default: friction only) or contact (pin a peg touched by both jaws)")
       ->check(CLI::IsMember({"off", "contact"}))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // quickstart.sh's can be overridden
+  app.add_option("--launch", s.launch,
+                 "the scene's launch file (default: the shipped peg_transfer/launch.yaml)")
+      ->check(CLI::ExistingFile);
   app.add_option("--threads", s.threads, "worker threads for a batch (default: one per core)");
   app.add_option("--out", s.out_dir, "directory for the recordings and the summary");
   app.add_option("--record", s.record, "write rs files: auto (a single run only), yes or no")
