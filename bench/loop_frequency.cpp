@@ -72,30 +72,56 @@ void measureLoopFrequency(const BenchSettings& s, Report& report) {
   const std::string moving = fmt::format(
       "main job's first {:.0f} s (both arms moving, rings grasped), {} runs", seconds, s.repeat);
 
-  const auto free_simplified =
-      Spread::of(pegScene(simplified, bridge::ClockKind::Simulated, true, seconds, s.repeat));
+  // Friction grasps (the main job) and the assisted scene alternate run by run.
+  std::vector<PegSceneRate> friction, assisted;
+  for (int i = 0; i < s.repeat; ++i) {
+    friction.push_back(pegScene({.launch = simplified, .seconds = seconds}, 1).front());
+    assisted.push_back(
+        pegScene(
+            {.launch = simplified, .assist = scenario::AssistMode::Contact, .seconds = seconds}, 1)
+            .front());
+  }
+  const auto free_simplified = Spread::of(wholeRates(friction));
   report.add(atLeast(kSection, "peg scene, simplified collision, free-running", free_simplified,
-                     "steps/s", 5000, moving));
-  const auto every_ring =
-      Spread::of(pegScene(simplified, bridge::ClockKind::Simulated, false, seconds, 1));
+                     "steps/s", 5000, moving + ", friction grasps"));
+  std::vector<double> held, held_assisted;
+  for (std::size_t i = 0; i < friction.size(); ++i) {
+    held.push_back(friction[i].both_holding);
+    held_assisted.push_back(assisted[i].both_holding);
+  }
+  report.add(atLeast(kSection, "peg scene, both arms holding a ring (friction grasps)",
+                     Spread::of(held), "steps/s", 5000,
+                     "the iterations of the same runs in which both arms carried a ring"));
+  report.add(measured(kSection, "peg scene, free-running, grasp assist",
+                      Spread::of(wholeRates(assisted)), "steps/s",
+                      "the same segment with --grasp-assist contact, alternating"));
+  report.add(measured(kSection, "peg scene, both arms holding a ring (grasp assist)",
+                      Spread::of(held_assisted), "steps/s",
+                      "the assisted runs' carrying iterations"));
+  const auto every_ring = Spread::of(
+      wholeRates(pegScene({.launch = simplified, .sleep = false, .seconds = seconds}, 1)));
   report.add(measured(kSection, "peg scene, simplified, every ring stepped (sleep off)", every_ring,
                       "steps/s", "the same, resting rings never sleep; 1 run"));
   if (std::filesystem::exists(dense)) {
     const auto free_dense =
-        Spread::of(pegScene(dense, bridge::ClockKind::Simulated, true, seconds, 1));
+        Spread::of(wholeRates(pegScene({.launch = dense, .seconds = seconds}, 1)));
     report.add(measured(kSection, "peg scene, dense collision (~200k vertices), free-running",
                         free_dense, "steps/s", "the same segment; 1 run"));
     report.add(measured(kSection, "simplified / dense ratio",
                         Spread::of({free_simplified.median / free_dense.median}), "x", "medians"));
-    report.add(atLeast(kSection, "peg scene, dense, paced at 1 kHz",
-                       Spread::of(pegScene(dense, bridge::ClockKind::Wall, true, 10.0, 1)),
-                       "steps/s", 990, "first 10 s on the wall clock"));
+    report.add(
+        atLeast(kSection, "peg scene, dense, paced at 1 kHz",
+                Spread::of(wholeRates(pegScene(
+                    {.launch = dense, .clock = bridge::ClockKind::Wall, .seconds = 10.0}, 1))),
+                "steps/s", 990, "first 10 s on the wall clock"));
   } else {
     report.skip(kSection, "peg scene, dense collision", "not built: " + dense.string());
   }
-  report.add(atLeast(kSection, "peg scene, simplified, paced at 1 kHz",
-                     Spread::of(pegScene(simplified, bridge::ClockKind::Wall, true, 10.0, 1)),
-                     "steps/s", 990, "first 10 s on the wall clock"));
+  report.add(
+      atLeast(kSection, "peg scene, simplified, paced at 1 kHz",
+              Spread::of(wholeRates(pegScene(
+                  {.launch = simplified, .clock = bridge::ClockKind::Wall, .seconds = 10.0}, 1))),
+              "steps/s", 990, "first 10 s on the wall clock"));
 
   // Our arms (in both formulations) and AMBF's model alternate run by run, so a slow spell of
   // the machine hits all three.

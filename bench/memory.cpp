@@ -20,17 +20,16 @@ void measureMemory(const BenchSettings& s, Report& report) {
     // GNU time reports the job's own peak: it forks the job from its own small image, whereas a
     // child of this process would start from this process's peak (Linux carries it over exec).
     const auto peak_file = dir.path() / "main_job_peak_kib";
-    harness::ChildProcess run(
-        {"/usr/bin/time", "-f", "%M", "-o", peak_file.string(),
-         (s.programs / "scenario/raven_peg_transfer").string(), "--grasp-assist", "contact",
-         "--record", "no", "--out", (dir.path() / "out").string(), "-q"},
-        dir.path() / "main_job.log");
+    harness::ChildProcess run({"/usr/bin/time", "-f", "%M", "-o", peak_file.string(),
+                               (s.programs / "scenario/raven_peg_transfer").string(), "--record",
+                               "no", "--out", (dir.path() / "out").string(), "-q"},
+                              dir.path() / "main_job.log");
     long peak_kib = -1;
     if (run.wait(600.0) == 0) std::ifstream(peak_file) >> peak_kib;
     if (peak_kib > 0) {
       report.add(measured(kSection, "main job (peg transfer, whole run)",
                           Spread::of({peak_kib / 1024.0}), "MiB",
-                          "/usr/bin/time -f %M raven_peg_transfer --grasp-assist contact"));
+                          "/usr/bin/time -f %M raven_peg_transfer"));
     } else {
       report.skip(kSection, "main job", "it failed; see " + (dir.path() / "main_job.log").string());
     }

@@ -5,14 +5,31 @@
 #include <vector>
 
 #include "bridge/raven_platform.hpp"
-#include "scenario/run_progress.hpp"
+#include "scenario/peg_transfer.hpp"
 
 namespace bench {
 
-/// Loop frequencies (steps per wall second) of `repeat` runs of the main job's first `seconds`
-/// on the scene of `launch`, each shown to `observe` if set.
-std::vector<double> pegScene(const std::filesystem::path& launch, bridge::ClockKind clock,
-                             bool sleep, double seconds, int repeat,
-                             const scenario::WorldObserver& observe = {});
+/// How one timed run of the peg scene is made.
+struct PegSceneRun {
+  std::filesystem::path launch;
+  bridge::ClockKind clock = bridge::ClockKind::Simulated;
+  bool sleep = true;
+  scenario::AssistMode assist = scenario::AssistMode::Off;  ///< friction grasps by default
+  double seconds = 0.0;
+  scenario::WorldObserver observe{};
+};
+
+/// The loop frequency (physics steps per wall second) of one run, over the whole run and over
+/// the manual-loop iterations in which both arms held a ring (0 if they never did together).
+struct PegSceneRate {
+  double whole = 0.0;
+  double both_holding = 0.0;
+};
+
+/// `repeat` runs of `run`.
+std::vector<PegSceneRate> pegScene(const PegSceneRun& run, int repeat);
+
+/// The whole-run rates of `rates`.
+std::vector<double> wholeRates(const std::vector<PegSceneRate>& rates);
 
 }  // namespace bench

@@ -116,7 +116,7 @@ constexpr std::string_view kSoftBodyKeys[] = {
     "randomize constraints", "config", "inertial offset", "color", "color rgba",
     "color components", "visible", "shaders", "plugins", "passive", "publish frequency",
     "high resolution path", "low resolution path", "linear gain", "angular gain", "use material",
-    "redundant", "detached", "contact friction"};
+    "redundant", "detached", "contact friction", "substeps"};
 // clang-format on
 
 }  // namespace
@@ -143,6 +143,13 @@ SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
     } else if (model != "bullet") {
       friction->fail("contact friction must be 'bullet' (AMBF's) or 'coulomb', not '" + model +
                      "'");
+    }
+  }
+  if (auto substeps = node.find("substeps")) {
+    soft.substeps = substeps->asInt();
+    if (soft.substeps < 1 || soft.substeps > 64) substeps->fail("substeps must be 1 to 64");
+    if (soft.contact_friction != SoftContactFriction::Coulomb && soft.substeps > 1) {
+      substeps->fail("substeps are taken by soft bodies with 'contact friction: coulomb' only");
     }
   }
   if (auto config = node.find("config")) soft.config = readConfig(*config, context);

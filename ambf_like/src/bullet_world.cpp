@@ -56,13 +56,17 @@ btCollisionDispatcher& BulletWorld::dispatcher() {
   return impl_->dispatcher;
 }
 
+const btCollisionDispatcher& BulletWorld::dispatcher() const {
+  return impl_->dispatcher;
+}
+
 btSoftBodyWorldInfo& BulletWorld::softBodyInfo() {
   return impl_->soft_rigid ? impl_->soft_rigid->getWorldInfo()
                            : impl_->soft_multibody->getWorldInfo();
 }
 
-void BulletWorld::addSoftBody(btSoftBody& body, bool coulomb_contacts) {
-  if (coulomb_contacts) impl_->soft_solver.useCoulombContacts(body);
+void BulletWorld::addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps) {
+  if (coulomb_substeps) impl_->soft_solver.useCoulombContacts(body, *coulomb_substeps);
   if (impl_->soft_rigid) {
     impl_->soft_rigid->addSoftBody(&body);
   } else {

@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class btCollisionDispatcher;
@@ -27,9 +28,11 @@ class BulletWorld {
 
   btDiscreteDynamicsWorld& dynamics();
   btCollisionDispatcher& dispatcher();
+  const btCollisionDispatcher& dispatcher() const;
   btSoftBodyWorldInfo& softBodyInfo();
-  /// `coulomb_contacts`: its rigid contacts get Coulomb friction (CoulombContactSolver).
-  void addSoftBody(btSoftBody& body, bool coulomb_contacts);
+  /// With `coulomb_substeps` set, its rigid contacts get Coulomb friction and its step that
+  /// many substeps (CoulombContactSolver).
+  void addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps);
   void removeSoftBody(btSoftBody& body);
   /// The impulses of the last step's Coulomb contacts.
   const std::vector<NodeContactImpulse>& coulombImpulses() const;

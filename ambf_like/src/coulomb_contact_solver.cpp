@@ -5,62 +5,172 @@
 
 namespace ambf_like::detail {
 
-void CoulombContactSolver::useCoulombContacts(btSoftBody& body) {
+namespace {
+
+/// The rigid body a node touches, or null for a static or non-rigid object. Articulation links
+/// are refused when the world is built, so only rigid bodies get here.
+btRigidBody* movingRigidBody(const btCollisionObject* object) {
+  auto* rigid = const_cast<btRigidBody*>(btRigidBody::upcast(object));
+  return rigid != nullptr && rigid->getInvMass() > 0.0 ? rigid : nullptr;
+}
+
+bool isCoulombContact(const btSoftBody::RContact& contact) {
+  return contact.m_node->m_im > 0.0 && contact.m_cti.m_colObj->hasContactResponse();
+}
+
+}  // namespace
+
+void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps) {
   auto& sequence = body.m_cfg.m_psequence;
   for (int i = sequence.size() - 1; i >= 0; --i) {
     if (sequence[i] == btSoftBody::ePSolver::RContacts) sequence.removeAtIndex(i);
   }
-  coulomb_.insert(&body);
+  coulomb_[&body].substeps = substeps;
 }
 
 void CoulombContactSolver::forget(const btSoftBody& body) {
   coulomb_.erase(&body);
 }
 
-void CoulombContactSolver::solveConstraints(btScalar solver_dt) {
-  btDefaultSoftBodySolver::solveConstraints(solver_dt);
+void CoulombContactSolver::predictMotion(btScalar solver_dt) {
+  for (auto& [body, registered] : coulomb_) {
+    if (!body->isActive()) continue;
+    registered.start_velocity.resize(static_cast<std::size_t>(body->m_nodes.size()));
+    for (int i = 0; i < body->m_nodes.size(); ++i) {
+      registered.start_velocity[static_cast<std::size_t>(i)] = body->m_nodes[i].m_v;
+    }
+  }
+  btDefaultSoftBodySolver::predictMotion(solver_dt);
+}
+
+void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
   impulses_.clear();
   for (int i = 0; i < m_softBodySet.size(); ++i) {
     btSoftBody& body = *m_softBodySet[i];
-    if (body.isActive() && coulomb_.count(&body) != 0) solveContacts(body);
+    if (!body.isActive()) continue;
+    if (auto it = coulomb_.find(&body); it != coulomb_.end()) {
+      solve(body, it->second);
+    } else {
+      body.solveConstraints();
+    }
   }
 }
 
-void CoulombContactSolver::solveContacts(btSoftBody& body) {
-  const btScalar dt = body.m_sst.sdt;
-  const btScalar kdf = body.m_cfg.kDF;
+void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
+  // Bullet prepares links and anchors and runs any velocity iterations; the position
+  // iterations and the contacts are done here, substep by substep.
+  auto& cfg = body.m_cfg;
+  const int iterations = cfg.piterations;
+  const int drift_iterations = cfg.diterations;
+  cfg.piterations = 0;
+  cfg.diterations = 0;
+  body.solveConstraints();
+  cfg.piterations = iterations;
+  cfg.diterations = drift_iterations;
+
+  const int nodes = body.m_nodes.size();
+  const auto count = static_cast<std::size_t>(nodes);
+  const btScalar h = body.m_sst.sdt;
+  const int substeps = registered.substeps;
+  const btScalar hs = h / substeps;
+  // Bullet predicted x = lerp(q + (v0 + a h) h, pose goal, kMT): replay it in substeps.
+  acceleration_.resize(count);
+  pose_pull_.resize(count);
+  step_start_.resize(count);
+  const bool known_start = registered.start_velocity.size() == count;
+  for (std::size_t k = 0; k < count; ++k) {
+    btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
+    const btVector3 v0 = known_start ? registered.start_velocity[k] : n.m_v;
+    acceleration_[k] = (n.m_v - v0) / h;
+    pose_pull_[k] = (n.m_x - (n.m_q + n.m_v * h)) / substeps;
+    step_start_[k] = n.m_q;
+    n.m_x = n.m_q;
+    n.m_v = v0;
+  }
+  startContacts(body);
+  body.m_sst.sdt = hs;
+  body.m_sst.isdt = 1.0 / hs;
+  for (int s = 0; s < substeps; ++s) {
+    for (std::size_t k = 0; k < count; ++k) {
+      btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
+      n.m_q = n.m_x;
+      n.m_v += acceleration_[k] * hs;
+      n.m_x += n.m_v * hs + pose_pull_[k];
+    }
+    for (int k = 0; k < iterations; ++k) {
+      const btScalar ti = k / static_cast<btScalar>(iterations);
+      for (int q = 0; q < cfg.m_psequence.size(); ++q) {
+        btSoftBody::getSolver(cfg.m_psequence[q])(&body, 1.0, ti);
+      }
+    }
+    projectContacts(body, (s + 1) * hs);
+    for (int i = 0; i < nodes; ++i) {
+      btSoftBody::Node& n = body.m_nodes[i];
+      n.m_v = (n.m_x - n.m_q) / hs;
+    }
+  }
+  body.m_sst.sdt = h;
+  body.m_sst.isdt = 1.0 / h;
+  for (std::size_t k = 0; k < count; ++k) {
+    btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
+    n.m_v *= 1.0 - cfg.kDP;
+    n.m_q = step_start_[k];
+    n.m_f.setZero();
+  }
+  applyToRigidBodies(body);
+}
+
+void CoulombContactSolver::startContacts(const btSoftBody& body) {
+  contacts_.assign(static_cast<std::size_t>(body.m_rcontacts.size()), Accumulated{});
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
     const btSoftBody::RContact& contact = body.m_rcontacts[i];
-    btSoftBody::Node& node = *contact.m_node;
-    const btCollisionObject* object = contact.m_cti.m_colObj;
-    if (node.m_im <= 0.0 || !object->hasContactResponse()) continue;
-    // Articulation links are refused when the world is built: only rigid bodies get here.
-    btRigidBody* rigid = const_cast<btRigidBody*>(btRigidBody::upcast(object));
-    const btVector3 arm = node.m_x - object->getWorldTransform().getOrigin();
-    const btVector3 surface_velocity =
+    const btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj);
+    const btVector3 arm =
+        contact.m_node->m_x - contact.m_cti.m_colObj->getWorldTransform().getOrigin();
+    contacts_[static_cast<std::size_t>(i)].surface_velocity =
         rigid != nullptr ? rigid->getVelocityInLocalPoint(arm) : btVector3(0, 0, 0);
-    const btVector3& normal = contact.m_cti.m_normal;
-    // The contact plane was found before the rigid body moved this step: move it along.
-    const btScalar depth =
-        -(normal.dot(node.m_x) + contact.m_cti.m_offset - normal.dot(surface_velocity) * dt);
-    if (depth <= 0.0) continue;
+  }
+}
 
-    const btScalar mass = 1.0 / node.m_im;
-    const btVector3 normal_dv = normal * (depth / dt);
-    btVector3 relative = node.m_v - surface_velocity;
-    const btVector3 slip = relative - normal * normal.dot(relative);
-    const btScalar slip_speed = slip.length();
-    const btScalar normal_impulse = mass * normal_dv.length();
-    const btScalar limit = kdf * object->getFriction() * normal_impulse;
-    btVector3 friction_dv(0, 0, 0);
-    if (slip_speed > 0.0) {
-      friction_dv = mass * slip_speed <= limit ? -slip : slip * (-limit / (mass * slip_speed));
+void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
+  const btScalar kdf = body.m_cfg.kDF;
+  const btScalar hs = body.m_sst.sdt;
+  for (int i = 0; i < body.m_rcontacts.size(); ++i) {
+    const btSoftBody::RContact& contact = body.m_rcontacts[i];
+    if (!isCoulombContact(contact)) continue;
+    btSoftBody::Node& node = *contact.m_node;
+    Accumulated& state = contacts_[static_cast<std::size_t>(i)];
+    const btVector3& normal = contact.m_cti.m_normal;
+    // The contact plane was found where the rigid body was when the step began: move it along.
+    const btScalar depth = -(normal.dot(node.m_x) + contact.m_cti.m_offset -
+                             normal.dot(state.surface_velocity) * elapsed);
+    if (depth <= 0.0) continue;
+    node.m_x += normal * depth;
+    // Slip over the substep, relative to the surface: undone within mu x the normal push.
+    const btVector3 relative = node.m_x - node.m_q - state.surface_velocity * hs;
+    btVector3 friction = -(relative - normal * normal.dot(relative));
+    const btScalar limit = kdf * contact.m_cti.m_colObj->getFriction() * depth;
+    const btScalar size = friction.length();
+    if (size > limit) friction *= limit / size;
+    node.m_x += friction;
+    const btScalar mass_rate = 1.0 / (node.m_im * hs);  // impulse per unit of correction
+    const btVector3 normal_impulse = normal * (depth * mass_rate);
+    state.normal_impulse += normal_impulse;
+    state.impulse += normal_impulse + friction * mass_rate;
+  }
+}
+
+void CoulombContactSolver::applyToRigidBodies(const btSoftBody& body) {
+  for (int i = 0; i < body.m_rcontacts.size(); ++i) {
+    const btSoftBody::RContact& contact = body.m_rcontacts[i];
+    const Accumulated& state = contacts_[static_cast<std::size_t>(i)];
+    if (state.impulse.isZero()) continue;
+    const btSoftBody::Node& node = *contact.m_node;
+    if (btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj)) {
+      rigid->applyImpulse(-state.impulse, node.m_x - rigid->getWorldTransform().getOrigin());
     }
-    node.m_x += normal * depth + friction_dv * dt;
-    node.m_v += normal_dv + friction_dv;
-    const btVector3 impulse = (normal_dv + friction_dv) * mass;
-    if (rigid != nullptr && rigid->getInvMass() > 0.0) rigid->applyImpulse(-impulse, arm);
-    impulses_.push_back({&body, object, node.m_x, normal, normal_dv * mass, friction_dv * mass});
+    impulses_.push_back({&body, contact.m_cti.m_colObj, node.m_x, contact.m_cti.m_normal,
+                         state.normal_impulse, state.impulse - state.normal_impulse});
   }
 }
 

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "ambf_like/mesh.hpp"
+#include "vtk_tet_mesh.hpp"
 
 namespace ambf_like {
 
@@ -103,7 +104,18 @@ Vec3 Mesh::centroid() const {
 std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,
                                               const SourceRef& referenced_from) {
   if (auto it = cache_.find(file); it != cache_.end()) return it->second;
-  auto mesh = std::make_shared<const Mesh>(readMesh(file, referenced_from));
+  std::shared_ptr<const Mesh> mesh;
+  if (file.extension() == ".vtk") {
+    try {
+      mesh = std::make_shared<const Mesh>(detail::readVtkTetMesh(file));
+    } catch (const LoadError& error) {
+      auto issues = error.issues();
+      issues.push_back({referenced_from, "the tetrahedral mesh above is referenced here"});
+      throw LoadError(std::move(issues));
+    }
+  } else {
+    mesh = std::make_shared<const Mesh>(readMesh(file, referenced_from));
+  }
   cache_.emplace(file, mesh);
   return mesh;
 }

@@ -3,6 +3,9 @@
 #include <BulletSoftBody/btSoftBody.h>
 #include <BulletSoftBody/btSoftBodyHelpers.h>
 
+#include <cmath>
+#include <set>
+
 namespace ambf_like::detail {
 
 namespace {
@@ -40,6 +43,60 @@ void applyConfig(const SoftBodyConfig& c, btSoftBody& body) {
   material->m_kVST = c.kVST;
 }
 
+/// A surface mesh's body: a node per vertex, a link per triangle edge (Bullet's own helper).
+std::unique_ptr<btSoftBody> surfaceBody(const SoftBodySpec& spec, const Mesh& mesh,
+                                        const std::vector<btScalar>& vertices,
+                                        btSoftBodyWorldInfo& world_info) {
+  std::vector<int> triangles;
+  triangles.reserve(mesh.triangles.size() * 3);
+  for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
+  return std::unique_ptr<btSoftBody>(btSoftBodyHelpers::CreateFromTriMesh(
+      world_info, vertices.data(), triangles.data(), static_cast<int>(mesh.triangles.size()),
+      spec.randomize_constraints));
+}
+
+/// A volume mesh's body: a node per vertex, a link per tetrahedron edge (so the body resists
+/// being squeezed through its thickness, not only stretched along its surface), the boundary
+/// faces (contact, volume, drawing) and the tetrahedra (mass by volume).
+std::unique_ptr<btSoftBody> volumeBody(const SoftBodySpec& spec, const Mesh& mesh,
+                                       const std::vector<btScalar>& vertices,
+                                       btSoftBodyWorldInfo& world_info) {
+  std::vector<btVector3> nodes;
+  for (std::size_t i = 0; i < vertices.size(); i += 3) {
+    nodes.emplace_back(vertices[i], vertices[i + 1], vertices[i + 2]);
+  }
+  auto body = std::make_unique<btSoftBody>(&world_info, static_cast<int>(nodes.size()),
+                                           nodes.data(), nullptr);
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : mesh.tetrahedra) {
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) edges.emplace(std::minmax(t[a], t[b]));
+    }
+    body->appendTetra(t[0], t[1], t[2], t[3]);
+  }
+  for (const auto& [a, b] : edges) body->appendLink(a, b, nullptr, false);
+  for (const auto& f : mesh.triangles) body->appendFace(f[0], f[1], f[2]);
+  if (spec.randomize_constraints) body->randomizeConstraints();
+  return body;
+}
+
+/// Each node carries a quarter of every tetrahedron it is a corner of (a lumped mass matrix),
+/// scaled to `mass` in all.
+void setLumpedMasses(btSoftBody& body, double mass) {
+  std::vector<double> share(static_cast<std::size_t>(body.m_nodes.size()), 0.0);
+  double volume = 0.0;
+  for (int i = 0; i < body.m_tetras.size(); ++i) {
+    const btSoftBody::Tetra& t = body.m_tetras[i];
+    for (const btSoftBody::Node* n : t.m_n) {
+      share[static_cast<std::size_t>(n - &body.m_nodes[0])] += std::abs(t.m_rv) / 4.0;
+    }
+    volume += std::abs(t.m_rv);
+  }
+  for (int i = 0; i < body.m_nodes.size(); ++i) {
+    body.setMass(i, mass * share[static_cast<std::size_t>(i)] / volume);
+  }
+}
+
 }  // namespace
 
 std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& mesh,
@@ -50,18 +107,18 @@ std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& m
     const Vec3 p = spec.location * (v * spec.scale);
     vertices.insert(vertices.end(), {p.x(), p.y(), p.z()});
   }
-  std::vector<int> triangles;
-  triangles.reserve(mesh.triangles.size() * 3);
-  for (const auto& t : mesh.triangles) triangles.insert(triangles.end(), t.begin(), t.end());
-
-  std::unique_ptr<btSoftBody> body(btSoftBodyHelpers::CreateFromTriMesh(
-      world_info, vertices.data(), triangles.data(), static_cast<int>(mesh.triangles.size()),
-      spec.randomize_constraints));
+  const bool solid = !mesh.tetrahedra.empty();
+  std::unique_ptr<btSoftBody> body = solid ? volumeBody(spec, mesh, vertices, world_info)
+                                           : surfaceBody(spec, mesh, vertices, world_info);
 
   const auto& c = spec.config;
   applyConfig(c, *body);
   if (c.bending_constraint > 0) body->generateBendingConstraints(c.bending_constraint);
-  body->setTotalMass(spec.mass, true);
+  if (solid) {
+    setLumpedMasses(*body, spec.mass);
+  } else {
+    body->setTotalMass(spec.mass, true);
+  }
   if (c.kVC > 0.0 || c.kMT > 0.0) body->setPose(c.kVC > 0.0, c.kMT > 0.0);
   for (int index : c.fixed_nodes) {
     if (index >= body->m_nodes.size()) {

@@ -127,6 +127,9 @@ struct World::Impl {
            !detail::whyNotArticulable(model);
   }
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
+  /// The last step's contacts (Coulomb forces) of the body with this filter tag; null: all.
+  std::vector<Contact> contactsWith(const void* body_tag) const;
+  std::vector<SoftContactForce> softContactForcesOn(const void* body_tag) const;
   RigidBody& addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
                      MeshLibrary& meshes, Transform& com_in_body);
   void addConstraintJoints(const ModelSpec& model,
@@ -232,7 +235,7 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     auto& tag = tags.emplace_back(detail::CollisionTag{
         model.name_space + spec.name, model_index, model.ignore_inter_collision, true, {}});
     soft->setUserPointer(&tag);
-    bullet.addSoftBody(*soft, coulomb);
+    bullet.addSoftBody(*soft, coulomb ? std::optional<int>(spec.substeps) : std::nullopt);
     soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
   }
   if (articulate) {
@@ -367,30 +370,45 @@ const SoftBody& World::softBody(std::string_view name) const {
   return *impl_->soft_bodies[requireByName(impl_->soft_bodies, name, "soft body")];
 }
 
-std::vector<Contact> World::contacts() const {
+namespace {
+
+/// The qualified name a collision object's filter tag carries.
+std::string collisionName(const btCollisionObject* object) {
+  const auto* tag = static_cast<const detail::CollisionTag*>(object->getUserPointer());
+  return tag ? tag->name : std::string("?");
+}
+
+/// True when `object` is `body` (an articulation link's collider carries its body's tag), or
+/// when no body is asked for.
+bool isBody(const btCollisionObject* object, const void* body_tag) {
+  return body_tag == nullptr || object->getUserPointer() == body_tag;
+}
+
+}  // namespace
+
+std::vector<Contact> World::Impl::contactsWith(const void* body_tag) const {
   std::vector<Contact> out;
-  auto nameOf = [](const btCollisionObject* object) {
-    const auto* tag = static_cast<const detail::CollisionTag*>(object->getUserPointer());
-    return tag ? tag->name : std::string("?");
-  };
-  auto& dispatcher = impl_->bullet.dispatcher();
+  const btCollisionDispatcher& dispatcher = bullet.dispatcher();
   for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
+    if (!isBody(manifold->getBody0(), body_tag) && !isBody(manifold->getBody1(), body_tag)) {
+      continue;
+    }
     for (int k = 0; k < manifold->getNumContacts(); ++k) {
       const auto& point = manifold->getContactPoint(k);
       const btVector3 friction = point.m_lateralFrictionDir1 * point.m_appliedImpulseLateral1 +
                                  point.m_lateralFrictionDir2 * point.m_appliedImpulseLateral2;
-      out.push_back({nameOf(manifold->getBody0()), nameOf(manifold->getBody1()),
+      out.push_back({collisionName(manifold->getBody0()), collisionName(manifold->getBody1()),
                      toEigen(point.getPositionWorldOnB()), toEigen(point.m_normalWorldOnB),
                      point.getDistance(), point.getAppliedImpulse(), toEigen(friction)});
     }
   }
-  for (const auto& soft : impl_->soft_bodies) {
-    const auto& body = soft->bullet();
-    for (int i = 0; i < body.m_rcontacts.size(); ++i) {
-      const auto& contact = body.m_rcontacts[i];
+  for (const auto& soft : soft_bodies) {
+    for (int i = 0; i < soft->bullet().m_rcontacts.size(); ++i) {
+      const auto& contact = soft->bullet().m_rcontacts[i];
+      if (!isBody(contact.m_cti.m_colObj, body_tag)) continue;
       const btVector3& node = contact.m_node->m_x;
-      out.push_back({soft->qualifiedName(), nameOf(contact.m_cti.m_colObj), toEigen(node),
+      out.push_back({soft->qualifiedName(), collisionName(contact.m_cti.m_colObj), toEigen(node),
                      toEigen(contact.m_cti.m_normal),
                      contact.m_cti.m_normal.dot(node) + contact.m_cti.m_offset, 0.0, Vec3::Zero(),
                      true});
@@ -399,19 +417,32 @@ std::vector<Contact> World::contacts() const {
   return out;
 }
 
-std::vector<SoftContactForce> World::softContactForces() const {
-  const double h = impl_->options.step_size;
-  auto nameOf = [](const btCollisionObject* object) {
-    const auto* tag = static_cast<const detail::CollisionTag*>(object->getUserPointer());
-    return tag ? tag->name : std::string("?");
-  };
+std::vector<SoftContactForce> World::Impl::softContactForcesOn(const void* body_tag) const {
+  const double h = options.step_size;
   std::vector<SoftContactForce> out;
-  for (const auto& impulse : impl_->bullet.coulombImpulses()) {
-    out.push_back({nameOf(impulse.soft), nameOf(impulse.rigid), toEigen(impulse.position),
-                   toEigen(impulse.normal), toEigen(impulse.normal_impulse) / h,
-                   toEigen(impulse.friction_impulse) / h});
+  for (const auto& impulse : bullet.coulombImpulses()) {
+    if (!isBody(impulse.rigid, body_tag)) continue;
+    out.push_back({collisionName(impulse.soft), collisionName(impulse.rigid),
+                   toEigen(impulse.position), toEigen(impulse.normal),
+                   toEigen(impulse.normal_impulse) / h, toEigen(impulse.friction_impulse) / h});
   }
   return out;
+}
+
+std::vector<Contact> World::contacts() const {
+  return impl_->contactsWith(nullptr);
+}
+
+std::vector<Contact> World::contacts(std::string_view body) const {
+  return impl_->contactsWith(this->body(body).bullet().getUserPointer());
+}
+
+std::vector<SoftContactForce> World::softContactForces() const {
+  return impl_->softContactForcesOn(nullptr);
+}
+
+std::vector<SoftContactForce> World::softContactForces(std::string_view rigid_body) const {
+  return impl_->softContactForcesOn(body(rigid_body).bullet().getUserPointer());
 }
 
 bool World::isFinite() const {

@@ -20,22 +20,19 @@ GrasperForces graspForces(const ambf_like::World& world, const std::array<std::s
   auto ownArm = [&](const std::string& body) {
     return std::find(arm.begin(), arm.end(), body) != arm.end();
   };
-  for (const auto& c : world.contacts()) {
-    if (c.soft) continue;
-    for (std::size_t j = 0; j < 2; ++j) {
+  for (std::size_t j = 0; j < 2; ++j) {
+    for (const auto& c : world.contacts(jaws[j])) {
+      if (c.soft) continue;
       // Bullet's impulses act on body a; the object gets the opposite when the jaw is a.
       const bool jaw_is_a = c.body_a == jaws[j];
-      if (!jaw_is_a && c.body_b != jaws[j]) continue;
       const std::string& object = jaw_is_a ? c.body_b : c.body_a;
       if (ownArm(object)) continue;
       const double sign = jaw_is_a ? -1.0 : 1.0;
       add(out.jaws[j], c.position_on_b, sign * c.normal_on_b * c.normal_impulse / h,
           sign * c.friction_impulse / h);
     }
-  }
-  for (const auto& f : world.softContactForces()) {
-    for (std::size_t j = 0; j < 2; ++j) {
-      if (f.rigid_body == jaws[j]) add(out.jaws[j], f.position, f.normal_force, f.friction_force);
+    for (const auto& f : world.softContactForces(jaws[j])) {
+      add(out.jaws[j], f.position, f.normal_force, f.friction_force);
     }
   }
   return out;

@@ -61,17 +61,14 @@ TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings) {
       const auto& b = bindings.joints[a][i];
       ambf_like::Joint& joint = world.joint(b.name);
       bound_[a][i] = {&joint, b.scale, b.offset};
-      for (const auto& body : {joint.spec().parent, joint.spec().child}) {
-        const std::string name = bodyOf(world, b.name, joint, body);
+      const std::string child = bodyOf(world, b.name, joint, joint.spec().child);
+      for (const auto& name : {bodyOf(world, b.name, joint, joint.spec().parent), child}) {
         if (std::find(bodies_[a].begin(), bodies_[a].end(), name) == bodies_[a].end()) {
           bodies_[a].push_back(name);
         }
       }
+      if (i == kJaw1 || i == kJaw2) jaws_[a][i - kJaw1] = child;
     }
-    jaws_[a] = {bodyOf(world, bindings.joints[a][kJaw1].name, *bound_[a][kJaw1].joint,
-                       bound_[a][kJaw1].joint->spec().child),
-                bodyOf(world, bindings.joints[a][kJaw2].name, *bound_[a][kJaw2].joint,
-                       bound_[a][kJaw2].joint->spec().child)};
   }
 }
 

@@ -144,6 +144,11 @@ std::size_t writeModel(const ModelDraft& model, Collision collision,
     damping["linear"] = number(0.0);
     damping["angular"] = number(0.0);
     b["damping"] = flow(damping);
+    if (body.friction > 0.0) {
+      YAML::Node friction;
+      friction["static"] = number(body.friction);
+      b["friction"] = flow(friction);
+    }
 
     const bool as_mesh = !body.hull.empty() || collision == Collision::Dense;
     if (as_mesh) {

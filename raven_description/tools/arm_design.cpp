@@ -90,13 +90,15 @@ ModelDraft designArm(const PlatformProfile& profile, Arm arm, const ArmDesign& d
                  .mass = d.jaw_mass,
                  .armature = d.jaw_armature,
                  .hull = jawHullPoints(d.jaw_length, d.jaw_width, d.jaw_thickness, int(side)),
-                 .hull_mesh = "jaw1_" + name + ".obj"};
+                 .hull_mesh = "jaw1_" + name + ".obj",
+                 .friction = d.jaw_friction};
   BodyDraft jaw2{.name = "jaw2_link",
                  .pose = jaw_pivot * AngleAxisd(-side * home(kJaw2), Vector3d::UnitZ()),
                  .mass = d.jaw_mass,
                  .armature = d.jaw_armature,
                  .hull = jawHullPoints(d.jaw_length, d.jaw_width, d.jaw_thickness, -int(side)),
-                 .hull_mesh = "jaw2_" + name + ".obj"};
+                 .hull_mesh = "jaw2_" + name + ".obj",
+                 .friction = d.jaw_friction};
 
   const Vector3d z = Vector3d::UnitZ();
   auto joint = [&](const char* joint_name, const BodyDraft& parent, const BodyDraft& child,

@@ -21,6 +21,9 @@ struct ArmDesign {
   // Masses (kg): plausible for an aluminium arm and a laparoscopic instrument.
   double link1_mass = 0.9, link2_mass = 0.7, carriage_mass = 0.35, shaft_mass = 0.08;
   double wrist_mass = 0.006, jaw_mass = 0.003;
+  /// Serrated grasper jaws: about 3 N of pinch holds a 5 N pull (Heijnsdijk et al. 2004, Surg
+  /// Endosc 18:974-979), mu ~ 0.8; the ring's kDF (0.8) times this friction gives it.
+  double jaw_friction = 1.0;
   /// Reflected motor inertia behind the instrument's cable-driven joints (kg m^2): roll on the
   /// shaft, wrist and jaws. A 1e-6 kg m^2 rotor behind a 5:1 capstan stage gives 2.5e-5.
   double shaft_armature = 1e-4, wrist_armature = 5e-5, jaw_armature = 2e-5;

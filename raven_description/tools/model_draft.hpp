@@ -22,6 +22,7 @@ struct BodyDraft {
   std::vector<Primitive> primitives{};  ///< simplified collision (and visual) geometry
   std::vector<Eigen::Vector3d> hull{};  ///< or a convex hull point set (the jaws)
   std::string hull_mesh{};              ///< file name for the hull mesh
+  double friction = 0.0;                ///< ADF `friction: {static}`; 0: AMBF's default
 };
 
 /// A joint between two drafted bodies, in ADF terms.

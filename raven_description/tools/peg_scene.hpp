@@ -33,13 +33,15 @@ struct PegSceneDesign {
   double peg_major_radius = 0.008;
   double peg_minor_radius = 0.002;
   double peg_half_height = 0.005;
-  int peg_ring_segments = 16;  ///< 128 nodes: a station every 3.1 mm around the ring
-  int peg_tube_segments = 8;
+  int peg_ring_segments = 16;  ///< 144 nodes: a station every 3.1 mm around the ring
+  int peg_tube_segments = 8;   ///< around the tube, about its axis node
+  int peg_substeps = 4;        ///< per 1 ms step
+  int peg_iterations = 2;      ///< per substep
   double peg_mass = 0.002;
   double peg_margin = 0.0005;
 };
 
-/// Writes peg_board.yaml, pegs.yaml and meshes/peg.obj into `dir`.
+/// Writes peg_board.yaml, pegs.yaml and meshes/peg.vtk into `dir`.
 void writePegScene(const PegSceneDesign& design, const std::filesystem::path& dir);
 
 }  // namespace raven::model

@@ -200,27 +200,6 @@ std::vector<Vector3d> jawHullPoints(double length, double width, double thicknes
   return points;
 }
 
-TriangleMesh torus(double major, double minor, int ring_segments, int tube_segments,
-                   double minor_height) {
-  const double half_height = minor_height > 0.0 ? minor_height : minor;
-  TriangleMesh m;
-  for (int i = 0; i < ring_segments; ++i) {
-    const double u = 2.0 * M_PI * i / ring_segments;
-    for (int j = 0; j < tube_segments; ++j) {
-      const double v = 2.0 * M_PI * j / tube_segments;
-      const double r = major + minor * std::cos(v);
-      vertex(m, Vector3d(r * std::cos(u), r * std::sin(u), half_height * std::sin(v)));
-    }
-  }
-  auto at = [&](int i, int j) { return (i % ring_segments) * tube_segments + (j % tube_segments); };
-  for (int i = 0; i < ring_segments; ++i) {
-    for (int j = 0; j < tube_segments; ++j) {
-      quad(m, at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
-    }
-  }
-  return m;
-}
-
 TriangleMesh convexHull(const std::vector<Vector3d>& points) {
   std::vector<double> coords;
   for (const auto& p : points) coords.insert(coords.end(), {p.x(), p.y(), p.z()});

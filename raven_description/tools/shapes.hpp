@@ -41,11 +41,6 @@ Primitive cylinderBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b, do
 /// gripping face on the y = 0 plane, on the side `side` (+1: y >= 0, -1: y <= 0).
 std::vector<Eigen::Vector3d> jawHullPoints(double length, double width, double thickness, int side);
 
-/// A closed torus (ring) surface around z: `major` radius to the tube centre, `minor` tube
-/// radius, `ring_segments` x `tube_segments` vertices.
-TriangleMesh torus(double major, double minor, int ring_segments, int tube_segments,
-                   double minor_height = 0.0);
-
 /// The convex hull surface of a point set (quickhull via Bullet's btConvexHullComputer).
 TriangleMesh convexHull(const std::vector<Eigen::Vector3d>& points);
 

@@ -36,6 +36,7 @@ struct Settings {
   std::string jsonl;
   bool stand_in = false;
   double time_limit = 240.0;
+  double squeeze_mm = scenario::ArmRoutine::kDefaultSqueeze * 1e3;
   double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
   bool quiet = false, verbose = false;
   bool gui = false;
@@ -107,6 +108,7 @@ int runPegTransfers(const Settings& s) {
   options.stand_in = s.stand_in;
   options.launch_file = s.launch;
   options.time_limit = s.time_limit;
+  options.squeeze = s.squeeze_mm * 1e-3;
   const bool single = seeds.size() == 1;
   const std::string which =
       single ? fmt::format("seed {}", seeds.front())
@@ -228,6 +230,9 @@ int main(int argc, char** argv) {
                  "off (default: friction only) or contact (pin a peg touched by both jaws)")
       ->check(CLI::IsMember({"off", "contact"}))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // quickstart.sh's can be overridden
+  app.add_option("--squeeze", s.squeeze_mm,
+                 "how far the closed jaws reach into a ring's 4 mm wall (mm, default 1.5)")
+      ->check(CLI::Range(0.0, 4.0));
   app.add_option("--launch", s.launch,
                  "the scene's launch file (default: the shipped peg_transfer/launch.yaml)")
       ->check(CLI::ExistingFile);

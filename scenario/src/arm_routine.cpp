@@ -7,12 +7,14 @@
 #include <cmath>
 #include <limits>
 
+#include "scenario/grip_geometry.hpp"
+
 namespace scenario {
 
 namespace {
 
 constexpr double kOpen = 1.3;         ///< the outer jaw's angle when open (rad): clear of the ring
-constexpr double kPress = 0.25;       ///< ... when closed
+constexpr double kJawLength = 0.011;  ///< jaw axis to tips (raven_description/tools/arm_design)
 constexpr double kJawStep = 0.05;     ///< jaw angle per iteration
 constexpr double kStep = 0.001;       ///< tool travel per iteration (m)
 constexpr double kAboveTop = 0.0035;  ///< the jaw axis above the ring's top at the grasp
@@ -39,12 +41,13 @@ std::string_view phaseName(Phase phase) {
 }
 
 ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
-                       const PegLayout& layout, std::vector<PegJob> jobs)
+                       const PegLayout& layout, std::vector<PegJob> jobs, double squeeze)
     : arm_(arm),
       profile_(profile),
       kinematics_(raven::ArmKinematics::of(profile, arm)),
       layout_(layout),
-      jobs_(std::move(jobs)) {
+      jobs_(std::move(jobs)),
+      squeeze_(squeeze) {
   if (jobs_.empty()) phase_ = Phase::Done;
 }
 
@@ -84,6 +87,12 @@ void ArmRoutine::plan(const ambf_like::World& world) {
   const Eigen::Vector2d face = station.head<2>() + inward * (layout_.tube_half_width + kGap);
   grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), top + kAboveTop);
   grasp_.offset = face - centre;
+  const PinchedWall wall{.half_width = layout_.tube_half_width,
+                         .half_height = layout_.ring_height / 2,
+                         .pivot_above = kAboveTop,
+                         .gap = kGap,
+                         .jaw_length = kJawLength};
+  closed_ = squeezingAngle(wall, squeeze_);
 }
 
 raven::ArmJoints ArmRoutine::withJaws(raven::ArmJoints q) const {
@@ -155,9 +164,9 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       if (arrived) advance(Phase::Close);
       break;
     case Phase::Close:
-      outer_ = std::max(kPress, outer_ - kJawStep);
+      outer_ = std::max(closed_, outer_ - kJawStep);
       q = withJaws(target);
-      if (outer_ <= kPress) advance(Phase::Lift);
+      if (outer_ <= closed_) advance(Phase::Lift);
       break;
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);

@@ -1,5 +1,6 @@
 #include "scenario/peg_transfer.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -55,8 +56,10 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
 
   const auto profile = raven::builtinProfile("physical");
   std::array<ArmRoutine, 2> routines{
-      ArmRoutine(raven::Arm::Left, profile, layout, jobsOf(layout, raven::Arm::Left)),
-      ArmRoutine(raven::Arm::Right, profile, layout, jobsOf(layout, raven::Arm::Right))};
+      ArmRoutine(raven::Arm::Left, profile, layout, jobsOf(layout, raven::Arm::Left),
+                 options.squeeze),
+      ArmRoutine(raven::Arm::Right, profile, layout, jobsOf(layout, raven::Arm::Right),
+                 options.squeeze)};
   std::optional<GraspAssist> assist;
   if (options.assist == AssistMode::Contact) {
     std::vector<std::string> pegs;
@@ -86,6 +89,10 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     ++result.iterations;
     progress.sim_time = twin.now();
     progress.done = routines[0].finished() + routines[1].finished();
+    progress.carrying = static_cast<std::size_t>(
+        std::count_if(routines.begin(), routines.end(), [](const ArmRoutine& r) {
+          return r.phase() == Phase::Lift || r.phase() == Phase::Carry || r.phase() == Phase::Lower;
+        }));
     if (options.progress) options.progress(progress);
     show(WorldMoment::Iteration);
   }

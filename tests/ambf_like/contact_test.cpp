@@ -44,6 +44,35 @@ TEST(Contact, BoxDroppedOnAPlaneRestsOnIt) {
   EXPECT_LE(c.distance, 1e-3);
 }
 
+TEST(Contact, ABodysContactsAreExactlyTheOnesThatTouchIt) {
+  test_support::TempDir dir;
+  auto box = [](const std::string& name, double x) {
+    return "BODY " + name + ":\n  name: " + name +
+           "\n  mass: 0.5\n  collision shape: BOX\n  collision geometry: {x: 0.1, y: 0.1, z: 0.1}\n"
+           "  location: {position: {x: " +
+           std::to_string(x) + ", y: 0, z: 0.06}}\n";
+  };
+  const auto file = dir.write("two.yaml", "bodies: [BODY ground, BODY left, BODY right]\n" +
+                                              kGround + box("left", -0.5) + box("right", 0.5));
+  auto sim = test_support::simulate({file});
+  auto& world = *sim->world;
+  world.step(500);
+  auto touches = [](const ambf_like::Contact& c, const std::string& body) {
+    return c.body_a == body || c.body_b == body;
+  };
+  const auto all = world.contacts();
+  for (const std::string body : {"/ambf/env/left", "/ambf/env/right"}) {
+    const auto own = world.contacts(body);
+    const auto expected =
+        std::count_if(all.begin(), all.end(), [&](const auto& c) { return touches(c, body); });
+    ASSERT_GT(expected, 0) << body << " rests on the ground";
+    EXPECT_EQ(static_cast<long>(own.size()), expected) << body;
+    for (const auto& c : own) EXPECT_TRUE(touches(c, body)) << c.body_a << " - " << c.body_b;
+  }
+  EXPECT_LT(world.contacts("/ambf/env/left").size(), all.size());
+  EXPECT_THROW(world.contacts("no_such_body"), std::out_of_range);
+}
+
 /// A 10 cm cube mesh as a dynamic body of the given collision mesh type, dropped on the plane.
 double restingHeightOfCubeMesh(const std::string& mesh_type) {
   test_support::TempDir dir;

@@ -15,11 +15,15 @@ namespace {
 constexpr double kGravity = 9.81;
 const double kSlope = std::atan(0.3);  // inside the friction cone of mu = 1
 
-/// A static plane "jaw1" tilted by kSlope about y (friction 1) under `resting`.
+/// A static plane "jaw1" tilted by kSlope about y (friction 1) under `resting`; "jaw2" a static
+/// box touching nothing.
 std::string scene(const std::string& resting) {
   std::ostringstream s;
-  s << "bodies: [BODY jaw1" << (resting.find("soft") == 0 ? "]\n" : ", BODY thing]\n")
+  s << "bodies: [BODY jaw1, BODY jaw2" << (resting.find("soft") == 0 ? "]\n" : ", BODY thing]\n")
     << (resting.find("soft") == 0 ? "soft bodies: [BODY thing]\n" : "")
+    << "BODY jaw2:\n  name: jaw2\n  mass: 0\n  collision shape: BOX\n"
+    << "  collision geometry: {x: 0.01, y: 0.01, z: 0.01}\n"
+    << "  location: {position: {x: 1, y: 0, z: 1}}\n"
     << "BODY jaw1:\n  name: jaw1\n  mass: 0\n  friction: {static: 1.0}\n"
     << "  collision shape: PLANE\n  collision geometry: {normal: {x: " << std::sin(kSlope)
     << ", y: 0, z: " << std::cos(kSlope) << "}, offset: 0}\n"

@@ -1,5 +1,6 @@
 #pragma once
-// Triangle meshes read from STL, OBJ, 3DS or DAE files through assimp, loaded once and shared.
+// Triangle meshes read from STL, OBJ, 3DS or DAE files through assimp, and tetrahedral volume
+// meshes from legacy VTK files, loaded once and shared.
 
 #include <array>
 #include <filesystem>
@@ -12,11 +13,13 @@
 
 namespace ambf_like {
 
-/// Triangle geometry of one mesh file: vertices welded by position, node transforms applied.
+/// Geometry of one mesh file: vertices welded by position, node transforms applied. A volume
+/// mesh (.vtk) has tetrahedra too; its triangles are then their boundary faces, outward.
 struct Mesh {
   std::filesystem::path file;
   std::vector<Vec3> vertices;
   std::vector<std::array<int, 3>> triangles;
+  std::vector<std::array<int, 4>> tetrahedra;  ///< positive volume; empty for surface meshes
 
   /// Mean of the vertices (AMBF's default inertial offset for mesh bodies).
   Vec3 centroid() const;

@@ -41,6 +41,7 @@ struct SoftBodySpec {
   double margin = 0.001;  ///< set explicitly: Bullet's own default is 0.25 m
   bool randomize_constraints = false;
   SoftContactFriction contact_friction = SoftContactFriction::Bullet;  ///< `contact friction`
+  int substeps = 1;  ///< `substeps` per world step (Coulomb contacts only)
   SoftBodyConfig config;
   SourceRef where;
 };

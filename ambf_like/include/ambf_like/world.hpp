@@ -103,9 +103,14 @@ class World {
 
   /// Every contact point of the last step, rigid-rigid and soft-rigid.
   std::vector<Contact> contacts() const;
+  /// Only those that touch the rigid body `body` (named as body() takes it, and throwing the same
+  /// way): what a per-step reader of one body's contacts should call.
+  std::vector<Contact> contacts(std::string_view body) const;
   /// Per node, the forces of the last step's Coulomb contacts (soft bodies with
   /// `contact friction: coulomb`); the rigid body felt the opposite.
   std::vector<SoftContactForce> softContactForces() const;
+  /// Only those from the rigid body `rigid_body`.
+  std::vector<SoftContactForce> softContactForces(std::string_view rigid_body) const;
   /// False as soon as any pose, velocity or soft-body node is NaN or infinite.
   bool isFinite() const;
   /// Models simulated in reduced coordinates (see Articulation).

@@ -22,8 +22,12 @@ std::string_view phaseName(Phase phase);
 /// Scripted operator for one arm.
 class ArmRoutine {
  public:
+  /// `squeeze`: how far (m) the closed jaws reach into the ring's wall (grip_geometry.hpp).
   ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile, const PegLayout& layout,
-             std::vector<PegJob> jobs);
+             std::vector<PegJob> jobs, double squeeze = kDefaultSqueeze);
+
+  /// 1.5 mm of the ring's 4 mm wall: its elastic push then grips it well past its weight.
+  static constexpr double kDefaultSqueeze = 0.0015;
 
   /// The arm's next target. `target` is its current one, `world` shows the pegs.
   raven::ArmJoints next(const raven::ArmJoints& target, const ambf_like::World& world);
@@ -60,6 +64,8 @@ class ArmRoutine {
   Phase phase_ = Phase::Orient;
   int waited_ = 0;
   Grasp grasp_;
+  double squeeze_;
+  double closed_ = 0.0;               ///< the outer jaw's angle when closed, for this grasp
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
 };
 

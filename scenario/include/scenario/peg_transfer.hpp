@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "bridge/raven_platform.hpp"
+#include "scenario/arm_routine.hpp"
 #include "scenario/peg_transfer_result.hpp"
 #include "scenario/run_progress.hpp"
 
@@ -19,6 +20,8 @@ struct PegTransferOptions {
   /// Draw the scene from `seed` (scene_variation.hpp's ranges); else the nominal scene.
   bool randomize = false;
   AssistMode assist = AssistMode::Off;
+  /// How far (m) the closed jaws reach into a ring's wall (ArmRoutine).
+  double squeeze = ArmRoutine::kDefaultSqueeze;
   /// The physical stand-in's actuation model instead of the twin's ideal servos.
   bool stand_in = false;
   /// The scene's launch file; empty: raven_description's peg_transfer (the benchmarks pass the

@@ -13,8 +13,9 @@ namespace scenario {
 /// A run's position: simulated time, and units of work done.
 struct RunProgress {
   double sim_time = 0.0;
-  std::size_t done = 0;   ///< transfers (or rectangle edges) finished
-  std::size_t total = 0;  ///< ... of this many
+  std::size_t done = 0;      ///< transfers (or rectangle edges) finished
+  std::size_t total = 0;     ///< ... of this many
+  std::size_t carrying = 0;  ///< arms between closing on a ring and opening (lift, carry, lower)
 };
 
 /// Called after every manual-loop iteration.
