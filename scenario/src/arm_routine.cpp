@@ -87,12 +87,16 @@ void ArmRoutine::plan(const ambf_like::World& world) {
   const Eigen::Vector2d face = station.head<2>() + inward * (layout_.tube_half_width + kGap);
   grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), top + kAboveTop);
   grasp_.offset = face - centre;
+  closed_ = jawAngleFor(squeeze_);
+}
+
+double ArmRoutine::jawAngleFor(double squeeze) const {
   const PinchedWall wall{.half_width = layout_.tube_half_width,
                          .half_height = layout_.ring_height / 2,
                          .pivot_above = kAboveTop,
                          .gap = kGap,
                          .jaw_length = kJawLength};
-  closed_ = squeezingAngle(wall, squeeze_);
+  return squeezingAngle(wall, squeeze);
 }
 
 raven::ArmJoints ArmRoutine::withJaws(raven::ArmJoints q) const {

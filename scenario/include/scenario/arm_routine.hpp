@@ -33,6 +33,8 @@ class ArmRoutine {
   raven::ArmJoints next(const raven::ArmJoints& target, const ambf_like::World& world);
   bool done() const { return phase_ == Phase::Done; }
   Phase phase() const { return phase_; }
+  /// The outer jaw's angle that reaches `squeeze` (m) into the current job's ring wall.
+  double jawAngleFor(double squeeze) const;
   /// The jaws' commanded opening (jaw1 + jaw2) of the last target.
   double opening() const { return inner_ + outer_; }
   /// Jobs finished (whatever their outcome).

@@ -1,0 +1,168 @@
+// Friction grasps on the real grasper and the shipped peg scene: a ring lifted by the left arm
+// is held by contact forces that carry exactly its weight, does not slip in the jaws while
+// carried at the velocity caps, and slips out when the jaws squeeze it too little: friction,
+// not glue (nothing but contact acts between the jaws and the ring).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+#include "raven/platform_profile.hpp"
+#include "scenario/arm_routine.hpp"
+#include "scenario/peg_layout.hpp"
+#include "scenario/scripted_session.hpp"
+
+namespace {
+
+using raven::Arm;
+using scenario::Phase;
+
+constexpr double kGravity = 9.81;
+constexpr double kRingMass = 0.002;  // raven_description's peg design
+const std::string kJaw1 = "/raven2/left/jaw1_link";
+const std::string kJaw2 = "/raven2/left/jaw2_link";
+
+bridge::TwinOptions pegScene() {
+  bridge::TwinOptions options;
+  options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
+  // Every ring awake: a sleeping body reports no contacts.
+  options.adjust_scene = [](ambf_like::SceneSpec& scene) {
+    scene.world.soft_body_sleep.enabled = false;
+  };
+  return options;
+}
+
+/// The left arm taking peg1 through the scripted routine, the right arm still.
+class FrictionGrasp : public ::testing::Test {
+ protected:
+  explicit FrictionGrasp(double squeeze = scenario::ArmRoutine::kDefaultSqueeze)
+      : session_(pegScene()),
+        routine_(Arm::Left, raven::builtinProfile("physical"), layout_, {layout_.jobs[0]},
+                 squeeze) {
+    session_.makeReady(60.0);
+  }
+
+  ambf_like::World& world() { return session_.twin().world(); }
+  const ambf_like::SoftBody& ring() { return world().softBody("peg1"); }
+  double ringBottom() {
+    double low = std::numeric_limits<double>::infinity();
+    for (const auto& p : ring().nodePositions()) low = std::min(low, p.z());
+    return low;
+  }
+
+  /// One manual-loop iteration of the routine; the report of the controller's move.
+  controller::IterationReport iterate() {
+    auto& controller = session_.controller();
+    const auto current = controller.commanded();
+    return controller.moveTo({routine_.next(current[0], world()), current[1]});
+  }
+  /// Iterates until the routine enters `phase` (at most `limit` iterations).
+  void runUntil(Phase phase, int limit = 2000) {
+    for (int i = 0; i < limit && routine_.phase() != phase; ++i) iterate();
+    ASSERT_EQ(routine_.phase(), phase) << "the routine did not get there";
+  }
+  /// Holds the arms where they are for `seconds`.
+  void hold(double seconds) { session_.twin().advance(seconds); }
+  /// Commands the left outer jaw to `angle`, the rest of the arm where it is.
+  void setOuterJaw(double angle) {
+    auto& controller = session_.controller();
+    auto target = controller.commanded();
+    target[0](raven::kJaw2) = angle;
+    controller.moveTo(target);
+  }
+
+  scenario::PegLayout layout_;
+  scenario::ScriptedSession session_;
+  scenario::ArmRoutine routine_;
+};
+
+TEST_F(FrictionGrasp, HeldStillInTheAirTheContactForcesCarryTheRingsWeight) {
+  runUntil(Phase::Carry);  // lifted 30 mm
+  hold(1.0);
+  ASSERT_GT(ringBottom(), layout_.geometry.board_top + 0.020) << "the ring came along";
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  const int steps = 500;
+  for (int i = 0; i < steps; ++i) {
+    hold(0.001);
+    const auto cf = session_.twin().measuredCf(Arm::Left);
+    ASSERT_TRUE(cf.has_value());
+    ASSERT_GT(cf->jaws[0].contacts + cf->jaws[1].contacts, 0);
+    mean += cf->force / steps;
+  }
+  const double weight = kRingMass * kGravity;
+  std::printf("jaws' mean push on the held ring: (%.5f, %.5f, %.5f) N; its weight %.5f N\n",
+              mean.x(), mean.y(), mean.z(), weight);
+  EXPECT_NEAR(mean.z(), weight, 0.1 * weight) << "the jaws' vertical push on the ring";
+  EXPECT_LT(mean.head<2>().norm(), 0.1 * weight);
+  // Friction, not a hanging point: both jaws squeeze the ring far harder than its weight.
+  const auto cf = session_.twin().measuredCf(Arm::Left);
+  EXPECT_GT(cf->jaws[0].normal.norm(), weight);
+  EXPECT_GT(cf->jaws[1].normal.norm(), weight);
+}
+
+TEST_F(FrictionGrasp, CarriedAtTheVelocityCapsTheRingSlipsLessThanAMillimetreInTheJaws) {
+  runUntil(Phase::Carry);
+  hold(0.5);
+  // The ring's nodes that touch the outer jaw, in that jaw's frame.
+  const auto frameOf = [&] { return world().body(kJaw2).pose(); };
+  std::vector<std::size_t> touching;
+  const auto nodes = ring().nodePositions();
+  for (const auto& f : world().softContactForces(kJaw2)) {
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      if (nodes[i] == f.position) touching.push_back(i);
+    }
+  }
+  ASSERT_FALSE(touching.empty()) << "the outer jaw holds the ring";
+  std::vector<Eigen::Vector3d> start;
+  for (std::size_t i : touching) start.push_back(frameOf().inverse() * nodes[i]);
+
+  double slip = 0.0, travel = 0.0;
+  int capped = 0, iterations = 0;
+  const Eigen::Vector3d from = world().body(kJaw2).pose().translation();
+  while (routine_.phase() == Phase::Carry && iterations < 2000) {
+    const auto report = iterate();
+    ++iterations;
+    // More than man_steps command steps: the move was stretched to stay within the caps.
+    capped += report.steps > 10 ? 1 : 0;
+    const auto now = ring().nodePositions();
+    const auto frame = frameOf().inverse();
+    for (std::size_t k = 0; k < touching.size(); ++k) {
+      slip = std::max(slip, (frame * now[touching[k]] - start[k]).norm());
+    }
+  }
+  travel = (world().body(kJaw2).pose().translation() - from).norm();
+  std::printf("carried %.1f mm in %d iterations (%d at the caps); held nodes moved %.3f mm\n",
+              travel * 1e3, iterations, capped, slip * 1e3);
+  EXPECT_GT(travel, 0.035) << "carried from the start post to the target post";
+  EXPECT_GT(capped, iterations / 2) << "most carry iterations ran at the caps";
+  EXPECT_LT(slip, 0.001) << "the held nodes moved in the jaw's frame";
+}
+
+/// The same grasp closed to a squeeze of a few micrometres: too little for the ring's weight.
+class LightGrasp : public FrictionGrasp {
+ protected:
+  LightGrasp() : FrictionGrasp(0.00002) {}
+};
+
+TEST_F(LightGrasp, TooLittleSqueezeLiftsNothing) {
+  runUntil(Phase::Carry);
+  hold(0.5);
+  EXPECT_LT(ringBottom(), layout_.geometry.board_top + 0.005) << "the ring stayed on its post";
+}
+
+TEST_F(FrictionGrasp, OpeningToALightSqueezeInTheAirLetsTheRingSlipOut) {
+  runUntil(Phase::Carry);
+  hold(0.5);
+  const double held = ringBottom();
+  ASSERT_GT(held, layout_.geometry.board_top + 0.020);
+  setOuterJaw(routine_.jawAngleFor(0.00002));
+  hold(0.5);
+  std::printf("ring bottom %.1f mm above the board held, %.1f mm after opening\n",
+              (held - layout_.geometry.board_top) * 1e3,
+              (ringBottom() - layout_.geometry.board_top) * 1e3);
+  EXPECT_LT(ringBottom(), held - 0.015) << "the ring slid down out of the jaws";
+}
+
+}  // namespace
