@@ -7,6 +7,8 @@ Fig. 6: each joint's trajectory per platform, the band between the smallest and 
 Fig. 7: mean absolute difference per joint for every comparison (positions and velocities).
 Fig. 8: simulation-minus-physical difference against time, joint position and joint velocity,
         with the LOWESS trend and the marginal densities.
+Grasp forces: for every rs file with a cf file beside it (a platform that measures contact forces,
+        such as the twin), each grasper's jaw normal and friction forces over time.
 The numbers come from the C++ analysis; this script only draws them.
 """
 import csv
@@ -165,6 +167,39 @@ def factors(out, metrics, joints):
     return files
 
 
+def grasp_forces(out):
+    """One figure per cf recording listed in grasp_forces.csv; a file it cannot read is skipped."""
+    listing = out / "grasp_forces.csv"
+    figures = []
+    for index, entry in enumerate(read_rows(listing) if listing.exists() else []):
+        path = Path(entry["file"])
+        try:
+            rows = read_rows(path)
+            time = np.array([float(r["time"]) for r in rows])
+            series = {k: np.array([float(r[k]) for r in rows]) for k in rows[0] if k != "time"}
+        except (OSError, KeyError, ValueError, IndexError) as error:
+            print(f"draw_report: {path}: skipped ({error})", file=sys.stderr)
+            continue
+        fig, axes = plt.subplots(2, 1, figsize=(9, 5), sharex=True)
+        for ax, arm in zip(axes, ("left", "right")):
+            for jaw, style in (("jaw1", "-"), ("jaw2", "--")):
+                ax.plot(time, series[f"{arm}_{jaw}_normal"], style, color="#1b6ca8",
+                        label=f"{jaw} normal")
+                ax.plot(time, series[f"{arm}_{jaw}_friction"], style, color="#d1495b",
+                        label=f"{jaw} friction")
+            ax.plot(time, series[f"{arm}_fz"], ":", color="k", label="total, vertical")
+            ax.set_ylabel(f"{arm} grasper (N)")
+            ax.legend(fontsize=7, ncol=5, loc="upper right")
+        axes[-1].set_xlabel("time (s)")
+        fig.suptitle(f"{entry['platform']}: grasp forces, {path.name}")
+        fig.tight_layout()
+        name = f"grasp_forces_{index + 1}.png"
+        fig.savefig(out / name, dpi=80)
+        plt.close(fig)
+        figures.append(name)
+    return figures
+
+
 def table(rows, columns):
     head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
     body = "".join("<tr>" + "".join(f"<td>{html.escape(str(r.get(c, '')))}</td>" for c in columns)
@@ -209,7 +244,7 @@ def main():
     metrics = json.loads((out / "metrics.json").read_text())
     joints = metrics["joints"]
     figures = trajectories(out, metrics, joints) + inconsistencies(out, metrics, joints)
-    figures += factors(out, metrics, joints)
+    figures += factors(out, metrics, joints) + grasp_forces(out)
     page(out, metrics, figures)
     print(f"draw_report: {len(figures)} figures and index.html in {out}")
 

@@ -11,6 +11,7 @@
 
 #include "analysis/factors.hpp"
 #include "analysis/metrics.hpp"
+#include "controller/cf_recording.hpp"
 
 namespace analysis {
 
@@ -183,6 +184,20 @@ void writeTrajectories(const TrialSet& set, const std::filesystem::path& dir) {
   }
 }
 
+/// grasp_forces.csv: the cf recordings beside the trials' rs files, for the grip figures.
+void writeGraspForceFiles(const TrialSet& set, const std::filesystem::path& dir) {
+  auto out = openFile(dir / "grasp_forces.csv");
+  out << "platform,file\n";
+  for (const auto& p : set.platforms) {
+    for (const auto& t : p.trials) {
+      const auto cf = controller::cfPathFor(t.path);
+      if (std::filesystem::is_regular_file(cf)) {
+        out << csvField(p.profile.name) << "," << csvField(cf.string()) << "\n";
+      }
+    }
+  }
+}
+
 void writeIssues(const TrialSet& set, const std::filesystem::path& dir) {
   auto out = openFile(dir / "issues.csv");
   out << "file,excluded,reason\n";
@@ -200,6 +215,7 @@ void writeReportData(const TrialSet& set, const ReportSettings& settings,
   const auto list = comparisons(set);
   writeMetrics(set, settings, list, dir);
   writeTrajectories(set, dir);
+  writeGraspForceFiles(set, dir);
   writeIssues(set, dir);
 }
 

@@ -22,8 +22,9 @@ std::vector<std::filesystem::path> expand(const std::vector<std::filesystem::pat
     std::vector<std::filesystem::path> inside;
     for (const auto& entry : std::filesystem::directory_iterator(input)) {
       const auto name = entry.path().filename().string();
-      const bool gamepad_inputs = name.ends_with("_ci.csv");
-      if (entry.path().extension() == ".csv" && !gamepad_inputs) {
+      // Gamepad inputs and grasp forces are not robot states.
+      const bool other = name.ends_with("_ci.csv") || name.ends_with("_cf.csv");
+      if (entry.path().extension() == ".csv" && !other) {
         inside.push_back(entry.path());
       }
     }

@@ -77,6 +77,9 @@ void ControllerSession::startRecording() {
     const std::string suffix = platforms.size() > 1 ? "_" + slot.name : "";
     rs_.push_back(std::make_unique<RsWriter>(options_.out_dir / (stem + suffix + "_rs.csv")));
     files_.push_back(rs_.back()->path());
+    const bool has_forces = slot.platform->measuredCf(raven::Arm::Left).has_value();
+    cf_.push_back(has_forces ? std::make_unique<CfWriter>(cfPathFor(rs_.back()->path())) : nullptr);
+    if (cf_.back()) files_.push_back(cf_.back()->path());
   }
   ci_ = std::make_unique<CiWriter>(options_.out_dir / (stem + "_ci.csv"));
   files_.push_back(options_.out_dir / (stem + "_ci.csv"));
@@ -86,6 +89,7 @@ void ControllerSession::startRecording() {
 std::size_t ControllerSession::stopRecording() {
   const std::size_t rows = rs_.empty() ? 0 : rs_.front()->rows();
   rs_.clear();
+  cf_.clear();
   ci_.reset();
   spdlog::info("recording stopped ({} rows)", rows);
   return rows;
@@ -98,7 +102,12 @@ void ControllerSession::record(const std::optional<GamepadState>& pad) {
     const auto state = platforms[i].platform->ravenState();
     if (!state) continue;
     if (options_.on_state) options_.on_state(i, *state);
-    if (recording()) rs_[i]->write(*state);
+    if (!recording()) continue;
+    rs_[i]->write(*state);
+    if (cf_[i]) {
+      const auto& p = *platforms[i].platform;
+      cf_[i]->write(state->time, {p.measuredCf(raven::Arm::Left), p.measuredCf(raven::Arm::Right)});
+    }
   }
   if (pad && ci_) ci_->write(*pad);
 }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <thread>
 
+#include "controller/cf_recording.hpp"
 #include "scenario/batch.hpp"
 #include "scenario/batch_summary.hpp"
 #include "scenario/console_report.hpp"
@@ -173,10 +174,12 @@ int runPegTransfers(const Settings& s) {
   const fs::path summary_path = out / ("summary" + shardSuffix(shard) + ".json");
   writeJson(summary_path, summary);
   const auto& first = results.front();
-  fmt::print(
-      "wrote {}{}, {}\n",
-      single && record ? fmt::format("{} ({} rows), ", first.rs_file.string(), first.rs_rows) : "",
-      summary_path.string(), jsonl_path.string());
+  fmt::print("wrote {}{}, {}\n",
+             single && record
+                 ? fmt::format("{} ({} rows), {}, ", first.rs_file.string(), first.rs_rows,
+                               controller::cfPathFor(first.rs_file).string())
+                 : "",
+             summary_path.string(), jsonl_path.string());
   return 0;
 }
 

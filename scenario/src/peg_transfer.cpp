@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 
+#include "controller/cf_recording.hpp"
 #include "controller/recording_io.hpp"
 #include "scenario/arm_routine.hpp"
 #include "scenario/grasp_assist.hpp"
@@ -67,7 +68,11 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     assist.emplace(world, pegs);
   }
   std::unique_ptr<controller::RsWriter> rs;
-  if (!options.rs_file.empty()) rs = std::make_unique<controller::RsWriter>(options.rs_file);
+  std::unique_ptr<controller::CfWriter> cf;
+  if (!options.rs_file.empty()) {
+    rs = std::make_unique<controller::RsWriter>(options.rs_file);
+    cf = std::make_unique<controller::CfWriter>(controller::cfPathFor(options.rs_file));
+  }
 
   RunProgress progress{twin.now(), 0, layout.jobs.size()};
   auto show = [&](WorldMoment moment) {
@@ -84,7 +89,12 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
       for (raven::Arm arm : raven::kArms)
         assist->update(arm, routines[raven::index(arm)].opening());
     }
-    if (rs) rs->write(*twin.ravenState());
+    if (rs) {
+      const auto state = *twin.ravenState();
+      rs->write(state);
+      cf->write(state.time,
+                {twin.measuredCf(raven::Arm::Left), twin.measuredCf(raven::Arm::Right)});
+    }
     watch.observe();
     ++result.iterations;
     progress.sim_time = twin.now();

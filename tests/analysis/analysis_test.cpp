@@ -14,8 +14,10 @@
 #include "analysis/factors.hpp"
 #include "analysis/lowess.hpp"
 #include "analysis/metrics.hpp"
+#include "analysis/report.hpp"
 #include "analysis/trial_set.hpp"
 #include "common/load_error.hpp"
+#include "controller/cf_recording.hpp"
 #include "controller/recording_io.hpp"
 #include "test_files.hpp"
 
@@ -285,8 +287,37 @@ TEST(Profiles, ThePapersDatasetNamesAreRecognised) {
   EXPECT_EQ(platformOf("m1right_a3.csv"), "ambf");
   EXPECT_EQ(platformOf("2arm_physical_2.csv"), "physical");
   EXPECT_EQ(platformOf("twin_2arm_20261124_rs.csv"), "twin");
+  EXPECT_EQ(platformOf("peg_transfer_seed7_rs.csv"), "twin");
   EXPECT_EQ(platformOf("set_px.csv"), "none");
   EXPECT_EQ(platformOf("set_p1.csv.bak"), "none");
+}
+
+TEST(Analysis, GraspForceRecordingsBesideRsFilesAreListedForTheirFigureNotReadAsTrials) {
+  test_support::TempDir dir;
+  const auto twin = writeRs(dir, "run_twin_rs.csv", 50, [](int r, int) { return 1e-3 * r; });
+  {
+    controller::CfWriter cf(controller::cfPathFor(twin));
+    bridge::GrasperForces held;
+    held.jaws[0].normal = Eigen::Vector3d(0.15, 0, 0);
+    held.jaws[0].contacts = 3;
+    held.force = Eigen::Vector3d(0, 0, 0.0196);
+    for (int r = 0; r < 50; ++r) cf.write(0.02 * r, {held, std::nullopt});
+  }
+  writeRs(dir, "run_physical_rs.csv", 50, [](int r, int) { return 1e-3 * r; });
+  const auto set = analysis::loadTrials({dir.path()}, defaultProfiles());
+  EXPECT_TRUE(set.issues.empty()) << set.issues.front().path << ": " << set.issues.front().reason;
+  ASSERT_TRUE(set.find("twin"));
+  ASSERT_TRUE(set.find("physical"));
+
+  const auto out = dir.path() / "report";
+  analysis::writeReportData(set, {}, out);
+  const std::string listing = test_support::readFile(out / "grasp_forces.csv");
+  EXPECT_NE(listing.find("run_twin_cf.csv"), std::string::npos) << listing;
+  EXPECT_EQ(listing.find("physical"), std::string::npos) << "no forces beside the robot's file";
+
+  const std::string cf = test_support::readFile(controller::cfPathFor(twin));
+  EXPECT_EQ(cf.substr(0, cf.find('\n')).find("time,left_fx,"), 0u);
+  EXPECT_NE(cf.find(",0.15,0,0,0,3,nan,"), std::string::npos) << "jaw 1 normal 0.15 N, 3 contacts";
 }
 
 /// raven_analyze on the paper's recordings and a twin replay of the same inputs.

@@ -46,7 +46,8 @@ Trial toTrial(const controller::RsRecording& rs, const PlatformProfile& profile)
 /// A run of at least this many rows with NaN in a joint column is reported.
 constexpr std::size_t kNanRunReported = 5;
 
-/// Reads every file (directories: their *.csv files except *_ci.csv inputs), assigns each
+/// Reads every file (directories: their *.csv files except *_ci.csv inputs and *_cf.csv grasp
+/// forces), assigns each
 /// to the first profile that claims it and checks it. Never throws for a bad file: the reason
 /// goes into `issues`.
 TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,

@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "controller/cf_recording.hpp"
 #include "controller/dual_platform_controller.hpp"
 #include "controller/recording_io.hpp"
 #include "controller/sdl_gamepad.hpp"
@@ -79,6 +80,7 @@ class ControllerSession {
   Mode mode_ = Mode::Idle;
   std::size_t next_row_ = 0;
   std::vector<std::unique_ptr<RsWriter>> rs_;
+  std::vector<std::unique_ptr<CfWriter>> cf_;  ///< per platform; null where it has no forces
   std::unique_ptr<CiWriter> ci_;
   std::vector<std::filesystem::path> files_;
   std::size_t padless_turns_ = 0;
