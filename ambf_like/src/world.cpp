@@ -344,11 +344,17 @@ const RigidBody& World::body(std::string_view name) const {
 std::size_t World::sensorCount() const {
   return impl_->sensors.size();
 }
+ProximitySensor& World::sensor(std::size_t index) {
+  return *impl_->sensors.at(index);
+}
 ProximitySensor& World::sensor(std::string_view name) {
   return *impl_->sensors[requireByName(impl_->sensors, name, "sensor")];
 }
 std::size_t World::actuatorCount() const {
   return impl_->actuators.size();
+}
+ConstraintActuator& World::actuator(std::size_t index) {
+  return *impl_->actuators.at(index);
 }
 ConstraintActuator& World::actuator(std::string_view name) {
   return *impl_->actuators[requireByName(impl_->actuators, name, "actuator")];

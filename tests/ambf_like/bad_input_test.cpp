@@ -303,4 +303,16 @@ TEST(BadInput, SoftBodyContactFrictionModel) {
   EXPECT_NO_THROW(test_support::simulate({articulated}, options));
 }
 
+TEST(BadInput, SoftBodySubsteps) {
+  TempDir dir;
+  const std::string blob = "soft bodies: [BODY blob]\nBODY blob: {name: blob, mass: 1, mesh: " +
+                           test_support::icosphereMesh().string() + ", ";
+  // Substeps belong to the Coulomb contact solver; Bullet's own solver has none.
+  EXPECT_THAT(loadError(dir.write("a.yaml", blob + "substeps: 4}\n")),
+              AllOf(HasSubstr("BODY blob/substeps"), HasSubstr("'contact friction: coulomb'")));
+  EXPECT_THAT(loadError(dir.write("b.yaml", blob + "contact friction: coulomb, substeps: 0}\n")),
+              AllOf(HasSubstr("BODY blob/substeps"), HasSubstr("1 to 64")));
+  EXPECT_EQ(loadError(dir.write("c.yaml", blob + "contact friction: coulomb, substeps: 4}\n")), "");
+}
+
 }  // namespace

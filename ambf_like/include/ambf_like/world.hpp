@@ -94,11 +94,13 @@ class World {
   SoftBody& softBody(std::string_view name);
   const SoftBody& softBody(std::string_view name) const;
 
-  /// Proximity sensors (cast after every step) and constraint actuators, by (qualified) name;
-  /// unknown or ambiguous names throw std::out_of_range.
+  /// Proximity sensors (cast after every step) and constraint actuators, by load order or by
+  /// (qualified) name; unknown or ambiguous names throw std::out_of_range.
   std::size_t sensorCount() const;
+  ProximitySensor& sensor(std::size_t index);
   ProximitySensor& sensor(std::string_view name);
   std::size_t actuatorCount() const;
+  ConstraintActuator& actuator(std::size_t index);
   ConstraintActuator& actuator(std::string_view name);
 
   /// Every contact point of the last step, rigid-rigid and soft-rigid.

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "bridge/calibration_profile.hpp"
+#include "bridge/ros/ambf_object_topics.hpp"
 #include "bridge/ros/raven_ros_server.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "bridge/twin_platform.hpp"
@@ -64,6 +65,9 @@ int main(int argc, char** argv) {
       twin.tracking = bridge::CalibrationProfile::load(calibration).tracking;
     server.arm_swap = !no_arm_swap;
     bridge::TwinPlatform platform(twin);
+    // The scene's sensors and actuators on AMBF's topics, served after every cycle.
+    bridge::ros1::AmbfObjectTopics objects(platform.world());
+    server.after_cycle = [&] { objects.update(platform.now()); };
     bridge::ros1::RavenRosServer ros_server(platform, "", server);
     spdlog::info("raven_twin: {} on {} ({}, {} clock, arm swap {})",
                  stand_in ? "the PHYSICAL STAND-IN" : "the twin", bridge::ros1::masterUri(),

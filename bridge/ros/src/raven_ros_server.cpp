@@ -281,6 +281,7 @@ void RavenRosServer::Impl::runStep(const StepMessage& step) {
 
 void RavenRosServer::Impl::runCycle() {
   platform_.advance(0.001);
+  if (options_.after_cycle) options_.after_cycle();
   publishState();
 }
 

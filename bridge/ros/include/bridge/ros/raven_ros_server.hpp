@@ -3,6 +3,7 @@
 // CRTK command and state topics of /arm1, /arm2, grasp1, grasp2, `ravenstate` every cycle, and
 // `raven_automove`; optionally in lock-step with a client on the simulated clock.
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -19,6 +20,9 @@ struct RosServerOptions {
   /// Reproduce upstream's swap: the green arm's joints on arm1/measured_js, the gold arm's on
   /// arm2/measured_js.
   bool arm_swap = true;
+  /// Called after every 1 ms cycle, on the serving thread (the twin node serves its world's
+  /// sensors and actuators from here).
+  std::function<void()> after_cycle;
 };
 
 /// The robot's side of the ROS interface, over a platform. Refused commands are logged and
