@@ -9,8 +9,20 @@
 
 #include "scenario/batch.hpp"
 #include "scenario/console_report.hpp"
+#include "scenario/peg_transfer.hpp"
 
 namespace {
+
+TEST(PegTransferBatch, TheNominalSceneIsPlacedWholeByFrictionAlone) {
+  const auto result = scenario::runPegTransfer({});
+  EXPECT_TRUE(result.allPlaced());
+  EXPECT_FALSE(result.timed_out);
+  for (const auto& p : result.pegs) {
+    EXPECT_TRUE(p.placed) << p.peg << " " << p.miss * 1e3 << " mm off";
+    EXPECT_FALSE(p.lost) << p.peg << ": " << p.loss;
+    EXPECT_GT(p.min_volume_ratio, 0.8);
+  }
+}
 
 TEST(PegTransferBatch, EighteenOfTwentyRandomisedRunsPlaceAllSixPegsAndNoneIsLost) {
   scenario::PegTransferOptions options;
