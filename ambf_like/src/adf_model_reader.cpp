@@ -174,7 +174,9 @@ ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) 
   std::set<std::string> rigid;
   for (const auto& body : model.bodies) rigid.insert(body.name);
   auto parentKnown = [&](const std::string& parent, const std::string& what, const YamlView& node) {
-    if (rigid.count(parent)) return true;
+    // A namespace-qualified parent ("/raven2/left/jaw1_link") may be a body of another model,
+    // as AMBF finds it: it is looked up when the world is built.
+    if (rigid.count(parent) || parent.starts_with('/')) return true;
     context.tolerate(node["parent"].where(), what + ": parent body '" + parent +
                                                  "' is not a rigid body of this model; ignored");
     return false;

@@ -1,7 +1,9 @@
 #include "ambf_like/constraint_actuator.hpp"
 
+#include <BulletSoftBody/btSoftBody.h>
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "ambf_like/bullet_conversions.hpp"
@@ -51,14 +53,45 @@ void ConstraintActuator::actuate(RigidBody& body, const Vec3& offset) {
   held_ = &body;
 }
 
+void ConstraintActuator::actuate(SoftBody& body, const std::vector<int>& nodes) {
+  btSoftBody& soft = body.bullet();
+  for (int node : nodes) {
+    if (node < 0 || node >= soft.m_nodes.size()) {
+      throw std::invalid_argument("actuator '" + spec_.name + "': " + body.qualifiedName() +
+                                  " has no node " + std::to_string(node));
+    }
+  }
+  if (held_soft_ != &body) release();
+  held_soft_ = &body;
+  for (int node : nodes) {
+    if (std::find(anchored_.begin(), anchored_.end(), node) != anchored_.end()) continue;
+    soft.appendAnchor(node, &parent_.bullet(), /*disableCollisionBetweenLinkedBodies=*/false, 1.0);
+    anchored_.push_back(node);
+  }
+}
+
 void ConstraintActuator::release() {
-  if (!constraint_) return;
-  world_.removeConstraint(constraint_.get());
-  constraint_.reset();
-  held_ = nullptr;
+  if (constraint_) {
+    world_.removeConstraint(constraint_.get());
+    constraint_.reset();
+    held_ = nullptr;
+  }
+  if (held_soft_) {
+    // btSoftBody::removeAnchor only knows the deformable world's anchors: drop ours by hand.
+    btSoftBody& soft = held_soft_->bullet();
+    for (int i = soft.m_anchors.size() - 1; i >= 0; --i) {
+      btSoftBody::Anchor& anchor = soft.m_anchors[i];
+      if (anchor.m_body != &parent_.bullet()) continue;
+      anchor.m_node->m_battach = 0;
+      soft.m_anchors.removeAtIndex(i);
+    }
+    held_soft_ = nullptr;
+    anchored_.clear();
+  }
 }
 
 std::string ConstraintActuator::heldBody() const {
+  if (held_soft_) return held_soft_->qualifiedName();
   return held_ ? held_->qualifiedName() : std::string();
 }
 

@@ -243,14 +243,31 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
   } else {
     addConstraintJoints(model, by_name);
   }
+  // A parent of this model by its name, or of any model loaded before by its qualified name.
+  auto parentOf = [&](const std::string& parent, const SourceRef& where) -> RigidBody& {
+    if (auto it = by_name.find(parent); it != by_name.end()) return *it->second.body;
+    try {
+      return *bodies[requireByName(bodies, parent, "body")];
+    } catch (const std::out_of_range& e) {
+      SourceRef at = where;
+      at.key_path += "/parent";
+      throw LoadError(at, std::string(e.what()) +
+                              " (a parent of another model must be loaded "
+                              "before this one)");
+    }
+  };
   for (const auto& spec : model.sensors) {
     sensors.push_back(std::make_unique<ProximitySensor>(spec, model.name_space + spec.name,
-                                                        *by_name.at(spec.parent).body));
+                                                        parentOf(spec.parent, spec.where)));
   }
   for (const auto& spec : model.actuators) {
-    RigidBody& parent = *by_name.at(spec.parent).body;
-    actuators.push_back(std::make_unique<ConstraintActuator>(
-        spec, model.name_space + spec.name, parent, !articulate || parent.isStatic(), world));
+    RigidBody& parent = parentOf(spec.parent, spec.where);
+    // An articulation link's btRigidBody is a mirror outside the Bullet world.
+    const bool in_world = by_name.count(spec.parent) != 0
+                              ? !articulate || parent.isStatic()
+                              : parent.bullet().getBroadphaseHandle() != nullptr;
+    actuators.push_back(std::make_unique<ConstraintActuator>(spec, model.name_space + spec.name,
+                                                             parent, in_world, world));
   }
 }
 
@@ -280,7 +297,9 @@ void World::step() {
   if (impl_->sleeper) impl_->sleeper->beforeStep(impl_->soft_bodies, impl_->bodies);
   impl_->world.stepSimulation(h, 0, h);
   for (auto& a : impl_->articulations) a->afterStep();
-  for (auto& s : impl_->sensors) s->sense(impl_->world);
+  for (auto& s : impl_->sensors) {
+    if (s->active()) s->sense(impl_->world);
+  }
   if (impl_->sleeper) impl_->sleeper->afterStep(impl_->soft_bodies, h);
   for (auto& j : impl_->joints) j->joint->updateCoordinate();
   // The sparse SDF frees cells unused for 256 collections; a collection walks every hash bucket,

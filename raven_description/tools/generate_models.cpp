@@ -7,6 +7,7 @@
 
 #include "adf_writer.hpp"
 #include "arm_design.hpp"
+#include "grasp_assist_scene.hpp"
 #include "peg_scene.hpp"
 
 namespace {
@@ -54,6 +55,8 @@ int main(int argc, char** argv) {
             "multibody configs:\n  - raven2_left.yaml   #0\n  - raven2_right.yaml  #1\n");
   // The same board and pegs beside either arm variant (the benchmarks compare the two).
   writePegScene(PegSceneDesign{}, out / "peg_transfer");
+  // Touching: the ring's margin and the jaw's (0.5 + 0.2 mm) and a little.
+  writeGraspAssist(profile, ArmDesign{}, 0.001, out / "peg_transfer" / "grasp_assist.yaml");
   writeText(out / "peg_transfer" / "world.yaml",
             "# The peg-transfer world: {B}, gravity along -z, and this simulator's settings.\n"
             "namespace: /peg_transfer/\n"

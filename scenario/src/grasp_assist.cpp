@@ -1,12 +1,10 @@
 #include "scenario/grasp_assist.hpp"
 
-#include <BulletCollision/CollisionShapes/btConvexShape.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
-#include <BulletDynamics/Dynamics/btRigidBody.h>
-#include <BulletSoftBody/btSoftBody.h>
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+
+#include "raven/platform_profile.hpp"
 
 namespace scenario {
 
@@ -17,36 +15,30 @@ constexpr double kReleaseOpening = 0.05;
 
 }  // namespace
 
-GraspAssist::GraspAssist(ambf_like::World& world, const std::vector<std::string>& pegs,
-                         GraspAssistSettings settings)
-    : settings_(settings) {
+std::filesystem::path GraspAssist::modelFile() {
+  return raven::modelDirectory() / "peg_transfer" / "grasp_assist.yaml";
+}
+
+GraspAssist::GraspAssist(ambf_like::World& world, const std::vector<std::string>& pegs) {
   for (const auto& name : pegs) pegs_.push_back(&world.softBody(name));
   for (raven::Arm arm : raven::kArms) {
-    const std::string prefix = "/raven2/" + std::string(raven::armName(arm)) + "/";
-    jaws_[slot(arm)] = {&world.body(prefix + "jaw1_link"), &world.body(prefix + "jaw2_link")};
+    for (std::size_t jaw = 0; jaw < 2; ++jaw) {
+      const std::string base = std::string(raven::armName(arm)) + "_jaw" + std::to_string(jaw + 1);
+      sensors_[slot(arm)][jaw] = &world.sensor(base + "_sensor");
+      sensors_[slot(arm)][jaw]->setActive(false);  // cast only while the jaws close
+      actuators_[slot(arm)][jaw] = &world.actuator(base + "_gripper");
+    }
   }
 }
 
-std::vector<int> GraspAssist::touching(const ambf_like::SoftBody& peg,
-                                       const ambf_like::RigidBody& jaw) const {
-  const btRigidBody& body = jaw.bullet();
-  const auto* shape = dynamic_cast<const btConvexShape*>(body.getCollisionShape());
+std::vector<int> GraspAssist::sensedNodes(raven::Arm arm, std::size_t jaw,
+                                          const ambf_like::SoftBody& peg) const {
   std::vector<int> nodes;
-  if (shape == nullptr) return nodes;
-  const btSoftBody& soft = peg.bullet();
-  btVector3 low, high;
-  body.getAabb(low, high);
-  const btVector3 pad(settings_.touch_distance, settings_.touch_distance, settings_.touch_distance);
-  for (int i = 0; i < soft.m_nodes.size(); ++i) {
-    const btVector3& x = soft.m_nodes[i].m_x;
-    if (x.x() < low.x() - pad.x() || x.y() < low.y() - pad.y() || x.z() < low.z() - pad.z() ||
-        x.x() > high.x() + pad.x() || x.y() > high.y() + pad.y() || x.z() > high.z() + pad.z()) {
-      continue;
+  for (const auto& ray : sensors_[slot(arm)][jaw]->readings()) {
+    if (!ray.triggered || ray.soft_face < 0 || ray.body != peg.qualifiedName()) continue;
+    for (int node : ray.face_nodes) {
+      if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
     }
-    btGjkEpaSolver2::sResults result;
-    const btScalar distance =
-        btGjkEpaSolver2::SignedDistance(x, 0.0, shape, body.getWorldTransform(), result);
-    if (distance < settings_.touch_distance) nodes.push_back(i);
   }
   return nodes;
 }
@@ -56,6 +48,8 @@ void GraspAssist::update(raven::Arm arm, double commanded_opening) {
   const bool closing = commanded_opening < last_opening_[a];
   last_opening_[a] = commanded_opening;
   auto& hold = holds_[a];
+  // The sensors look only while the jaws close on nothing: that is when a grasp can start.
+  for (auto* sensor : sensors_[a]) sensor->setActive(closing && !hold);
   if (hold) {
     hold->opening = std::min(hold->opening, commanded_opening);
     if (commanded_opening > hold->opening + kReleaseOpening) release(arm);
@@ -63,39 +57,23 @@ void GraspAssist::update(raven::Arm arm, double commanded_opening) {
   }
   if (!closing) return;
   for (ambf_like::SoftBody* peg : pegs_) {
-    const auto one = touching(*peg, *jaws_[a][0]);
-    const auto two = touching(*peg, *jaws_[a][1]);
-    if (one.empty() || two.empty()) continue;
-    btSoftBody& soft = peg->bullet();
-    Hold h{peg, {}, commanded_opening};
-    for (int jaw = 0; jaw < 2; ++jaw) {
-      for (int node : jaw == 0 ? one : two) {
-        soft.appendAnchor(node, &jaws_[a][static_cast<std::size_t>(jaw)]->bullet(), false, 1.0);
-        h.nodes.push_back(node);
-      }
-    }
-    spdlog::debug("grasp assist: {} grasper holds {} by {} nodes", raven::armName(arm), peg->name(),
-                  h.nodes.size());
-    hold = std::move(h);
+    const std::array<std::vector<int>, 2> seen{sensedNodes(arm, 0, *peg),
+                                               sensedNodes(arm, 1, *peg)};
+    if (seen[0].empty() || seen[1].empty()) continue;
+    for (std::size_t jaw = 0; jaw < 2; ++jaw) actuators_[a][jaw]->actuate(*peg, seen[jaw]);
+    spdlog::debug("grasp assist: {} grasper holds {} by {} + {} nodes", raven::armName(arm),
+                  peg->name(), seen[0].size(), seen[1].size());
+    hold = Hold{peg, commanded_opening};
     ++grasps_;
     return;
   }
 }
 
 void GraspAssist::release(raven::Arm arm) {
-  auto& hold = holds_[slot(arm)];
-  // btSoftBody::removeAnchor only knows the deformable world's anchors: drop ours by hand.
-  btSoftBody& soft = hold->peg->bullet();
-  for (int i = soft.m_anchors.size() - 1; i >= 0; --i) {
-    const auto& anchor = soft.m_anchors[i];
-    if (anchor.m_body == &jaws_[slot(arm)][0]->bullet() ||
-        anchor.m_body == &jaws_[slot(arm)][1]->bullet()) {
-      anchor.m_node->m_battach = 0;
-      soft.m_anchors.removeAtIndex(i);
-    }
-  }
-  spdlog::debug("grasp assist: {} grasper lets {} go", raven::armName(arm), hold->peg->name());
-  hold.reset();
+  for (auto* actuator : actuators_[slot(arm)]) actuator->release();
+  spdlog::debug("grasp assist: {} grasper lets {} go", raven::armName(arm),
+                holds_[slot(arm)]->peg->name());
+  holds_[slot(arm)].reset();
 }
 
 const ambf_like::SoftBody* GraspAssist::held(raven::Arm arm) const {

@@ -4,6 +4,7 @@
 #include <memory>
 #include <optional>
 
+#include "ambf_like/scene_loader.hpp"
 #include "controller/cf_recording.hpp"
 #include "controller/recording_io.hpp"
 #include "scenario/arm_routine.hpp"
@@ -22,9 +23,17 @@ bridge::TwinOptions twinOptions(const PegTransferOptions& options,
                          ? raven::modelDirectory() / "peg_transfer" / "launch.yaml"
                          : options.launch_file;
   twin.clock = options.clock;
-  twin.adjust_scene = [variation, sleep = options.soft_body_sleep](ambf_like::SceneSpec& scene) {
+  const bool assist = options.assist == AssistMode::Contact;
+  twin.adjust_scene = [variation, sleep = options.soft_body_sleep,
+                       assist](ambf_like::SceneSpec& scene) {
     variation.apply(scene);
     scene.world.soft_body_sleep.enabled = sleep;
+    // The assist's jaw sensors and actuators, after the arms whose jaws carry them.
+    if (assist) {
+      for (auto& model : ambf_like::loadModelFiles({GraspAssist::modelFile()}).spec.models) {
+        scene.models.push_back(std::move(model));
+      }
+    }
   };
   if (options.stand_in) twin.stand_in = bridge::CableActuationParams::physicalStandIn();
   return twin;

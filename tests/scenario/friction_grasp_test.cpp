@@ -5,14 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
-#include <limits>
 
-#include "raven/platform_profile.hpp"
-#include "scenario/arm_routine.hpp"
-#include "scenario/peg_layout.hpp"
-#include "scenario/scripted_session.hpp"
+#include "one_arm_grasp.hpp"
 
 namespace {
 
@@ -21,62 +16,9 @@ using scenario::Phase;
 
 constexpr double kGravity = 9.81;
 constexpr double kRingMass = 0.002;  // raven_description's peg design
-const std::string kJaw1 = "/raven2/left/jaw1_link";
 const std::string kJaw2 = "/raven2/left/jaw2_link";
 
-bridge::TwinOptions pegScene() {
-  bridge::TwinOptions options;
-  options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
-  // Every ring awake: a sleeping body reports no contacts.
-  options.adjust_scene = [](ambf_like::SceneSpec& scene) {
-    scene.world.soft_body_sleep.enabled = false;
-  };
-  return options;
-}
-
-/// The left arm taking peg1 through the scripted routine, the right arm still.
-class FrictionGrasp : public ::testing::Test {
- protected:
-  explicit FrictionGrasp(double squeeze = scenario::ArmRoutine::kDefaultSqueeze)
-      : session_(pegScene()),
-        routine_(Arm::Left, raven::builtinProfile("physical"), layout_, {layout_.jobs[0]},
-                 squeeze) {
-    session_.makeReady(60.0);
-  }
-
-  ambf_like::World& world() { return session_.twin().world(); }
-  const ambf_like::SoftBody& ring() { return world().softBody("peg1"); }
-  double ringBottom() {
-    double low = std::numeric_limits<double>::infinity();
-    for (const auto& p : ring().nodePositions()) low = std::min(low, p.z());
-    return low;
-  }
-
-  /// One manual-loop iteration of the routine; the report of the controller's move.
-  controller::IterationReport iterate() {
-    auto& controller = session_.controller();
-    const auto current = controller.commanded();
-    return controller.moveTo({routine_.next(current[0], world()), current[1]});
-  }
-  /// Iterates until the routine enters `phase` (at most `limit` iterations).
-  void runUntil(Phase phase, int limit = 2000) {
-    for (int i = 0; i < limit && routine_.phase() != phase; ++i) iterate();
-    ASSERT_EQ(routine_.phase(), phase) << "the routine did not get there";
-  }
-  /// Holds the arms where they are for `seconds`.
-  void hold(double seconds) { session_.twin().advance(seconds); }
-  /// Commands the left outer jaw to `angle`, the rest of the arm where it is.
-  void setOuterJaw(double angle) {
-    auto& controller = session_.controller();
-    auto target = controller.commanded();
-    target[0](raven::kJaw2) = angle;
-    controller.moveTo(target);
-  }
-
-  scenario::PegLayout layout_;
-  scenario::ScriptedSession session_;
-  scenario::ArmRoutine routine_;
-};
+using FrictionGrasp = scenario_test::OneArmGrasp;
 
 TEST_F(FrictionGrasp, HeldStillInTheAirTheContactForcesCarryTheRingsWeight) {
   runUntil(Phase::Carry);  // lifted 30 mm
@@ -141,9 +83,9 @@ TEST_F(FrictionGrasp, CarriedAtTheVelocityCapsTheRingSlipsLessThanAMillimetreInT
 }
 
 /// The same grasp closed to a squeeze of a few micrometres: too little for the ring's weight.
-class LightGrasp : public FrictionGrasp {
+class LightGrasp : public scenario_test::OneArmGrasp {
  protected:
-  LightGrasp() : FrictionGrasp(0.00002) {}
+  LightGrasp() : OneArmGrasp(0.00002) {}
 };
 
 TEST_F(LightGrasp, TooLittleSqueezeLiftsNothing) {

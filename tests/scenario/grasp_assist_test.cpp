@@ -1,89 +1,98 @@
-// The grasp assist's trigger rule on the real grasper: it takes a peg only while the jaws close
-// and only when both jaws touch it, and lets it go (anchors removed) once they open again.
+// The grasp assist on the real grasper, as the scene's jaw sensors and actuators
+// (peg_transfer/grasp_assist.yaml) triggered by the closing jaws: it takes a peg only while the
+// jaws close and only when both jaws sense it, anchors what each jaw senses to that jaw, and lets
+// it go (anchors removed) once they open again; its sensors cast rays only while the jaws close.
 
 #include "scenario/grasp_assist.hpp"
 
-#include <BulletCollision/CollisionShapes/btConvexShape.h>
-#include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletSoftBody/btSoftBody.h>
 #include <gtest/gtest.h>
 
-#include "bridge/twin_platform.hpp"
+#include <optional>
+
+#include "ambf_like/scene_loader.hpp"
+#include "one_arm_grasp.hpp"
 
 namespace {
 
 using raven::Arm;
+using scenario::Phase;
 
-/// A point inside a jaw's convex collision shape: the mean of its six axis-extreme support
-/// points (a convex combination of points of the shape).
-btVector3 insideOf(const ambf_like::RigidBody& jaw) {
-  const btRigidBody& body = jaw.bullet();
-  const auto* shape = dynamic_cast<const btConvexShape*>(body.getCollisionShape());
-  const btTransform& pose = body.getWorldTransform();
-  btVector3 sum(0, 0, 0);
-  for (int axis = 0; axis < 3; ++axis) {
-    for (double sign : {-1.0, 1.0}) {
-      btVector3 direction(0, 0, 0);
-      direction[axis] = sign;
-      sum += pose(
-          shape->localGetSupportingVertexWithoutMargin(pose.getBasis().transpose() * direction));
+/// The peg scene with the assist's model loaded after the arms.
+bridge::TwinOptions assistedScene() {
+  return scenario_test::pegScene([](ambf_like::SceneSpec& scene) {
+    for (auto& model :
+         ambf_like::loadModelFiles({scenario::GraspAssist::modelFile()}).spec.models) {
+      scene.models.push_back(std::move(model));
     }
-  }
-  return sum / 6.0;
+  });
 }
 
-class GraspAssistTest : public ::testing::Test {
+class GraspAssistTest : public scenario_test::OneArmGrasp {
  protected:
-  GraspAssistTest() : twin_(options()), assist_(twin_.world(), {"peg1", "peg2"}) {}
-  static bridge::TwinOptions options() {
-    bridge::TwinOptions o;
-    o.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
-    return o;
+  GraspAssistTest() : OneArmGrasp(kDefaultSqueeze, assistedScene()) {
+    assist_.emplace(world(), std::vector<std::string>{"peg1", "peg2"});
   }
-  ambf_like::RigidBody& jaw(int which) {
-    return twin_.world().body("/raven2/left/jaw" + std::to_string(which) + "_link");
+  static constexpr double kDefaultSqueeze = scenario::ArmRoutine::kDefaultSqueeze;
+  btSoftBody& peg() { return world().softBody("peg1").bullet(); }
+  ambf_like::ProximitySensor& sensor(int jaw) {
+    return world().sensor("left_jaw" + std::to_string(jaw) + "_sensor");
   }
-  btSoftBody& peg() { return twin_.world().softBody("peg1").bullet(); }
-
-  bridge::TwinPlatform twin_;
-  scenario::GraspAssist assist_;
+  std::optional<scenario::GraspAssist> assist_;
 };
 
-TEST_F(GraspAssistTest, NothingIsTakenWhenNoJawTouches) {
-  assist_.update(Arm::Left, 1.0);
-  assist_.update(Arm::Left, 0.5);  // closing, far from every peg
-  EXPECT_EQ(assist_.held(Arm::Left), nullptr);
-  EXPECT_EQ(assist_.grasps(), 0u);
+TEST_F(GraspAssistTest, TheScenesJawsCarryItsSensorsAndActuators) {
+  EXPECT_EQ(world().sensorCount(), 4u);
+  EXPECT_EQ(world().actuatorCount(), 4u);
+  EXPECT_EQ(sensor(1).parent().qualifiedName(), "/raven2/left/jaw1_link");
+  EXPECT_EQ(world().actuator("right_jaw2_gripper").spec().parent, "/raven2/right/jaw2_link");
+  EXPECT_FALSE(sensor(1).active()) << "idle until the jaws close";
 }
 
-TEST_F(GraspAssistTest, OneJawTouchingIsNotAGrasp) {
-  peg().m_nodes[0].m_x = insideOf(jaw(1));
-  ASSERT_FALSE(assist_.touching(twin_.world().softBody("peg1"), jaw(1)).empty());
-  ASSERT_TRUE(assist_.touching(twin_.world().softBody("peg1"), jaw(2)).empty());
-  assist_.update(Arm::Left, 1.0);
-  assist_.update(Arm::Left, 0.5);
-  EXPECT_EQ(assist_.held(Arm::Left), nullptr);
+TEST_F(GraspAssistTest, NothingIsTakenWhenNoJawSensesAPeg) {
+  assist_->update(Arm::Left, 1.0);
+  assist_->update(Arm::Left, 0.5);  // closing, far from every peg
+  EXPECT_TRUE(sensor(1).active());
+  hold(0.02);
+  assist_->update(Arm::Left, 0.4);
+  EXPECT_EQ(assist_->held(Arm::Left), nullptr);
+  EXPECT_EQ(assist_->grasps(), 0u);
+  assist_->update(Arm::Left, 0.6);  // opening: the sensors rest
+  EXPECT_FALSE(sensor(1).active());
 }
 
-TEST_F(GraspAssistTest, BothJawsTouchingTakesThePegOnlyWhileClosingAndOpeningLetsItGo) {
-  peg().m_nodes[0].m_x = insideOf(jaw(1));
-  peg().m_nodes[1].m_x = insideOf(jaw(2));
-  assist_.update(Arm::Left, 0.5);
-  assist_.update(Arm::Left, 0.6);  // opening: contact alone takes nothing
-  EXPECT_EQ(assist_.held(Arm::Left), nullptr);
-
-  assist_.update(Arm::Left, 0.4);  // closing on it
-  ASSERT_EQ(assist_.held(Arm::Left), &twin_.world().softBody("peg1"));
-  EXPECT_EQ(assist_.grasps(), 1u);
-  EXPECT_GE(peg().m_anchors.size(), 2);
-  EXPECT_EQ(assist_.held(Arm::Right), nullptr);
-
-  assist_.update(Arm::Left, 0.3);   // tighter
-  assist_.update(Arm::Left, 0.34);  // a little looser: still held
-  EXPECT_NE(assist_.held(Arm::Left), nullptr);
-  assist_.update(Arm::Left, 0.36);  // 0.06 rad past the tightest: let go
-  EXPECT_EQ(assist_.held(Arm::Left), nullptr);
+TEST_F(GraspAssistTest, OneJawSensingIsNotAGrasp) {
+  runUntil(Phase::Close);  // down beside the wall, the outer jaw still open
+  assist_->update(Arm::Left, routine_.opening() + 0.1);
+  assist_->update(Arm::Left, routine_.opening());  // "closing": the sensors look
+  hold(0.02);
+  const auto& ring = world().softBody("peg1");
+  ASSERT_FALSE(assist_->sensedNodes(Arm::Left, 0, ring).empty()) << "the inner jaw is at the wall";
+  ASSERT_TRUE(assist_->sensedNodes(Arm::Left, 1, ring).empty()) << "the outer jaw is open";
+  assist_->update(Arm::Left, routine_.opening() - 0.01);
+  EXPECT_EQ(assist_->held(Arm::Left), nullptr);
   EXPECT_EQ(peg().m_anchors.size(), 0);
+}
+
+TEST_F(GraspAssistTest, BothJawsSensingTakesThePegWhileClosingAndOpeningLetsItGo) {
+  runUntil(Phase::Lift, [&] { assist_->update(Arm::Left, routine_.opening()); });
+  ASSERT_EQ(assist_->held(Arm::Left), &world().softBody("peg1"));
+  EXPECT_EQ(assist_->grasps(), 1u);
+  EXPECT_GE(peg().m_anchors.size(), 2);
+  EXPECT_TRUE(world().actuator("left_jaw1_gripper").actuated());
+  EXPECT_EQ(world().actuator("left_jaw2_gripper").heldBody(), "/peg_transfer/peg1");
+  EXPECT_FALSE(sensor(1).active()) << "holding: nothing more to look for";
+  EXPECT_EQ(assist_->held(Arm::Right), nullptr);
+
+  const double closed = routine_.opening();
+  assist_->update(Arm::Left, closed + 0.04);  // a little looser: still held
+  EXPECT_NE(assist_->held(Arm::Left), nullptr);
+  assist_->update(Arm::Left, closed + 0.06);  // 0.06 rad past the tightest: let go
+  EXPECT_EQ(assist_->held(Arm::Left), nullptr);
+  EXPECT_EQ(peg().m_anchors.size(), 0);
+  EXPECT_FALSE(world().actuator("left_jaw1_gripper").actuated());
+  assist_->update(Arm::Left, closed + 0.1);  // opening while touching takes nothing
+  EXPECT_EQ(assist_->held(Arm::Left), nullptr);
 }
 
 }  // namespace

@@ -1,13 +1,17 @@
 #pragma once
 // AMBF's constraint actuator: on command it attaches a point of a body to its parent where that
-// point is now (a point-to-point constraint under an impulse clamp and tau), and lets go on
-// release. SRC grasps its needle this way when a proximity sensor sees it.
+// point is now (a point-to-point constraint under an impulse clamp and tau), or anchors nodes of
+// a soft body to its parent where they are (Bullet soft-body anchors, as AMBF takes a soft body
+// by a sensed face), and lets go on release. SRC grasps its needle this way when a proximity
+// sensor sees it.
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ambf_like/rigid_body.hpp"
 #include "ambf_like/sensor_spec.hpp"
+#include "ambf_like/soft_body.hpp"
 
 class btDiscreteDynamicsWorld;
 class btPoint2PointConstraint;
@@ -31,8 +35,12 @@ class ConstraintActuator {
   /// Attaches the point `offset` (body frame; default its origin) of `body`, a dynamic rigid
   /// body, to the parent where the point is now, releasing any other body first.
   void actuate(RigidBody& body, const Vec3& offset = Vec3::Zero());
+  /// Anchors the nodes `nodes` of `body` to the parent where they are now (nodes it already
+  /// holds are kept, so several sensed faces add up), releasing any rigid body first. Throws
+  /// std::invalid_argument for a node index out of range.
+  void actuate(SoftBody& body, const std::vector<int>& nodes);
   void release();
-  bool actuated() const { return held_ != nullptr; }
+  bool actuated() const { return held_ != nullptr || held_soft_ != nullptr; }
   /// The held body's qualified name, or empty.
   std::string heldBody() const;
   /// The actuator's location in the world frame, from the parent's pose now.
@@ -45,6 +53,8 @@ class ConstraintActuator {
   btDiscreteDynamicsWorld& world_;
   std::unique_ptr<btPoint2PointConstraint> constraint_;
   RigidBody* held_ = nullptr;
+  SoftBody* held_soft_ = nullptr;
+  std::vector<int> anchored_;  ///< nodes of held_soft_
 };
 
 }  // namespace ambf_like

@@ -1,6 +1,7 @@
 #pragma once
 // A proximity sensor of the running simulation: rays fixed to a body, cast after every step.
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,10 @@ struct RayReading {
   std::string body;       ///< qualified name of the body hit
   Vec3 point = Vec3::Zero();
   Vec3 normal = Vec3::Zero();
+  /// When the body is a soft body: the face the ray met and its three nodes (as AMBF's
+  /// constraint actuator takes a soft body by the sensed face); -1 otherwise.
+  int soft_face = -1;
+  std::array<int, 3> face_nodes{-1, -1, -1};
 };
 
 /// Each ray reports the nearest body (rigid or soft) it meets within range, never its parent.
@@ -37,14 +42,19 @@ class ProximitySensor {
   /// A ray's origin and end (at full range) in the world frame, from the parent's pose now.
   std::pair<Vec3, Vec3> rayInWorld(std::size_t index) const;
 
-  /// Casts every ray (World calls this after each step).
+  /// Casts every ray (World calls this after each step while the sensor is active).
   void sense(const btCollisionWorld& world);
+  /// Active (the default, as in AMBF): sensed after every step. Inactive: its rays cost
+  /// nothing and its readings say nothing is seen, until it is activated again and stepped.
+  bool active() const { return active_; }
+  void setActive(bool active);
 
  private:
   SensorSpec spec_;
   std::string qualified_name_;
   const RigidBody& parent_;
   std::vector<RayReading> readings_;
+  bool active_ = true;
 };
 
 }  // namespace ambf_like
