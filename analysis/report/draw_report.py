@@ -36,6 +36,15 @@ def read_rows(path):
         return list(csv.DictReader(f))
 
 
+def save(fig, out, title, name, dpi):
+    """Titles, lays out, writes and closes a figure; its file name for the page."""
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(out / name, dpi=dpi)
+    plt.close(fig)
+    return name
+
+
 def joint_scale(joint):
     """Insertion in mm, revolute joints in rad."""
     return (1000.0, "mm") if joint["unit"] == "m" else (1.0, "rad")
@@ -96,12 +105,8 @@ def inconsistencies(out, metrics, joints):
         rev.set_ylabel(f"mean absolute difference (rad{per_second})")
         ins.set_ylabel(f"mm{per_second}")
         rev.legend(fontsize=8)
-        fig.suptitle(f"Inconsistency per joint, {quantity} (Fig. 7)")
-        fig.tight_layout()
-        name = f"fig7_inconsistency_{quantity}.png"
-        fig.savefig(out / name, dpi=90)
-        plt.close(fig)
-        files.append(name)
+        files.append(save(fig, out, f"Inconsistency per joint, {quantity} (Fig. 7)",
+                          f"fig7_inconsistency_{quantity}.png", 90))
     return files
 
 
@@ -191,12 +196,8 @@ def grasp_forces(out):
             ax.set_ylabel(f"{arm} grasper (N)")
             ax.legend(fontsize=7, ncol=5, loc="upper right")
         axes[-1].set_xlabel("time (s)")
-        fig.suptitle(f"{entry['platform']}: grasp forces, {path.name}")
-        fig.tight_layout()
-        name = f"grasp_forces_{index + 1}.png"
-        fig.savefig(out / name, dpi=80)
-        plt.close(fig)
-        figures.append(name)
+        figures.append(save(fig, out, f"{entry['platform']}: grasp forces, {path.name}",
+                            f"grasp_forces_{index + 1}.png", 80))
     return figures
 
 
