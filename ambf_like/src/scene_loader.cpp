@@ -1,5 +1,6 @@
 #include "ambf_like/scene_loader.hpp"
 
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,6 +21,34 @@ ModelSpec readModel(const std::filesystem::path& file, LoadContext& context) {
   return detail::readAdfModel(file, context);
 }
 
+/// A sensor's or actuator's qualified parent must be a rigid body of a model before it; those
+/// whose parent is not are dropped, as AMBF skips them (a warning; an error under --strict).
+template <typename Spec>
+void keepResolvable(std::vector<Spec>& specs, const std::set<std::string>& known,
+                    LoadContext& context, const char* what) {
+  std::erase_if(specs, [&](const Spec& spec) {
+    if (!spec.parent.starts_with('/') || known.count(spec.parent) != 0) return false;
+    SourceRef at = spec.where;
+    at.key_path += "/parent";
+    context.tolerate(at, std::string(what) + " '" + spec.name + "': parent body '" + spec.parent +
+                             "' is not a rigid body of a model loaded before it; skipped");
+    return true;
+  });
+}
+
+/// Checks the qualified parents of models[first...] against every model before each.
+void resolveQualifiedParents(std::vector<ModelSpec>& models, std::size_t first,
+                             LoadContext& context) {
+  std::set<std::string> known;
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    if (m >= first) {
+      keepResolvable(models[m].sensors, known, context, "sensor");
+      keepResolvable(models[m].actuators, known, context, "actuator");
+    }
+    for (const auto& body : models[m].bodies) known.insert(models[m].name_space + body.name);
+  }
+}
+
 LoadedScene assemble(const std::vector<std::filesystem::path>& model_files,
                      const std::optional<std::filesystem::path>& world_file, LoadContext& context) {
   LoadedScene scene;
@@ -27,6 +56,7 @@ LoadedScene assemble(const std::vector<std::filesystem::path>& model_files,
   if (world_file) scene.spec.world = detail::readWorld(*world_file, context, environment);
   if (environment) scene.spec.models.push_back(readModel(*environment, context));
   for (const auto& file : model_files) scene.spec.models.push_back(readModel(file, context));
+  resolveQualifiedParents(scene.spec.models, 0, context);
   context.throwIfDeferred();
   if (scene.spec.models.empty()) {
     throw LoadError(SourceRef{world_file.value_or(""), 0, ""}, "no model to load");
@@ -112,6 +142,19 @@ LoadedScene loadModelFiles(const std::vector<std::filesystem::path>& model_files
                            const LoadOptions& options) {
   LoadContext context(options);
   return assemble(model_files, world_file, context);
+}
+
+std::vector<LoadIssue> appendModelFiles(SceneSpec& scene,
+                                        const std::vector<std::filesystem::path>& model_files,
+                                        const LoadOptions& options) {
+  LoadContext context(options);
+  const std::size_t first = scene.models.size();
+  std::vector<ModelSpec> models = scene.models;
+  for (const auto& file : model_files) models.push_back(readModel(file, context));
+  resolveQualifiedParents(models, first, context);
+  context.throwIfDeferred();
+  scene.models = std::move(models);
+  return context.takeWarnings();
 }
 
 }  // namespace ambf_like

@@ -29,11 +29,7 @@ bridge::TwinOptions twinOptions(const PegTransferOptions& options,
     variation.apply(scene);
     scene.world.soft_body_sleep.enabled = sleep;
     // The assist's jaw sensors and actuators, after the arms whose jaws carry them.
-    if (assist) {
-      for (auto& model : ambf_like::loadModelFiles({GraspAssist::modelFile()}).spec.models) {
-        scene.models.push_back(std::move(model));
-      }
-    }
+    if (assist) ambf_like::appendModelFiles(scene, {GraspAssist::modelFile()});
   };
   if (options.stand_in) twin.stand_in = bridge::CableActuationParams::physicalStandIn();
   return twin;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "ambf_like/scene_loader.hpp"
+#include "ambf_like/world.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -68,6 +69,42 @@ TEST(AmbfAcceptance, AnUnknownKeyIsAWarningWithItsSuggestionAndAStrictError) {
   EXPECT_THAT(strictError(file),
               AllOf(HasSubstr(file.string() + ":11"), HasSubstr("BODY box/restitutoin"),
                     HasSubstr("did you mean 'restitution'")));
+}
+
+TEST(AmbfAcceptance, ASensorOnAnotherModelsBodyIsFoundByItsQualifiedNameAndSkippedIfMissing) {
+  TempDir dir;
+  const auto robot = dir.write("robot.yaml", "namespace: /robot/\n" + model());
+  auto extras = [&](const std::string& parent) {
+    return dir.write("extras_" + std::to_string(parent.size()) + ".yaml",
+                     "namespace: /extras/\nsensors: [SENSOR eye]\nactuators: [ACTUATOR hand]\n"
+                     "SENSOR eye:\n  name: eye\n  type: PROXIMITY\n  parent: BODY " +
+                         parent +
+                         "\n  range: 0.1\n  array: [{offset: {x: 0, y: 0, z: 0}, direction: "
+                         "{x: 0, y: 0, z: 1}}]\n"
+                         "ACTUATOR hand:\n  name: hand\n  type: CONSTRAINT\n  parent: BODY " +
+                         parent + "\n");
+  };
+  // Loaded after the robot, in one load or appended to its scene: the parent is the robot's box.
+  const auto good = extras("/robot/box");
+  auto scene = ambf_like::loadModelFiles({robot, good});
+  EXPECT_EQ(scene.spec.models[1].sensors.size(), 1u);
+  auto appended = ambf_like::loadModelFiles({robot}).spec;
+  EXPECT_TRUE(ambf_like::appendModelFiles(appended, {good}).empty());
+  ambf_like::MeshLibrary meshes;
+  ambf_like::World world(appended, meshes);
+  EXPECT_EQ(world.sensor("eye").parent().qualifiedName(), "/robot/box");
+  EXPECT_EQ(world.actuator("hand").spec().parent, "/robot/box");
+  // A parent no model before it has: skipped with a warning, as AMBF skips it; strict: an error.
+  const auto missing = extras("/robot/no_such_body");
+  scene = ambf_like::loadModelFiles({robot, missing});
+  EXPECT_TRUE(scene.spec.models[1].sensors.empty());
+  EXPECT_TRUE(scene.spec.models[1].actuators.empty());
+  EXPECT_THAT(warningsOf(scene), AllOf(HasSubstr("sensor 'eye': parent body '/robot/no_such_body'"),
+                                       HasSubstr("skipped")));
+  EXPECT_THAT(loadErrorOf([&] {
+                ambf_like::loadModelFiles({robot, missing}, std::nullopt, {.strict = true});
+              }),
+              AllOf(HasSubstr(missing.string()), HasSubstr("SENSOR eye/parent")));
 }
 
 TEST(AmbfAcceptance, Yaml11BooleansAsAmbfWritesThem) {

@@ -21,10 +21,7 @@ using scenario::Phase;
 /// The peg scene with the assist's model loaded after the arms.
 bridge::TwinOptions assistedScene() {
   return scenario_test::pegScene([](ambf_like::SceneSpec& scene) {
-    for (auto& model :
-         ambf_like::loadModelFiles({scenario::GraspAssist::modelFile()}).spec.models) {
-      scene.models.push_back(std::move(model));
-    }
+    ambf_like::appendModelFiles(scene, {scenario::GraspAssist::modelFile()});
   });
 }
 

@@ -47,4 +47,11 @@ LoadedScene loadModelFiles(const std::vector<std::filesystem::path>& model_files
                            const std::optional<std::filesystem::path>& world_file = std::nullopt,
                            const LoadOptions& options = {});
 
+/// Reads model files and adds them after the models of `scene` (their sensors and actuators may
+/// name a body of those by its qualified name as parent). Returns the warnings; throws
+/// LoadError, leaving `scene` as it was.
+std::vector<LoadIssue> appendModelFiles(SceneSpec& scene,
+                                        const std::vector<std::filesystem::path>& model_files,
+                                        const LoadOptions& options = {});
+
 }  // namespace ambf_like
