@@ -10,6 +10,7 @@
 #include <sensor_msgs/JointState.h>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "bridge/ros/low_latency.hpp"
@@ -500,6 +501,38 @@ TEST(TwinOverRos, TheTwinPublishesEachGraspersContactForces) {
   EXPECT_EQ(jaws->contacts[0] + jaws->contacts[1], 0u);
   EXPECT_EQ(wrench->wrench.force.x, 0.0);
   EXPECT_EQ(wrench->wrench.force.z, 0.0);
+
+  // The client reads both halves of the same cycle as the grasper's measured_cf.
+  for (int i = 0; i < 50 && !(robot.measuredCf(Arm::Left) && robot.measuredCf(Arm::Right)); ++i) {
+    robot.advance(0.001);
+  }
+  const auto left = robot.measuredCf(Arm::Left);
+  ASSERT_TRUE(left.has_value()) << "the twin's grasp forces reach its client";
+  ASSERT_TRUE(robot.measuredCf(Arm::Right).has_value());
+  EXPECT_EQ(left->jaws[0].contacts + left->jaws[1].contacts, 0);
+  EXPECT_TRUE(left->force.isZero());
+  EXPECT_GT(left->time, 0.0);
+}
+
+TEST(RosConversions, GraspForcesAreReadJawByJawAndNonFiniteOnesRefused) {
+  raven_twin::GraspForces jaws;
+  jaws.normal[1].y = -0.15;
+  jaws.friction[1].z = 0.01;
+  jaws.contacts = {0, 3};
+  geometry_msgs::Wrench wrench;
+  wrench.force.z = 0.0196;
+  const auto read = bridge::ros1::grasperForcesFrom(jaws, wrench);
+  ASSERT_TRUE(read.value) << read.error;
+  EXPECT_EQ(read.value->jaws[1].normal, Eigen::Vector3d(0, -0.15, 0));
+  EXPECT_EQ(read.value->jaws[1].friction, Eigen::Vector3d(0, 0, 0.01));
+  EXPECT_EQ(read.value->jaws[1].contacts, 3);
+  EXPECT_EQ(read.value->force.z(), 0.0196);
+  jaws.friction[0].x = std::nan("");
+  EXPECT_NE(bridge::ros1::grasperForcesFrom(jaws, wrench).error.find("jaw 1"), std::string::npos);
+  jaws.friction[0].x = 0.0;
+  wrench.torque.y = std::numeric_limits<double>::infinity();
+  EXPECT_NE(bridge::ros1::grasperForcesFrom(jaws, wrench).error.find("measured_cf"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "bridge/ros/raven_ros_client.hpp"
 
 #include <crtk_msgs/StringStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <raven_twin/GraspForces.h>
 #include <raven_twin/Step.h>
 #include <raven_twin/StepDone.h>
 #include <ros/callback_queue.h>
@@ -65,6 +67,8 @@ struct Connection {
   std::array<::ros::Publisher, kCommandTopicCount> commands;
   ::ros::Publisher step;
   std::vector<::ros::Subscriber> subscribers;
+  /// Topics only some robots publish (the twin's grasp forces): not waited for.
+  std::vector<::ros::Subscriber> optional_subscribers;
   bool warned_names = false;
 };
 
@@ -80,6 +84,7 @@ class RavenRosClient::Impl {
   PoseSample measuredCp(Arm arm) const { return measured_cp_[slot(arm)].value_or(PoseSample{}); }
   PoseSample setpointCp(Arm arm) const { return setpoint_cp_[slot(arm)].value_or(PoseSample{}); }
   const std::optional<RavenStateSnapshot>& ravenState() const { return raven_state_; }
+  std::optional<GrasperForces> measuredCf(Arm arm) const;
   bool lockStep() const { return options_.lock_step; }
   double now() const;
   void advance(double seconds);
@@ -109,6 +114,9 @@ class RavenRosClient::Impl {
   std::array<std::optional<JointSample>, 2> measured_, setpoint_;
   std::array<std::optional<PoseSample>, 2> measured_cp_, setpoint_cp_;
   std::optional<RavenStateSnapshot> raven_state_;
+  /// Per grasper: the latest jaw_forces and measured_cf (the twin's; a physical robot has none).
+  std::array<std::optional<std::pair<raven_twin::GraspForces, ::ros::Time>>, 2> jaw_forces_;
+  std::array<std::optional<std::pair<geometry_msgs::WrenchStamped, double>>, 2> wrench_;
   std::array<std::optional<LocalMove>, 2> moves_;
   std::vector<std::uint8_t> command_order_;  ///< lock-step: topics sent on since the last step
   std::uint64_t step_seq_ = 0;
@@ -146,6 +154,24 @@ PoseSample RavenRosClient::measuredCp(Arm arm) const {
 PoseSample RavenRosClient::setpointCp(Arm arm) const {
   return impl_->setpointCp(arm);
 }
+std::optional<GrasperForces> RavenRosClient::Impl::measuredCf(Arm arm) const {
+  const auto& jaws = jaw_forces_[slot(arm)];
+  const auto& wrench = wrench_[slot(arm)];
+  // Both halves of the same cycle (the twin stamps them alike), or nothing yet.
+  if (!jaws || !wrench || jaws->second != wrench->first.header.stamp) return std::nullopt;
+  auto parsed = grasperForcesFrom(jaws->first, wrench->first.wrench);
+  if (!parsed.value) {
+    spdlog::warn("{} forces ignored: {}", graspNamespace(arm), parsed.error);
+    return std::nullopt;
+  }
+  parsed.value->time = wrench->second;
+  return parsed.value;
+}
+
+std::optional<GrasperForces> RavenRosClient::measuredCf(Arm arm) const {
+  return impl_->measuredCf(arm);
+}
+
 std::optional<RavenStateSnapshot> RavenRosClient::ravenState() const {
   return impl_->ravenState();
 }
@@ -265,6 +291,21 @@ void RavenRosClient::Impl::subscribe() {
           },
           {}, lowLatency()));
     }
+  }
+  for (Arm arm : raven::kArms) {
+    const std::string ns = graspNamespace(arm) + "/";
+    c.optional_subscribers.push_back(c.node.subscribe<raven_twin::GraspForces>(
+        ns + "jaw_forces", 10,
+        [this, arm](const raven_twin::GraspForces::ConstPtr& m) {
+          jaw_forces_[slot(arm)] = std::make_pair(*m, m->header.stamp);
+        },
+        {}, lowLatency()));
+    c.optional_subscribers.push_back(c.node.subscribe<geometry_msgs::WrenchStamped>(
+        ns + "measured_cf", 10,
+        [this, arm, stampOf](const geometry_msgs::WrenchStamped::ConstPtr& m) {
+          wrench_[slot(arm)] = std::make_pair(*m, stampOf(m->header.stamp));
+        },
+        {}, lowLatency()));
   }
   if (lock_step) {
     c.step = c.node.advertise<raven_twin::Step>(std::string(kStepTopic), 100);

@@ -204,6 +204,26 @@ raven_twin::GraspForces toGraspForces(const GrasperForces& forces, ::ros::Time s
   return m;
 }
 
+Parsed<GrasperForces> grasperForcesFrom(const raven_twin::GraspForces& jaws,
+                                        const geometry_msgs::Wrench& wrench) {
+  auto vector = [](const geometry_msgs::Vector3& v) { return Eigen::Vector3d(v.x, v.y, v.z); };
+  GrasperForces out;
+  for (std::size_t j = 0; j < 2; ++j) {
+    out.jaws[j].normal = vector(jaws.normal[j]);
+    out.jaws[j].friction = vector(jaws.friction[j]);
+    out.jaws[j].contacts = static_cast<int>(jaws.contacts[j]);
+    if (!out.jaws[j].normal.allFinite() || !out.jaws[j].friction.allFinite()) {
+      return {std::nullopt, "jaw_forces: jaw " + std::to_string(j + 1) + " is not finite"};
+    }
+  }
+  out.force = vector(wrench.force);
+  out.torque = vector(wrench.torque);
+  if (!out.force.allFinite() || !out.torque.allFinite()) {
+    return {std::nullopt, "measured_cf: the wrench is not finite"};
+  }
+  return {out, {}};
+}
+
 crtk_msgs::operating_state toOperatingState(const OperatingStatus& status, ::ros::Time stamp) {
   crtk_msgs::operating_state m;
   m.header.stamp = stamp;

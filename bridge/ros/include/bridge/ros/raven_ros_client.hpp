@@ -48,6 +48,9 @@ class RavenRosClient final : public RavenPlatform {
   PoseSample measuredCp(Arm arm) const override;
   PoseSample setpointCp(Arm arm) const override;
   std::optional<RavenStateSnapshot> ravenState() const override;
+  /// The grasper's forces when the robot publishes them (the twin node's graspN/jaw_forces and
+  /// measured_cf of the same cycle); none from a physical Raven-II.
+  std::optional<GrasperForces> measuredCf(Arm arm) const override;
   ClockKind clockKind() const override;
   double now() const override;
   void advance(double seconds) override;

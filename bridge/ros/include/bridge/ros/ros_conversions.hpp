@@ -56,6 +56,10 @@ geometry_msgs::WrenchStamped toWrenchStamped(const GrasperForces& forces, ::ros:
 /// Each jaw's normal and friction forces and contact count.
 raven_twin::GraspForces toGraspForces(const GrasperForces& forces, ::ros::Time stamp,
                                       std::string frame);
+/// A grasper's forces from the twin's jaw_forces and measured_cf messages; refused (with the
+/// field named) when any value is not finite.
+Parsed<GrasperForces> grasperForcesFrom(const raven_twin::GraspForces& jaws,
+                                        const geometry_msgs::Wrench& wrench);
 
 crtk_msgs::operating_state toOperatingState(const OperatingStatus& status, ::ros::Time stamp);
 Parsed<OperatingStatus> operatingStatusFrom(const crtk_msgs::operating_state& message);
