@@ -57,8 +57,24 @@ void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
 }
 
 void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
+  prepareWithBullet(body);
+  const btScalar h = body.m_sst.sdt;
+  const int substeps = registered.substeps;
+  const btScalar hs = h / substeps;
+  rewindPrediction(body, registered);
+  startContacts(body);
+  body.m_sst.sdt = hs;
+  body.m_sst.isdt = 1.0 / hs;
+  for (int s = 0; s < substeps; ++s) substep(body, hs, (s + 1) * hs);
+  body.m_sst.sdt = h;
+  body.m_sst.isdt = 1.0 / h;
+  finishStep(body);
+  applyToRigidBodies(body);
+}
+
+void CoulombContactSolver::prepareWithBullet(btSoftBody& body) {
   // Bullet prepares links and anchors and runs any velocity iterations; the position
-  // iterations and the contacts are done here, substep by substep.
+  // iterations and the contacts are left to the substeps.
   auto& cfg = body.m_cfg;
   const int iterations = cfg.piterations;
   const int drift_iterations = cfg.diterations;
@@ -67,13 +83,13 @@ void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
   body.solveConstraints();
   cfg.piterations = iterations;
   cfg.diterations = drift_iterations;
+}
 
-  const int nodes = body.m_nodes.size();
-  const auto count = static_cast<std::size_t>(nodes);
+void CoulombContactSolver::rewindPrediction(btSoftBody& body, const Registered& registered) {
+  // Bullet predicted x = lerp(q + (v0 + a h) h, pose goal, kMT) for the whole step: keep its
+  // acceleration and its pose-matching pull, and go back to the step's start.
+  const auto count = static_cast<std::size_t>(body.m_nodes.size());
   const btScalar h = body.m_sst.sdt;
-  const int substeps = registered.substeps;
-  const btScalar hs = h / substeps;
-  // Bullet predicted x = lerp(q + (v0 + a h) h, pose goal, kMT): replay it in substeps.
   acceleration_.resize(count);
   pose_pull_.resize(count);
   step_start_.resize(count);
@@ -82,42 +98,41 @@ void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
     const btVector3 v0 = known_start ? registered.start_velocity[k] : n.m_v;
     acceleration_[k] = (n.m_v - v0) / h;
-    pose_pull_[k] = (n.m_x - (n.m_q + n.m_v * h)) / substeps;
+    pose_pull_[k] = (n.m_x - (n.m_q + n.m_v * h)) / registered.substeps;
     step_start_[k] = n.m_q;
     n.m_x = n.m_q;
     n.m_v = v0;
   }
-  startContacts(body);
-  body.m_sst.sdt = hs;
-  body.m_sst.isdt = 1.0 / hs;
-  for (int s = 0; s < substeps; ++s) {
-    for (std::size_t k = 0; k < count; ++k) {
-      btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
-      n.m_q = n.m_x;
-      n.m_v += acceleration_[k] * hs;
-      n.m_x += n.m_v * hs + pose_pull_[k];
-    }
-    for (int k = 0; k < iterations; ++k) {
-      const btScalar ti = k / static_cast<btScalar>(iterations);
-      for (int q = 0; q < cfg.m_psequence.size(); ++q) {
-        btSoftBody::getSolver(cfg.m_psequence[q])(&body, 1.0, ti);
-      }
-    }
-    projectContacts(body, (s + 1) * hs);
-    for (int i = 0; i < nodes; ++i) {
-      btSoftBody::Node& n = body.m_nodes[i];
-      n.m_v = (n.m_x - n.m_q) / hs;
+}
+
+void CoulombContactSolver::substep(btSoftBody& body, btScalar hs, btScalar elapsed) {
+  for (std::size_t k = 0; k < acceleration_.size(); ++k) {
+    btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
+    n.m_q = n.m_x;
+    n.m_v += acceleration_[k] * hs;
+    n.m_x += n.m_v * hs + pose_pull_[k];
+  }
+  const auto& cfg = body.m_cfg;
+  for (int k = 0; k < cfg.piterations; ++k) {
+    const btScalar ti = k / static_cast<btScalar>(cfg.piterations);
+    for (int q = 0; q < cfg.m_psequence.size(); ++q) {
+      btSoftBody::getSolver(cfg.m_psequence[q])(&body, 1.0, ti);
     }
   }
-  body.m_sst.sdt = h;
-  body.m_sst.isdt = 1.0 / h;
-  for (std::size_t k = 0; k < count; ++k) {
+  projectContacts(body, elapsed);
+  for (int i = 0; i < body.m_nodes.size(); ++i) {
+    btSoftBody::Node& n = body.m_nodes[i];
+    n.m_v = (n.m_x - n.m_q) / hs;
+  }
+}
+
+void CoulombContactSolver::finishStep(btSoftBody& body) {
+  for (std::size_t k = 0; k < step_start_.size(); ++k) {
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
-    n.m_v *= 1.0 - cfg.kDP;
+    n.m_v *= 1.0 - body.m_cfg.kDP;  // Bullet's damping, once per step
     n.m_q = step_start_[k];
     n.m_f.setZero();
   }
-  applyToRigidBodies(body);
 }
 
 void CoulombContactSolver::startContacts(const btSoftBody& body) {

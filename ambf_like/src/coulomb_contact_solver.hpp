@@ -64,6 +64,15 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   };
 
   void solve(btSoftBody& body, Registered& registered);
+  /// Bullet's own constraint pass without its position and drift iterations.
+  static void prepareWithBullet(btSoftBody& body);
+  /// Keeps Bullet's predicted acceleration and pose pull per node; puts the nodes back at the
+  /// step's start.
+  void rewindPrediction(btSoftBody& body, const Registered& registered);
+  /// One substep of `hs`, ending `elapsed` into the step: integrate, iterate, contacts.
+  void substep(btSoftBody& body, btScalar hs, btScalar elapsed);
+  /// Damping, the step's start back in m_q, forces cleared.
+  void finishStep(btSoftBody& body);
   void startContacts(const btSoftBody& body);
   /// A substep's contacts, the rigid surfaces where they are `elapsed` into the step.
   void projectContacts(btSoftBody& body, btScalar elapsed);
