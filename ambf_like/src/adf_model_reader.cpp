@@ -175,7 +175,7 @@ ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) 
   for (const auto& body : model.bodies) rigid.insert(body.name);
   auto parentKnown = [&](const std::string& parent, const std::string& what, const YamlView& node) {
     // A namespace-qualified parent ("/raven2/left/jaw1_link") may be a body of another model,
-    // as AMBF finds it: it is looked up when the world is built.
+    // as AMBF finds it: the scene loader resolves it against the models loaded before.
     if (rigid.count(parent) || parent.starts_with('/')) return true;
     context.tolerate(node["parent"].where(), what + ": parent body '" + parent +
                                                  "' is not a rigid body of this model; ignored");

@@ -2,6 +2,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cstring>
 #include <unordered_map>
@@ -33,20 +34,22 @@ struct PositionHash {
   }
 };
 
-/// Keeps only vertices that a triangle uses, so vertex i is soft-body node i.
+/// Keeps only vertices that a tetrahedron or a triangle uses, so vertex i is soft-body node i
+/// (an unused point would be a massless, that is fixed, node).
 void dropUnreferencedVertices(Mesh& mesh) {
   std::vector<int> remap(mesh.vertices.size(), -1);
   std::vector<Vec3> kept;
-  for (auto& triangle : mesh.triangles) {
-    for (int& index : triangle) {
-      auto& target = remap[static_cast<std::size_t>(index)];
-      if (target < 0) {
-        target = static_cast<int>(kept.size());
-        kept.push_back(mesh.vertices[static_cast<std::size_t>(index)]);
-      }
-      index = target;
+  auto renumber = [&](int& index) {
+    auto& target = remap[static_cast<std::size_t>(index)];
+    if (target < 0) {
+      target = static_cast<int>(kept.size());
+      kept.push_back(mesh.vertices[static_cast<std::size_t>(index)]);
     }
-  }
+    index = target;
+  };
+  for (auto& tetrahedron : mesh.tetrahedra)
+    std::for_each(tetrahedron.begin(), tetrahedron.end(), renumber);
+  for (auto& triangle : mesh.triangles) std::for_each(triangle.begin(), triangle.end(), renumber);
   mesh.vertices = std::move(kept);
 }
 
@@ -107,7 +110,9 @@ std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,
   std::shared_ptr<const Mesh> mesh;
   if (file.extension() == ".vtk") {
     try {
-      mesh = std::make_shared<const Mesh>(detail::readVtkTetMesh(file));
+      Mesh volume = detail::readVtkTetMesh(file);
+      dropUnreferencedVertices(volume);
+      mesh = std::make_shared<const Mesh>(std::move(volume));
     } catch (const LoadError& error) {
       auto issues = error.issues();
       issues.push_back({referenced_from, "the tetrahedral mesh above is referenced here"});

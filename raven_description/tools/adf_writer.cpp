@@ -1,9 +1,7 @@
 #include "adf_writer.hpp"
 
-#include <fstream>
 #include <map>
 #include <set>
-#include <stdexcept>
 #include <tuple>
 
 #include "yaml_out.hpp"
@@ -194,13 +192,7 @@ std::size_t writeModel(const ModelDraft& model, Collision collision,
     root["JOINT " + joint.name] = j;
   }
 
-  YAML::Emitter out;
-  out.SetDoublePrecision(12);
-  out << YAML::Comment(model.comment) << root;
-  std::filesystem::create_directories(file.parent_path());
-  std::ofstream stream(file);
-  if (!stream) throw std::runtime_error("cannot write " + file.string());
-  stream << out.c_str() << "\n";
+  writeYaml(root, model.comment, file);
   return vertices;
 }
 

@@ -1,8 +1,5 @@
 #include "peg_scene.hpp"
 
-#include <fstream>
-#include <stdexcept>
-
 #include "shapes.hpp"
 #include "tet_mesh.hpp"
 #include "yaml_out.hpp"
@@ -10,17 +7,6 @@
 namespace raven::model {
 
 namespace {
-
-void writeYaml(const YAML::Node& root, const std::string& comment,
-               const std::filesystem::path& file) {
-  YAML::Emitter out;
-  out.SetDoublePrecision(12);
-  out << YAML::Comment(comment) << root;
-  std::filesystem::create_directories(file.parent_path());
-  std::ofstream stream(file);
-  if (!stream) throw std::runtime_error("cannot write " + file.string());
-  stream << out.c_str() << "\n";
-}
 
 YAML::Node shape(const std::string& name, const std::string& type, YAML::Node geometry,
                  const Eigen::Vector3d& position) {

@@ -5,6 +5,9 @@
 
 #include <Eigen/Geometry>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
 #include <string>
 
 namespace raven::model {
@@ -41,6 +44,18 @@ inline YAML::Node pose(const Eigen::Isometry3d& t) {
   o["y"] = number(ypr.x());
   n["orientation"] = flow(o);
   return flow(n);
+}
+
+/// Writes `root` to `file` (its folder created) under a comment line, numbers at 12 digits.
+inline void writeYaml(const YAML::Node& root, const std::string& comment,
+                      const std::filesystem::path& file) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(12);
+  out << YAML::Comment(comment) << root;
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream stream(file);
+  if (!stream) throw std::runtime_error("cannot write " + file.string());
+  stream << out.c_str() << "\n";
 }
 
 }  // namespace raven::model

@@ -47,7 +47,7 @@ ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
       kinematics_(raven::ArmKinematics::of(profile, arm)),
       layout_(layout),
       jobs_(std::move(jobs)),
-      squeeze_(squeeze) {
+      closed_(jawAngleFor(squeeze)) {
   if (jobs_.empty()) phase_ = Phase::Done;
 }
 
@@ -87,7 +87,6 @@ void ArmRoutine::plan(const ambf_like::World& world) {
   const Eigen::Vector2d face = station.head<2>() + inward * (layout_.tube_half_width + kGap);
   grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), top + kAboveTop);
   grasp_.offset = face - centre;
-  closed_ = jawAngleFor(squeeze_);
 }
 
 double ArmRoutine::jawAngleFor(double squeeze) const {

@@ -73,6 +73,28 @@ TEST(VolumeMesh, ACubeOfSixTetrahedraBecomesASolidSoftBody) {
   EXPECT_NEAR(high - low, 0.02, 0.001) << "still 2 cm tall";
 }
 
+TEST(VolumeMesh, APointNoTetrahedronUsesIsNoNode) {
+  // The cube with a ninth point that belongs to no cell: it would be a massless (fixed) node.
+  std::string vtk = cubeVtk();
+  vtk.replace(vtk.find("POINTS 8 double\n"), 16, "POINTS 9 double\n5 5 5\n");
+  for (int cell = 0; cell < 6; ++cell) {  // every index moves up by one past the stray point
+    const std::string row[] = {"4 0 1 3 7", "4 0 1 5 7", "4 0 2 3 7",
+                               "4 0 2 6 7", "4 0 4 5 7", "4 0 4 6 7"};
+    std::string shifted = "4";
+    for (char c : row[cell].substr(2)) {
+      if (c != ' ') shifted += std::string(" ") + std::to_string(c - '0' + 1);
+    }
+    vtk.replace(vtk.find(row[cell] + "\n"), row[cell].size(), shifted);
+  }
+  TempDir dir;
+  auto sim = test_support::simulate({dir.write("s.yaml", scene(dir.write("stray.vtk", vtk)))});
+  const btSoftBody& body = sim->world->softBody("cube").bullet();
+  ASSERT_EQ(body.m_nodes.size(), 8) << "the stray point is dropped";
+  for (int i = 0; i < body.m_nodes.size(); ++i) EXPECT_GT(body.m_nodes[i].m_im, 0.0) << i;
+  EXPECT_EQ(body.m_links.size(), 19);
+  EXPECT_EQ(body.m_faces.size(), 12);
+}
+
 /// The load error of a scene whose cube mesh is `vtk`.
 std::string errorOf(const std::string& vtk) {
   TempDir dir;

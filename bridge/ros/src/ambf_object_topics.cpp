@@ -10,6 +10,8 @@
 #include <deque>
 #include <vector>
 
+#include "bridge/ros/ros_conversions.hpp"
+
 namespace bridge::ros1 {
 
 namespace {
@@ -18,19 +20,6 @@ std_msgs::String text(const std::string& value) {
   std_msgs::String s;
   s.data = value;
   return s;
-}
-
-geometry_msgs::Pose poseMessage(const ambf_like::Transform& t) {
-  geometry_msgs::Pose p;
-  p.position.x = t.translation().x();
-  p.position.y = t.translation().y();
-  p.position.z = t.translation().z();
-  const Eigen::Quaterniond q(t.rotation());
-  p.orientation.x = q.x();
-  p.orientation.y = q.y();
-  p.orientation.z = q.z();
-  p.orientation.w = q.w();
-  return p;
 }
 
 ambf_like::Vec3 offsetOf(const geometry_msgs::Pose& p) {
@@ -107,7 +96,7 @@ class AmbfObjectTopics::Impl {
     m.name = text(name);
     m.wall_time = static_cast<float>(::ros::WallTime::now().toSec());
     m.sim_time = static_cast<float>(sim_time);
-    m.pose = poseMessage(pose);
+    m.pose = toPose(pose);
   }
 
   void publishSensor(std::size_t index, double sim_time) {

@@ -114,9 +114,12 @@ class RavenRosClient::Impl {
   std::array<std::optional<JointSample>, 2> measured_, setpoint_;
   std::array<std::optional<PoseSample>, 2> measured_cp_, setpoint_cp_;
   std::optional<RavenStateSnapshot> raven_state_;
-  /// Per grasper: the latest jaw_forces and measured_cf (the twin's; a physical robot has none).
-  std::array<std::optional<std::pair<raven_twin::GraspForces, ::ros::Time>>, 2> jaw_forces_;
-  std::array<std::optional<std::pair<geometry_msgs::WrenchStamped, double>>, 2> wrench_;
+  /// Per grasper: the latest jaw_forces and measured_cf (the twin's; a physical robot has none),
+  /// and the forces read from the two once they carry the same cycle's stamp.
+  std::array<std::optional<raven_twin::GraspForces>, 2> jaw_forces_;
+  std::array<std::optional<geometry_msgs::WrenchStamped>, 2> wrench_;
+  std::array<std::optional<GrasperForces>, 2> cf_;
+  void readForces(Arm arm, double time);
   std::array<std::optional<LocalMove>, 2> moves_;
   std::vector<std::uint8_t> command_order_;  ///< lock-step: topics sent on since the last step
   std::uint64_t step_seq_ = 0;
@@ -155,17 +158,21 @@ PoseSample RavenRosClient::setpointCp(Arm arm) const {
   return impl_->setpointCp(arm);
 }
 std::optional<GrasperForces> RavenRosClient::Impl::measuredCf(Arm arm) const {
+  return cf_[slot(arm)];
+}
+
+void RavenRosClient::Impl::readForces(Arm arm, double time) {
   const auto& jaws = jaw_forces_[slot(arm)];
   const auto& wrench = wrench_[slot(arm)];
-  // Both halves of the same cycle (the twin stamps them alike), or nothing yet.
-  if (!jaws || !wrench || jaws->second != wrench->first.header.stamp) return std::nullopt;
-  auto parsed = grasperForcesFrom(jaws->first, wrench->first.wrench);
+  // Both halves of the same cycle (the twin stamps them alike), or wait for the other.
+  if (!jaws || !wrench || jaws->header.stamp != wrench->header.stamp) return;
+  auto parsed = grasperForcesFrom(*jaws, wrench->wrench);
   if (!parsed.value) {
     spdlog::warn("{} forces ignored: {}", graspNamespace(arm), parsed.error);
-    return std::nullopt;
+    return;
   }
-  parsed.value->time = wrench->second;
-  return parsed.value;
+  parsed.value->time = time;
+  cf_[slot(arm)] = parsed.value;
 }
 
 std::optional<GrasperForces> RavenRosClient::measuredCf(Arm arm) const {
@@ -296,14 +303,16 @@ void RavenRosClient::Impl::subscribe() {
     const std::string ns = graspNamespace(arm) + "/";
     c.optional_subscribers.push_back(c.node.subscribe<raven_twin::GraspForces>(
         ns + "jaw_forces", 10,
-        [this, arm](const raven_twin::GraspForces::ConstPtr& m) {
-          jaw_forces_[slot(arm)] = std::make_pair(*m, m->header.stamp);
+        [this, arm, stampOf](const raven_twin::GraspForces::ConstPtr& m) {
+          jaw_forces_[slot(arm)] = *m;
+          readForces(arm, stampOf(m->header.stamp));
         },
         {}, lowLatency()));
     c.optional_subscribers.push_back(c.node.subscribe<geometry_msgs::WrenchStamped>(
         ns + "measured_cf", 10,
         [this, arm, stampOf](const geometry_msgs::WrenchStamped::ConstPtr& m) {
-          wrench_[slot(arm)] = std::make_pair(*m, stampOf(m->header.stamp));
+          wrench_[slot(arm)] = *m;
+          readForces(arm, stampOf(m->header.stamp));
         },
         {}, lowLatency()));
   }

@@ -152,6 +152,19 @@ sensor_msgs::JointState toGraspState(const JointSample& sample, std::string_view
   return m;
 }
 
+geometry_msgs::Pose toPose(const Eigen::Isometry3d& pose) {
+  geometry_msgs::Pose m;
+  m.position.x = pose.translation().x();
+  m.position.y = pose.translation().y();
+  m.position.z = pose.translation().z();
+  const Eigen::Quaterniond q(pose.linear());
+  m.orientation.w = q.w();
+  m.orientation.x = q.x();
+  m.orientation.y = q.y();
+  m.orientation.z = q.z();
+  return m;
+}
+
 geometry_msgs::TransformStamped toTransformStamped(const Eigen::Isometry3d& pose, ::ros::Time stamp,
                                                    std::string frame, std::string child_frame) {
   geometry_msgs::TransformStamped m;

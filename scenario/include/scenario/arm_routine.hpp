@@ -33,7 +33,8 @@ class ArmRoutine {
   raven::ArmJoints next(const raven::ArmJoints& target, const ambf_like::World& world);
   bool done() const { return phase_ == Phase::Done; }
   Phase phase() const { return phase_; }
-  /// The outer jaw's angle that reaches `squeeze` (m) into the current job's ring wall.
+  /// The outer jaw's angle that reaches `squeeze` (m) into a ring's wall, the grasper placed as
+  /// the routine places it.
   double jawAngleFor(double squeeze) const;
   /// The jaws' commanded opening (jaw1 + jaw2) of the last target.
   double opening() const { return inner_ + outer_; }
@@ -66,8 +67,7 @@ class ArmRoutine {
   Phase phase_ = Phase::Orient;
   int waited_ = 0;
   Grasp grasp_;
-  double squeeze_;
-  double closed_ = 0.0;               ///< the outer jaw's angle when closed, for this grasp
+  double closed_;                     ///< the outer jaw's angle when closed
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
 };
 

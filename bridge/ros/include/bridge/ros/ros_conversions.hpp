@@ -4,6 +4,7 @@
 // Includes ROS 1 message headers: C++17 translation units only.
 
 #include <crtk_msgs/operating_state.h>
+#include <geometry_msgs/Pose.h>
 #include <geometry_msgs/Transform.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
@@ -47,6 +48,8 @@ Parsed<JointSample> jointSampleFromState(const sensor_msgs::JointState& message)
 sensor_msgs::JointState toGraspState(const JointSample& sample, std::string_view colour,
                                      ::ros::Time stamp);
 
+/// A pose as a geometry_msgs/Pose (AMBF's state messages carry their objects' poses so).
+geometry_msgs::Pose toPose(const Eigen::Isometry3d& pose);
 geometry_msgs::TransformStamped toTransformStamped(const Eigen::Isometry3d& pose, ::ros::Time stamp,
                                                    std::string frame, std::string child_frame);
 
