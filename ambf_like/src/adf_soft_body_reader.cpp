@@ -116,8 +116,41 @@ constexpr std::string_view kSoftBodyKeys[] = {
     "randomize constraints", "config", "inertial offset", "color", "color rgba",
     "color components", "visible", "shaders", "plugins", "passive", "publish frequency",
     "high resolution path", "low resolution path", "linear gain", "angular gain", "use material",
-    "redundant", "detached", "contact friction", "substeps"};
+    "redundant", "detached", "contact friction", "substeps", "material"};
 // clang-format on
+
+/// A required, strictly positive and physically bounded number of the `material:` block.
+double readMaterialValue(const YamlView& material, const char* key, double low, double high,
+                         const char* unit) {
+  const YamlView value = material[key];
+  const double number = value.asDouble();
+  if (!(number > low && number < high)) {
+    std::ostringstream range;
+    range << key << " must lie in (" << low << ", " << high << ") " << unit << ", not " << number;
+    value.fail(range.str());
+  }
+  return number;
+}
+
+/// The `material:` block: Young's modulus and Poisson's ratio (required), density (or the body's
+/// `mass`, one of the two).
+SoftMaterial readMaterial(const YamlView& node, const YamlView& material, LoadContext& context) {
+  material.checkKeys({"young's modulus", "poisson's ratio", "density"}, context.keyCheck());
+  SoftMaterial m;
+  // From a gel (1 kPa) to a stiff rubber's tenfold (1 GPa): beyond that a soft body is the
+  // wrong model.
+  m.youngs_modulus = readMaterialValue(material, "young's modulus", 0.0, 1e9, "Pa");
+  m.poissons_ratio = readMaterialValue(material, "poisson's ratio", 0.0, 0.5, "");
+  if (auto density = material.find("density")) {
+    m.density = readMaterialValue(material, "density", 0.0, 1e5, "kg/m^3");
+    if (node.has("mass")) {
+      node["mass"].fail("give a soft body's 'mass' or its material's 'density', not both");
+    }
+  } else if (!node.has("mass")) {
+    material.fail("a material needs a 'density' (or the body a 'mass')");
+  }
+  return m;
+}
 
 }  // namespace
 
@@ -128,8 +161,13 @@ SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
   SoftBodySpec soft;
   soft.where = node.where();
   soft.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
-  soft.mass = node["mass"].asDouble();
-  if (soft.mass <= 0.0) node["mass"].fail("a soft body needs a mass greater than zero");
+  if (auto material = node.find("material")) soft.material = readMaterial(node, *material, context);
+  if (!soft.material || soft.material->density == 0.0) {
+    soft.mass = node["mass"].asDouble();
+    if (!(soft.mass > 0.0 && soft.mass < 1e6)) {
+      node["mass"].fail("a soft body needs a mass greater than zero (and below 1e6 kg)");
+    }
+  }
   if (auto v = node.find("location")) soft.location = v->asPose();
   if (auto v = node.find("scale")) {
     soft.scale = v->asDouble();
@@ -145,9 +183,17 @@ SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
                      "'");
     }
   }
+  if (soft.material) {
+    // A material's forces are the solver's own contacts' business (CoulombContactSolver).
+    if (auto friction = node.find("contact friction");
+        friction && soft.contact_friction != SoftContactFriction::Coulomb) {
+      friction->fail("a soft body with a material takes 'contact friction: coulomb'");
+    }
+    soft.contact_friction = SoftContactFriction::Coulomb;
+  }
   if (auto substeps = node.find("substeps")) {
     soft.substeps = substeps->asInt();
-    if (soft.substeps < 1 || soft.substeps > 64) substeps->fail("substeps must be 1 to 64");
+    if (soft.substeps < 1 || soft.substeps > 1000) substeps->fail("substeps must be 1 to 1000");
     if (soft.contact_friction != SoftContactFriction::Coulomb && soft.substeps > 1) {
       substeps->fail("substeps are taken by soft bodies with 'contact friction: coulomb' only");
     }

@@ -65,13 +65,18 @@ btSoftBodyWorldInfo& BulletWorld::softBodyInfo() {
                            : impl_->soft_multibody->getWorldInfo();
 }
 
-void BulletWorld::addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps) {
-  if (coulomb_substeps) impl_->soft_solver.useCoulombContacts(body, *coulomb_substeps);
+void BulletWorld::addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps,
+                              const std::optional<SoftMaterial>& material) {
+  if (coulomb_substeps) impl_->soft_solver.useCoulombContacts(body, *coulomb_substeps, material);
   if (impl_->soft_rigid) {
     impl_->soft_rigid->addSoftBody(&body);
   } else {
     impl_->soft_multibody->addSoftBody(&body);
   }
+}
+
+int BulletWorld::substepsFor(const btSoftBody& body, double h) const {
+  return impl_->soft_solver.substepsFor(body, h);
 }
 
 void BulletWorld::removeSoftBody(btSoftBody& body) {

@@ -6,6 +6,8 @@
 #include <optional>
 #include <vector>
 
+#include "ambf_like/soft_body_spec.hpp"
+
 class btCollisionDispatcher;
 class btDiscreteDynamicsWorld;
 class btMultiBodyDynamicsWorld;
@@ -31,8 +33,11 @@ class BulletWorld {
   const btCollisionDispatcher& dispatcher() const;
   btSoftBodyWorldInfo& softBodyInfo();
   /// With `coulomb_substeps` set, its rigid contacts get Coulomb friction and its step that
-  /// many substeps (CoulombContactSolver).
-  void addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps);
+  /// many substeps (CoulombContactSolver), its tetrahedra the `material`'s elasticity if given.
+  void addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps,
+                   const std::optional<SoftMaterial>& material);
+  /// How many substeps a step of `h` takes `body` (1 for a body without Coulomb contacts).
+  int substepsFor(const btSoftBody& body, double h) const;
   void removeSoftBody(btSoftBody& body);
   /// The impulses of the last step's Coulomb contacts.
   const std::vector<NodeContactImpulse>& coulombImpulses() const;

@@ -3,6 +3,9 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletSoftBody/btSoftBody.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace ambf_like::detail {
 
 namespace {
@@ -20,12 +23,28 @@ bool isCoulombContact(const btSoftBody::RContact& contact) {
 
 }  // namespace
 
-void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps) {
+void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps,
+                                              const std::optional<SoftMaterial>& material) {
   auto& sequence = body.m_cfg.m_psequence;
   for (int i = sequence.size() - 1; i >= 0; --i) {
-    if (sequence[i] == btSoftBody::ePSolver::RContacts) sequence.removeAtIndex(i);
+    const bool replaced = sequence[i] == btSoftBody::ePSolver::RContacts ||
+                          (material && sequence[i] == btSoftBody::ePSolver::Linear);
+    if (replaced) sequence.removeAtIndex(i);
   }
-  coulomb_[&body].substeps = substeps;
+  Registered& registered = coulomb_[&body];
+  registered.substeps = substeps;
+  if (material) registered.elasticity = std::make_unique<NeoHookeanTets>(body, *material);
+}
+
+int CoulombContactSolver::Registered::substepsFor(btScalar h) const {
+  if (!elasticity) return substeps;
+  const double stable = std::ceil(h / elasticity->stableSubstep() - 1e-9);
+  return std::max(substeps, static_cast<int>(std::min(stable, 100000.0)));
+}
+
+int CoulombContactSolver::substepsFor(const btSoftBody& body, btScalar h) const {
+  const auto it = coulomb_.find(&body);
+  return it == coulomb_.end() ? 1 : it->second.substepsFor(h);
 }
 
 void CoulombContactSolver::forget(const btSoftBody& body) {
@@ -59,13 +78,15 @@ void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
 void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
   prepareWithBullet(body);
   const btScalar h = body.m_sst.sdt;
-  const int substeps = registered.substeps;
+  const int substeps = registered.substepsFor(h);
   const btScalar hs = h / substeps;
-  rewindPrediction(body, registered);
-  startContacts(body);
+  rewindPrediction(body, registered, substeps);
+  startContacts(body, registered.elasticity != nullptr);
   body.m_sst.sdt = hs;
   body.m_sst.isdt = 1.0 / hs;
-  for (int s = 0; s < substeps; ++s) substep(body, hs, (s + 1) * hs);
+  for (int s = 0; s < substeps; ++s) {
+    substep(body, registered.elasticity.get(), hs, (s + 1) * hs);
+  }
   body.m_sst.sdt = h;
   body.m_sst.isdt = 1.0 / h;
   finishStep(body);
@@ -85,7 +106,8 @@ void CoulombContactSolver::prepareWithBullet(btSoftBody& body) {
   cfg.diterations = drift_iterations;
 }
 
-void CoulombContactSolver::rewindPrediction(btSoftBody& body, const Registered& registered) {
+void CoulombContactSolver::rewindPrediction(btSoftBody& body, const Registered& registered,
+                                            int substeps) {
   // Bullet predicted x = lerp(q + (v0 + a h) h, pose goal, kMT) for the whole step: keep its
   // acceleration and its pose-matching pull, and go back to the step's start.
   const auto count = static_cast<std::size_t>(body.m_nodes.size());
@@ -98,14 +120,15 @@ void CoulombContactSolver::rewindPrediction(btSoftBody& body, const Registered& 
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
     const btVector3 v0 = known_start ? registered.start_velocity[k] : n.m_v;
     acceleration_[k] = (n.m_v - v0) / h;
-    pose_pull_[k] = (n.m_x - (n.m_q + n.m_v * h)) / registered.substeps;
+    pose_pull_[k] = (n.m_x - (n.m_q + n.m_v * h)) / substeps;
     step_start_[k] = n.m_q;
     n.m_x = n.m_q;
     n.m_v = v0;
   }
 }
 
-void CoulombContactSolver::substep(btSoftBody& body, btScalar hs, btScalar elapsed) {
+void CoulombContactSolver::substep(btSoftBody& body, NeoHookeanTets* elasticity, btScalar hs,
+                                   btScalar elapsed) {
   for (std::size_t k = 0; k < acceleration_.size(); ++k) {
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
     n.m_q = n.m_x;
@@ -113,13 +136,16 @@ void CoulombContactSolver::substep(btSoftBody& body, btScalar hs, btScalar elaps
     n.m_x += n.m_v * hs + pose_pull_[k];
   }
   const auto& cfg = body.m_cfg;
+  if (elasticity) elasticity->warmStart(body, hs);
   for (int k = 0; k < cfg.piterations; ++k) {
+    if (elasticity) elasticity->iterate(body, hs);
     const btScalar ti = k / static_cast<btScalar>(cfg.piterations);
     for (int q = 0; q < cfg.m_psequence.size(); ++q) {
       btSoftBody::getSolver(cfg.m_psequence[q])(&body, 1.0, ti);
     }
   }
-  projectContacts(body, elapsed);
+  projectContacts(body, elapsed, elasticity != nullptr);
+  if (elasticity) elasticity->finishSubstep(hs);
   for (int i = 0; i < body.m_nodes.size(); ++i) {
     btSoftBody::Node& n = body.m_nodes[i];
     n.m_v = (n.m_x - n.m_q) / hs;
@@ -135,10 +161,11 @@ void CoulombContactSolver::finishStep(btSoftBody& body) {
   }
 }
 
-void CoulombContactSolver::startContacts(const btSoftBody& body) {
+void CoulombContactSolver::startContacts(btSoftBody& body, bool elastic) {
   contacts_.assign(static_cast<std::size_t>(body.m_rcontacts.size()), Accumulated{});
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
-    const btSoftBody::RContact& contact = body.m_rcontacts[i];
+    btSoftBody::RContact& contact = body.m_rcontacts[i];
+    if (elastic) contact.m_cti.m_offset += kCoulombContactBand;
     const btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj);
     const btVector3 arm =
         contact.m_node->m_x - contact.m_cti.m_colObj->getWorldTransform().getOrigin();
@@ -147,7 +174,7 @@ void CoulombContactSolver::startContacts(const btSoftBody& body) {
   }
 }
 
-void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
+void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed, bool elastic) {
   const btScalar kdf = body.m_cfg.kDF;
   const btScalar hs = body.m_sst.sdt;
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
@@ -157,19 +184,27 @@ void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
     Accumulated& state = contacts_[static_cast<std::size_t>(i)];
     const btVector3& normal = contact.m_cti.m_normal;
     // The contact plane was found where the rigid body was when the step began: move it along.
-    const btScalar depth = -(normal.dot(node.m_x) + contact.m_cti.m_offset -
-                             normal.dot(state.surface_velocity) * elapsed);
+    const btScalar moved = normal.dot(state.surface_velocity) * elapsed;
+    const btScalar depth = -(normal.dot(node.m_x) + contact.m_cti.m_offset - moved);
     if (depth <= 0.0) continue;
+    // An elastic body's node that began the substep inside (placed there, or left there by the
+    // plane's turn) is moved out without that becoming motion: only what the substep pressed in
+    // pushes back, or the push would be an elastic solid's stored energy let loose.
+    const btScalar start_plane = moved - normal.dot(state.surface_velocity) * hs;
+    const btScalar start_depth = -(normal.dot(node.m_q) + contact.m_cti.m_offset - start_plane);
+    const btScalar carried = elastic ? std::clamp(start_depth, btScalar(0), depth) : 0.0;
+    const btScalar pressed = depth - carried;
     node.m_x += normal * depth;
+    node.m_q += normal * carried;
     // Slip over the substep, relative to the surface: undone within mu x the normal push.
     const btVector3 relative = node.m_x - node.m_q - state.surface_velocity * hs;
     btVector3 friction = -(relative - normal * normal.dot(relative));
-    const btScalar limit = kdf * contact.m_cti.m_colObj->getFriction() * depth;
+    const btScalar limit = kdf * contact.m_cti.m_colObj->getFriction() * pressed;
     const btScalar size = friction.length();
     if (size > limit) friction *= limit / size;
     node.m_x += friction;
     const btScalar mass_rate = 1.0 / (node.m_im * hs);  // impulse per unit of correction
-    const btVector3 normal_impulse = normal * (depth * mass_rate);
+    const btVector3 normal_impulse = normal * (pressed * mass_rate);
     state.normal_impulse += normal_impulse;
     state.impulse += normal_impulse + friction * mass_rate;
   }

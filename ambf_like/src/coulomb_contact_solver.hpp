@@ -3,12 +3,22 @@
 
 #include <BulletSoftBody/btDefaultSoftBodySolver.h>
 
+#include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
+
+#include "neo_hookean_tets.hpp"
 
 class btCollisionObject;
 
 namespace ambf_like::detail {
+
+/// How much farther than its margin (m) an elastic body's node is taken as a contact: Bullet finds
+/// a body's contacts once per step, and a node that is not one when the step begins passes
+/// through a rigid surface unopposed if it reaches it during the step (an elastic solid's nodes
+/// move that far within a step when it is squeezed). The contact plane stays at the margin.
+constexpr double kCoulombContactBand = 0.001;
 
 /// The impulse one soft-body node exchanged with a rigid body in the last step.
 struct NodeContactImpulse {
@@ -34,6 +44,9 @@ struct NodeContactImpulse {
 /// mu J_n (slip), mu = kDF x the rigid body's friction. After the step the opposite impulses go
 /// to the rigid bodies: a grasp is held, and felt, by its squeeze and nothing else.
 ///
+/// A body with a material has no links in its solve: its tetrahedra answer a deformation as the
+/// material does (NeoHookeanTets), with at least as many substeps as the material is stable at.
+///
 /// Why substeps: a position-based body presses back on what squeezes it with about
 /// m x dx / h^2, so with n substeps n^2 times harder, at the cost of n passes over its
 /// constraints (Macklin et al. 2019, "Small steps in physics simulation"). Without them a
@@ -42,19 +55,28 @@ struct NodeContactImpulse {
 class CoulombContactSolver final : public btDefaultSoftBodySolver {
  public:
   /// `body` gets Coulomb contacts and `substeps` (>= 1) substeps of `piterations` iterations;
-  /// Bullet's own rigid-contact projection is taken out of it.
-  void useCoulombContacts(btSoftBody& body, int substeps);
+  /// Bullet's own rigid-contact projection is taken out of it. With a `material`, its
+  /// tetrahedra replace its links.
+  void useCoulombContacts(btSoftBody& body, int substeps,
+                          const std::optional<SoftMaterial>& material);
   void forget(const btSoftBody& body);
+  /// How many substeps a step of `h` takes a registered `body` (1 for any other).
+  int substepsFor(const btSoftBody& body, btScalar h) const;
   void predictMotion(btScalar solver_dt) override;
   void solveConstraints(btScalar solver_dt) override;
   /// The Coulomb contacts' impulses of the last step.
   const std::vector<NodeContactImpulse>& lastImpulses() const { return impulses_; }
 
  private:
-  /// A registered body: its substeps and its nodes' velocities before Bullet's prediction.
+  /// A registered body: its substeps, its elasticity if it has a material, and its nodes'
+  /// velocities before Bullet's prediction.
   struct Registered {
     int substeps = 1;
+    std::unique_ptr<NeoHookeanTets> elasticity;
     std::vector<btVector3> start_velocity;
+
+    /// Substeps for a step of `h`: as asked, and as many as the material is stable at.
+    int substepsFor(btScalar h) const;
   };
   /// One node-rigid contact over a step.
   struct Accumulated {
@@ -68,14 +90,16 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   static void prepareWithBullet(btSoftBody& body);
   /// Keeps Bullet's predicted acceleration and pose pull per node; puts the nodes back at the
   /// step's start.
-  void rewindPrediction(btSoftBody& body, const Registered& registered);
+  void rewindPrediction(btSoftBody& body, const Registered& registered, int substeps);
   /// One substep of `hs`, ending `elapsed` into the step: integrate, iterate, contacts.
-  void substep(btSoftBody& body, btScalar hs, btScalar elapsed);
+  void substep(btSoftBody& body, NeoHookeanTets* elasticity, btScalar hs, btScalar elapsed);
   /// Damping, the step's start back in m_q, forces cleared.
   void finishStep(btSoftBody& body);
-  void startContacts(const btSoftBody& body);
+  /// The surfaces' velocities; for an `elastic` body each contact plane moved from the
+  /// detection band back to the margin.
+  void startContacts(btSoftBody& body, bool elastic);
   /// A substep's contacts, the rigid surfaces where they are `elapsed` into the step.
-  void projectContacts(btSoftBody& body, btScalar elapsed);
+  void projectContacts(btSoftBody& body, btScalar elapsed, bool elastic);
   void applyToRigidBodies(const btSoftBody& body);
 
   std::unordered_map<const btSoftBody*, Registered> coulomb_;

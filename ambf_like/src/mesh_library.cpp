@@ -37,16 +37,20 @@ struct PositionHash {
 /// Keeps only vertices that a tetrahedron or a triangle uses, so vertex i is soft-body node i
 /// (an unused point would be a massless, that is fixed, node).
 void dropUnreferencedVertices(Mesh& mesh) {
+  // In the file's order (a `fixed nodes` index is a point of the file), the unused left out.
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const auto& tetrahedron : mesh.tetrahedra)
+    for (int index : tetrahedron) used[static_cast<std::size_t>(index)] = 1;
+  for (const auto& triangle : mesh.triangles)
+    for (int index : triangle) used[static_cast<std::size_t>(index)] = 1;
   std::vector<int> remap(mesh.vertices.size(), -1);
   std::vector<Vec3> kept;
-  auto renumber = [&](int& index) {
-    auto& target = remap[static_cast<std::size_t>(index)];
-    if (target < 0) {
-      target = static_cast<int>(kept.size());
-      kept.push_back(mesh.vertices[static_cast<std::size_t>(index)]);
-    }
-    index = target;
-  };
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    if (!used[i]) continue;
+    remap[i] = static_cast<int>(kept.size());
+    kept.push_back(mesh.vertices[i]);
+  }
+  auto renumber = [&](int& index) { index = remap[static_cast<std::size_t>(index)]; };
   for (auto& tetrahedron : mesh.tetrahedra)
     std::for_each(tetrahedron.begin(), tetrahedron.end(), renumber);
   for (auto& triangle : mesh.triangles) std::for_each(triangle.begin(), triangle.end(), renumber);

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <set>
 
+#include "coulomb_contact_solver.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
@@ -80,18 +82,30 @@ std::unique_ptr<btSoftBody> volumeBody(const SoftBodySpec& spec, const Mesh& mes
   return body;
 }
 
+/// The body's volume: its tetrahedra's, at rest.
+double volumeOf(const btSoftBody& body) {
+  double volume = 0.0;
+  for (int i = 0; i < body.m_tetras.size(); ++i) {
+    const btSoftBody::Tetra& t = body.m_tetras[i];
+    const btVector3 a = t.m_n[1]->m_x - t.m_n[0]->m_x, b = t.m_n[2]->m_x - t.m_n[0]->m_x,
+                    c = t.m_n[3]->m_x - t.m_n[0]->m_x;
+    volume += std::abs(a.dot(b.cross(c))) / 6.0;
+  }
+  return volume;
+}
+
 /// Each node carries a quarter of every tetrahedron it is a corner of (a lumped mass matrix),
 /// scaled to `mass` in all.
 void setLumpedMasses(btSoftBody& body, double mass) {
   std::vector<double> share(static_cast<std::size_t>(body.m_nodes.size()), 0.0);
-  double volume = 0.0;
   for (int i = 0; i < body.m_tetras.size(); ++i) {
     const btSoftBody::Tetra& t = body.m_tetras[i];
     for (const btSoftBody::Node* n : t.m_n) {
       share[static_cast<std::size_t>(n - &body.m_nodes[0])] += std::abs(t.m_rv) / 4.0;
     }
-    volume += std::abs(t.m_rv);
   }
+  double volume = 0.0;
+  for (double s : share) volume += s;
   for (int i = 0; i < body.m_nodes.size(); ++i) {
     body.setMass(i, mass * share[static_cast<std::size_t>(i)] / volume);
   }
@@ -108,6 +122,13 @@ std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& m
     vertices.insert(vertices.end(), {p.x(), p.y(), p.z()});
   }
   const bool solid = !mesh.tetrahedra.empty();
+  if (spec.material && !solid) {
+    SourceRef where = spec.where;
+    where.key_path += "/material";
+    throw LoadError(where, "soft body '" + spec.name +
+                               "': a material needs a volume (tetrahedral) mesh; '" +
+                               spec.mesh.filename().string() + "' is a surface");
+  }
   std::unique_ptr<btSoftBody> body = solid ? volumeBody(spec, mesh, vertices, world_info)
                                            : surfaceBody(spec, mesh, vertices, world_info);
 
@@ -115,7 +136,8 @@ std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& m
   applyConfig(c, *body);
   if (c.bending_constraint > 0) body->generateBendingConstraints(c.bending_constraint);
   if (solid) {
-    setLumpedMasses(*body, spec.mass);
+    const bool by_density = spec.material && spec.material->density > 0.0;
+    setLumpedMasses(*body, by_density ? spec.material->density * volumeOf(*body) : spec.mass);
   } else {
     body->setTotalMass(spec.mass, true);
   }
@@ -131,13 +153,15 @@ std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& m
     body->setMass(index, 0.0);
   }
   if (c.clusters > 0) body->generateClusters(c.clusters);
-  body->getCollisionShape()->setMargin(spec.margin);
+  // Bodies with a material find contacts a band beyond their margin (kCoulombContactBand).
+  const double detection = spec.margin + (spec.material ? kCoulombContactBand : 0.0);
+  body->getCollisionShape()->setMargin(detection);
   // Bullet sized each node's bounding-volume leaf with the default 0.25 m margin when it made the
   // node, and later only grows a leaf that no longer holds its node: refit them to the real
   // margin, or every rigid body within 25 cm tests every node at every step.
   for (int i = 0; i < body->m_nodes.size(); ++i) {
     btSoftBody::Node& node = body->m_nodes[i];
-    btDbvtVolume volume = btDbvtVolume::FromCR(node.m_x, spec.margin);
+    btDbvtVolume volume = btDbvtVolume::FromCR(node.m_x, detection);
     body->m_ndbvt.update(node.m_leaf, volume);
   }
   body->updateBounds();

@@ -127,6 +127,9 @@ struct World::Impl {
            !detail::whyNotArticulable(model);
   }
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
+  /// Refuses a soft body whose material needs more substeps than kMaxSoftSubsteps at this
+  /// world's step: one step would take as long as thousands.
+  void checkSubsteps(const SoftBodySpec& spec, const btSoftBody& soft) const;
   /// The last step's contacts (Coulomb forces) of the body with this filter tag; null: all.
   std::vector<Contact> contactsWith(const void* body_tag) const;
   std::vector<SoftContactForce> softContactForcesOn(const void* body_tag) const;
@@ -209,6 +212,19 @@ void World::Impl::addArticulation(const ModelSpec& model,
   }
 }
 
+void World::Impl::checkSubsteps(const SoftBodySpec& spec, const btSoftBody& soft) const {
+  constexpr int kMaxSoftSubsteps = 1000;
+  const int needed = bullet.substepsFor(soft, options.step_size);
+  if (!spec.material || needed <= kMaxSoftSubsteps) return;
+  SourceRef at = spec.where;
+  at.key_path += "/material/young's modulus";
+  throw LoadError(
+      at, "soft body '" + spec.name + "': this material on this mesh is stable only at " +
+              std::to_string(needed) + " substeps of the " + std::to_string(options.step_size) +
+              " s step (at most " + std::to_string(kMaxSoftSubsteps) +
+              "): a softer material, a coarser mesh or a shorter step");
+}
+
 void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes) {
   const bool articulate = articulates(model);
   std::map<std::string, detail::PlacedBody> by_name;
@@ -235,7 +251,9 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     auto& tag = tags.emplace_back(detail::CollisionTag{
         model.name_space + spec.name, model_index, model.ignore_inter_collision, true, {}});
     soft->setUserPointer(&tag);
-    bullet.addSoftBody(*soft, coulomb ? std::optional<int>(spec.substeps) : std::nullopt);
+    bullet.addSoftBody(*soft, coulomb ? std::optional<int>(spec.substeps) : std::nullopt,
+                       spec.material);
+    checkSubsteps(spec, *soft);
     soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
   }
   if (articulate) {
@@ -433,10 +451,10 @@ std::vector<Contact> World::Impl::contactsWith(const void* body_tag) const {
       const auto& contact = soft->bullet().m_rcontacts[i];
       if (!isBody(contact.m_cti.m_colObj, body_tag)) continue;
       const btVector3& node = contact.m_node->m_x;
+      const double distance = contact.m_cti.m_normal.dot(node) + contact.m_cti.m_offset;
+      if (distance > 0.0) continue;  // an elastic body's node in the band beyond its margin
       out.push_back({soft->qualifiedName(), collisionName(contact.m_cti.m_colObj), toEigen(node),
-                     toEigen(contact.m_cti.m_normal),
-                     contact.m_cti.m_normal.dot(node) + contact.m_cti.m_offset, 0.0, Vec3::Zero(),
-                     true});
+                     toEigen(contact.m_cti.m_normal), distance, 0.0, Vec3::Zero(), true});
     }
   }
   return out;

@@ -95,6 +95,23 @@ TEST(VolumeMesh, APointNoTetrahedronUsesIsNoNode) {
   EXPECT_EQ(body.m_faces.size(), 12);
 }
 
+TEST(VolumeMesh, NodeIIsTheFilesPointIWhateverOrderTheCellsUseThem) {
+  // The cells name point 7 first; 'fixed nodes' and every node index count the file's points.
+  const std::string cells =
+      "CELLS 6 30\n4 7 1 3 0\n4 7 1 5 0\n4 7 2 3 0\n4 7 2 6 0\n4 7 4 5 0\n"
+      "4 7 4 6 0\nCELL_TYPES 6\n10\n10\n10\n10\n10\n10\n";
+  TempDir dir;
+  auto sim = test_support::simulate(
+      {dir.write("s.yaml", scene(dir.write("reordered.vtk", cubeVtk(cells))))});
+  const btSoftBody& body = sim->world->softBody("cube").bullet();
+  ASSERT_EQ(body.m_nodes.size(), 8);
+  for (int i = 0; i < 8; ++i) {  // point i at the bits of i, scaled to 2 cm and placed
+    const btVector3 expected =
+        btVector3((i & 1), ((i >> 1) & 1), ((i >> 2) & 1)) * 0.02 + btVector3(-0.01, -0.01, 0.002);
+    EXPECT_LT((body.m_nodes[i].m_x - expected).length(), 1e-12) << "node " << i;
+  }
+}
+
 /// The load error of a scene whose cube mesh is `vtk`.
 std::string errorOf(const std::string& vtk) {
   TempDir dir;

@@ -2,6 +2,7 @@
 // Plain description of one soft body (Bullet btSoftBody built from a mesh) as written in an ADF.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,22 @@ enum class SoftContactFriction {
   Coulomb,  ///< |friction impulse| <= mu x normal impulse per node (CoulombContactSolver)
 };
 
+/// What a soft body is made of: an isotropic hyperelastic (Neo-Hookean) solid. Its tetrahedra,
+/// not Bullet's links, then answer a deformation, with the same force whatever the step.
+struct SoftMaterial {
+  double youngs_modulus = 0.0;  ///< E, Pa
+  double poissons_ratio = 0.0;  ///< nu, in (0, 0.5)
+  double density = 0.0;         ///< kg/m^3; 0: the body's `mass` spread by volume instead
+
+  /// Lame's shear modulus mu = E / (2 (1 + nu)).
+  double shearModulus() const { return youngs_modulus / (2.0 * (1.0 + poissons_ratio)); }
+  /// Lame's first parameter lambda = E nu / ((1 + nu)(1 - 2 nu)).
+  double lameLambda() const {
+    return youngs_modulus * poissons_ratio /
+           ((1.0 + poissons_ratio) * (1.0 - 2.0 * poissons_ratio));
+  }
+};
+
 /// A soft body: the mesh it is built from, mass, pose, margin and material/solver config.
 struct SoftBodySpec {
   std::string name;
@@ -41,7 +58,8 @@ struct SoftBodySpec {
   double margin = 0.001;  ///< set explicitly: Bullet's own default is 0.25 m
   bool randomize_constraints = false;
   SoftContactFriction contact_friction = SoftContactFriction::Bullet;  ///< `contact friction`
-  int substeps = 1;  ///< `substeps` per world step (Coulomb contacts only)
+  int substeps = 1;  ///< `substeps` per world step (Coulomb contacts only); at least this many
+  std::optional<SoftMaterial> material;  ///< `material`: elasticity from a solid's tetrahedra
   SoftBodyConfig config;
   SourceRef where;
 };

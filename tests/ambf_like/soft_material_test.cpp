@@ -1,0 +1,318 @@
+// Soft bodies with a material (`material:` Young's modulus, Poisson's ratio, density): the force
+// a deformation is answered with is the material's, and the same whatever the step, substeps and
+// iterations. Answers from the textbook (../shared/reference/soft-materials.md).
+
+#include <BulletSoftBody/btSoftBody.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "test_files.hpp"
+
+namespace {
+
+using test_support::loadErrorOf;
+using test_support::TempDir;
+using testing::AllOf;
+using testing::HasSubstr;
+
+constexpr double kModulus = 1.0e6;  // Pa
+constexpr double kPoisson = 0.45;
+constexpr double kDensity = 1100.0;  // kg/m^3
+
+/// A box of `nx` x `ny` x `nz` cells of `cell` (m), from the origin up, each cell cut into six
+/// tetrahedra around its diagonal (all cells the same way, so neighbours share faces).
+std::string boxVtk(int nx, int ny, int nz, double cell) {
+  auto index = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
+  std::ostringstream s;
+  const int points = (nx + 1) * (ny + 1) * (nz + 1);
+  const int cells = nx * ny * nz * 6;
+  s << "# vtk DataFile Version 2.0\nbox\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS " << points
+    << " double\n";
+  for (int k = 0; k <= nz; ++k) {
+    for (int j = 0; j <= ny; ++j) {
+      for (int i = 0; i <= nx; ++i) s << i * cell << ' ' << j * cell << ' ' << k * cell << '\n';
+    }
+  }
+  s << "CELLS " << cells << ' ' << cells * 5 << '\n';
+  const int around[6][2] = {{1, 3}, {1, 5}, {2, 3}, {2, 6}, {4, 5}, {4, 6}};
+  for (int k = 0; k < nz; ++k) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        auto corner = [&](int bits) {
+          return index(i + (bits & 1), j + ((bits >> 1) & 1), k + ((bits >> 2) & 1));
+        };
+        for (const auto& t : around) {
+          s << "4 " << corner(0) << ' ' << corner(t[0]) << ' ' << corner(t[1]) << ' ' << corner(7)
+            << '\n';
+        }
+      }
+    }
+  }
+  s << "CELL_TYPES " << cells << '\n';
+  for (int c = 0; c < cells; ++c) s << "10\n";
+  return s.str();
+}
+
+std::string materialBlock() {
+  std::ostringstream s;
+  s << "{young's modulus: " << kModulus << ", poisson's ratio: " << kPoisson
+    << ", density: " << kDensity << "}";
+  return s.str();
+}
+
+/// The model's own uniaxial answer: the nominal stress (force per rest area) of the stable
+/// Neo-Hookean solid stretched by `stretch` along one axis with free, traction-free sides.
+double neoHookeanUniaxialStress(double stretch) {
+  const double mu = kModulus / (2.0 * (1.0 + kPoisson));
+  const double lambda = kModulus * kPoisson / ((1.0 + kPoisson) * (1.0 - 2.0 * kPoisson)) + mu;
+  const double gamma = 1.0 + mu / lambda;
+  // Lateral stretch s: mu s + lambda (J - gamma) J / s = 0, J = stretch s^2 (bisection).
+  auto lateral_stress = [&](double s) {
+    const double j = stretch * s * s;
+    return mu * s + lambda * (j - gamma) * j / s;
+  };
+  double low = 0.5, high = 2.0;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (low + high);
+    (lateral_stress(mid) > 0.0 ? high : low) = mid;
+  }
+  const double s = 0.5 * (low + high);
+  const double j = stretch * s * s;
+  return mu * stretch + lambda * (j - gamma) * j / stretch;
+}
+
+/// Solver settings a compression is run with.
+struct Solver {
+  double step = 0.001;
+  int substeps = 1;
+  int iterations = 1;
+};
+
+/// A 10 mm cube of the material (3 x 3 x 3 cells) on a frictionless static plate, pressed by a
+/// frictionless kinematic plate (a press: moved, not pushed) lowered slowly to `strain`; the
+/// mean force the press takes, and the cube's height, once settled.
+struct Compression {
+  double force = 0.0;   ///< N, pushing the press up
+  double height = 0.0;  ///< m
+};
+
+constexpr double kSide = 0.01;
+constexpr double kMargin = 0.0001;
+
+/// The scene: the cube on the bottom plate, the press's underside touching its top.
+std::string compressionScene(const Solver& solver) {
+  std::ostringstream adf;
+  adf << "bodies: [BODY bottom, BODY press]\nsoft bodies: [BODY cube]\n";
+  for (const char* plate : {"bottom", "press"}) {
+    const double z = plate[0] == 'b' ? -0.01 : kSide + 2.0 * kMargin + 0.01;
+    adf << "BODY " << plate << ": {name: " << plate
+        << ", mass: 0, friction: {static: 0}, collision shape: BOX, collision geometry: "
+           "{x: 0.1, y: 0.1, z: 0.02}, location: {position: {x: 0, y: 0, z: "
+        << z << "}}}\n";
+  }
+  adf << "BODY cube:\n  name: cube\n  mesh: cube.vtk\n  material: " << materialBlock()
+      << "\n  location: {position: {x: -0.005, y: -0.005, z: " << kMargin << "}}\n"
+      << "  collision margin: " << kMargin << "\n  substeps: " << solver.substeps
+      << "\n  config: {kDF: 1, kDP: 0.02, piterations: " << solver.iterations << "}\n";
+  return adf.str();
+}
+
+Compression compress(double strain, const Solver& solver) {
+  TempDir dir;
+  dir.write("cube.vtk", boxVtk(3, 3, 3, kSide / 3));
+  ambf_like::WorldOptions options;
+  options.step_size = solver.step;
+  options.soft_body_sleep = false;
+  options.sdf_voxel_size = 0.001;
+  auto sim = test_support::simulate({dir.write("scene.yaml", compressionScene(solver))}, options);
+  auto& world = *sim->world;
+  auto& cube = world.softBody("cube");
+  // The press as Bullet's kinematic body: placed every step, its velocity from the motion.
+  btRigidBody& press = world.body("press").bullet();
+  press.setCollisionFlags(press.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+  press.setActivationState(DISABLE_DEACTIVATION);
+  const btTransform start = press.getWorldTransform();
+  // Lowered by the strain over 0.5 s, held 0.3 s, then the force read over 50 ms.
+  const auto ramp = static_cast<int>(0.5 / solver.step);
+  const auto total = ramp + static_cast<int>(0.3 / solver.step);
+  const int samples = static_cast<int>(0.05 / solver.step);
+  Compression out;
+  for (int i = 1; i <= total + samples; ++i) {
+    btTransform at = start;
+    at.getOrigin().setZ(start.getOrigin().z() - strain * kSide * std::min(1.0, 1.0 * i / ramp));
+    press.setWorldTransform(at);
+    if (press.getMotionState() != nullptr) press.getMotionState()->setWorldTransform(at);
+    world.step();
+    if (i <= total) continue;
+    for (const auto& f : world.softContactForces("press")) out.force -= f.normal_force.z();
+  }
+  out.force /= samples;
+  EXPECT_TRUE(cube.isFinite());
+  double low = 1.0, high = -1.0;
+  for (const auto& p : cube.nodePositions()) {
+    low = std::min(low, p.z());
+    high = std::max(high, p.z());
+  }
+  out.height = high - low;
+  return out;
+}
+
+TEST(SoftMaterial, UniaxialCompressionAnswersWithTheMaterialsOwnStress) {
+  for (double strain : {0.05, 0.10, 0.20}) {
+    const Compression c = compress(strain, {});
+    const double stretch = c.height / kSide;
+    const double expected = -neoHookeanUniaxialStress(stretch) * kSide * kSide;
+    EXPECT_NEAR(stretch, 1.0 - strain, 0.01) << "strain " << strain;
+    EXPECT_NEAR(c.force, expected, 0.1 * expected)
+        << "strain " << strain << ": stretch " << stretch << ", linear E A eps "
+        << kModulus * 1e-4 * (1.0 - stretch);
+    std::cout << "compressed " << strain * 100 << " %: plate force " << c.force
+              << " N, Neo-Hookean " << expected << " N, linear "
+              << kModulus * 1e-4 * (1.0 - stretch) << " N\n";
+  }
+}
+
+TEST(SoftMaterial, TheForceDoesNotDependOnTheStepSubstepsOrIterations) {
+  const double reference = compress(0.10, {}).force;
+  const Solver variants[] = {{0.0005, 1, 1}, {0.002, 1, 1}, {0.001, 200, 1}, {0.001, 1, 2}};
+  for (const Solver& s : variants) {
+    const double force = compress(0.10, s).force;
+    EXPECT_NEAR(force, reference, 0.05 * reference)
+        << "step " << s.step << " s, substeps " << s.substeps << ", iterations " << s.iterations;
+    std::cout << "step " << s.step << " substeps " << s.substeps << " iterations " << s.iterations
+              << ": " << force << " N (1 ms: " << reference << " N)\n";
+  }
+}
+
+}  // namespace
+
+namespace {
+
+/// Tip deflection (m, downwards) of a cantilever of the material, `length` x `width` x `width`,
+/// clamped at x = 0 (its end face's nodes fixed), `cells` cells through its thickness, under
+/// its own weight once settled.
+double cantileverSag(double length, double width, int cells) {
+  const double cell = width / cells;
+  const int along = static_cast<int>(std::lround(length / cell));
+  TempDir dir;
+  dir.write("beam.vtk", boxVtk(along, cells, cells, cell));
+  std::ostringstream fixed;  // the points of the face x = 0, by their index in the file
+  for (int k = 0; k <= cells; ++k) {
+    for (int j = 0; j <= cells; ++j) {
+      fixed << (k || j ? ", " : "") << (k * (cells + 1) + j) * (along + 1);
+    }
+  }
+  std::ostringstream adf;
+  adf << "soft bodies: [BODY beam]\nBODY beam:\n  name: beam\n  mesh: beam.vtk\n  material: "
+      << materialBlock() << "\n  location: {position: {x: 0, y: 0, z: 0.5}}\n"
+      << "  collision margin: 0.0001\n  config: {kDP: 0.02, fixed nodes: [" << fixed.str()
+      << "]}\n";
+  ambf_like::WorldOptions options;
+  options.soft_body_sleep = false;
+  auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, options);
+  auto& beam = sim->world->softBody("beam");
+  const auto rest = beam.nodePositions();
+  sim->world->step(400);
+  EXPECT_TRUE(beam.isFinite());
+  double drop = 0.0;  // the tip face's mean
+  int count = 0;
+  for (std::size_t i = 0; i < rest.size(); ++i) {
+    if (rest[i].x() > length - 1e-9) {
+      drop += rest[i].z() - beam.nodePosition(i).z();
+      ++count;
+    }
+  }
+  return drop / count;
+}
+
+TEST(SoftMaterial, ACantileverSagsTowardsEulerBernoulliAsItsMeshIsRefined) {
+  // delta = q L^4 / (8 E I), q = rho g A, I = w^4 / 12: 1.66 mm for 40 x 5 x 5 mm.
+  constexpr double kLength = 0.04, kWidth = 0.005;
+  const double q = kDensity * 9.81 * kWidth * kWidth;
+  const double inertia = std::pow(kWidth, 4) / 12.0;
+  const double euler_bernoulli = q * std::pow(kLength, 4) / (8.0 * kModulus * inertia);
+  const double coarse = cantileverSag(kLength, kWidth, 1);
+  const double finer = cantileverSag(kLength, kWidth, 2);
+  std::cout << "cantilever tip sag: 1 cell thick " << coarse * 1e3 << " mm, 2 cells " << finer * 1e3
+            << " mm; Euler-Bernoulli " << euler_bernoulli * 1e3 << " mm\n";
+  // Linear tetrahedra lock in bending: too stiff, less so as the mesh is refined.
+  EXPECT_LT(coarse, finer);
+  EXPECT_LT(finer, euler_bernoulli);
+  // The solver lands on the static equilibrium of its mesh: a static linear finite-element
+  // solve of these same tetrahedra gives 0.118 and 0.305 of Euler-Bernoulli (and 0.84 at eight
+  // cells through the thickness, the first within 20 %; docs/soft-materials.md).
+  EXPECT_NEAR(coarse / euler_bernoulli, 0.118, 0.006);
+  EXPECT_NEAR(finer / euler_bernoulli, 0.305, 0.015);
+}
+
+}  // namespace
+
+namespace {
+
+/// The load error of a soft body of a one-cell tetrahedral cube with `keys` spliced in.
+std::string materialError(const std::string& keys, const std::string& mesh = "cube.vtk") {
+  TempDir dir;
+  dir.write("cube.vtk", boxVtk(1, 1, 1, 0.01));
+  dir.write("cube.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  const auto file = dir.write(
+      "scene.yaml",
+      "soft bodies: [BODY cube]\nBODY cube:\n  name: cube\n  mesh: " + mesh + "\n" + keys);
+  return loadErrorOf([&] { test_support::simulate({file}); });
+}
+
+TEST(SoftMaterial, AMaterialThatIsNotPhysicalIsRefusedNamingItsKey) {
+  const std::string fine =
+      "  material: {young's modulus: 1e6, poisson's ratio: 0.45, density: 1100}\n";
+  EXPECT_EQ(materialError(fine), "");
+  EXPECT_THAT(
+      materialError("  material: {young's modulus: 0, poisson's ratio: 0.45, density: 1100}\n"),
+      AllOf(HasSubstr("scene.yaml:5"), HasSubstr("young's modulus must lie in (0, 1e+09) Pa")));
+  EXPECT_THAT(
+      materialError("  material: {young's modulus: -1e6, poisson's ratio: 0.45, density: 1100}\n"),
+      HasSubstr("young's modulus must lie in"));
+  for (const char* nu : {"0.5", "0", "-0.2", "0.7"}) {
+    EXPECT_THAT(materialError(std::string("  material: {young's modulus: 1e6, poisson's ratio: ") +
+                              nu + ", density: 1100}\n"),
+                AllOf(HasSubstr("poisson's ratio must lie in (0, 0.5)"),
+                      HasSubstr("BODY cube/material/poisson's ratio")))
+        << nu;
+  }
+  EXPECT_THAT(
+      materialError("  material: {young's modulus: 1e6, poisson's ratio: 0.45, density: .nan}\n"),
+      HasSubstr("density"));
+  EXPECT_THAT(materialError("  material: {poisson's ratio: 0.45, density: 1100}\n"),
+              HasSubstr("young's modulus"));
+  EXPECT_THAT(materialError("  material: {young's modulus: 1e6, poisson's ratio: 0.45}\n"),
+              HasSubstr("a material needs a 'density' (or the body a 'mass')"));
+  EXPECT_THAT(materialError("  mass: 0.01\n" + fine), HasSubstr("not both"));
+  EXPECT_EQ(
+      materialError("  mass: 0.01\n  material: {young's modulus: 1e6, poisson's ratio: 0.45}\n"),
+      "");
+  EXPECT_THAT(materialError(fine + "  contact friction: bullet\n"),
+              HasSubstr("a soft body with a material takes 'contact friction: coulomb'"));
+  EXPECT_THAT(
+      materialError(fine, "cube.obj"),
+      AllOf(HasSubstr("BODY cube/material"), HasSubstr("needs a volume (tetrahedral) mesh")));
+  // Stable only at a million substeps of the 1 ms step: a step would never end.
+  EXPECT_THAT(
+      materialError("  material: {young's modulus: 5e8, poisson's ratio: 0.49, density: 1}\n"),
+      HasSubstr("substeps of the 0.001"));
+}
+
+TEST(SoftMaterial, ItsMassIsItsDensityTimesItsVolume) {
+  TempDir dir;
+  dir.write("cube.vtk", boxVtk(2, 2, 2, 0.005));
+  auto sim = test_support::simulate({dir.write(
+      "scene.yaml",
+      "soft bodies: [BODY cube]\nBODY cube:\n  name: cube\n  mesh: cube.vtk\n  material: " +
+          materialBlock() + "\n")});
+  const btSoftBody& body = sim->world->softBody("cube").bullet();
+  double mass = 0.0;
+  for (int i = 0; i < body.m_nodes.size(); ++i) mass += 1.0 / body.m_nodes[i].m_im;
+  EXPECT_NEAR(mass, kDensity * 1e-6, 1e-12);
+}
+
+}  // namespace
