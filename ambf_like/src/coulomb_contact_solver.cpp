@@ -166,11 +166,18 @@ void CoulombContactSolver::startContacts(btSoftBody& body, bool elastic) {
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
     btSoftBody::RContact& contact = body.m_rcontacts[i];
     if (elastic) contact.m_cti.m_offset += kCoulombContactBand;
-    const btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj);
     const btVector3 arm =
         contact.m_node->m_x - contact.m_cti.m_colObj->getWorldTransform().getOrigin();
-    contacts_[static_cast<std::size_t>(i)].surface_velocity =
-        rigid != nullptr ? rigid->getVelocityInLocalPoint(arm) : btVector3(0, 0, 0);
+    Accumulated& state = contacts_[static_cast<std::size_t>(i)];
+    if (const btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj)) {
+      state.surface_velocity = rigid->getVelocityInLocalPoint(arm);
+    } else if (const btRigidBody* kinematic = btRigidBody::upcast(contact.m_cti.m_colObj);
+               kinematic != nullptr && kinematic->isKinematicObject()) {
+      // Placed by its owner before the step, so its contact plane is already where the step
+      // ends; its motion (Bullet's, from the last two placements) still drags what it touches.
+      state.surface_velocity = kinematic->getVelocityInLocalPoint(arm);
+      state.placed = true;
+    }
   }
 }
 
@@ -184,13 +191,14 @@ void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed, b
     Accumulated& state = contacts_[static_cast<std::size_t>(i)];
     const btVector3& normal = contact.m_cti.m_normal;
     // The contact plane was found where the rigid body was when the step began: move it along.
-    const btScalar moved = normal.dot(state.surface_velocity) * elapsed;
+    const btScalar moved = state.placed ? 0.0 : normal.dot(state.surface_velocity) * elapsed;
     const btScalar depth = -(normal.dot(node.m_x) + contact.m_cti.m_offset - moved);
     if (depth <= 0.0) continue;
     // An elastic body's node that began the substep inside (placed there, or left there by the
     // plane's turn) is moved out without that becoming motion: only what the substep pressed in
     // pushes back, or the push would be an elastic solid's stored energy let loose.
-    const btScalar start_plane = moved - normal.dot(state.surface_velocity) * hs;
+    const btScalar start_plane =
+        state.placed ? 0.0 : moved - normal.dot(state.surface_velocity) * hs;
     const btScalar start_depth = -(normal.dot(node.m_q) + contact.m_cti.m_offset - start_plane);
     const btScalar carried = elastic ? std::clamp(start_depth, btScalar(0), depth) : 0.0;
     const btScalar pressed = depth - carried;

@@ -316,3 +316,110 @@ TEST(SoftMaterial, ItsMassIsItsDensityTimesItsVolume) {
 }
 
 }  // namespace
+
+namespace {
+
+/// What a pinch of the material cube by two kinematic jaws measured while held in the air.
+struct Pinch {
+  double lift = 0.0;       ///< m, how far the cube's centre rose
+  double squeeze = 0.0;    ///< N, each jaw's mean normal force on it
+  double vertical = 0.0;   ///< N, both jaws' mean upward force on it
+  double slip = 0.0;       ///< m, how far it moved relative to the jaws while held
+};
+
+/// The 10 mm cube on a floor, pinched between two vertical kinematic jaws (friction 1, so
+/// mu = kDF 0.8) each pressed `squeeze` (m) into it, lifted 10 mm and held there 0.3 s.
+Pinch pinch(double squeeze, double step) {
+  TempDir dir;
+  dir.write("cube.vtk", boxVtk(3, 3, 3, kSide / 3));
+  std::ostringstream adf;
+  adf << "bodies: [BODY floor, BODY left, BODY right]\nsoft bodies: [BODY cube]\n"
+      << "BODY floor: {name: floor, mass: 0, friction: {static: 0.5}, collision shape: BOX, "
+         "collision geometry: {x: 0.1, y: 0.1, z: 0.02}, location: {position: {x: 0, y: 0, z: -0.01}}}\n";
+  for (const char* jaw : {"left", "right"}) {
+    const double x = (jaw[0] == 'l' ? -1.0 : 1.0) * (kSide / 2 + kMargin + 0.001);
+    adf << "BODY " << jaw << ": {name: " << jaw
+        << ", mass: 0, friction: {static: 1}, collision shape: BOX, collision geometry: "
+           "{x: 0.002, y: 0.02, z: 0.02}, location: {position: {x: "
+        << x << ", y: 0, z: 0.012}}}\n";
+  }
+  adf << "BODY cube:\n  name: cube\n  mesh: cube.vtk\n  material: " << materialBlock()
+      << "\n  location: {position: {x: -0.005, y: -0.005, z: " << kMargin << "}}\n"
+      << "  collision margin: " << kMargin << "\n  config: {kDF: 0.8, kDP: 0.02}\n";
+  ambf_like::WorldOptions options;
+  options.step_size = step;
+  options.soft_body_sleep = false;
+  options.sdf_voxel_size = 0.001;
+  auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, options);
+  auto& world = *sim->world;
+  auto& cube = world.softBody("cube");
+  btRigidBody* jaws[2] = {&world.body("left").bullet(), &world.body("right").bullet()};
+  btTransform start[2];
+  for (int j = 0; j < 2; ++j) {
+    jaws[j]->setCollisionFlags(jaws[j]->getCollisionFlags() |
+                               btCollisionObject::CF_KINEMATIC_OBJECT);
+    jaws[j]->setActivationState(DISABLE_DEACTIVATION);
+    start[j] = jaws[j]->getWorldTransform();
+  }
+  auto place = [&](double inward, double up) {
+    for (int j = 0; j < 2; ++j) {
+      btTransform at = start[j];
+      at.getOrigin() += btVector3(j == 0 ? inward : -inward, 0, up);
+      jaws[j]->setWorldTransform(at);
+      if (jaws[j]->getMotionState() != nullptr) jaws[j]->getMotionState()->setWorldTransform(at);
+    }
+  };
+  const auto steps = [&](double seconds) { return static_cast<int>(seconds / step); };
+  const double rest = cube.centerOfMass().z();
+  for (int i = 1; i <= steps(0.3); ++i) {  // squeeze
+    place(squeeze * std::min(1.0, i / (0.2 / step)), 0.0);
+    world.step();
+  }
+  for (int i = 1; i <= steps(0.5); ++i) {  // lift 10 mm
+    place(squeeze, 0.01 * i / steps(0.5));
+    world.step();
+  }
+  Pinch out;
+  const Eigen::Vector3d held = cube.centerOfMass();
+  const int hold = steps(0.3);
+  for (int i = 0; i < hold; ++i) {
+    world.step();
+    for (const char* jaw : {"left", "right"}) {
+      for (const auto& f : world.softContactForces(jaw)) {
+        out.squeeze += f.normal_force.norm() / 2.0;
+        out.vertical += (f.normal_force + f.friction_force).z();
+      }
+    }
+  }
+  out.squeeze /= hold;
+  out.vertical /= hold;
+  out.lift = cube.centerOfMass().z() - rest;
+  out.slip = (cube.centerOfMass() - held).norm();
+  EXPECT_TRUE(cube.isFinite());
+  return out;
+}
+
+TEST(SoftMaterial, APinchedCubeIsHeldByFrictionAndItsMaterialsSqueeze) {
+  const double weight = kDensity * std::pow(kSide, 3) * 9.81;
+  const Pinch firm = pinch(0.00025, 0.001);  // 5 % of its width
+  std::cout << "pinched 0.25 mm each side: lifted " << firm.lift * 1e3 << " mm, squeeze "
+            << firm.squeeze << " N per jaw, jaws' upward force " << firm.vertical
+            << " N (weight " << weight << " N), slip " << firm.slip * 1e6 << " um\n";
+  EXPECT_NEAR(firm.lift, 0.01, 0.0005);
+  EXPECT_LT(firm.slip, 1e-4);
+  EXPECT_NEAR(firm.vertical, weight, 0.1 * weight);
+  // 5 % strain: E A eps = 5 N frictionless; jaws that grip its faces stiffen it.
+  EXPECT_GT(firm.squeeze, 4.5);
+  EXPECT_LT(firm.squeeze, 6.5);
+  // The same grasp at half the step: the same squeeze.
+  const Pinch finer = pinch(0.00025, 0.0005);
+  EXPECT_NEAR(finer.squeeze, firm.squeeze, 0.05 * firm.squeeze);
+  EXPECT_NEAR(finer.lift, 0.01, 0.0005);
+  // Jaws that only touch it cannot lift it.
+  const Pinch touching = pinch(0.0, 0.001);
+  std::cout << "touching: lifted " << touching.lift * 1e3 << " mm, squeeze " << touching.squeeze
+            << " N\n";
+  EXPECT_LT(touching.lift, 0.002);
+}
+
+}  // namespace
