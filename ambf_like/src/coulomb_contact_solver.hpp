@@ -81,8 +81,8 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   /// One node-rigid contact over a step.
   struct Accumulated {
     btVector3 surface_velocity{0, 0, 0};  ///< of the rigid surface at the node
-    bool placed = false;  ///< a kinematic body's: its plane does not move during the step
-    btVector3 impulse{0, 0, 0};         ///< on the node, over the step so far (N s)
+    bool placed = false;         ///< a kinematic body's: its plane does not move during the step
+    btVector3 impulse{0, 0, 0};  ///< on the node, over the step so far (N s)
     btVector3 normal_impulse{0, 0, 0};  ///< its part along the normal
   };
 

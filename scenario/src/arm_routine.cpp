@@ -27,6 +27,7 @@ constexpr int kSettleIterations = 15;
 constexpr double kCentred = 0.0005;      ///< the ring's centre this near the post's axis (m)
 constexpr int kCentringIterations = 40;  ///< ... or this many iterations of trying
 constexpr double kStationWindow = 8.0 * M_PI / 180.0;
+constexpr int kMaxRegrasps = 2;  ///< per peg, as an operator would before moving on
 
 double angleAbout(const Eigen::Vector2d& centre, const Eigen::Vector3d& p) {
   return std::atan2(p.y() - centre.y(), p.x() - centre.x());
@@ -47,6 +48,7 @@ ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
       kinematics_(raven::ArmKinematics::of(profile, arm)),
       layout_(layout),
       jobs_(std::move(jobs)),
+      regrasps_(jobs_.size(), 0),
       closed_(jawAngleFor(squeeze)) {
   if (jobs_.empty()) phase_ = Phase::Done;
 }
@@ -142,6 +144,19 @@ void ArmRoutine::advance(Phase next) {
   waited_ = 0;
 }
 
+bool ArmRoutine::decideToRegrasp(const char* why) {
+  if (regrasps_[job_] >= kMaxRegrasps) return false;
+  ++regrasps_[job_];
+  retrying_ = true;
+  spdlog::info("{} arm: {} {}; grasping it again ({} of {})", raven::armName(arm_), jobs_[job_].peg,
+               why, regrasps_[job_], kMaxRegrasps);
+  return true;
+}
+
+bool ArmRoutine::ringFollows(const ambf_like::World& world) const {
+  return layout_.geometry.offTheBoard(inspect(world.softBody(jobs_[job_].peg)).bottom);
+}
+
 raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_like::World& world) {
   bool arrived = false;
   raven::ArmJoints q = target;
@@ -158,6 +173,7 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       } else {  // out of reach: leave this peg (its outcome shows it)
         spdlog::warn("{} arm: no joint solution within the limits over {}; skipping it",
                      raven::armName(arm_), jobs_[job_].peg);
+        retrying_ = false;
         advance(Phase::Retreat);
       }
       break;
@@ -173,13 +189,22 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       break;
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
-      if (arrived) advance(Phase::Carry);
+      if (!arrived) break;
+      if (!ringFollows(world) && decideToRegrasp("did not come up with the jaws")) {
+        advance(Phase::Open);
+      } else {
+        advance(Phase::Carry);
+      }
       break;
     case Phase::Carry: {  // over the target post, watching the ring (it sways on its grasp)
       const PegState peg = inspect(world.softBody(jobs_[job_].peg));
       const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
       // A ring that came along is centred by sight; without one the jaws go where it would be.
       const bool carried = layout_.geometry.offTheBoard(peg.bottom);
+      if (!carried && decideToRegrasp("slipped out of the jaws on the way")) {
+        advance(Phase::Open);
+        break;
+      }
       const Eigen::Vector2d offset =
           carried ? Eigen::Vector2d(tool.head<2>() - peg.centre.head<2>()) : grasp_.offset;
       const Eigen::Vector2d over = jobs_[job_].to + offset;
@@ -209,14 +234,21 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       if (outer_ >= kOpen) advance(Phase::Settle);
       break;
     case Phase::Settle:
-      if (++waited_ >= kSettleIterations) advance(Phase::Retreat);
+      if (++waited_ < kSettleIterations) break;
+      // A ring let go off its target post is grasped again once the jaws are up and clear.
+      if (!retrying_ &&
+          !restsOn(world.softBody(jobs_[job_].peg), jobs_[job_].to, layout_.geometry)) {
+        decideToRegrasp("landed off its target post");
+      }
+      advance(Phase::Retreat);
       break;
     case Phase::Retreat: {
       const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
       const double height = grasp_.pivot.z() + kRetreat;
       q = translate(target, Eigen::Vector3d(tool.x(), tool.y(), height), kStep, arrived);
       if (arrived) {
-        ++job_;
+        if (!retrying_) ++job_;
+        retrying_ = false;
         advance(job_ < jobs_.size() ? Phase::Orient : Phase::Done);
       }
       break;

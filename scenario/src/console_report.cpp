@@ -53,18 +53,20 @@ void ProgressBar::finish() {
 }
 
 std::string pegTable(const PegTransferResult& result) {
-  std::string out = fmt::format("{:<5} {:<5} {:<12} {:<12} {:<7} {:>9} {:<6} {:>9} {:>13}  {}\n",
-                                "peg", "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)",
-                                "placed", "miss (mm)", "volume ratio", "lost");
+  std::string out =
+      fmt::format("{:<5} {:<5} {:<12} {:<12} {:<7} {:>9} {:>8} {:<6} {:>9} {:>13}  {}\n", "peg",
+                  "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)", "regrasps", "placed",
+                  "miss (mm)", "volume ratio", "lost");
   for (const PegOutcome& p : result.pegs) {
     out += fmt::format(
-        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:<6} {:>9.1f} {:>6.2f}-{:<6.2f}  {}\n", p.peg,
-        raven::armName(p.arm), millimetres(p.from), millimetres(p.to), yesNo(p.grasped),
-        p.lift * 1e3, yesNo(p.placed), p.miss * 1e3, p.min_volume_ratio, p.max_volume_ratio,
-        p.lost ? p.loss : "no");
+        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:<6} {:>9.1f} {:>6.2f}-{:<6.2f}  {}\n",
+        p.peg, raven::armName(p.arm), millimetres(p.from), millimetres(p.to), yesNo(p.grasped),
+        p.lift * 1e3, p.regrasps, yesNo(p.placed), p.miss * 1e3, p.min_volume_ratio,
+        p.max_volume_ratio, p.lost ? p.loss : "no");
   }
-  out += fmt::format("placed {}/{}, lost {}{}\n", result.placed(), result.pegs.size(),
-                     result.lost(), result.timed_out ? " (stopped at the time limit)" : "");
+  out += fmt::format("placed {}/{}, lost {}, re-grasps {}{}\n", result.placed(), result.pegs.size(),
+                     result.lost(), result.regrasps(),
+                     result.timed_out ? " (stopped at the time limit)" : "");
   return out;
 }
 
@@ -76,21 +78,22 @@ std::string timingLine(const RunTiming& t) {
 }
 
 std::string batchTable(const std::vector<PegTransferResult>& results) {
-  std::string out = fmt::format("{:>6} {:>7} {:>5} {:>9} {:>8} {:>6} {:>8}\n", "seed", "placed",
-                                "lost", "sim (s)", "wall (s)", "RTF", "loop Hz");
+  std::string out =
+      fmt::format("{:>6} {:>7} {:>5} {:>8} {:>9} {:>8} {:>6} {:>8}\n", "seed", "placed", "lost",
+                  "regrasps", "sim (s)", "wall (s)", "RTF", "loop Hz");
   for (const PegTransferResult& r : results) {
-    out += fmt::format("{:>6} {:>5}/6 {:>5} {:>9.1f} {:>8.1f} {:>6.2f} {:>8.0f}\n",
-                       r.variation.seed, r.placed(), r.lost(), r.timing.sim_time,
+    out += fmt::format("{:>6} {:>5}/6 {:>5} {:>8} {:>9.1f} {:>8.1f} {:>6.2f} {:>8.0f}\n",
+                       r.variation.seed, r.placed(), r.lost(), r.regrasps(), r.timing.sim_time,
                        r.timing.wall_time, r.timing.realTimeFactor(), r.timing.loopFrequency());
   }
   const nlohmann::json total = summarize(results);
   out += fmt::format(
-      "{} of {} runs placed all six pegs; {} of {} pegs placed, {} lost; {:.2f}x real time and a "
-      "{:.0f} Hz dynamic loop over all runs\n",
+      "{} of {} runs placed all six pegs; {} of {} pegs placed, {} lost, {} re-grasps; {:.2f}x "
+      "real time and a {:.0f} Hz dynamic loop over all runs\n",
       total["runs_all_placed"].get<std::size_t>(), results.size(),
       total["pegs_placed"].get<std::size_t>(), total["pegs"].get<std::size_t>(),
-      total["pegs_lost"].get<std::size_t>(), total["real_time_factor"].get<double>(),
-      total["loop_frequency_hz"].get<double>());
+      total["pegs_lost"].get<std::size_t>(), total["regrasps"].get<std::size_t>(),
+      total["real_time_factor"].get<double>(), total["loop_frequency_hz"].get<double>());
   return out;
 }
 

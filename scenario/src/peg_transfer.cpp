@@ -121,6 +121,13 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   show(WorldMoment::End);
 
   result.pegs = watch.finish();
+  for (const ArmRoutine& routine : routines) {
+    for (std::size_t j = 0; j < routine.jobs().size(); ++j) {
+      for (PegOutcome& outcome : result.pegs) {
+        if (outcome.peg == routine.jobs()[j].peg) outcome.regrasps = routine.regrasps()[j];
+      }
+    }
+  }
   result.grasps = assist ? assist->grasps() : 0;
   result.timing = session.timing();
   if (rs) {

@@ -18,6 +18,12 @@ std::size_t PegTransferResult::lost() const {
       std::count_if(pegs.begin(), pegs.end(), [](const PegOutcome& p) { return p.lost; }));
 }
 
+std::size_t PegTransferResult::regrasps() const {
+  std::size_t count = 0;
+  for (const PegOutcome& p : pegs) count += static_cast<std::size_t>(p.regrasps);
+  return count;
+}
+
 nlohmann::json PegTransferResult::json() const {
   nlohmann::json pegs_json = nlohmann::json::array();
   for (const PegOutcome& p : pegs) {
@@ -28,6 +34,7 @@ nlohmann::json PegTransferResult::json() const {
          {"to_m", {p.to.x(), p.to.y()}},
          {"grasped", p.grasped},
          {"lift_m", p.lift},
+         {"regrasps", p.regrasps},
          {"placed", p.placed},
          {"lost", p.lost},
          {"loss", p.loss},
@@ -43,6 +50,7 @@ nlohmann::json PegTransferResult::json() const {
                    {"stand_in", stand_in},
                    {"placed", placed()},
                    {"lost", lost()},
+                   {"regrasps", regrasps()},
                    {"all_placed", allPlaced()},
                    {"timed_out", timed_out},
                    {"iterations", iterations},

@@ -321,10 +321,10 @@ namespace {
 
 /// What a pinch of the material cube by two kinematic jaws measured while held in the air.
 struct Pinch {
-  double lift = 0.0;       ///< m, how far the cube's centre rose
-  double squeeze = 0.0;    ///< N, each jaw's mean normal force on it
-  double vertical = 0.0;   ///< N, both jaws' mean upward force on it
-  double slip = 0.0;       ///< m, how far it moved relative to the jaws while held
+  double lift = 0.0;      ///< m, how far the cube's centre rose
+  double squeeze = 0.0;   ///< N, each jaw's mean normal force on it
+  double vertical = 0.0;  ///< N, both jaws' mean upward force on it
+  double slip = 0.0;      ///< m, how far it moved relative to the jaws while held
 };
 
 /// The 10 mm cube on a floor, pinched between two vertical kinematic jaws (friction 1, so
@@ -335,7 +335,8 @@ Pinch pinch(double squeeze, double step) {
   std::ostringstream adf;
   adf << "bodies: [BODY floor, BODY left, BODY right]\nsoft bodies: [BODY cube]\n"
       << "BODY floor: {name: floor, mass: 0, friction: {static: 0.5}, collision shape: BOX, "
-         "collision geometry: {x: 0.1, y: 0.1, z: 0.02}, location: {position: {x: 0, y: 0, z: -0.01}}}\n";
+         "collision geometry: {x: 0.1, y: 0.1, z: 0.02}, location: {position: {x: 0, y: 0, z: "
+         "-0.01}}}\n";
   for (const char* jaw : {"left", "right"}) {
     const double x = (jaw[0] == 'l' ? -1.0 : 1.0) * (kSide / 2 + kMargin + 0.001);
     adf << "BODY " << jaw << ": {name: " << jaw
@@ -403,8 +404,8 @@ TEST(SoftMaterial, APinchedCubeIsHeldByFrictionAndItsMaterialsSqueeze) {
   const double weight = kDensity * std::pow(kSide, 3) * 9.81;
   const Pinch firm = pinch(0.00025, 0.001);  // 5 % of its width
   std::cout << "pinched 0.25 mm each side: lifted " << firm.lift * 1e3 << " mm, squeeze "
-            << firm.squeeze << " N per jaw, jaws' upward force " << firm.vertical
-            << " N (weight " << weight << " N), slip " << firm.slip * 1e6 << " um\n";
+            << firm.squeeze << " N per jaw, jaws' upward force " << firm.vertical << " N (weight "
+            << weight << " N), slip " << firm.slip * 1e6 << " um\n";
   EXPECT_NEAR(firm.lift, 0.01, 0.0005);
   EXPECT_LT(firm.slip, 1e-4);
   EXPECT_NEAR(firm.vertical, weight, 0.1 * weight);

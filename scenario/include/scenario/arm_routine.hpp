@@ -1,8 +1,10 @@
 #pragma once
 // One arm's scripted peg transfers: for each peg, orient the grasper over it, descend, close,
-// lift, carry, lower, open and retreat. Each call gives the next manual-loop target (at most a
-// millimetre or 0.05 rad from the last), which the controller then reaches under its caps,
-// exactly as it would a gamepad's. Positions move with the wrist-locked IK C_W.
+// lift, carry, lower, open and retreat; a ring that does not follow the jaws or lands off its post
+// is grasped again (at most twice), as an operator watching it would. Each call gives the next
+// manual-loop target (at most a millimetre or 0.05 rad from the last), which the controller then
+// reaches under its caps, exactly as it would a gamepad's. Positions move with the wrist-locked IK
+// C_W.
 
 #include <optional>
 #include <string_view>
@@ -40,6 +42,9 @@ class ArmRoutine {
   double opening() const { return inner_ + outer_; }
   /// Jobs finished (whatever their outcome).
   std::size_t finished() const { return job_; }
+  /// Per job, how often the operator opened and grasped its ring again: it did not come up with
+  /// the jaws, slipped out on the way, or landed off its target post (at most twice a peg).
+  const std::vector<int>& regrasps() const { return regrasps_; }
   const std::vector<PegJob>& jobs() const { return jobs_; }
 
  private:
@@ -57,6 +62,11 @@ class ArmRoutine {
                              double step, bool& arrived) const;
   raven::ArmJoints withJaws(raven::ArmJoints q) const;
   void advance(Phase next);
+  /// True when the ring of the current job left the board with the jaws.
+  bool ringFollows(const ambf_like::World& world) const;
+  /// Counts a re-grasp of the current job and marks it to be started again, unless it had its
+  /// two; logs `why`.
+  bool decideToRegrasp(const char* why);
 
   raven::Arm arm_;
   raven::PlatformProfile profile_;
@@ -64,6 +74,8 @@ class ArmRoutine {
   PegLayout layout_;
   std::vector<PegJob> jobs_;
   std::size_t job_ = 0;
+  std::vector<int> regrasps_;  ///< per job
+  bool retrying_ = false;      ///< the current job starts again after the retreat
   Phase phase_ = Phase::Orient;
   int waited_ = 0;
   Grasp grasp_;

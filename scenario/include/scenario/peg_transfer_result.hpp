@@ -26,6 +26,7 @@ struct PegOutcome {
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
   bool grasped = false;  ///< the ring left the board (its lowest node 5 mm above it)
   double lift = 0.0;     ///< the highest its lowest node rose above the board (m)
+  int regrasps = 0;      ///< times the operator opened and grasped it again (ArmRoutine)
   bool placed = false;   ///< at the end: resting on its target post
   bool lost = false;     ///< non-finite nodes, volume off by more than 20 %, or under the board
   std::string loss;      ///< why it counts as lost
@@ -50,6 +51,7 @@ struct PegTransferResult {
 
   std::size_t placed() const;
   std::size_t lost() const;
+  std::size_t regrasps() const;
   bool allPlaced() const { return placed() == pegs.size(); }
   /// One JSON object (a JSON-lines row).
   nlohmann::json json() const;
