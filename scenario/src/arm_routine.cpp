@@ -27,7 +27,8 @@ constexpr int kSettleIterations = 15;
 constexpr double kCentred = 0.0005;      ///< the ring's centre this near the post's axis (m)
 constexpr int kCentringIterations = 40;  ///< ... or this many iterations of trying
 constexpr double kStationWindow = 8.0 * M_PI / 180.0;
-constexpr int kMaxRegrasps = 2;  ///< per peg, as an operator would before moving on
+constexpr int kMaxRegrasps = 2;            ///< per peg, as an operator would before moving on
+constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much more (of the first)
 
 double angleAbout(const Eigen::Vector2d& centre, const Eigen::Vector3d& p) {
   return std::atan2(p.y() - centre.y(), p.x() - centre.x());
@@ -49,6 +50,7 @@ ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
       layout_(layout),
       jobs_(std::move(jobs)),
       regrasps_(jobs_.size(), 0),
+      squeeze_(squeeze),
       closed_(jawAngleFor(squeeze)) {
   if (jobs_.empty()) phase_ = Phase::Done;
 }
@@ -148,6 +150,8 @@ bool ArmRoutine::decideToRegrasp(const char* why) {
   if (regrasps_[job_] >= kMaxRegrasps) return false;
   ++regrasps_[job_];
   retrying_ = true;
+  // A person whose grip slipped grips harder the next time.
+  closed_ = jawAngleFor(squeeze_ * (1.0 + kFirmerPerRegrasp * regrasps_[job_]));
   spdlog::info("{} arm: {} {}; grasping it again ({} of {})", raven::armName(arm_), jobs_[job_].peg,
                why, regrasps_[job_], kMaxRegrasps);
   return true;
@@ -247,7 +251,10 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       const double height = grasp_.pivot.z() + kRetreat;
       q = translate(target, Eigen::Vector3d(tool.x(), tool.y(), height), kStep, arrived);
       if (arrived) {
-        if (!retrying_) ++job_;
+        if (!retrying_) {
+          ++job_;
+          closed_ = jawAngleFor(squeeze_);
+        }
         retrying_ = false;
         advance(job_ < jobs_.size() ? Phase::Orient : Phase::Done);
       }

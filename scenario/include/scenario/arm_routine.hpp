@@ -43,7 +43,8 @@ class ArmRoutine {
   /// Jobs finished (whatever their outcome).
   std::size_t finished() const { return job_; }
   /// Per job, how often the operator opened and grasped its ring again: it did not come up with
-  /// the jaws, slipped out on the way, or landed off its target post (at most twice a peg).
+  /// the jaws, slipped out on the way, or landed off its target post (at most twice a peg, each
+  /// time squeezing half the first squeeze harder).
   const std::vector<int>& regrasps() const { return regrasps_; }
   const std::vector<PegJob>& jobs() const { return jobs_; }
 
@@ -79,7 +80,8 @@ class ArmRoutine {
   Phase phase_ = Phase::Orient;
   int waited_ = 0;
   Grasp grasp_;
-  double closed_;                     ///< the outer jaw's angle when closed
+  double squeeze_;                    ///< the first grasp's, m into the wall
+  double closed_;                     ///< the outer jaw's angle when closed, this attempt
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
 };
 
