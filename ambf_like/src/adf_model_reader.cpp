@@ -212,7 +212,9 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
   if (auto gravity = root.find("gravity")) world.gravity = gravity->asXyz();
   if (auto iterations = root.find("max iterations")) {
     world.max_iterations = iterations->asInt();
-    if (world.max_iterations < 1) iterations->fail("max iterations must be at least 1");
+    if (world.max_iterations < 1 || world.max_iterations > 1000) {
+      iterations->fail("max iterations must be 1 to 1000");
+    }
   }
   if (auto own = root.find("ambf_like")) {
     own->checkKeys(
@@ -220,7 +222,9 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
         context.keyCheck());
     if (auto v = own->find("solver iterations")) {
       world.solver_iterations = v->asInt();
-      if (*world.solver_iterations < 1) v->fail("solver iterations must be at least 1");
+      if (*world.solver_iterations < 1 || *world.solver_iterations > 1000) {
+        v->fail("solver iterations must be 1 to 1000");
+      }
     }
     if (auto v = own->find("soft body sdf voxel size")) {
       world.sdf_voxel_size = v->asDouble();

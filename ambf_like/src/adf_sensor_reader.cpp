@@ -43,7 +43,10 @@ std::vector<SensorRay> readParametric(const YamlView& node, LoadContext& context
   node.checkKeys({"resolution", "horizontal angle", "vertical angle", "start offset"},
                  context.keyCheck());
   const int resolution = node["resolution"].asInt();
-  if (resolution < 2) node["resolution"].fail("the resolution must be at least 2");
+  // Every ray is cast after every step: 300 x 300 is already 90,000 a step.
+  if (resolution < 2 || resolution > 300) {
+    node["resolution"].fail("the resolution must be 2 to 300 (resolution x resolution rays)");
+  }
   const double horizontal = node["horizontal angle"].asDouble();
   const double vertical = node["vertical angle"].asDouble();
   const double start = node.getDouble("start offset", 0.0);

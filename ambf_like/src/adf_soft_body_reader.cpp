@@ -18,13 +18,19 @@ void readBounded(const YamlView& config, const char* key, double low, double hig
   }
 }
 
-void readCount(const YamlView& config, const char* key, int minimum, int& value) {
+/// Reads `key` into `value` if present, checking it lies in [minimum, maximum]: beyond the
+/// maximum one step would take seconds or more.
+void readCount(const YamlView& config, const char* key, int minimum, int maximum, int& value) {
   auto node = config.find(key);
   if (!node) return;
   value = node->asInt();
-  if (value < minimum)
-    node->fail(std::string(key) + " must be at least " + std::to_string(minimum));
+  if (value < minimum || value > maximum) {
+    node->fail(std::string(key) + " must be " + std::to_string(minimum) + " to " +
+               std::to_string(maximum));
+  }
 }
+
+constexpr int kMaxIterations = 1000;
 
 constexpr double kInf = 1e30;
 
@@ -89,12 +95,12 @@ SoftBodyConfig readConfig(const YamlView& node, LoadContext& context) {
   readBounded(node, "kSS_SPLT_CL", 0, 1, c.kSS_SPLT_CL);
   readBounded(node, "maxvolume", 0, kInf, c.maxvolume);
   readBounded(node, "timescale", 0, kInf, c.timescale);
-  readCount(node, "viterations", 0, c.viterations);
-  readCount(node, "piterations", 1, c.piterations);
-  readCount(node, "diterations", 0, c.diterations);
-  readCount(node, "citerations", 0, c.citerations);
-  readCount(node, "bending constraint", 0, c.bending_constraint);
-  readCount(node, "clusters", 0, c.clusters);
+  readCount(node, "viterations", 0, kMaxIterations, c.viterations);
+  readCount(node, "piterations", 1, kMaxIterations, c.piterations);
+  readCount(node, "diterations", 0, kMaxIterations, c.diterations);
+  readCount(node, "citerations", 0, kMaxIterations, c.citerations);
+  readCount(node, "bending constraint", 0, 16, c.bending_constraint);
+  readCount(node, "clusters", 0, 100000, c.clusters);
   if (auto flags = node.find("flags")) {
     c.collision_flags = flags->asInt();
     checkCollisionFlags(*flags, c.collision_flags, c.clusters);

@@ -282,6 +282,37 @@ TEST(BadInput, SoftBodyConfigOutOfRange) {
               AllOf(HasSubstr("BODY blob/config/kLST"), HasSubstr("kLST must be in [0, 1]")));
 }
 
+TEST(BadInput, IterationAndRayCountsThatWouldMakeAStepNeverEndAreRefused) {
+  TempDir dir;
+  const std::string blob = "soft bodies: [BODY blob]\nBODY blob: {name: blob, mass: 1, mesh: " +
+                           test_support::icosphereMesh().string() + ", config: {";
+  for (const char* key : {"piterations", "citerations", "viterations", "diterations"}) {
+    EXPECT_THAT(loadError(dir.write("a.yaml", blob + key + ": 100000}}\n")),
+                AllOf(HasSubstr(std::string("BODY blob/config/") + key), HasSubstr("to 1000")))
+        << key;
+  }
+  EXPECT_EQ(loadError(dir.write("b.yaml", blob + "piterations: 1000}}\n")), "");
+  dir.write("m.yaml", "bodies: [BODY b]\nBODY b: {mass: 0}\n");
+  const auto launch =
+      dir.write("launch.yaml", "world config: world.yaml\nmultibody configs:\n  - m.yaml\n");
+  auto worldError = [&](const std::string& world) {
+    dir.write("world.yaml", world);
+    return loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); });
+  };
+  EXPECT_THAT(worldError("max iterations: 100000\n"),
+              AllOf(HasSubstr("world.yaml:1"), HasSubstr("max iterations must be 1 to 1000")));
+  EXPECT_THAT(worldError("ambf_like: {solver iterations: 100000}\n"),
+              HasSubstr("solver iterations must be 1 to 1000"));
+  EXPECT_THAT(
+      loadError(dir.write(
+          "s.yaml",
+          "bodies: [BODY base]\nsensors: [SENSOR s]\nBODY base: {mass: 0, collision shape: "
+          "BOX, collision geometry: {x: 1, y: 1, z: 1}}\nSENSOR s: {parent: BODY base, range: "
+          "0.5, type: RAYTRACER, parametric: {resolution: 100000, horizontal angle: 1, "
+          "vertical angle: 1}}\n")),
+      AllOf(HasSubstr("SENSOR s/parametric/resolution"), HasSubstr("2 to 300")));
+}
+
 TEST(BadInput, SoftBodyContactFrictionModel) {
   TempDir dir;
   const std::string blob =
