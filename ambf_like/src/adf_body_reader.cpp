@@ -1,3 +1,5 @@
+#include <sstream>
+
 #include "adf_readers.hpp"
 
 namespace ambf_like::detail {
@@ -14,9 +16,16 @@ CollisionMeshType readMeshType(const YamlView& node) {
             "' (expected CONCAVE_MESH, TRIMESH, CONVEX_MESH, CONVEX_HULL or POINT_CLOUD)");
 }
 
-double nonNegative(const YamlView& node) {
+/// A value in [0, `maximum`]: beyond it the body is no longer a physical one this simulator can
+/// step (Bullet's sums overflow or lose every digit).
+double nonNegative(const YamlView& node, double maximum, const char* unit) {
   const double value = node.asDouble();
   if (value < 0.0) node.fail("must not be negative (got " + std::to_string(value) + ")");
+  if (value > maximum) {
+    std::ostringstream range;
+    range << "must be at most " << maximum << unit << " (got " << value << ")";
+    node.fail(range.str());
+  }
   return value;
 }
 
@@ -71,7 +80,7 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   const MeshDirectories local = meshDirectoriesOf(node, dirs);
 
   if (auto mass = node.find("mass")) {
-    body.mass = nonNegative(*mass);
+    body.mass = nonNegative(*mass, 1e6, " kg");
   } else {  // AMBF warns and leaves the body's mass at its default: static
     context.tolerate(node.where(), "body '" + body.name +
                                        "': missing required key 'mass' (AMBF warns and loads "
@@ -79,34 +88,40 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
     body.mass = 0.0;
   }
   if (auto inertia = node.find("inertia")) {
-    body.inertia = Vec3(nonNegative((*inertia)["ix"]), nonNegative((*inertia)["iy"]),
-                        nonNegative((*inertia)["iz"]));
+    body.inertia = Vec3(nonNegative((*inertia)["ix"], 1e6, " kg m^2"),
+                        nonNegative((*inertia)["iy"], 1e6, " kg m^2"),
+                        nonNegative((*inertia)["iz"], 1e6, " kg m^2"));
   }
   if (auto offset = node.find("inertial offset")) body.inertial_offset = offset->asPose();
   if (auto location = node.find("location")) body.location = location->asPose();
   if (auto scale = node.find("scale")) {
     body.scale = scale->asDouble();
-    if (body.scale <= 0.0) scale->fail("scale must be greater than zero");
+    if (!(body.scale >= 1e-6 && body.scale <= 1e6)) scale->fail("scale must be 1e-6 to 1e6");
   }
   if (auto gravity = node.find("gravity")) body.gravity = gravity->asXyz();
   body.passive = node.getBool("passive", false);
 
   if (auto friction = node.find("friction")) {
     friction->checkKeys({"static", "rolling"}, context.keyCheck());
-    if (auto v = friction->find("static")) body.surface.static_friction = nonNegative(*v);
-    if (auto v = friction->find("rolling")) body.surface.rolling_friction = nonNegative(*v);
+    if (auto v = friction->find("static"))
+      body.surface.static_friction = nonNegative(*v, 100.0, "");
+    if (auto v = friction->find("rolling"))
+      body.surface.rolling_friction = nonNegative(*v, 100.0, "");
   }
   if (auto damping = node.find("damping")) {
     damping->checkKeys({"linear", "angular"}, context.keyCheck());
-    if (auto v = damping->find("linear")) body.surface.linear_damping = nonNegative(*v);
-    if (auto v = damping->find("angular")) body.surface.angular_damping = nonNegative(*v);
+    if (auto v = damping->find("linear"))
+      body.surface.linear_damping = nonNegative(*v, 1.0, " (a fraction per second)");
+    if (auto v = damping->find("angular"))
+      body.surface.angular_damping = nonNegative(*v, 1.0, " (a fraction per second)");
   }
   if (auto restitution = node.find("restitution")) {
-    body.surface.restitution = nonNegative(*restitution);
+    body.surface.restitution = nonNegative(*restitution, 1.0, "");
   }
 
   auto& collision = body.collision;
-  if (auto margin = node.find("collision margin")) collision.margin = nonNegative(*margin);
+  if (auto margin = node.find("collision margin"))
+    collision.margin = nonNegative(*margin, 1.0, " m");
   if (auto groups = node.find("collision groups")) {
     for (const auto& group : groups->elements()) {
       const int value = group.asInt();

@@ -177,7 +177,7 @@ SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
   if (auto v = node.find("location")) soft.location = v->asPose();
   if (auto v = node.find("scale")) {
     soft.scale = v->asDouble();
-    if (soft.scale <= 0.0) v->fail("scale must be greater than zero");
+    if (!(soft.scale >= 1e-6 && soft.scale <= 1e6)) v->fail("scale must be 1e-6 to 1e6");
   }
   soft.randomize_constraints = node.getBool("randomize constraints", false);
   if (auto friction = node.find("contact friction")) {

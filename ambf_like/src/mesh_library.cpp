@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cstring>
+#include <sstream>
 #include <unordered_map>
 
 #include "ambf_like/mesh.hpp"
@@ -57,6 +58,21 @@ void dropUnreferencedVertices(Mesh& mesh) {
   mesh.vertices = std::move(kept);
 }
 
+/// Refuses a vertex that is not finite or lies beyond +-1e5 (metres, or millimetres before a
+/// scale): Bullet's bounds, contacts and inertia lose every digit past it.
+void checkVertices(const Mesh& mesh, const SourceRef& referenced_from) {
+  constexpr double kFarthest = 1e5;
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const Vec3& v = mesh.vertices[i];
+    if (!v.allFinite() || v.cwiseAbs().maxCoeff() > kFarthest) {
+      std::ostringstream text;
+      text << "mesh " << mesh.file.string() << ": vertex " << i << " at (" << v.x() << ", " << v.y()
+           << ", " << v.z() << ") is not finite or lies beyond +-" << kFarthest;
+      throw LoadError(referenced_from, text.str());
+    }
+  }
+}
+
 Mesh readMesh(const std::filesystem::path& file, const SourceRef& referenced_from) {
   auto fail = [&](const std::string& message) -> LoadError {
     return LoadError(referenced_from, "mesh " + file.string() + ": " + message);
@@ -97,6 +113,7 @@ Mesh readMesh(const std::filesystem::path& file, const SourceRef& referenced_fro
   }
   if (mesh.triangles.empty()) throw fail("the file holds no triangles");
   dropUnreferencedVertices(mesh);
+  checkVertices(mesh, referenced_from);
   return mesh;
 }
 
@@ -116,12 +133,14 @@ std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,
     try {
       Mesh volume = detail::readVtkTetMesh(file);
       dropUnreferencedVertices(volume);
+      volume.file = file;
       mesh = std::make_shared<const Mesh>(std::move(volume));
     } catch (const LoadError& error) {
       auto issues = error.issues();
       issues.push_back({referenced_from, "the tetrahedral mesh above is referenced here"});
       throw LoadError(std::move(issues));
     }
+    checkVertices(*mesh, referenced_from);
   } else {
     mesh = std::make_shared<const Mesh>(readMesh(file, referenced_from));
   }

@@ -347,3 +347,56 @@ TEST(BadInput, SoftBodySubsteps) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(BadInput, NonFiniteOrFarMeshVerticesAndUnphysicalBodyValuesAreRefused) {
+  TempDir dir;
+  // Meshes are read when the world is built from the loaded scene.
+  auto built = [](const std::filesystem::path& file) {
+    return loadErrorOf([&] { test_support::simulate({file}); });
+  };
+  auto body = [&](const std::string& mesh, const std::string& extra = "") {
+    return dir.write("m.yaml",
+                     "bodies: [BODY b]\nBODY b: {name: b, mass: 1, mesh: " + mesh + extra + "}\n");
+  };
+  for (const char* value : {"1e308", "-2e5"}) {
+    dir.write("far.obj", std::string("v 0 0 0\nv 1 0 0\nv 0 1 ") + value + "\nf 1 2 3\n");
+    EXPECT_THAT(built(body("far.obj")),
+                AllOf(HasSubstr("far.obj: vertex 2"), HasSubstr("not finite or lies beyond")))
+        << value;
+  }
+  dir.write("far.vtk",
+            "# vtk DataFile Version 2.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n"
+            "0 0 0\n1 0 0\n0 1 0\n0 0 1e300\nCELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n");
+  EXPECT_THAT(built(dir.write("s.yaml",
+                              "soft bodies: [BODY s]\nBODY s: {name: s, mass: 1, "
+                              "mesh: far.vtk}\n")),
+              AllOf(HasSubstr("far.vtk: vertex 3"), HasSubstr("BODY s/mesh")));
+  dir.write("ok.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_EQ(built(body("ok.obj",
+                       ", collision shape: BOX, collision geometry: {x: 1, y: 1, "
+                       "z: 1}")),
+            "");
+  const std::string box = ", collision shape: BOX, collision geometry: {x: 1, y: 1, z: 1}";
+  EXPECT_THAT(loadError(dir.write("a.yaml",
+                                  "bodies: [BODY b]\nBODY b: {name: b, mass: 1e308" + box + "}\n")),
+              AllOf(HasSubstr("BODY b/mass"), HasSubstr("must be at most 1e+06 kg")));
+  EXPECT_THAT(loadError(dir.write("c.yaml",
+                                  "bodies: [BODY b]\nBODY b: {name: b, mass: 1, "
+                                  "inertia: {ix: 1e308, iy: 1, iz: 1}" +
+                                      box + "}\n")),
+              HasSubstr("BODY b/inertia/ix"));
+  EXPECT_THAT(loadError(dir.write("d.yaml",
+                                  "bodies: [BODY b]\nBODY b: {name: b, mass: 1, "
+                                  "damping: {linear: 1e308}" +
+                                      box + "}\n")),
+              HasSubstr("BODY b/damping/linear"));
+  EXPECT_THAT(loadError(dir.write("e.yaml",
+                                  "bodies: [BODY b]\nBODY b: {name: b, mass: 1, "
+                                  "scale: 1e-300" +
+                                      box + "}\n")),
+              AllOf(HasSubstr("BODY b/scale"), HasSubstr("1e-6 to 1e6")));
+}
+
+}  // namespace
