@@ -6,10 +6,22 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
+#include <stdexcept>
 
 namespace analysis {
 
 namespace {
+
+/// The index of the first row whose time is not finite or not after the one before, if any.
+std::optional<std::size_t> firstTimeOutOfOrder(const Trial& trial) {
+  for (std::size_t k = 0; k < trial.time.size(); ++k) {
+    if (!std::isfinite(trial.time[k]) || (k > 0 && !(trial.time[k] > trial.time[k - 1]))) {
+      return std::max<std::size_t>(k, 1);
+    }
+  }
+  return std::nullopt;
+}
 
 /// The files named, directories expanded (sorted; ci files are inputs, not states).
 std::vector<std::filesystem::path> expand(const std::vector<std::filesystem::path>& inputs) {
@@ -102,6 +114,13 @@ TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
         continue;
       }
       Trial trial = toTrial(rs, *profile);
+      if (const auto bad = firstTimeOutOfOrder(trial)) {
+        set.issues.push_back(
+            {file, fmt::format("data row {}: time {} s does not come after the row before it "
+                               "({} s); times must be finite and increasing (file skipped)",
+                               *bad + 1, trial.time[*bad], trial.time[*bad - 1])});
+        continue;
+      }
       const auto runs = nanRuns(trial);
       if (!runs.empty()) {
         std::string list;
@@ -145,9 +164,17 @@ TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
 
 void resampleOnTime(TrialSet& set, double period) {
   if (set.platforms.empty()) return;
+  if (!(period > 0.0)) throw std::invalid_argument("the resampling period must be positive");
   double end = std::numeric_limits<double>::infinity();
   for (const auto& p : set.platforms) {
     for (const auto& t : p.trials) end = std::min(end, t.time.back());
+  }
+  // Times were checked increasing when the trials were read; this bounds what a far jump asks.
+  constexpr double kMostSamples = 1e7;
+  if (!(end >= 0.0) || end / period > kMostSamples) {
+    throw std::invalid_argument(
+        fmt::format("resampling {} s of recording every {} s would take more than {:.0f} samples",
+                    end, period, kMostSamples));
   }
   const auto samples = static_cast<std::size_t>(std::floor(end / period + 1e-9)) + 1;
   auto interpolate = [](const Trial& t, const std::vector<JointRow>& rows, double at) {

@@ -3,6 +3,7 @@
 // raven_analyze end to end with our twin as a third platform.
 
 #include <fmt/format.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -41,6 +42,20 @@ std::filesystem::path writeRs(const test_support::TempDir& dir, const std::strin
     for (int c = 0; c < analysis::kJointColumns; ++c) {
       s.jpos[static_cast<std::size_t>(c)] = static_cast<float>(value(r, c) * 180.0 / M_PI);
     }
+    writer.write(s);
+  }
+  return path;
+}
+
+/// Writes an rs file with one row per entry of `times` (s), every joint at 0.1 rad.
+std::filesystem::path writeRsAt(const test_support::TempDir& dir, const std::string& name,
+                                const std::vector<double>& times) {
+  const auto path = dir.path() / name;
+  controller::RsWriter writer(path);
+  for (double t : times) {
+    bridge::RavenStateSnapshot s;
+    s.time = t;
+    s.jpos.fill(static_cast<float>(0.1 * 180.0 / M_PI));
     writer.write(s);
   }
   return path;
@@ -134,6 +149,26 @@ TEST(Analysis, CorrelatesADifferenceThatGrowsWithTime) {
   const auto by_position =
       analysis::correlate(analysis::factorSamples(ps, 0, analysis::Factor::Position));
   EXPECT_LT(std::abs(by_position.pearson_difference), 0.5);
+}
+
+TEST(Analysis, ARecordingWhoseTimeRunsBackwardsIsSkippedNamingTheRow) {
+  test_support::TempDir dir;
+  const auto good = writeRsAt(dir, "a_physical_rs.csv", {0.0, 0.02, 0.04, 0.06});
+  const auto backwards = writeRsAt(dir, "b_physical_rs.csv", {0.0, 0.02, 0.01, 0.06});
+  const auto set = analysis::loadTrials({good, backwards}, defaultProfiles());
+  ASSERT_NE(set.find("physical"), nullptr);
+  EXPECT_EQ(set.find("physical")->trials.size(), 1u);
+  ASSERT_EQ(set.issues.size(), 1u);
+  EXPECT_EQ(set.issues[0].path, backwards);
+  EXPECT_THAT(set.issues[0].reason, testing::HasSubstr("data row 3: time 0.01 s"));
+}
+
+TEST(Analysis, ResamplingAFarTimeJumpIsRefusedNotAllocated) {
+  test_support::TempDir dir;
+  const auto far = writeRsAt(dir, "a_physical_rs.csv", {0.0, 0.02, 1e9});
+  auto set = analysis::loadTrials({far}, defaultProfiles());
+  ASSERT_NE(set.find("physical"), nullptr);
+  EXPECT_THROW(analysis::resampleOnTime(set, 0.001), std::invalid_argument);
 }
 
 TEST(Lowess, RecoversALineAndIgnoresAnOutlier) {
