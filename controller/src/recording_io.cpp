@@ -145,6 +145,8 @@ std::vector<GamepadState> readCi(const std::filesystem::path& path) {
     }
     pads.push_back(GamepadState::fromCiRow(values));
   }
+  // A replay of nothing would wait for its first row forever.
+  if (pads.empty()) throw RecordingError(path.string() + ": no rows after the header");
   return pads;
 }
 
@@ -230,6 +232,22 @@ RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite
     for (std::size_t r = 0; r < rec.rows.size(); ++r) {
       if (!std::isfinite(rec.rows[r][c])) {
         throw RecordingError(where(path, r + 2) + ", column '" + name + "': not a finite number");
+      }
+    }
+  }
+  if (non_finite == NonFiniteJoints::Refuse) {
+    // A replay waits for each row's time: it must come after the last, and not so long after
+    // that the robot would idle for it (no recording of ours pauses for a minute).
+    constexpr double kLongestGap = 60.0;
+    const std::size_t time = rec.column("time");
+    for (std::size_t r = 1; r < rec.rows.size(); ++r) {
+      const double gap = rec.rows[r][time] - rec.rows[r - 1][time];
+      if (!(gap > 0.0) || gap > kLongestGap) {
+        throw RecordingError(where(path, r + 2) +
+                             ", column 'time': " + std::to_string(rec.rows[r][time]) + " s is " +
+                             (gap > 0.0 ? "more than a minute after" : "not after") +
+                             " the row before (" + std::to_string(rec.rows[r - 1][time]) +
+                             " s); a replay would wait for it");
       }
     }
   }

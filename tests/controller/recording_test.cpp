@@ -190,6 +190,37 @@ TEST(Recording, BadCiFilesNameTheRow) {
   EXPECT_NE(errorOf(dir.write("h.csv", "a,b\n1,2\n")).find("row 1: the header has 2 columns"),
             std::string::npos);
   EXPECT_NE(errorOf(dir.path() / "missing.csv").find("cannot open"), std::string::npos);
+  // A header and no rows: a replay would wait for its first row forever.
+  std::string header;
+  for (auto name : GamepadState::ciColumnNames())
+    header += (header.empty() ? "" : ",") + std::string(name);
+  EXPECT_NE(errorOf(dir.write("empty_ci.csv", header + "\n")).find("no rows after the header"),
+            std::string::npos);
+}
+
+/// The message readRs (for a replay) throws for an rs file of rows at `times` (s).
+std::string rsErrorAt(const test_support::TempDir& dir, const std::vector<double>& times) {
+  const auto path = dir.path() / "t_rs.csv";
+  {
+    controller::RsWriter w(path);
+    for (std::size_t i = 0; i < times.size(); ++i) w.write(sampleState(times[i], 1.0 + i));
+  }
+  try {
+    controller::readRs(path);
+  } catch (const RecordingError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Recording, AReplayRefusesTimesThatDoNotMoveOnOrJumpAway) {
+  test_support::TempDir dir;
+  EXPECT_EQ(rsErrorAt(dir, {10.0, 10.001, 10.002}), "");
+  EXPECT_NE(rsErrorAt(dir, {10.0, 10.002, 10.001}).find("row 4, column 'time'"), std::string::npos);
+  EXPECT_NE(rsErrorAt(dir, {10.0, 10.001, 10.001}).find("not after the row before"),
+            std::string::npos);
+  EXPECT_NE(rsErrorAt(dir, {10.0, 10.001, 1e9}).find("more than a minute after"),
+            std::string::npos);
 }
 
 }  // namespace
