@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cstring>
+#include <fstream>
 #include <sstream>
 #include <unordered_map>
 
 #include "ambf_like/mesh.hpp"
+#include "common/xml_nesting.hpp"
 #include "vtk_tet_mesh.hpp"
 
 namespace ambf_like {
@@ -73,11 +75,32 @@ void checkVertices(const Mesh& mesh, const SourceRef& referenced_from) {
   }
 }
 
+/// assimp's XML formats (COLLADA and others, whatever the file is called) recurse once per
+/// nested node until the stack ends: a file that is XML is measured first.
+template <typename Fail>
+void refuseDeepXml(const std::filesystem::path& file, Fail fail) {
+  std::ifstream in(file, std::ios::binary);
+  std::string start(64, '\0');
+  in.read(start.data(), static_cast<std::streamsize>(start.size()));
+  start.resize(static_cast<std::size_t>(in.gcount()));
+  const auto first = start.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+  if (first == std::string::npos || start[first] != '<') return;
+  in.clear();
+  in.seekg(0);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (const auto line = common::xmlNestedBeyond(text.str(), common::kMostXmlNesting)) {
+    throw fail("line " + std::to_string(*line) + ": elements nested deeper than " +
+               std::to_string(common::kMostXmlNesting) + " levels; no mesh nests so deep");
+  }
+}
+
 Mesh readMesh(const std::filesystem::path& file, const SourceRef& referenced_from) {
   auto fail = [&](const std::string& message) -> LoadError {
     return LoadError(referenced_from, "mesh " + file.string() + ": " + message);
   };
   if (!std::filesystem::is_regular_file(file)) throw fail("file not found");
+  refuseDeepXml(file, fail);
 
   Assimp::Importer importer;
   // Keep a Z-up COLLADA file's coordinates as written (assimp would turn it Y-up).

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/xml_nesting.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
@@ -220,6 +222,12 @@ ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context)
   if (!in) ctx.fail("", std::filesystem::exists(file) ? "cannot read file" : "file not found");
   std::stringstream text;
   text << in.rdbuf();
+  // urdfdom's XML parser recurses once per element level until the stack ends.
+  if (const auto line = common::xmlNestedBeyond(text.str(), common::kMostXmlNesting)) {
+    throw LoadError(SourceRef{file, static_cast<int>(*line), ""},
+                    "elements nested deeper than " + std::to_string(common::kMostXmlNesting) +
+                        " levels; no robot description nests so deep");
+  }
 
   urdf::ModelInterfaceSharedPtr urdf;
   std::string messages;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ambf_like/scene_loader.hpp"
+#include "common/xml_nesting.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -397,6 +398,41 @@ TEST(BadInput, NonFiniteOrFarMeshVerticesAndUnphysicalBodyValuesAreRefused) {
                                   "scale: 1e-300" +
                                       box + "}\n")),
               AllOf(HasSubstr("BODY b/scale"), HasSubstr("1e-6 to 1e6")));
+}
+
+}  // namespace
+
+namespace {
+
+/// `depth` elements <tag> nested in one another, one per line, under a root.
+std::string nested(const std::string& head, const std::string& tag, int depth,
+                   const std::string& tail) {
+  std::string text = head;
+  for (int i = 0; i < depth; ++i) text += "<" + tag + " name=\"n" + std::to_string(i) + "\">\n";
+  for (int i = 0; i < depth; ++i) text += "</" + tag + ">";
+  return text + tail;
+}
+
+TEST(BadInput, XmlNestedDeeperThanAnyRealFileIsRefusedBeforeItsRecursiveParser) {
+  TempDir dir;
+  // A URDF 40,000 elements deep used to end urdfdom's parser in a stack overflow.
+  const auto urdf = dir.write(
+      "deep.urdf", nested("<?xml version=\"1.0\"?>\n<robot name=\"r\">\n<link name=\"a\">\n",
+                          "visual", 40000, "</link></robot>\n"));
+  EXPECT_THAT(loadError(urdf), AllOf(HasSubstr("deep.urdf:502"), HasSubstr("nested deeper")));
+  // So did a COLLADA mesh 8,000 nodes deep in assimp, whatever the file is called.
+  const auto dae = dir.write(
+      "deep.stl", nested("<?xml version=\"1.0\"?>\n<COLLADA><library_visual_scenes>"
+                         "<visual_scene id=\"s\">\n",
+                         "node", 8000, "</visual_scene></library_visual_scenes></COLLADA>\n"));
+  const auto model = dir.write(
+      "m.yaml", "bodies: [BODY b]\nBODY b: {name: b, mass: 1, mesh: " + dae.string() + "}\n");
+  EXPECT_THAT(loadErrorOf([&] { test_support::simulate({model}); }),
+              AllOf(HasSubstr("deep.stl: line 500"), HasSubstr("nested deeper")));
+  // Comments, CDATA and quoted '>' are not elements.
+  EXPECT_EQ(common::xmlNestedBeyond("<a><!-- <b><c> --><![CDATA[<d><e>]]><f x=\"<g>\"/></a>", 1),
+            std::nullopt);
+  EXPECT_EQ(common::xmlNestedBeyond("<a>\n<b>\n<c/></b></a>", 1), 2u);
 }
 
 }  // namespace

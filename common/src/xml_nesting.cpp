@@ -1,0 +1,84 @@
+#include "common/xml_nesting.hpp"
+
+#include <algorithm>
+
+namespace common {
+
+namespace {
+
+/// A cursor over the text that keeps the line number.
+class Cursor {
+ public:
+  explicit Cursor(std::string_view text) : text_(text) {}
+  bool done() const { return at_ >= text_.size(); }
+  bool startsWith(std::string_view s) const { return text_.substr(at_).starts_with(s); }
+  char peek(std::size_t ahead = 0) const {
+    return at_ + ahead < text_.size() ? text_[at_ + ahead] : '\0';
+  }
+  void advance(std::size_t n = 1) {
+    const std::size_t end = std::min(text_.size(), at_ + n);
+    line_ += static_cast<std::size_t>(std::count(text_.begin() + static_cast<long>(at_),
+                                                 text_.begin() + static_cast<long>(end), '\n'));
+    at_ = end;
+  }
+  /// Moves past the next `marker` (to the end when there is none).
+  void skipPast(std::string_view marker) {
+    const std::size_t found = text_.find(marker, at_);
+    advance(found == std::string_view::npos ? text_.size() - at_ : found - at_ + marker.size());
+  }
+  /// Moves past the '>' that ends a tag, quoted values included; true if it was "/>".
+  bool skipTag() {
+    char quote = '\0';
+    char last = '\0';
+    while (!done()) {
+      const char c = peek();
+      advance();
+      if (quote != '\0') {
+        if (c == quote) quote = '\0';
+      } else if (c == '"' || c == '\'') {
+        quote = c;
+      } else if (c == '>') {
+        return last == '/';
+      }
+      last = c;
+    }
+    return false;
+  }
+  std::size_t line() const { return line_; }
+
+ private:
+  std::string_view text_;
+  std::size_t at_ = 0;
+  std::size_t line_ = 1;
+};
+
+}  // namespace
+
+std::optional<std::size_t> xmlNestedBeyond(std::string_view text, std::size_t limit) {
+  Cursor cursor(text);
+  std::size_t depth = 0;
+  while (!cursor.done()) {
+    if (cursor.peek() != '<') {
+      cursor.advance();
+      continue;
+    }
+    if (cursor.startsWith("<!--")) {
+      cursor.skipPast("-->");
+    } else if (cursor.startsWith("<![CDATA[")) {
+      cursor.skipPast("]]>");
+    } else if (cursor.peek(1) == '?') {
+      cursor.skipPast("?>");
+    } else if (cursor.peek(1) == '!') {
+      cursor.skipTag();
+    } else if (cursor.peek(1) == '/') {
+      cursor.skipTag();
+      if (depth > 0) --depth;
+    } else {
+      const std::size_t line = cursor.line();
+      if (!cursor.skipTag() && ++depth > limit) return line;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace common
