@@ -194,6 +194,15 @@ RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite
   rec.names = splitCsv(lines[0]);
   rec.variant.index_column = !rec.names.empty() && rec.names[0].empty();
   rec.variant.columns = rec.names.size() - (rec.variant.index_column ? 1 : 0);
+  // Two columns of one name: which one a reader takes would be a guess.
+  for (std::size_t c = 0; c < rec.names.size(); ++c) {
+    if (rec.names[c].empty()) continue;  // the index column has none
+    if (std::find(rec.names.begin(), rec.names.begin() + static_cast<long>(c), rec.names[c]) !=
+        rec.names.begin() + static_cast<long>(c)) {
+      throw RecordingError(where(path, 1) + ": column " + std::to_string(c + 1) + " is a second '" +
+                           rec.names[c] + "' column");
+    }
+  }
   std::vector<std::string> required{"time"};
   for (int j = 0; j < 16; ++j) required.push_back("jpos" + std::to_string(j));
   for (const auto& name : required) {

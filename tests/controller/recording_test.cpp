@@ -213,6 +213,27 @@ std::string rsErrorAt(const test_support::TempDir& dir, const std::vector<double
   return "";
 }
 
+TEST(Recording, AnRsFileWithTwoColumnsOfOneNameIsRefused) {
+  test_support::TempDir dir;
+  const auto path = dir.path() / "d_rs.csv";
+  {
+    controller::RsWriter w(path);
+    w.write(sampleState(10.0, 1.0));
+    w.write(sampleState(10.001, 2.0));
+  }
+  std::string text = test_support::readFile(path);
+  const auto jpos3 = text.find(",jpos3,");
+  ASSERT_NE(jpos3, std::string::npos);
+  text.replace(jpos3, 7, ",jpos2,");
+  const auto twice = dir.write("twice_rs.csv", text);
+  try {
+    controller::readRs(twice);
+    ADD_FAILURE() << "a second jpos2 column was taken";
+  } catch (const RecordingError& e) {
+    EXPECT_NE(std::string(e.what()).find("a second 'jpos2' column"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Recording, AReplayRefusesTimesThatDoNotMoveOnOrJumpAway) {
   test_support::TempDir dir;
   EXPECT_EQ(rsErrorAt(dir, {10.0, 10.001, 10.002}), "");
