@@ -6,14 +6,19 @@ namespace ambf_like::detail {
 
 namespace {
 
-CollisionMeshType readMeshType(const YamlView& node) {
+/// AMBF falls back to its default, a concave mesh, for a type it does not know (the surgical
+/// robotics challenge's psm1.yaml leaves it empty): a warning, an error under --strict.
+CollisionMeshType readMeshType(const YamlView& node, LoadContext& context) {
   const auto text = node.asKeyword();
   if (text == "concave_mesh" || text == "trimesh") return CollisionMeshType::ConcaveMesh;
   if (text == "convex_mesh") return CollisionMeshType::ConvexMesh;
   if (text == "convex_hull") return CollisionMeshType::ConvexHull;
   if (text == "point_cloud") return CollisionMeshType::PointCloud;
-  node.fail("unknown collision mesh type '" + node.asString() +
-            "' (expected CONCAVE_MESH, TRIMESH, CONVEX_MESH, CONVEX_HULL or POINT_CLOUD)");
+  context.tolerate(node.where(),
+                   "unknown collision mesh type '" + node.asString() +
+                       "' (expected CONCAVE_MESH, TRIMESH, CONVEX_MESH, CONVEX_HULL or "
+                       "POINT_CLOUD); AMBF's default, CONCAVE_MESH, is used");
+  return CollisionMeshType::ConcaveMesh;
 }
 
 /// A value in [0, `maximum`]: beyond it the body is no longer a physical one this simulator can
@@ -133,9 +138,13 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   body.visual_primitives = readVisualPrimitives(node, context);
 
   const std::string mesh_name = node.has("mesh") ? node["mesh"].asString() : "";
+  if (node.has("mesh") && mesh_name.empty()) {
+    context.tolerate(node["mesh"].where(), "an empty mesh name: the body has no mesh");
+  }
   const std::string collision_name =
       node.has("collision mesh") ? node["collision mesh"].asString() : mesh_name;
-  if (auto type = node.find("collision mesh type")) collision.mesh_type = readMeshType(*type);
+  if (auto type = node.find("collision mesh type"))
+    collision.mesh_type = readMeshType(*type, context);
 
   const bool wants_collision_mesh = collision.primitives.empty() && !collision_name.empty();
   std::string tried_visual, tried_collision;

@@ -436,3 +436,25 @@ TEST(BadInput, XmlNestedDeeperThanAnyRealFileIsRefusedBeforeItsRecursiveParser) 
 }
 
 }  // namespace
+
+namespace {
+
+TEST(BadInput, AnEmptyMeshAndMeshTypeLoadAsAmbfLoadsThemAndStrictRefusesThem) {
+  // The surgical robotics challenge's psm1.yaml has a body with mesh: '' and
+  // collision mesh type: ''.
+  TempDir dir;
+  const auto file =
+      dir.write("m.yaml",
+                "bodies: [BODY b]\nBODY b: {name: b, mass: 0.1, mesh: '', collision mesh type: '', "
+                "inertia: {ix: 1e-4, iy: 1e-4, iz: 1e-4}}\n");
+  const auto loaded = ambf_like::loadModelFiles({file});
+  ASSERT_EQ(loaded.spec.models.at(0).bodies.size(), 1u);
+  std::string warnings;
+  for (const auto& w : loaded.warnings) warnings += w.where.key_path + ": " + w.message + "\n";
+  EXPECT_THAT(warnings, HasSubstr("BODY b/mesh: an empty mesh name"));
+  EXPECT_THAT(warnings, AllOf(HasSubstr("BODY b/collision mesh type: unknown collision mesh type"),
+                              HasSubstr("CONCAVE_MESH, is used")));
+  EXPECT_THAT(loadError(file), HasSubstr("BODY b/"));
+}
+
+}  // namespace
