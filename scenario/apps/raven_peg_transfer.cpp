@@ -7,6 +7,8 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <thread>
@@ -21,6 +23,13 @@
 namespace {
 
 namespace fs = std::filesystem;
+
+/// Set by SIGINT or SIGTERM: the runs stop, and what finished is written.
+std::atomic<bool> stop_requested{false};
+
+extern "C" void requestStop(int /*signal*/) {
+  stop_requested = true;
+}
 
 /// Command-line settings.
 struct Settings {
@@ -110,7 +119,26 @@ int runPegTransfers(const Settings& s) {
   options.launch_file = s.launch;
   options.time_limit = s.time_limit;
   options.squeeze = s.squeeze_mm * 1e-3;
+  options.stop = &stop_requested;
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
   const bool single = seeds.size() == 1;
+  const fs::path summary_path = out / ("summary" + shardSuffix(shard) + ".json");
+  // The totals of the runs finished so far: rewritten as each run ends, so a killed batch keeps
+  // them.
+  auto summaryOf = [&](const std::vector<scenario::PegTransferResult>& finished) {
+    nlohmann::json summary = scenario::summarize(finished);
+    summary["task"] = "peg_transfer";
+    summary["shard"] = s.shard;
+    summary["first_seed"] = s.seed;
+    summary["randomized"] = s.randomize;
+    summary["grasp_assist"] = s.assist;
+    summary["runs_asked"] = seeds.size();
+    summary["stopped"] = stop_requested.load();
+    summary["results"] = nlohmann::json::array();
+    for (const auto& r : finished) summary["results"].push_back(r.json());
+    return summary;
+  };
   const std::string which =
       single ? fmt::format("seed {}", seeds.front())
              : fmt::format("{} runs, seeds {}..{}", seeds.size(), s.seed, s.seed + s.runs - 1);
@@ -138,17 +166,24 @@ int runPegTransfers(const Settings& s) {
     results.push_back(scenario::runPegTransfer(options));
     jsonl << results.back().json().dump() << '\n' << std::flush;
   } else {
-    if (record) spdlog::warn("--record yes: every run writes its rs file into {}", out.string());
-    std::size_t finished = 0;
+    if (record) options.rs_folder = out;
+    std::vector<scenario::PegTransferResult> finished;
     results = scenario::runBatch(
         options, seeds,
         s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency()),
         [&](const scenario::PegTransferResult& r) {
           jsonl << r.json().dump() << '\n' << std::flush;
-          bar.show({r.timing.sim_time, ++finished, seeds.size()});
+          finished.push_back(r);
+          writeJson(summary_path, summaryOf(finished));
+          bar.show({r.timing.sim_time, finished.size(), seeds.size()});
         });
   }
   bar.finish();
+  if (stop_requested) {
+    spdlog::warn("stopped by a signal: {} of {} runs finished and are written", results.size(),
+                 seeds.size());
+  }
+  if (results.empty()) return 130;
 
   const auto handover =
       scenario::measureHandoverReach(raven::builtinProfile("physical"), kHandoverSamples);
@@ -160,18 +195,11 @@ int runPegTransfers(const Settings& s) {
   }
   fmt::print("mid-air handover: {}\n", handover.explain(kJawLength));
 
-  nlohmann::json summary = scenario::summarize(results);
-  summary["task"] = "peg_transfer";
-  summary["shard"] = s.shard;
-  summary["first_seed"] = s.seed;
-  summary["randomized"] = s.randomize;
-  summary["grasp_assist"] = s.assist;
+  nlohmann::json summary = summaryOf(results);
   summary["handover"] = {
       {"possible", handover.possible(kJawLength)},   {"left_min_x_m", handover.left_min_x},
       {"right_max_x_m", handover.right_max_x},       {"gap_m", handover.gap()},
       {"samples_per_arm", handover.samples_per_arm}, {"explanation", handover.explain(kJawLength)}};
-  for (const auto& r : results) summary["results"].push_back(r.json());
-  const fs::path summary_path = out / ("summary" + shardSuffix(shard) + ".json");
   writeJson(summary_path, summary);
   const auto& first = results.front();
   fmt::print("wrote {}{}, {}\n",
@@ -180,7 +208,7 @@ int runPegTransfers(const Settings& s) {
                                controller::cfPathFor(first.rs_file).string())
                  : "",
              summary_path.string(), jsonl_path.string());
-  return 0;
+  return stop_requested ? 130 : 0;
 }
 
 int runRectangleTask(const Settings& s) {

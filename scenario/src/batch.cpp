@@ -47,16 +47,19 @@ std::vector<PegTransferResult> runBatch(
     const PegTransferOptions& base, const std::vector<std::uint64_t>& seeds, std::size_t threads,
     const std::function<void(const PegTransferResult&)>& on_result) {
   std::vector<PegTransferResult> results(seeds.size());
+  std::vector<char> ran(seeds.size(), 0);
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
   std::mutex report;
   std::exception_ptr error;
   auto worker = [&] {
-    for (std::size_t i = next++; i < seeds.size() && !failed; i = next++) {
+    auto stopping = [&] { return base.stop != nullptr && base.stop->load(); };
+    for (std::size_t i = next++; i < seeds.size() && !failed && !stopping(); i = next++) {
       try {
         PegTransferOptions options = base;
         options.seed = seeds[i];
         results[i] = runPegTransfer(options);
+        ran[i] = 1;
         const std::lock_guard lock(report);
         if (on_result) on_result(results[i]);
       } catch (...) {
@@ -72,7 +75,12 @@ std::vector<PegTransferResult> runBatch(
   worker();
   for (auto& thread : pool) thread.join();
   if (error) std::rethrow_exception(error);
-  return results;
+  // Asked to stop: the runs that never started are left out.
+  std::vector<PegTransferResult> kept;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (ran[i]) kept.push_back(std::move(results[i]));
+  }
+  return kept;
 }
 
 }  // namespace scenario

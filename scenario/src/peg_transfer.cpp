@@ -74,10 +74,15 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   }
   std::unique_ptr<controller::RsWriter> rs;
   std::unique_ptr<controller::CfWriter> cf;
-  if (!options.rs_file.empty()) {
-    rs = std::make_unique<controller::RsWriter>(options.rs_file);
-    cf = std::make_unique<controller::CfWriter>(controller::cfPathFor(options.rs_file));
+  const std::filesystem::path rs_file =
+      !options.rs_file.empty() || options.rs_folder.empty()
+          ? options.rs_file
+          : options.rs_folder / ("peg_transfer_seed" + std::to_string(options.seed) + "_rs.csv");
+  if (!rs_file.empty()) {
+    rs = std::make_unique<controller::RsWriter>(rs_file);
+    cf = std::make_unique<controller::CfWriter>(controller::cfPathFor(rs_file));
   }
+  auto asked_to_stop = [&] { return options.stop != nullptr && options.stop->load(); };
 
   RunProgress progress{twin.now(), 0, layout.jobs.size()};
   auto show = [&](WorldMoment moment) {
@@ -85,7 +90,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   };
   show(WorldMoment::Start);
   auto done = [&] { return routines[0].done() && routines[1].done(); };
-  while (!done() && twin.now() < options.time_limit) {
+  while (!done() && twin.now() < options.time_limit && !asked_to_stop()) {
     const controller::ArmPair current = controller.commanded();
     const controller::ArmPair next{routines[0].next(current[0], world),
                                    routines[1].next(current[1], world)};
@@ -111,8 +116,9 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     if (options.progress) options.progress(progress);
     show(WorldMoment::Iteration);
   }
-  result.timed_out = !done();
-  const double settle_end = twin.now() + options.settle_time;
+  result.stopped = !done() && asked_to_stop();
+  result.timed_out = !done() && !result.stopped;
+  const double settle_end = twin.now() + (result.stopped ? 0.0 : options.settle_time);
   while (twin.now() < settle_end) {
     controller.idle();
     watch.observe();

@@ -51,6 +51,7 @@ nlohmann::json PegTransferResult::json() const {
                    {"placed", placed()},
                    {"lost", lost()},
                    {"regrasps", regrasps()},
+                   {"stopped", stopped},
                    {"all_placed", allPlaced()},
                    {"timed_out", timed_out},
                    {"iterations", iterations},

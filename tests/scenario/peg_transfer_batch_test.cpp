@@ -5,8 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cstdio>
+#include <filesystem>
 
+#include "harness/temp_dir.hpp"
 #include "scenario/batch.hpp"
 #include "scenario/console_report.hpp"
 #include "scenario/peg_transfer.hpp"
@@ -65,6 +68,33 @@ TEST(PegTransferBatch, AnOperatorWhoseGripCannotHoldTriesEachRingThreeTimesAndMo
   EXPECT_EQ(result.regrasps(), 12u);
   for (const auto& p : result.pegs) EXPECT_EQ(p.regrasps, 2) << p.peg;
   EXPECT_EQ(result.json()["regrasps"], 12);
+}
+
+TEST(PegTransferBatch, AStoppedBatchKeepsWhatFinishedAndARecordedOneWritesEveryRunsFile) {
+  harness::TempDir dir;
+  std::atomic<bool> stop{false};
+  scenario::PegTransferOptions options;
+  options.randomize = true;
+  options.rs_folder = dir.path();
+  options.stop = &stop;
+  // One worker: the first run finishes, asks the batch to stop (as SIGTERM's handler would),
+  // and the second and third never start.
+  const auto results = scenario::runBatch(options, {5, 6, 7}, 1, [&](const auto&) { stop = true; });
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].variation.seed, 5u);
+  EXPECT_FALSE(results[0].stopped);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "peg_transfer_seed5_rs.csv"));
+  EXPECT_GT(results[0].rs_rows, 100u);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "peg_transfer_seed6_rs.csv"));
+  // A run asked to stop while it runs ends at once and says so.
+  const auto cut = scenario::runBatch(options, {8}, 1);
+  ASSERT_EQ(cut.size(), 0u) << "asked to stop before it started: not run";
+  stop = false;
+  options.progress = [&](const scenario::RunProgress&) { stop = true; };
+  const auto stopped = scenario::runPegTransfer(options);
+  EXPECT_TRUE(stopped.stopped);
+  EXPECT_FALSE(stopped.timed_out);
+  EXPECT_EQ(stopped.iterations, 1u) << "it ends after the iteration it was asked in";
 }
 
 }  // namespace

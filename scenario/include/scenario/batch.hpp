@@ -27,7 +27,8 @@ std::vector<std::uint64_t> seedsOf(std::uint64_t first_seed, std::size_t runs, c
 /// Runs `base` once per seed on `threads` worker threads (`base.progress`, if set, is called
 /// from those threads); `on_result` is called, one call at a time in completion order, as each
 /// run ends. Returns the results in seed order. A run that throws stops the batch and the
-/// exception reaches the caller.
+/// exception reaches the caller. When `base.stop` turns true no further run starts, the running
+/// ones stop (`stopped`), and the runs that never started are left out of the results.
 std::vector<PegTransferResult> runBatch(
     const PegTransferOptions& base, const std::vector<std::uint64_t>& seeds, std::size_t threads,
     const std::function<void(const PegTransferResult&)>& on_result = {});

@@ -4,6 +4,7 @@
 // a gamepad uses (DualPlatformController: velocity caps, wrist-locked IK), on the simulated
 // clock, optionally recording the paper's rs file.
 
+#include <atomic>
 #include <cstdint>
 #include <filesystem>
 
@@ -33,6 +34,11 @@ struct PegTransferOptions {
   bool soft_body_sleep = true;
   /// Writes the rs recording here (one row per manual-loop iteration); empty: none.
   std::filesystem::path rs_file;
+  /// Without an rs_file: writes peg_transfer_seed<N>_rs.csv into this folder (a batch's runs).
+  std::filesystem::path rs_folder;
+  /// When it turns true (a signal handler's flag) the run stops after the current iteration and
+  /// says so (`stopped`); a batch starts no further run.
+  const std::atomic<bool>* stop = nullptr;
   /// Simulated seconds after which the run stops, whatever is left undone.
   double time_limit = 240.0;
   /// Simulated seconds the pegs settle after the last release before they are judged.

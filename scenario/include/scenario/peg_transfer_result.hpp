@@ -42,6 +42,7 @@ struct PegTransferResult {
   bool stand_in = false;
   std::array<PegOutcome, 6> pegs;
   bool timed_out = false;  ///< the simulated time limit ended it
+  bool stopped = false;    ///< asked to stop (PegTransferOptions::stop) before it was done
   RunTiming timing;
   std::size_t iterations = 0;  ///< manual-loop iterations
   std::size_t grasps = 0;      ///< grasps the assist made
