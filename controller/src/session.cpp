@@ -57,6 +57,7 @@ bool ControllerSession::select(Mode mode) {
   }
   mode_ = mode;
   next_row_ = 0;
+  clamped_rows_ = 0;
   controller_.beginMode();
   if (mode == Mode::Manual || mode == Mode::ReplayInputs) controller_.readPose();
   if (mode == Mode::ReplayInputs) {  // the released controller waits a second after loading
@@ -121,6 +122,10 @@ void ControllerSession::report(const IterationReport& r) {
 
 void ControllerSession::finishReplay() {
   spdlog::info("{}: end of file after {} rows", modeName(mode_), next_row_);
+  if (clamped_rows_ > 0) {
+    spdlog::warn("{}: {} of {} rows were clamped to the joint limits", modeName(mode_),
+                 clamped_rows_, next_row_);
+  }
   mode_ = Mode::Idle;
   if (options_.end_after_replay) quit_ = true;
 }
@@ -168,7 +173,15 @@ bool ControllerSession::turn() {
       }
       record(std::nullopt);
       const ArmPair joints{rs.joints(next_row_, Arm::Left), rs.joints(next_row_, Arm::Right)};
-      report(controller_.replayJoints(joints, rs.time(next_row_) - rs.time(0)));
+      const IterationReport moved =
+          controller_.replayJoints(joints, rs.time(next_row_) - rs.time(0));
+      if (moved.clamped && clamped_rows_++ == 0) {
+        spdlog::warn(
+            "{}: data row {} asks for joints beyond the limits; clamped to them (the "
+            "count of such rows follows at the end)",
+            rs.path.string(), next_row_ + 1);
+      }
+      report(moved);
       ++next_row_;
       break;
     }

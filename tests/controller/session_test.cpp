@@ -111,6 +111,36 @@ controller::RsRecording replay(const std::vector<GamepadState>& inputs, bridge::
   return controller::readRs(session.recordings().front());
 }
 
+TEST(Replay, AJointReplayPastTheLimitsIsClampedAndSaysSo) {
+  test_support::TempDir dir;
+  const auto path = dir.path() / "far_rs.csv";
+  {
+    controller::RsWriter writer(path);
+    const auto home = raven::builtinProfile("physical").home;
+    for (int r = 0; r < 5; ++r) {
+      bridge::RavenStateSnapshot s;
+      s.time = 0.001 * r;
+      for (int j = 0; j < raven::kJointCount; ++j) {
+        s.jpos[static_cast<std::size_t>(j)] = static_cast<float>(home(j) * 180.0 / M_PI);
+        s.jpos[static_cast<std::size_t>(8 + j)] = static_cast<float>(home(j) * 180.0 / M_PI);
+      }
+      if (r >= 2) s.jpos[0] = static_cast<float>(10.0 * 180.0 / M_PI);  // 10 rad on a shoulder
+      writer.write(s);
+    }
+  }
+  auto twin = readyTwin();
+  controller::DualPlatformController control(
+      {{"twin", twin.get(), controller::CommandStyle::ServoJr}}, {});
+  controller::SessionOptions options;
+  options.out_dir = dir.path();
+  options.end_after_replay = true;
+  controller::ControllerSession session(control, {nullptr, {}, controller::readRs(path)}, options);
+  session.select(Mode::ReplayJoints);
+  while (session.turn()) {
+  }
+  EXPECT_EQ(session.clampedRows(), 3u);
+}
+
 TEST(Replay, TheSimulatedClockGivesTheSameRowsAsRealTime) {
   std::vector<GamepadState> inputs(60);
   for (std::size_t i = 0; i < inputs.size(); ++i) {

@@ -66,6 +66,8 @@ class ControllerSession {
 
   /// Files written so far.
   const std::vector<std::filesystem::path>& recordings() const { return files_; }
+  /// Rows of the last joint replay (O4) that a joint limit clamped (each is logged).
+  std::size_t clampedRows() const { return clamped_rows_; }
   /// Manual iterations skipped because the live pad was missing.
   std::size_t padlessTurns() const { return padless_turns_; }
 
@@ -79,6 +81,7 @@ class ControllerSession {
   SessionOptions options_;
   Mode mode_ = Mode::Idle;
   std::size_t next_row_ = 0;
+  std::size_t clamped_rows_ = 0;  ///< replayed rows a joint limit clamped
   std::vector<std::unique_ptr<RsWriter>> rs_;
   std::vector<std::unique_ptr<CfWriter>> cf_;  ///< per platform; null where it has no forces
   std::unique_ptr<CiWriter> ci_;
