@@ -1,4 +1,5 @@
 #include <set>
+#include <unordered_map>
 
 #include "adf_readers.hpp"
 
@@ -24,15 +25,19 @@ SoftBodySleep readSoftBodySleep(const YamlView& node, LoadContext& context) {
 
 namespace {
 
-/// The definitions of the identifiers listed under `section` (e.g. `bodies: [BODY a, BODY b]`).
-std::vector<std::pair<std::string, YamlView>> listedDefinitions(const YamlView& root,
-                                                                const char* section) {
+/// The definitions of the identifiers listed under `section` (e.g. `bodies: [BODY a, BODY b]`),
+/// looked up in the file's top-level mapping `definitions` (YamlView::children).
+std::vector<std::pair<std::string, YamlView>> listedDefinitions(
+    const YamlView& root, const std::unordered_map<std::string, YamlView>& definitions,
+    const char* section) {
   std::vector<std::pair<std::string, YamlView>> out;
   auto list = root.find(section);
   if (!list || list->isNull()) return out;
   for (const auto& entry : list->elements()) {
     const auto identifier = entry.asString();
-    auto definition = root.find(identifier);
+    const auto found = definitions.find(identifier);
+    const std::optional<YamlView> definition =
+        found == definitions.end() ? std::nullopt : std::optional<YamlView>(found->second);
     if (!definition) {
       entry.fail("'" + identifier + "' is listed in '" + section +
                  "' but not defined in this file");
@@ -153,20 +158,21 @@ ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) 
   const JointDefaults joint_defaults{root.getDouble("joint erp", 0.1),
                                      root.getDouble("joint cfm", 0.1)};
 
+  const auto definitions = root.children();
   std::set<std::string> names;
   auto claimName = [&names](const std::string& name, const YamlView& node) {
     if (!names.insert(name).second) node.fail("another body of this model is named '" + name + "'");
   };
-  for (const auto& [identifier, node] : listedDefinitions(root, "bodies")) {
+  for (const auto& [identifier, node] : listedDefinitions(root, definitions, "bodies")) {
     model.bodies.push_back(readBody(node, identifier, dirs, context));
     claimName(model.bodies.back().name, node);
   }
-  for (const auto& [identifier, node] : listedDefinitions(root, "soft bodies")) {
+  for (const auto& [identifier, node] : listedDefinitions(root, definitions, "soft bodies")) {
     model.soft_bodies.push_back(readSoftBody(node, identifier, dirs, context));
     claimName(model.soft_bodies.back().name, node);
   }
   std::vector<YamlView> joint_nodes;
-  for (const auto& [identifier, node] : listedDefinitions(root, "joints")) {
+  for (const auto& [identifier, node] : listedDefinitions(root, definitions, "joints")) {
     model.joints.push_back(readJoint(node, identifier, joint_defaults, context));
     joint_nodes.push_back(node);
   }
@@ -181,13 +187,13 @@ ModelSpec readAdfModel(const std::filesystem::path& file, LoadContext& context) 
                                                  "' is not a rigid body of this model; ignored");
     return false;
   };
-  for (const auto& [identifier, node] : listedDefinitions(root, "sensors")) {
+  for (const auto& [identifier, node] : listedDefinitions(root, definitions, "sensors")) {
     auto sensor = readSensor(node, identifier, context);
     if (parentKnown(sensor.parent, "sensor '" + sensor.name + "'", node)) {
       model.sensors.push_back(std::move(sensor));
     }
   }
-  for (const auto& [identifier, node] : listedDefinitions(root, "actuators")) {
+  for (const auto& [identifier, node] : listedDefinitions(root, definitions, "actuators")) {
     auto actuator = readActuator(node, identifier, context);
     if (parentKnown(actuator.parent, "actuator '" + actuator.name + "'", node)) {
       model.actuators.push_back(std::move(actuator));

@@ -118,6 +118,16 @@ std::vector<std::string> YamlView::keys() const {
   return out;
 }
 
+std::unordered_map<std::string, YamlView> YamlView::children() const {
+  if (!node_.IsMap()) fail("expected a mapping");
+  std::unordered_map<std::string, YamlView> out;
+  for (const auto& entry : node_) {
+    const auto key = entry.first.as<std::string>();
+    if (!out.contains(key)) out.emplace(key, YamlView(entry.second, file_, childPath(key)));
+  }
+  return out;
+}
+
 std::string YamlView::asString() const {
   if (!node_.IsScalar()) fail("expected a text value");
   return node_.Scalar();
