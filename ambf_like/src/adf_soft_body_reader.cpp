@@ -147,7 +147,7 @@ SoftMaterial readMaterial(const YamlView& node, const YamlView& material, LoadCo
   // wrong model.
   m.youngs_modulus = readMaterialValue(material, "young's modulus", 0.0, 1e9, "Pa");
   m.poissons_ratio = readMaterialValue(material, "poisson's ratio", 0.0, 0.5, "");
-  if (auto density = material.find("density")) {
+  if (material.has("density")) {
     m.density = readMaterialValue(material, "density", 0.0, 1e5, "kg/m^3");
     if (node.has("mass")) {
       node["mass"].fail("give a soft body's 'mass' or its material's 'density', not both");

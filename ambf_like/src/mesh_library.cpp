@@ -156,7 +156,6 @@ std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,
     try {
       Mesh volume = detail::readVtkTetMesh(file);
       dropUnreferencedVertices(volume);
-      volume.file = file;
       mesh = std::make_shared<const Mesh>(std::move(volume));
     } catch (const LoadError& error) {
       auto issues = error.issues();

@@ -82,30 +82,26 @@ std::unique_ptr<btSoftBody> volumeBody(const SoftBodySpec& spec, const Mesh& mes
   return body;
 }
 
-/// The body's volume: its tetrahedra's, at rest.
+/// The body's volume at rest: Bullet keeps each tetrahedron's as six times it (m_rv, the triple
+/// product of its edges).
 double volumeOf(const btSoftBody& body) {
-  double volume = 0.0;
-  for (int i = 0; i < body.m_tetras.size(); ++i) {
-    const btSoftBody::Tetra& t = body.m_tetras[i];
-    const btVector3 a = t.m_n[1]->m_x - t.m_n[0]->m_x, b = t.m_n[2]->m_x - t.m_n[0]->m_x,
-                    c = t.m_n[3]->m_x - t.m_n[0]->m_x;
-    volume += std::abs(a.dot(b.cross(c))) / 6.0;
-  }
-  return volume;
+  double six_times = 0.0;
+  for (int i = 0; i < body.m_tetras.size(); ++i) six_times += std::abs(body.m_tetras[i].m_rv);
+  return six_times / 6.0;
 }
 
 /// Each node carries a quarter of every tetrahedron it is a corner of (a lumped mass matrix),
 /// scaled to `mass` in all.
 void setLumpedMasses(btSoftBody& body, double mass) {
   std::vector<double> share(static_cast<std::size_t>(body.m_nodes.size()), 0.0);
+  double volume = 0.0;
   for (int i = 0; i < body.m_tetras.size(); ++i) {
     const btSoftBody::Tetra& t = body.m_tetras[i];
     for (const btSoftBody::Node* n : t.m_n) {
       share[static_cast<std::size_t>(n - &body.m_nodes[0])] += std::abs(t.m_rv) / 4.0;
     }
+    volume += std::abs(t.m_rv);
   }
-  double volume = 0.0;
-  for (double s : share) volume += s;
   for (int i = 0; i < body.m_nodes.size(); ++i) {
     body.setMass(i, mass * share[static_cast<std::size_t>(i)] / volume);
   }

@@ -152,10 +152,9 @@ int runPegTransfers(const Settings& s) {
 
   scenario::ProgressBar bar(stderr, single ? "transfers" : "runs");
   std::vector<scenario::PegTransferResult> results;
+  if (record) options.rs_folder = out;  // peg_transfer_seed<N>_rs.csv for every run
   if (single) {
     options.seed = seeds.front();
-    if (record)
-      options.rs_file = out / ("peg_transfer_seed" + std::to_string(options.seed) + "_rs.csv");
     options.progress = [&bar](const scenario::RunProgress& p) { bar.show(p); };
     std::unique_ptr<viewer::Viewer> view;
     if (s.gui || !s.snapshot.empty()) {
@@ -166,7 +165,6 @@ int runPegTransfers(const Settings& s) {
     results.push_back(scenario::runPegTransfer(options));
     jsonl << results.back().json().dump() << '\n' << std::flush;
   } else {
-    if (record) options.rs_folder = out;
     std::vector<scenario::PegTransferResult> finished;
     results = scenario::runBatch(
         options, seeds,

@@ -53,8 +53,7 @@ std::vector<PegTransferResult> runBatch(
   std::mutex report;
   std::exception_ptr error;
   auto worker = [&] {
-    auto stopping = [&] { return base.stop != nullptr && base.stop->load(); };
-    for (std::size_t i = next++; i < seeds.size() && !failed && !stopping(); i = next++) {
+    for (std::size_t i = next++; i < seeds.size() && !failed && !base.stopRequested(); i = next++) {
       try {
         PegTransferOptions options = base;
         options.seed = seeds[i];

@@ -82,7 +82,6 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     rs = std::make_unique<controller::RsWriter>(rs_file);
     cf = std::make_unique<controller::CfWriter>(controller::cfPathFor(rs_file));
   }
-  auto asked_to_stop = [&] { return options.stop != nullptr && options.stop->load(); };
 
   RunProgress progress{twin.now(), 0, layout.jobs.size()};
   auto show = [&](WorldMoment moment) {
@@ -90,7 +89,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   };
   show(WorldMoment::Start);
   auto done = [&] { return routines[0].done() && routines[1].done(); };
-  while (!done() && twin.now() < options.time_limit && !asked_to_stop()) {
+  while (!done() && twin.now() < options.time_limit && !options.stopRequested()) {
     const controller::ArmPair current = controller.commanded();
     const controller::ArmPair next{routines[0].next(current[0], world),
                                    routines[1].next(current[1], world)};
@@ -116,7 +115,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     if (options.progress) options.progress(progress);
     show(WorldMoment::Iteration);
   }
-  result.stopped = !done() && asked_to_stop();
+  result.stopped = !done() && options.stopRequested();
   result.timed_out = !done() && !result.stopped;
   const double settle_end = twin.now() + (result.stopped ? 0.0 : options.settle_time);
   while (twin.now() < settle_end) {

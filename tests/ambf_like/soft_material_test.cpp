@@ -102,6 +102,45 @@ struct Compression {
 constexpr double kSide = 0.01;
 constexpr double kMargin = 0.0001;
 
+/// ADF of the 10 mm material cube (cube.vtk) resting at the margin on z = 0, with `config`.
+std::string materialCube(const std::string& config) {
+  std::ostringstream adf;
+  adf << "BODY cube:\n  name: cube\n  mesh: cube.vtk\n  material: " << materialBlock()
+      << "\n  location: {position: {x: -0.005, y: -0.005, z: " << kMargin << "}}\n"
+      << "  collision margin: " << kMargin << "\n  " << config << "\n";
+  return adf.str();
+}
+
+/// A world of `step` whose soft bodies never sleep and whose contacts see millimetres.
+ambf_like::WorldOptions contactWorld(double step) {
+  ambf_like::WorldOptions options;
+  options.step_size = step;
+  options.soft_body_sleep = false;
+  options.sdf_voxel_size = 0.001;
+  return options;
+}
+
+/// A static body turned into Bullet's kinematic one: placed by the test every step, its
+/// velocity (for friction) from the motion between placements.
+class KinematicBody {
+ public:
+  explicit KinematicBody(btRigidBody& body) : body_(body), start_(body.getWorldTransform()) {
+    body_.setCollisionFlags(body_.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+    body_.setActivationState(DISABLE_DEACTIVATION);
+  }
+  /// Places it `offset` from where it was loaded.
+  void moveTo(const btVector3& offset) {
+    btTransform at = start_;
+    at.getOrigin() += offset;
+    body_.setWorldTransform(at);
+    if (body_.getMotionState() != nullptr) body_.getMotionState()->setWorldTransform(at);
+  }
+
+ private:
+  btRigidBody& body_;
+  btTransform start_;
+};
+
 /// The scene: the cube on the bottom plate, the press's underside touching its top.
 std::string compressionScene(const Solver& solver) {
   std::ostringstream adf;
@@ -113,38 +152,27 @@ std::string compressionScene(const Solver& solver) {
            "{x: 0.1, y: 0.1, z: 0.02}, location: {position: {x: 0, y: 0, z: "
         << z << "}}}\n";
   }
-  adf << "BODY cube:\n  name: cube\n  mesh: cube.vtk\n  material: " << materialBlock()
-      << "\n  location: {position: {x: -0.005, y: -0.005, z: " << kMargin << "}}\n"
-      << "  collision margin: " << kMargin << "\n  substeps: " << solver.substeps
-      << "\n  config: {kDF: 1, kDP: 0.02, piterations: " << solver.iterations << "}\n";
+  adf << materialCube(
+      "substeps: " + std::to_string(solver.substeps) +
+      "\n  config: {kDF: 1, kDP: 0.02, piterations: " + std::to_string(solver.iterations) + "}");
   return adf.str();
 }
 
 Compression compress(double strain, const Solver& solver) {
   TempDir dir;
   dir.write("cube.vtk", boxVtk(3, 3, 3, kSide / 3));
-  ambf_like::WorldOptions options;
-  options.step_size = solver.step;
-  options.soft_body_sleep = false;
-  options.sdf_voxel_size = 0.001;
-  auto sim = test_support::simulate({dir.write("scene.yaml", compressionScene(solver))}, options);
+  auto sim = test_support::simulate({dir.write("scene.yaml", compressionScene(solver))},
+                                    contactWorld(solver.step));
   auto& world = *sim->world;
   auto& cube = world.softBody("cube");
-  // The press as Bullet's kinematic body: placed every step, its velocity from the motion.
-  btRigidBody& press = world.body("press").bullet();
-  press.setCollisionFlags(press.getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
-  press.setActivationState(DISABLE_DEACTIVATION);
-  const btTransform start = press.getWorldTransform();
+  KinematicBody press(world.body("press").bullet());
   // Lowered by the strain over 0.5 s, held 0.3 s, then the force read over 50 ms.
   const auto ramp = static_cast<int>(0.5 / solver.step);
   const auto total = ramp + static_cast<int>(0.3 / solver.step);
   const int samples = static_cast<int>(0.05 / solver.step);
   Compression out;
   for (int i = 1; i <= total + samples; ++i) {
-    btTransform at = start;
-    at.getOrigin().setZ(start.getOrigin().z() - strain * kSide * std::min(1.0, 1.0 * i / ramp));
-    press.setWorldTransform(at);
-    if (press.getMotionState() != nullptr) press.getMotionState()->setWorldTransform(at);
+    press.moveTo(btVector3(0, 0, -strain * kSide * std::min(1.0, 1.0 * i / ramp)));
     world.step();
     if (i <= total) continue;
     for (const auto& f : world.softContactForces("press")) out.force -= f.normal_force.z();
@@ -344,31 +372,14 @@ Pinch pinch(double squeeze, double step) {
            "{x: 0.002, y: 0.02, z: 0.02}, location: {position: {x: "
         << x << ", y: 0, z: 0.012}}}\n";
   }
-  adf << "BODY cube:\n  name: cube\n  mesh: cube.vtk\n  material: " << materialBlock()
-      << "\n  location: {position: {x: -0.005, y: -0.005, z: " << kMargin << "}}\n"
-      << "  collision margin: " << kMargin << "\n  config: {kDF: 0.8, kDP: 0.02}\n";
-  ambf_like::WorldOptions options;
-  options.step_size = step;
-  options.soft_body_sleep = false;
-  options.sdf_voxel_size = 0.001;
-  auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, options);
+  adf << materialCube("config: {kDF: 0.8, kDP: 0.02}");
+  auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, contactWorld(step));
   auto& world = *sim->world;
   auto& cube = world.softBody("cube");
-  btRigidBody* jaws[2] = {&world.body("left").bullet(), &world.body("right").bullet()};
-  btTransform start[2];
-  for (int j = 0; j < 2; ++j) {
-    jaws[j]->setCollisionFlags(jaws[j]->getCollisionFlags() |
-                               btCollisionObject::CF_KINEMATIC_OBJECT);
-    jaws[j]->setActivationState(DISABLE_DEACTIVATION);
-    start[j] = jaws[j]->getWorldTransform();
-  }
+  KinematicBody left(world.body("left").bullet()), right(world.body("right").bullet());
   auto place = [&](double inward, double up) {
-    for (int j = 0; j < 2; ++j) {
-      btTransform at = start[j];
-      at.getOrigin() += btVector3(j == 0 ? inward : -inward, 0, up);
-      jaws[j]->setWorldTransform(at);
-      if (jaws[j]->getMotionState() != nullptr) jaws[j]->getMotionState()->setWorldTransform(at);
-    }
+    left.moveTo(btVector3(inward, 0, up));
+    right.moveTo(btVector3(-inward, 0, up));
   };
   const auto steps = [&](double seconds) { return static_cast<int>(seconds / step); };
   const double rest = cube.centerOfMass().z();

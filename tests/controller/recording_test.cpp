@@ -198,40 +198,36 @@ TEST(Recording, BadCiFilesNameTheRow) {
             std::string::npos);
 }
 
-/// The message readRs (for a replay) throws for an rs file of rows at `times` (s).
-std::string rsErrorAt(const test_support::TempDir& dir, const std::vector<double>& times) {
+/// Writes an rs file of rows at `times` (s) and returns its path.
+std::filesystem::path rsFileAt(const test_support::TempDir& dir, const std::vector<double>& times) {
   const auto path = dir.path() / "t_rs.csv";
-  {
-    controller::RsWriter w(path);
-    for (std::size_t i = 0; i < times.size(); ++i) w.write(sampleState(times[i], 1.0 + i));
-  }
+  controller::RsWriter w(path);
+  for (std::size_t i = 0; i < times.size(); ++i) w.write(sampleState(times[i], 1.0 + i));
+  return path;
+}
+
+/// The message readRs (for a replay) throws for `file` ("" when it reads it).
+std::string rsErrorOf(const std::filesystem::path& file) {
   try {
-    controller::readRs(path);
+    controller::readRs(file);
   } catch (const RecordingError& e) {
     return e.what();
   }
   return "";
 }
 
+std::string rsErrorAt(const test_support::TempDir& dir, const std::vector<double>& times) {
+  return rsErrorOf(rsFileAt(dir, times));
+}
+
 TEST(Recording, AnRsFileWithTwoColumnsOfOneNameIsRefused) {
   test_support::TempDir dir;
-  const auto path = dir.path() / "d_rs.csv";
-  {
-    controller::RsWriter w(path);
-    w.write(sampleState(10.0, 1.0));
-    w.write(sampleState(10.001, 2.0));
-  }
-  std::string text = test_support::readFile(path);
+  std::string text = test_support::readFile(rsFileAt(dir, {10.0, 10.001}));
   const auto jpos3 = text.find(",jpos3,");
   ASSERT_NE(jpos3, std::string::npos);
   text.replace(jpos3, 7, ",jpos2,");
-  const auto twice = dir.write("twice_rs.csv", text);
-  try {
-    controller::readRs(twice);
-    ADD_FAILURE() << "a second jpos2 column was taken";
-  } catch (const RecordingError& e) {
-    EXPECT_NE(std::string(e.what()).find("a second 'jpos2' column"), std::string::npos) << e.what();
-  }
+  const std::string error = rsErrorOf(dir.write("twice_rs.csv", text));
+  EXPECT_NE(error.find("a second 'jpos2' column"), std::string::npos) << error;
 }
 
 TEST(Recording, AReplayRefusesTimesThatDoNotMoveOnOrJumpAway) {

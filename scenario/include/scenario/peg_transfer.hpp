@@ -39,6 +39,8 @@ struct PegTransferOptions {
   /// When it turns true (a signal handler's flag) the run stops after the current iteration and
   /// says so (`stopped`); a batch starts no further run.
   const std::atomic<bool>* stop = nullptr;
+
+  bool stopRequested() const { return stop != nullptr && stop->load(); }
   /// Simulated seconds after which the run stops, whatever is left undone.
   double time_limit = 240.0;
   /// Simulated seconds the pegs settle after the last release before they are judged.
