@@ -62,8 +62,10 @@ CommandResult RavenCore::apply(const PlatformCommand& command) {
           },
       },
       command);
-  if (!result) {
-    log_.warn("refused " + describe(command) + ": " + result.note, time());
+  if (!result || !result.note.empty()) {
+    const std::string message =
+        (result ? "took " : "refused ") + describe(command) + ": " + result.note;
+    log_.warn(ThrottledLog::kindOf(message), message, time());
   }
   return result;
 }

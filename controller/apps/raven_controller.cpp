@@ -14,6 +14,7 @@
 
 #include "bridge/calibration_profile.hpp"
 #include "bridge/enable_and_home.hpp"
+#include "bridge/ros/master_watch.hpp"
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "bridge/twin_platform.hpp"
@@ -125,11 +126,13 @@ int run(const Settings& s) {
     inputs.joints = controller::readRs(s.replay_rs);
     spdlog::info("{}: {}", s.replay_rs, inputs.joints->variant.describe());
   }
+  std::optional<bridge::ros1::MasterWatch> master_watch;  // over ROS: survive a master restart
   if (s.platform != "twin" || s.twin_over_ros) {
     int argc = 1;
     char name[] = "raven_controller";
     char* argv[] = {name, nullptr};
     bridge::ros1::initRos(argc, argv, "raven_controller", /*ros_handles_sigint=*/false);
+    master_watch.emplace();
   }
   Platforms platforms = makePlatforms(s);
   makeReady(platforms.slots);

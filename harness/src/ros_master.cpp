@@ -29,30 +29,38 @@ bool acceptsConnections(int port) {
 
 }  // namespace
 
-RosMaster::RosMaster() {
-  const int port = freePort();
-  uri_ = "http://127.0.0.1:" + std::to_string(port);
+RosMaster::RosMaster() : port_(freePort()) {
+  uri_ = "http://127.0.0.1:" + std::to_string(port_);
   setenv("ROS_MASTER_URI", uri_.c_str(), 1);
   setenv("ROS_HOME", dir_.path().c_str(), 1);
   setenv("ROS_LOG_DIR", (dir_.path() / "log").c_str(), 1);
   setenv("ROS_IP", "127.0.0.1", 1);
-  // Debian's ROS Python modules are only visible to /usr/bin/python3.
-  process_ = std::make_unique<ChildProcess>(
-      std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p",
-                               std::to_string(port)},
-      dir_.path() / "rosmaster.log");
-  const auto deadline = Clock::now() + std::chrono::seconds(30);
-  while (!acceptsConnections(port)) {
-    if (Clock::now() > deadline) {
-      throw std::runtime_error("rosmaster did not come up on port " + std::to_string(port) +
-                               "; see " + (dir_.path() / "rosmaster.log").string());
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
+  start();
 }
 
 RosMaster::~RosMaster() {
   process_->stop();
+}
+
+void RosMaster::restart() {
+  process_->kill();
+  start();
+}
+
+void RosMaster::start() {
+  // Debian's ROS Python modules are only visible to /usr/bin/python3.
+  process_ = std::make_unique<ChildProcess>(
+      std::vector<std::string>{"/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p",
+                               std::to_string(port_)},
+      dir_.path() / "rosmaster.log");
+  const auto deadline = Clock::now() + std::chrono::seconds(30);
+  while (!acceptsConnections(port_)) {
+    if (Clock::now() > deadline) {
+      throw std::runtime_error("rosmaster did not come up on port " + std::to_string(port_) +
+                               "; see " + (dir_.path() / "rosmaster.log").string());
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
 }
 
 }  // namespace harness

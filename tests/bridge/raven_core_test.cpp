@@ -4,6 +4,10 @@
 #include "bridge/raven_core.hpp"
 
 #include <gtest/gtest.h>
+#include <spdlog/sinks/ostream_sink.h>
+#include <spdlog/spdlog.h>
+
+#include <sstream>
 
 #include "twin_fixtures.hpp"
 
@@ -40,6 +44,21 @@ struct Robot {
     ASSERT_TRUE(core.status().ready());
   }
   const ArmJoints& left() const { return core.setpoint(Arm::Left); }
+};
+
+/// What spdlog's default logger writes while it lives.
+class LogCapture {
+ public:
+  LogCapture() : previous_(spdlog::default_logger()) {
+    spdlog::set_default_logger(std::make_shared<spdlog::logger>(
+        "capture", std::make_shared<spdlog::sinks::ostream_sink_st>(text_)));
+  }
+  ~LogCapture() { spdlog::set_default_logger(previous_); }
+  std::string text() const { return text_.str(); }
+
+ private:
+  std::ostringstream text_;
+  std::shared_ptr<spdlog::logger> previous_;
 };
 
 ArmJoints jointStep(int joint, double value) {
@@ -184,10 +203,13 @@ TEST(RavenCore, JointLimitsHoldOnEveryCommandPath) {
     ASSERT_LE(robot.left()(raven::kInsertion), limits.high(raven::kInsertion));
   }
   EXPECT_EQ(robot.left()(raven::kInsertion), limits.high(raven::kInsertion));
-  // A move far outside every limit ends on the limits.
+  // A move far outside every limit ends on the limits, and the log says so.
+  LogCapture log;
   auto result = robot.core.apply(bridge::MoveJp{Arm::Left, ArmJoints::Constant(-100.0)});
   ASSERT_TRUE(result);
   EXPECT_NE(result.note.find("clamped shoulder"), std::string::npos) << result.note;
+  EXPECT_NE(log.text().find("took move_jp left: clamped shoulder"), std::string::npos)
+      << log.text();
   for (int i = 0; i < 20000 && robot.core.status().is_busy; ++i) {
     robot.cycle();
     ASSERT_TRUE((robot.left().array() >= limits.low.array()).all());

@@ -15,6 +15,12 @@ std::string TwinNode::stopAndReadLog() {
   return test_support::readFile(dir_.path() / "node.log");
 }
 
+sensor_msgs::JointState jointCommand(std::vector<double> position) {
+  sensor_msgs::JointState m;
+  m.position = std::move(position);
+  return m;
+}
+
 std::string freshNamespace() {
   static int count = 0;
   return "/t" + std::to_string(++count);
@@ -25,8 +31,11 @@ RawPeer::RawPeer(const std::string& ns) : node_(ns) {
   step_ = node_.advertise<raven_twin::Step>(std::string(bridge::ros1::kStepTopic), 10);
   subscribers_.push_back(node_.subscribe<raven_twin::StepDone>(
       std::string(bridge::ros1::kStepDoneTopic), 100,
-      [this](const raven_twin::StepDone::ConstPtr& m) { done_ = m->seq; }, {},
-      bridge::ros1::lowLatency()));
+      [this](const raven_twin::StepDone::ConstPtr& m) {
+        done_ = m->seq;
+        step_refused_ = m->refused;
+      },
+      {}, bridge::ros1::lowLatency()));
   subscribers_.push_back(node_.subscribe<std_msgs::String>(
       std::string(bridge::ros1::kRefusalTopic), 100,
       [this](const std_msgs::String::ConstPtr& m) { refusals_.push_back(m->data); }, {},

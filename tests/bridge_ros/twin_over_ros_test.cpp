@@ -30,28 +30,8 @@ using bridge::StateCommand;
 using bridge::ros1::CommandTopic;
 using bridge::ros1::RavenRosClient;
 
-/// A twin node in a fresh namespace and a client of it.
-struct Rig {
-  explicit Rig(std::vector<std::string> node_args, bool lock_step = true,
-               bridge::ros1::RosClientOptions options = {})
-      : node(ros_test::freshNamespace(), withLockStep(std::move(node_args), lock_step)),
-        client(clientOptions(options, node.ns(), lock_step)) {}
-
-  static std::vector<std::string> withLockStep(std::vector<std::string> args, bool lock_step) {
-    if (lock_step) args.push_back("--lock-step");
-    return args;
-  }
-  static bridge::ros1::RosClientOptions clientOptions(bridge::ros1::RosClientOptions o,
-                                                      const std::string& ns, bool lock_step) {
-    o.robot_namespace = ns;
-    o.lock_step = lock_step;
-    return o;
-  }
-
-  ros_test::TwinNode node;
-  RavenRosClient client;
-};
-
+using ros_test::jointCommand;
+using ros_test::Rig;
 using test_support::advanceUntil;
 using test_support::makeReady;
 
@@ -297,12 +277,6 @@ TEST(TwinOverRos, ThePhysicalStandInGivesTheSameTrajectoryInProcessAndOverRos) {
   bridge::TwinOptions options;
   options.stand_in = bridge::CableActuationParams::physicalStandIn();
   expectSameTrajectory({"--stand-in"}, options);
-}
-
-sensor_msgs::JointState jointCommand(std::vector<double> position) {
-  sensor_msgs::JointState m;
-  m.position = std::move(position);
-  return m;
 }
 
 TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {

@@ -9,6 +9,7 @@
 
 #include "bridge/calibration_profile.hpp"
 #include "bridge/ros/ambf_object_topics.hpp"
+#include "bridge/ros/master_watch.hpp"
 #include "bridge/ros/raven_ros_server.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "bridge/twin_platform.hpp"
@@ -45,6 +46,10 @@ int main(int argc, char** argv) {
   bool no_arm_swap = false;
   app.add_flag("--no-arm-swap", no_arm_swap,
                "publish each arm on its own measured_js (upstream swaps them: arm1 = green)");
+  app.add_option("--command-wait", server.command_wait,
+                 "lock-step: wall seconds a step waits for the commands it names before it is "
+                 "refused")
+      ->check(CLI::PositiveNumber);
   double duration = 0.0;
   app.add_option("--duration", duration,
                  "stop after this much platform time (s); 0: run until "
@@ -69,6 +74,7 @@ int main(int argc, char** argv) {
     bridge::ros1::AmbfObjectTopics objects(platform.world());
     server.after_cycle = [&] { objects.update(platform.now()); };
     bridge::ros1::RavenRosServer ros_server(platform, "", server);
+    const bridge::ros1::MasterWatch master_watch;  // registers again with a restarted master
     spdlog::info("raven_twin: {} on {} ({}, {} clock, arm swap {})",
                  stand_in ? "the PHYSICAL STAND-IN" : "the twin", bridge::ros1::masterUri(),
                  twin.profile, server.lock_step ? "lock-step simulated" : "wall",

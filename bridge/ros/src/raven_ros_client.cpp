@@ -9,6 +9,7 @@
 #include <ros/ros.h>
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -123,7 +124,7 @@ class RavenRosClient::Impl {
   std::array<std::optional<LocalMove>, 2> moves_;
   std::vector<std::uint8_t> command_order_;  ///< lock-step: topics sent on since the last step
   std::uint64_t step_seq_ = 0;
-  std::optional<std::pair<std::uint64_t, ::ros::Time>> step_done_;
+  std::optional<raven_twin::StepDone> step_done_;  ///< lock-step: the node's latest answer
   /// The latest stamp of measured_js x2, setpoint_js x2, operating_state, ravenstate (unset
   /// until the first message).
   std::array<std::optional<::ros::Time>, 6> state_stamps_;
@@ -320,10 +321,7 @@ void RavenRosClient::Impl::subscribe() {
     c.step = c.node.advertise<raven_twin::Step>(std::string(kStepTopic), 100);
     c.subscribers.push_back(c.node.subscribe<raven_twin::StepDone>(
         std::string(kStepDoneTopic), 100,
-        [this](const raven_twin::StepDone::ConstPtr& m) {
-          step_done_ = std::make_pair(m->seq, m->header.stamp);
-        },
-        {}, lowLatency()));
+        [this](const raven_twin::StepDone::ConstPtr& m) { step_done_ = *m; }, {}, lowLatency()));
   }
 }
 
@@ -489,7 +487,8 @@ void RavenRosClient::Impl::advance(double seconds) {
       streamMoves(sim_time_ + options_.limits.cycle);
       stepLockStep(1);
     } else {
-      stepLockStep(static_cast<std::uint32_t>(target - cycles_stepped_));
+      stepLockStep(static_cast<std::uint32_t>(
+          std::min<long long>(target - cycles_stepped_, kMostCyclesPerStep)));
     }
   }
 }
@@ -523,7 +522,11 @@ void RavenRosClient::Impl::stepLockStep(std::uint32_t cycles) {
   // The node needs some wall time per cycle; give it at least real time on top of the timeout.
   const double allowed = options_.robot_timeout + cycles * options_.limits.cycle;
   const auto started = Clock::now();
-  while (!(step_done_ && step_done_->first == step.seq && statesAt(step_done_->second))) {
+  auto answered = [&] {
+    return step_done_ && step_done_->seq == step.seq &&
+           (!step_done_->refused.empty() || statesAt(step_done_->header.stamp));
+  };
+  while (!answered()) {
     if (secondsSince(started) > allowed) {
       lose("no answer to lock-step step " + std::to_string(step.seq) + " within " +
            std::to_string(allowed) + " s (the twin node is gone or stuck)");
@@ -531,7 +534,12 @@ void RavenRosClient::Impl::stepLockStep(std::uint32_t cycles) {
     }
     c.queue.callAvailable(::ros::WallDuration(0.005));
   }
-  sim_time_ = step_done_->second.toSec();
+  if (!step_done_->refused.empty()) {
+    lose("the twin node refused lock-step step " + std::to_string(step.seq) + ": " +
+         step_done_->refused);
+    return;
+  }
+  sim_time_ = step_done_->header.stamp.toSec();
 }
 
 void RavenRosClient::Impl::waitWall(double until) {

@@ -11,12 +11,14 @@
 
 #include <array>
 #include <deque>
+#include <optional>
 #include <vector>
 
 #include "bridge/ros/command_topics.hpp"
 #include "bridge/ros/low_latency.hpp"
 #include "bridge/ros/ros_conversions.hpp"
 #include "bridge/throttled_log.hpp"
+#include "common/printable.hpp"
 
 namespace bridge::ros1 {
 
@@ -39,8 +41,9 @@ IncomingCommand fromParsed(const Parsed<Value>& parsed, Arm arm) {
 
 IncomingCommand stateCommandFrom(const crtk_msgs::StringStamped& message) {
   if (auto command = parseStateCommand(message.string)) return {{*command}, {}};
+  constexpr std::size_t kLongestEcho = 40;
   return {{},
-          "unknown state command '" + message.string +
+          "unknown state command '" + common::printable(message.string, kLongestEcho) +
               "' (expected enable, disable, pause, resume, home or unhome)"};
 }
 
@@ -79,6 +82,11 @@ class RavenRosServer::Impl {
 
  private:
   using StepMessage = raven_twin::Step;
+  /// A step as it arrived, and when (the command wait runs from then).
+  struct PendingStep {
+    StepMessage step;
+    ::ros::WallTime arrived;
+  };
 
   void subscribeCommands();
   template <typename Message, typename Parse>
@@ -88,8 +96,11 @@ class RavenRosServer::Impl {
   void refuse(CommandTopic topic, const std::string& why);
   void runCycle();
   void publishState();
-  bool stepReady(const StepMessage& step) const;
+  std::string missingCommands(const StepMessage& step) const;
+  std::optional<std::string> stepRefusal(const PendingStep& pending) const;
+  void refuseStep(const StepMessage& step, const std::string& why);
   void runStep(const StepMessage& step);
+  void answerStep(const StepMessage& step, const std::string& refused);
   ::ros::Time stamp() const;
 
   RavenPlatform& platform_;
@@ -99,7 +110,7 @@ class RavenRosServer::Impl {
   std::vector<::ros::Subscriber> subscribers_;
   Publishers publishers_;
   std::array<std::deque<IncomingCommand>, kCommandTopicCount> pending_;
-  std::deque<StepMessage> steps_;
+  std::deque<PendingStep> steps_;
   std::uint64_t cycles_published_ = 0;
   ThrottledLog log_;
 };
@@ -135,7 +146,10 @@ RavenRosServer::Impl::Impl(RavenPlatform& platform, const std::string& ros_names
     p.step_done = node_.advertise<raven_twin::StepDone>(std::string(kStepDoneTopic), 100);
     subscribers_.push_back(node_.subscribe<StepMessage>(
         std::string(kStepTopic), 100,
-        [this](const StepMessage::ConstPtr& step) { steps_.push_back(*step); }, {}, lowLatency()));
+        [this](const StepMessage::ConstPtr& step) {
+          steps_.push_back({*step, ::ros::WallTime::now()});
+        },
+        {}, lowLatency()));
   }
   for (Arm arm : raven::kArms) {
     const auto a = static_cast<std::size_t>(raven::index(arm));
@@ -214,8 +228,8 @@ void RavenRosServer::Impl::received(CommandTopic topic, IncomingCommand incoming
 
 void RavenRosServer::Impl::apply(CommandTopic topic, const IncomingCommand& incoming) {
   if (!incoming.error.empty()) {
-    log_.warn("refused a message on " + std::string(topicName(topic)) + ": " + incoming.error,
-              platform_.now());
+    const std::string where = "refused a message on " + std::string(topicName(topic));
+    log_.warn(where, where + ": " + incoming.error, platform_.now());
     refuse(topic, incoming.error);
     return;
   }
@@ -242,40 +256,87 @@ void RavenRosServer::Impl::spinOnce(double wait) {
     return;
   }
   queue_.callAvailable(::ros::WallDuration(wait));
-  while (!steps_.empty() && stepReady(steps_.front())) {
-    runStep(steps_.front());
+  while (!steps_.empty()) {
+    const PendingStep& front = steps_.front();
+    if (const auto why = stepRefusal(front)) {
+      refuseStep(front.step, *why);
+    } else if (missingCommands(front.step).empty()) {
+      runStep(front.step);
+    } else {
+      break;  // its commands may still be on their way
+    }
     steps_.pop_front();
   }
 }
 
-bool RavenRosServer::Impl::stepReady(const StepMessage& step) const {
+std::string RavenRosServer::Impl::missingCommands(const StepMessage& step) const {
   std::array<std::size_t, kCommandTopicCount> needed{};
   for (std::uint8_t id : step.command_order) {
     if (id < kCommandTopicCount) ++needed[id];
   }
-  for (std::size_t i = 0; i < kCommandTopicCount; ++i) {
-    if (pending_[i].size() < needed[i]) return false;
+  std::string missing;
+  for (CommandTopic topic : allCommandTopics()) {
+    const auto i = static_cast<std::size_t>(topic);
+    if (pending_[i].size() >= needed[i]) continue;
+    missing += (missing.empty() ? "" : ", ") + std::to_string(needed[i] - pending_[i].size()) +
+               " on " + std::string(topicName(topic));
   }
-  return true;
+  return missing;
+}
+
+std::optional<std::string> RavenRosServer::Impl::stepRefusal(const PendingStep& pending) const {
+  const StepMessage& step = pending.step;
+  if (step.cycles > kMostCyclesPerStep) {
+    return "it asks for " + std::to_string(step.cycles) + " cycles, more than the " +
+           std::to_string(kMostCyclesPerStep) + " one step may run";
+  }
+  for (std::uint8_t id : step.command_order) {
+    if (!commandTopicFromId(id)) {
+      return "it names command topic id " + std::to_string(id) + ", which does not exist";
+    }
+  }
+  const double waited = (::ros::WallTime::now() - pending.arrived).toSec();
+  if (waited < options_.command_wait) return std::nullopt;
+  const std::string missing = missingCommands(step);
+  if (missing.empty()) return std::nullopt;
+  return "the commands it names did not all arrive within " +
+         std::to_string(options_.command_wait) + " s (missing " + missing + ")";
+}
+
+void RavenRosServer::Impl::refuseStep(const StepMessage& step, const std::string& why) {
+  // The commands of it that did arrive go too: a later step must not take them for its own.
+  std::array<std::size_t, kCommandTopicCount> dropped{};
+  for (std::uint8_t id : step.command_order) {
+    if (id >= kCommandTopicCount || dropped[id] >= pending_[id].size()) continue;
+    ++dropped[id];
+  }
+  for (std::size_t i = 0; i < kCommandTopicCount; ++i) {
+    pending_[i].erase(pending_[i].begin(), pending_[i].begin() + static_cast<long>(dropped[i]));
+  }
+  log_.warn("refused a lock-step step",
+            "refused lock-step step " + std::to_string(step.seq) + ": " + why, platform_.now());
+  std_msgs::String message;
+  message.data = std::string(kStepTopic) + ": step " + std::to_string(step.seq) + ": " + why;
+  publishers_.refusals.publish(message);
+  answerStep(step, why);
 }
 
 void RavenRosServer::Impl::runStep(const StepMessage& step) {
   for (std::uint8_t id : step.command_order) {
-    const auto topic = commandTopicFromId(id);
-    if (!topic) {
-      spdlog::error("step {} names command topic id {}, which does not exist; ignored", step.seq,
-                    id);
-      continue;
-    }
     auto& queue = pending_[id];
-    apply(*topic, queue.front());
+    apply(*commandTopicFromId(id), queue.front());
     queue.pop_front();
   }
-  for (std::uint32_t c = 0; c < step.cycles; ++c) runCycle();
+  for (std::uint32_t c = 0; c < step.cycles && ::ros::ok(); ++c) runCycle();
   if (step.cycles == 0) publishState();
+  answerStep(step, {});
+}
+
+void RavenRosServer::Impl::answerStep(const StepMessage& step, const std::string& refused) {
   raven_twin::StepDone done;
   done.header.stamp = stamp();
   done.seq = step.seq;
+  done.refused = refused;
   publishers_.step_done.publish(done);
 }
 

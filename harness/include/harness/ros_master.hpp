@@ -18,9 +18,15 @@ class RosMaster {
   ~RosMaster();
   const std::string& uri() const { return uri_; }
   const std::filesystem::path& home() const { return dir_.path(); }
+  /// Kills the master (SIGKILL, as a crash would) and starts a new one on the same port, which
+  /// knows nothing of what the old one had registered.
+  void restart();
 
  private:
+  void start();
+
   TempDir dir_;
+  int port_;
   std::string uri_;
   std::unique_ptr<ChildProcess> process_;
 };

@@ -61,6 +61,9 @@ raven::Arm measuredJsSource(raven::Arm topic_arm, bool arm_swap);
 /// Lock-step protocol topics (this project's twin node only).
 inline constexpr std::string_view kStepTopic = "raven_twin/step";
 inline constexpr std::string_view kStepDoneTopic = "raven_twin/step_done";
+/// The most 1 ms cycles one step may ask for (a minute of robot time): the node refuses more,
+/// so no single request holds it for long; a client splits longer advances into several steps.
+inline constexpr std::uint32_t kMostCyclesPerStep = 60'000;
 /// Where the twin node says why it refused a command (std_msgs/String).
 inline constexpr std::string_view kRefusalTopic = "raven_twin/refusals";
 

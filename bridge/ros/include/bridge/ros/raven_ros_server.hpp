@@ -20,6 +20,11 @@ struct RosServerOptions {
   /// Reproduce upstream's swap: the green arm's joints on arm1/measured_js, the gold arm's on
   /// arm2/measured_js.
   bool arm_swap = true;
+  /// Lock-step: how long (wall seconds) a step waits for the commands it names. ROS delivers
+  /// each topic in order but not the topics among themselves, so a command sent just before its
+  /// step may arrive just after it; one that has not come within this wait never will, and the
+  /// step is refused (answered with the reason) instead of holding every later step.
+  double command_wait = 1.0;
   /// Called after every 1 ms cycle, on the serving thread (the twin node serves its world's
   /// sensors and actuators from here).
   std::function<void()> after_cycle;

@@ -6,7 +6,8 @@
 namespace bridge::ros1 {
 
 /// ros::init: takes ROS remappings (name:=value, __ns:=...) out of argv. Call once, first.
-/// `ros_handles_sigint` false: the program keeps its own Ctrl-C handling.
+/// `ros_handles_sigint` true: SIGINT and SIGTERM both shut ROS down (rosOk() turns false); false:
+/// the program keeps its own handling of both.
 void initRos(int& argc, char** argv, const std::string& node_name, bool ros_handles_sigint = true);
 /// False once ROS is shutting down (Ctrl-C, rosnode kill).
 bool rosOk();
