@@ -1,5 +1,5 @@
 // The raven_controller program's keyboard thread, driven through a pseudo-terminal: mode keys,
-// recording start and stop, quitting.
+// recording start and stop, quitting; and a replay stopped by SIGTERM.
 
 #include <gtest/gtest.h>
 #include <poll.h>
@@ -8,9 +8,11 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 
 #include "controller/recording_io.hpp"
+#include "raven/platform_profile.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -36,6 +38,7 @@ class TerminalSession {
     close(master_);
   }
   void type(char key) { ASSERT_EQ(write(master_, &key, 1), 1); }
+  void signal(int number) { ASSERT_EQ(kill(pid_, number), 0); }
   /// Reads output until `text` appears; false after `seconds` of wall time (or end of output).
   bool waitFor(const std::string& text, double seconds = 30.0) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
@@ -92,6 +95,48 @@ TEST(Keyboard, ModeKeysRecordingAndQuitReachTheCommandThread) {
     EXPECT_GT(controller::readRs(entry.path()).rows.size(), 0u);
   }
   EXPECT_EQ(rs_files, 1u);
+}
+
+/// The one rs file in `folder`.
+std::filesystem::path onlyRsFile(const std::filesystem::path& folder) {
+  std::vector<std::filesystem::path> found;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().string().find("_rs.csv") != std::string::npos) found.push_back(entry.path());
+  }
+  EXPECT_EQ(found.size(), 1u) << folder;
+  return found.empty() ? std::filesystem::path() : found.front();
+}
+
+TEST(Keyboard, SigtermStopsAReplayCleanlyWithItsRecordingOnDisk) {
+  // Six seconds of a slow roll about home, 10 ms a row, to replay on the wall clock.
+  test_support::TempDir first;
+  const auto roll = first.path() / "roll_rs.csv";
+  constexpr std::size_t kRows = 600;
+  {
+    controller::RsWriter writer(roll);
+    const auto home = raven::builtinProfile("physical").home;
+    for (std::size_t r = 0; r < kRows; ++r) {
+      bridge::RavenStateSnapshot s;
+      s.time = 0.01 * static_cast<double>(r);
+      for (int j = 0; j < raven::kJointCount; ++j) {
+        const double q = home(j) + (j == raven::kRoll ? 0.2 * std::sin(s.time) : 0.0);
+        s.jpos[static_cast<std::size_t>(j)] = static_cast<float>(q * 180.0 / M_PI);
+        s.jpos[static_cast<std::size_t>(8 + j)] = static_cast<float>(home(j) * 180.0 / M_PI);
+      }
+      writer.write(s);
+    }
+  }
+  // Its replay, recorded too, stopped by SIGTERM as soon as it has started.
+  test_support::TempDir second;
+  TerminalSession replay({RAVEN_CONTROLLER, "--no-gamepad", "--no-keyboard", "--replay-rs",
+                          roll.string(), "--record", "replay", "--out", second.path().string()});
+  ASSERT_TRUE(replay.waitFor("mode O4")) << replay.output();
+  replay.signal(SIGTERM);
+  ASSERT_TRUE(replay.waitFor("done:", 10.0)) << replay.output();
+  EXPECT_EQ(replay.exitCode(), 0) << replay.output();
+  const auto rows = controller::readRs(onlyRsFile(second.path())).rows.size();
+  EXPECT_GT(rows, 0u);
+  EXPECT_LT(rows, kRows) << "the replay ran to its end: the signal did not stop it";
 }
 
 }  // namespace
