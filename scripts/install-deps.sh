@@ -14,6 +14,7 @@ packages=(
   python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg python3-genpy
   python3-matplotlib python3-numpy
   libglfw3-dev libgl-dev libgl1-mesa-dri libstb-dev xvfb xauth
+  clang libfuzzer-14-dev
 )
 
 missing=()

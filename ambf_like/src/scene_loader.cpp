@@ -1,5 +1,6 @@
 #include "ambf_like/scene_loader.hpp"
 
+#include <map>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -49,6 +50,59 @@ void resolveQualifiedParents(std::vector<ModelSpec>& models, std::size_t first,
   }
 }
 
+/// A name with the smallest count appended (1, 2, ...) that no name in `taken` has: AMBF's
+/// remapping of a name another model already uses.
+std::string nonCollidingName(const std::string& name_space, const std::string& name,
+                             const std::set<std::string>& taken) {
+  for (int count = 1;; ++count) {
+    const std::string candidate = name + std::to_string(count);
+    if (taken.count(name_space + candidate) == 0) return candidate;
+  }
+}
+
+/// Bodies, soft bodies and joints of models[first...] whose qualified names a model before
+/// them has are renamed as AMBF renames them (a count appended: loading a model twice gives
+/// `box` and `box1`), with a warning; references within the model follow.
+void remapDuplicateNames(std::vector<ModelSpec>& models, std::size_t first, LoadContext& context) {
+  std::set<std::string> bodies, soft_bodies, joints;
+  auto remap = [&](ModelSpec& model, auto& specs, std::set<std::string>& taken, const char* what,
+                   std::map<std::string, std::string>* renamed) {
+    for (auto& spec : specs) {
+      if (taken.count(model.name_space + spec.name) != 0) {
+        const std::string name = nonCollidingName(model.name_space, spec.name, taken);
+        context.warn(spec.where, std::string(what) + " '" + model.name_space + spec.name +
+                                     "' has the name of one loaded before it: renamed '" + name +
+                                     "', as AMBF renames it");
+        if (renamed) (*renamed)[spec.name] = name;
+        spec.name = name;
+      }
+      taken.insert(model.name_space + spec.name);
+    }
+  };
+  for (std::size_t m = 0; m < models.size(); ++m) {
+    ModelSpec& model = models[m];
+    if (m < first) {
+      for (const auto& b : model.bodies) bodies.insert(model.name_space + b.name);
+      for (const auto& b : model.soft_bodies) soft_bodies.insert(model.name_space + b.name);
+      for (const auto& j : model.joints) joints.insert(model.name_space + j.name);
+      continue;
+    }
+    std::map<std::string, std::string> renamed;
+    remap(model, model.bodies, bodies, "body", &renamed);
+    remap(model, model.soft_bodies, soft_bodies, "soft body", nullptr);
+    remap(model, model.joints, joints, "joint", nullptr);
+    auto follow = [&](std::string& reference) {
+      if (auto it = renamed.find(reference); it != renamed.end()) reference = it->second;
+    };
+    for (auto& joint : model.joints) {
+      follow(joint.parent);
+      follow(joint.child);
+    }
+    for (auto& sensor : model.sensors) follow(sensor.parent);
+    for (auto& actuator : model.actuators) follow(actuator.parent);
+  }
+}
+
 LoadedScene assemble(const std::vector<std::filesystem::path>& model_files,
                      const std::optional<std::filesystem::path>& world_file, LoadContext& context) {
   LoadedScene scene;
@@ -56,6 +110,7 @@ LoadedScene assemble(const std::vector<std::filesystem::path>& model_files,
   if (world_file) scene.spec.world = detail::readWorld(*world_file, context, environment);
   if (environment) scene.spec.models.push_back(readModel(*environment, context));
   for (const auto& file : model_files) scene.spec.models.push_back(readModel(file, context));
+  remapDuplicateNames(scene.spec.models, 0, context);
   resolveQualifiedParents(scene.spec.models, 0, context);
   context.throwIfDeferred();
   if (scene.spec.models.empty()) {
@@ -151,6 +206,7 @@ std::vector<LoadIssue> appendModelFiles(SceneSpec& scene,
   const std::size_t first = scene.models.size();
   std::vector<ModelSpec> models = scene.models;
   for (const auto& file : model_files) models.push_back(readModel(file, context));
+  remapDuplicateNames(models, first, context);
   resolveQualifiedParents(models, first, context);
   context.throwIfDeferred();
   scene.models = std::move(models);

@@ -271,3 +271,42 @@ TEST(AdfSemantics, ChildOffsetSetsTheZeroAndAnglesFollowTheRightHandRule) {
 }
 
 }  // namespace
+
+TEST(AdfSemantics, AModelLoadedTwiceIsRenamedAsAmbfRenamesIt) {
+  TempDir dir;
+  const auto file = dir.write("pair.yaml", R"(bodies: [BODY base, BODY box]
+joints: [JOINT hinge]
+namespace: /ambf/env/pair/
+BODY base:
+  name: base
+  mass: 0
+  collision shape: BOX
+  collision geometry: {x: 0.1, y: 0.1, z: 0.1}
+BODY box:
+  name: box
+  mass: 1
+  collision shape: BOX
+  collision geometry: {x: 0.1, y: 0.1, z: 0.1}
+JOINT hinge:
+  name: hinge
+  parent: BODY base
+  child: BODY box
+  type: revolute
+)");
+  const auto scene = ambf_like::loadModelFiles({file, file});
+  ASSERT_EQ(scene.spec.models.size(), 2u);
+  const auto& copy = scene.spec.models[1];
+  EXPECT_EQ(copy.bodies[0].name, "base1");
+  EXPECT_EQ(copy.bodies[1].name, "box1");
+  EXPECT_EQ(copy.joints[0].name, "hinge1");
+  EXPECT_EQ(copy.joints[0].parent, "base1");
+  EXPECT_EQ(copy.joints[0].child, "box1");
+  EXPECT_EQ(scene.spec.models[0].bodies[1].name, "box") << "the first keeps its names";
+  ASSERT_EQ(scene.warnings.size(), 3u);
+  EXPECT_THAT(scene.warnings[1].str(),
+              testing::HasSubstr("pair.yaml:10: BODY box: body '/ambf/env/pair/box' has the name "
+                                 "of one loaded before it: renamed 'box1'"));
+  // A third copy counts on.
+  const auto three = ambf_like::loadModelFiles({file, file, file});
+  EXPECT_EQ(three.spec.models[2].bodies[1].name, "box2");
+}

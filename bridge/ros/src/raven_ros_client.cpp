@@ -288,8 +288,9 @@ void RavenRosClient::Impl::subscribe() {
           state_stamps_[kSetpointStamp + slot(topic_arm)] = m->header.stamp;
         },
         {}, lowLatency()));
-    for (auto [name, target] :
+    for (const auto& [name, poses] :
          {std::pair{"measured_cp", &measured_cp_}, {"setpoint_cp", &setpoint_cp_}}) {
+      auto* target = poses;  // a lambda may not capture a structured binding before C++20
       c.subscribers.push_back(c.node.subscribe<geometry_msgs::TransformStamped>(
           ns + name, 10,
           [topic_arm, target, stampOf](const geometry_msgs::TransformStamped::ConstPtr& m) {

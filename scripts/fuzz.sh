@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer target for a bounded time, then replays the saved regression inputs.
+# Usage: scripts/fuzz.sh [build dir with RAVEN_FUZZ=ON] [seconds per target] [targets...]
+# Seeds: the committed corpus (fuzz/corpus/<target>), the project's own files and, when present,
+# ../shared/data (copied to a temporary folder, never into the tree). A finding stops the run
+# with its input's path: once fixed, commit that input under fuzz/regressions/<target>/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build-sanitize}
+seconds=${2:-30}
+shift $(($# > 2 ? 2 : $#))
+targets=("$@")
+[ ${#targets[@]} -gt 0 ] || targets=(adf urdf mesh recordings ros_messages)
+export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan-suppressions.txt"
+shared=../shared/data
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# seed TARGET PREFIX-BYTE(or "") FILES...: copies files into TARGET's seed folder, at most 64 KiB
+# each, behind a first byte that selects the reader where the target has several.
+seed() {
+  local target=$1 prefix=$2
+  shift 2
+  mkdir -p "$work/$target-seeds"
+  local file n=0
+  for file in "$@"; do
+    [ -f "$file" ] || continue
+    n=$((n + 1))
+    { [ -z "$prefix" ] || printf "\\x$prefix"; head -c 65536 "$file"; } \
+      > "$work/$target-seeds/$n-$(basename "$file")"
+  done
+}
+[ -d "$shared" ] || echo "fuzz: $shared is absent; seeding from the project's own files only"
+project_files() { find raven_description ambf_like/examples tests/data -type f -iname "$1"; }
+shared_files() { [ -d "$shared" ] && find "$shared" -type f -iname "$1" -size -256k || true; }
+
+mapfile -t adf < <(project_files '*.yaml'; shared_files '*.yaml')
+seed adf "" "${adf[@]}"
+seed urdf "" $(project_files '*.urdf') $(shared_files '*.urdf')
+seed mesh 00 $(project_files '*.stl') $(shared_files '*.stl')
+seed mesh 01 $(project_files '*.obj') $(shared_files '*.obj')
+seed mesh 02 $(project_files '*.dae') $(shared_files '*.dae')
+seed mesh 03 $(project_files '*.vtk') $(shared_files '*.vtk')
+# The shared recordings are large: their first 64 KiB (cut mid-row, a seed in itself).
+[ -d "$shared" ] && seed recordings 00 $(find "$shared/recordings" -name '*_ambf_1.csv' -o -name '*_physical_1.csv')
+[ -d "$shared" ] && seed recordings 01 $(find "$shared/recordings" -name '*_ci.csv')
+seed recordings 01 $(project_files '*_ci.csv')
+mkdir -p "$work/ros_messages-seeds"
+
+declare -A max_len=([adf]=262144 [urdf]=65536 [mesh]=131072 [recordings]=131072 [ros_messages]=4096)
+status=0
+for target in "${targets[@]}"; do
+  binary="$build/fuzz/fuzz_$target"
+  [ -x "$binary" ] || { echo "fuzz: $binary is not built (cmake -DRAVEN_FUZZ=ON, CXX=clang++)"; exit 1; }
+  mkdir -p "$work/$target-corpus" "$work/findings"
+  echo "fuzz: $target for $seconds s"
+  if ! "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+      -max_len="${max_len[$target]}" -print_final_stats=1 \
+      -artifact_prefix="$work/findings/$target-" \
+      "$work/$target-corpus" "fuzz/corpus/$target" "$work/$target-seeds" \
+      > "$work/$target.log" 2>&1; then
+    tail -n 60 "$work/$target.log"
+    mkdir -p fuzz-findings
+    cp "$work"/findings/* fuzz-findings/ 2>/dev/null || true
+    echo "fuzz: FINDING in $target; the input is in fuzz-findings/"
+    status=1
+    continue
+  fi
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$work/$target.log" | tr '\n' ' '
+  echo
+  regressions=(fuzz/regressions/$target/*)
+  if [ -e "${regressions[0]}" ]; then
+    echo "fuzz: replaying ${#regressions[@]} saved $target regression inputs"
+    "$binary" -timeout=10 -rss_limit_mb=2048 "${regressions[@]}" > "$work/$target-regressions.log" 2>&1 ||
+      { tail -n 40 "$work/$target-regressions.log"; status=1; }
+  fi
+done
+exit $status
