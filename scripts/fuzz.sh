@@ -59,7 +59,9 @@ for target in "${targets[@]}"; do
       -artifact_prefix="$work/findings/$target-" \
       "$work/$target-corpus" "fuzz/corpus/$target" "$work/$target-seeds" \
       > "$work/$target.log" 2>&1; then
-    tail -n 60 "$work/$target.log"
+    # The report from its first line (the sanitizer's or libFuzzer's), else the log's end.
+    report=$(awk '/ERROR:|deadly signal|timeout after|out-of-memory/{found=1} found' "$work/$target.log" | head -n 80)
+    if [ -n "$report" ]; then echo "$report"; else tail -n 60 "$work/$target.log"; fi
     mkdir -p fuzz-findings
     cp "$work"/findings/* fuzz-findings/ 2>/dev/null || true
     echo "fuzz: FINDING in $target; the input is in fuzz-findings/"

@@ -10,6 +10,7 @@
 #include <deque>
 
 #include "ambf_like/bullet_conversions.hpp"
+#include "bullet_world.hpp"
 #include "multibody_joint.hpp"
 
 namespace ambf_like::detail {
@@ -168,6 +169,7 @@ void Articulation::addCollider(int index) {
   multibody_->getLink(index).m_collider = link.collider.get();
   world_.addCollisionObject(link.collider.get(), btBroadphaseProxy::DefaultFilter,
                             btBroadphaseProxy::AllFilter);
+  keepBroadphaseBalanced(world_);
   // Sizes its rows for the now final degrees of freedom; the joint engages it near a bound.
   if (link.limit) link.limit->finalizeMultiDof();
 }

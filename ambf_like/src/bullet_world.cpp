@@ -102,4 +102,14 @@ void BulletWorld::setFreeMotionListener(std::function<void()> listener) {
   impl_->soft_multibody->setFreeMotionListener(std::move(listener));
 }
 
+void keepBroadphaseBalanced(btCollisionWorld& world) {
+  // Every world here is built on a btDbvtBroadphase (BulletWorld::Impl).
+  auto& broadphase = static_cast<btDbvtBroadphase&>(*world.getBroadphase());
+  const int proxies = broadphase.m_sets[0].m_leaves + broadphase.m_sets[1].m_leaves;
+  // Between two rebuilds at most this many proxies hang off one another: n/1024 rebuilds of
+  // n log n each, against n^2/2 steps down an unbalanced tree.
+  constexpr int kRebuildEvery = 1024;
+  if (proxies % kRebuildEvery == 0) broadphase.optimize();
+}
+
 }  // namespace ambf_like::detail

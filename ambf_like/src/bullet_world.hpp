@@ -9,6 +9,7 @@
 #include "ambf_like/soft_body_spec.hpp"
 
 class btCollisionDispatcher;
+class btCollisionWorld;
 class btDiscreteDynamicsWorld;
 class btMultiBodyDynamicsWorld;
 class btSoftBody;
@@ -50,5 +51,11 @@ class BulletWorld {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+/// Call after adding a collision object to `world`: every 1,024 proxies the broadphase's trees
+/// are rebuilt balanced. Bullet inserts a proxy by descending towards its nearest neighbour, so
+/// bodies added in a row (a chain) make a tree as deep as it is long, and n insertions cost n^2
+/// (a 20,000-body chain: most of a minute).
+void keepBroadphaseBalanced(btCollisionWorld& world);
 
 }  // namespace ambf_like::detail

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/utf8.hpp"
 #include "common/xml_nesting.hpp"
 
 namespace ambf_like::detail {
@@ -227,6 +228,11 @@ ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context)
     throw LoadError(SourceRef{file, static_cast<int>(*line), ""},
                     "elements nested deeper than " + std::to_string(common::kMostXmlNesting) +
                         " levels; no robot description nests so deep");
+  }
+
+  if (const auto line = common::firstMalformedUtf8Line(text.str())) {
+    throw LoadError(SourceRef{file, static_cast<int>(*line), ""},
+                    "not well-formed UTF-8 (XML requires it): a malformed byte sequence or a NUL");
   }
 
   urdf::ModelInterfaceSharedPtr urdf;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "ambf_like/scene_loader.hpp"
+#include "common/utf8.hpp"
 #include "common/xml_nesting.hpp"
 #include "test_files.hpp"
 
@@ -433,6 +434,24 @@ TEST(BadInput, XmlNestedDeeperThanAnyRealFileIsRefusedBeforeItsRecursiveParser) 
   EXPECT_EQ(common::xmlNestedBeyond("<a><!-- <b><c> --><![CDATA[<d><e>]]><f x=\"<g>\"/></a>", 1),
             std::nullopt);
   EXPECT_EQ(common::xmlNestedBeyond("<a>\n<b>\n<c/></b></a>", 1), 2u);
+}
+
+TEST(BadInput, AUrdfThatIsNotUtf8IsRefusedBeforeTinyxmlWalksPastItsEnd) {
+  // tinyxml steps over a character by its lead byte: 0xD5 at the very end made it read past
+  // the text (found by fuzz_urdf; the input is in fuzz/regressions/urdf/).
+  TempDir dir;
+  const std::string head = "<?xml version=\"1.0\"?>\n<robot name=\"r\">\n<link name=\"";
+  const auto cut = dir.write("cut.urdf", head + "a\xD5");
+  EXPECT_THAT(loadError(cut), AllOf(HasSubstr("cut.urdf:3"), HasSubstr("not well-formed UTF-8")));
+  const auto nul = dir.write("nul.urdf", head + std::string("a\0b\"/></robot>\n", 11));
+  EXPECT_THAT(loadError(nul), HasSubstr("nul.urdf:3"));
+  // Well-formed UTF-8 is read as before.
+  const auto accented = dir.write("ok.urdf", head + "caf\xC3\xA9\"/></robot>\n");
+  EXPECT_NO_THROW(ambf_like::loadModelFiles({accented}));
+  EXPECT_EQ(common::firstMalformedUtf8Line("a\n\xE2\x82\xAC\n\xF0\x9F\x98\x80"), std::nullopt);
+  EXPECT_EQ(common::firstMalformedUtf8Line("a\n\xC0\xAF"), 2u) << "overlong";
+  EXPECT_EQ(common::firstMalformedUtf8Line("\xED\xA0\x80"), 1u) << "a UTF-16 surrogate";
+  EXPECT_EQ(common::firstMalformedUtf8Line("\xF4\x90\x80\x80"), 1u) << "above U+10FFFF";
 }
 
 }  // namespace

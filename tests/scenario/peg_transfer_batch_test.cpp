@@ -4,11 +4,19 @@
 // (volume within 20 % of rest) or pushed through the board.
 
 #include <gtest/gtest.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/inotify.h>
+#include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 
+#include "harness/child_process.hpp"
 #include "harness/temp_dir.hpp"
 #include "scenario/batch.hpp"
 #include "scenario/console_report.hpp"
@@ -95,6 +103,39 @@ TEST(PegTransferBatch, AStoppedBatchKeepsWhatFinishedAndARecordedOneWritesEveryR
   EXPECT_TRUE(stopped.stopped);
   EXPECT_FALSE(stopped.timed_out);
   EXPECT_EQ(stopped.iterations, 1u) << "it ends after the iteration it was asked in";
+}
+
+TEST(PegTransferBatch, SigtermStopsTheProgramsBatchAndItWritesWhatFinished) {
+  harness::TempDir dir;
+  harness::ChildProcess program({RAVEN_PEG_TRANSFER, "--runs", "3", "--threads", "1", "--randomize",
+                                 "--out", dir.path().string(), "-q"},
+                                dir.path() / "log.txt");
+  // SIGTERM as soon as the first run is on disk: a line in runs.jsonl (woken by inotify).
+  const auto jsonl = dir.path() / "runs.jsonl";
+  const int watch = inotify_init1(IN_NONBLOCK);
+  ASSERT_GE(watch, 0);
+  ASSERT_GE(inotify_add_watch(watch, dir.path().c_str(), IN_MODIFY | IN_CREATE), 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(5);
+  while (!std::filesystem::exists(jsonl) || std::filesystem::file_size(jsonl) == 0) {
+    ASSERT_LT(std::chrono::steady_clock::now(), deadline) << "no run finished";
+    ASSERT_EQ(::kill(program.pid(), 0), 0) << "the program ended before its first run did";
+    pollfd event{watch, POLLIN, 0};
+    if (poll(&event, 1, 1000) > 0) {
+      char drained[4096];
+      while (read(watch, drained, sizeof drained) > 0) {
+      }
+    }
+  }
+  close(watch);
+  ASSERT_EQ(::kill(program.pid(), SIGTERM), 0);
+  EXPECT_EQ(program.wait(60.0), 130) << "a stopped batch exits 130, within one iteration";
+  std::ifstream summary_file(dir.path() / "summary.json");
+  ASSERT_TRUE(summary_file) << "no summary.json";
+  const auto summary = nlohmann::json::parse(summary_file);
+  EXPECT_TRUE(summary["stopped"].get<bool>());
+  EXPECT_EQ(summary["runs_asked"], 3);
+  EXPECT_GE(summary["results"].size(), 1u);
+  EXPECT_LT(summary["results"].size(), 3u) << "the third run should never have started";
 }
 
 }  // namespace
