@@ -40,6 +40,12 @@ void ConstraintActuator::actuate(RigidBody& body, const Vec3& offset) {
     throw std::invalid_argument("actuator '" + spec_.name + "': '" + body.qualifiedName() +
                                 "' is static; only a dynamic body can be attached");
   }
+  // The attachment point is a point of the body: a far or non-finite one would fling it.
+  constexpr double kFarthestOffset = 10.0;  // m
+  if (!offset.allFinite() || offset.norm() > kFarthestOffset) {
+    throw std::invalid_argument("actuator '" + spec_.name +
+                                "': the offset must be finite and within 10 m of the body");
+  }
   release();
   const btVector3 point = toBt(body.pose() * offset);
   btRigidBody& a = parent_.bullet();

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
@@ -68,6 +69,15 @@ TEST(ConstraintActuator, HoldsTheSensedBodyInTheAirAndReleasesIt) {
   world.step(1000);
   EXPECT_NEAR(world.body("block").pose().translation().z(), 0.02, 1e-3) << "fell onto the pad";
   EXPECT_THROW(gripper.actuate(world.body("pad")), std::invalid_argument);
+  // A non-finite or far offset (a bad ActuatorCmd) attaches nothing.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(gripper.actuate(world.body("block"), ambf_like::Vec3(nan, 0, 0)),
+               std::invalid_argument);
+  EXPECT_THROW(gripper.actuate(world.body("block"), ambf_like::Vec3(0, 0, 1e6)),
+               std::invalid_argument);
+  EXPECT_FALSE(gripper.actuated());
+  world.step(10);
+  EXPECT_TRUE(world.body("block").pose().matrix().allFinite());
 }
 
 TEST(SensorLoading, ParametricFansAndBadSensorsAreReadAsAmbfReadsThem) {

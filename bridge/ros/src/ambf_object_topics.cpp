@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bridge/ros/ros_conversions.hpp"
+#include "bridge/throttled_log.hpp"
 
 namespace bridge::ros1 {
 
@@ -81,7 +82,9 @@ class AmbfObjectTopics::Impl {
           command.use_offset ? offsetOf(command.body_offset) : ambf_like::Vec3::Zero();
       actuator.actuate(world_.body(body), offset);
     } catch (const std::exception& e) {
-      spdlog::warn("{}/Command: {}; ignored", actuator.qualifiedName(), e.what());
+      const std::string what = actuator.qualifiedName() + "/Command";
+      log_.warn(what + " ignored", what + ": " + e.what() + "; ignored",
+                ::ros::WallTime::now().toSec());
     }
   }
 
@@ -136,6 +139,7 @@ class AmbfObjectTopics::Impl {
   std::vector<::ros::Subscriber> commands_;
   std::deque<std::pair<std::size_t, ambf_msgs::ActuatorCmd>> pending_;
   std::uint32_t step_ = 0;
+  ThrottledLog log_;
 };
 
 AmbfObjectTopics::AmbfObjectTopics(ambf_like::World& world)

@@ -23,7 +23,9 @@
 #include "bridge/ros/command_topics.hpp"
 #include "bridge/ros/low_latency.hpp"
 #include "bridge/ros/ros_conversions.hpp"
+#include "bridge/throttled_log.hpp"
 #include "bridge/wall_pacer.hpp"
+#include "common/printable.hpp"
 #include "raven/platform_profile.hpp"
 
 namespace bridge::ros1 {
@@ -106,6 +108,8 @@ class RavenRosClient::Impl {
   void stepLockStep(std::uint32_t cycles);
   void waitWall(double until);
   void lose(std::string why);
+  /// A robot's message that could not be read: logged once a second per topic.
+  void ignored(const std::string& what, const std::string& why);
   bool statesAt(::ros::Time stamp) const;
 
   RosClientOptions options_;
@@ -135,6 +139,7 @@ class RavenRosClient::Impl {
   Clock::time_point last_measured_;
   WallPacer pacer_;
   std::string lost_reason_;
+  ThrottledLog log_;
 };
 
 RavenRosClient::RavenRosClient(RosClientOptions options)
@@ -169,7 +174,7 @@ void RavenRosClient::Impl::readForces(Arm arm, double time) {
   if (!jaws || !wrench || jaws->header.stamp != wrench->header.stamp) return;
   auto parsed = grasperForcesFrom(*jaws, wrench->wrench);
   if (!parsed.value) {
-    spdlog::warn("{} forces ignored: {}", graspNamespace(arm), parsed.error);
+    ignored(graspNamespace(arm) + " forces", parsed.error);
     return;
   }
   parsed.value->time = time;
@@ -236,7 +241,7 @@ void RavenRosClient::Impl::subscribe() {
       [this](const crtk_msgs::operating_state::ConstPtr& m) {
         const auto parsed = operatingStatusFrom(*m);
         if (!parsed.value) {
-          spdlog::warn("operating_state ignored: {}", parsed.error);
+          ignored("operating_state", parsed.error);
           return;
         }
         status_ = parsed.value;
@@ -258,7 +263,7 @@ void RavenRosClient::Impl::subscribe() {
         [this, topic_arm, source, stampOf](const sensor_msgs::JointState::ConstPtr& m) {
           auto parsed = jointSampleFromState(*m);
           if (!parsed.value) {
-            spdlog::warn("{}/measured_js ignored: {}", armNamespace(topic_arm), parsed.error);
+            ignored(armNamespace(topic_arm) + "/measured_js", parsed.error);
             return;
           }
           const std::string colour(armColour(source));
@@ -267,7 +272,8 @@ void RavenRosClient::Impl::subscribe() {
             spdlog::warn(
                 "{}/measured_js carries '{}' while the arm swap is {}: check the client's "
                 "arm_swap setting against the robot",
-                armNamespace(topic_arm), m->name[0], options_.arm_swap ? "on" : "off");
+                armNamespace(topic_arm), common::printable(m->name[0], 40),
+                options_.arm_swap ? "on" : "off");
           }
           parsed.value->time = stampOf(m->header.stamp);
           measured_[slot(source)] = parsed.value;
@@ -280,7 +286,7 @@ void RavenRosClient::Impl::subscribe() {
         [this, topic_arm, stampOf](const sensor_msgs::JointState::ConstPtr& m) {
           auto parsed = jointSampleFromState(*m);
           if (!parsed.value) {
-            spdlog::warn("{}/setpoint_js ignored: {}", armNamespace(topic_arm), parsed.error);
+            ignored(armNamespace(topic_arm) + "/setpoint_js", parsed.error);
             return;
           }
           parsed.value->time = stampOf(m->header.stamp);
@@ -553,6 +559,10 @@ void RavenRosClient::Impl::waitWall(double until) {
     lose("no measured_js from the robot for " + std::to_string(secondsSince(last_measured_)) +
          " s");
   }
+}
+
+void RavenRosClient::Impl::ignored(const std::string& what, const std::string& why) {
+  log_.warn(what + " ignored", what + " ignored: " + why, secondsSince(start_));
 }
 
 void RavenRosClient::Impl::lose(std::string why) {
