@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
   app.add_option("--duration", o.duration, "stop after this many simulated seconds")
       ->check(CLI::NonNegativeNumber);
   app.add_option("--step-size", o.step_size, "fixed internal step in seconds")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1e-6, 0.1));
   app.add_flag("--strict", o.strict,
                "what AMBF tolerates (unknown keys, missing meshes or mass) is an error, not a "
                "warning");
@@ -196,6 +196,13 @@ int main(int argc, char** argv) {
   loop_options.paced = !o.free_run;
   loop_options.fixed_time_step = o.fixed_time_step || o.free_run;
   ambf_like::PhysicsLoop loop(*world, loop_options);
+  if (const double asked = 1.0 / o.rate_hz / world->stepSize();
+      asked > static_cast<double>(loop.stepsPerIteration()) + 0.5) {
+    spdlog::warn(
+        "a {} Hz loop asks for {:.0f} internal steps an iteration, more than the world's max "
+        "iterations: each takes {}, as AMBF's does, and simulated time runs slower than the loop",
+        o.rate_hz, asked, loop.stepsPerIteration());
+  }
   if (!o.quiet) {
     loop.on_window = [&world](const ambf_like::FrequencyMeter& meter) {
       spdlog::info("Phx {:.0f} Hz   sim time {:.3f} s", meter.frequency(), world->time());

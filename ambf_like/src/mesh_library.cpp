@@ -75,6 +75,30 @@ void checkVertices(const Mesh& mesh, const SourceRef& referenced_from) {
   }
 }
 
+/// Refuses a tetrahedron whose volume is below a billionth of its longest edge cubed: a sliver
+/// with its points (nearly) in one plane, whose shape matrix has no useful inverse and whose
+/// volume's sign rounding decides.
+void checkTetrahedra(const Mesh& mesh, const SourceRef& referenced_from) {
+  constexpr double kFlatness = 1e-9;
+  for (std::size_t c = 0; c < mesh.tetrahedra.size(); ++c) {
+    const auto& t = mesh.tetrahedra[c];
+    auto corner = [&](int k) -> const Vec3& {
+      return mesh.vertices[static_cast<std::size_t>(t[k])];
+    };
+    double longest = 0.0;
+    for (int i = 0; i < 4; ++i) {
+      for (int j = i + 1; j < 4; ++j) longest = std::max(longest, (corner(i) - corner(j)).norm());
+    }
+    const double volume =
+        (corner(1) - corner(0)).cross(corner(2) - corner(0)).dot(corner(3) - corner(0)) / 6.0;
+    if (!(volume > kFlatness * longest * longest * longest)) {
+      throw LoadError(referenced_from, "mesh " + mesh.file.string() + ": cell " +
+                                           std::to_string(c) +
+                                           " is flat (no volume to speak of for its size)");
+    }
+  }
+}
+
 /// assimp's XML formats (COLLADA and others, whatever the file is called) recurse once per
 /// nested node until the stack ends: a file that is XML is measured first.
 template <typename Fail>
@@ -163,6 +187,7 @@ std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,
       throw LoadError(std::move(issues));
     }
     checkVertices(*mesh, referenced_from);
+    checkTetrahedra(*mesh, referenced_from);
   } else {
     mesh = std::make_shared<const Mesh>(readMesh(file, referenced_from));
   }

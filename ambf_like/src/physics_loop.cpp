@@ -11,8 +11,13 @@ PhysicsLoop::PhysicsLoop(World& world, LoopOptions options) : world_(world), opt
   if (!(options_.rate_hz > 0.0) || !std::isfinite(options_.rate_hz)) {
     throw std::invalid_argument("loop rate must be a positive number of Hz");
   }
+  // As AMBF's Bullet does with its maxSubSteps: an iteration runs at most the world's max
+  // iterations of internal steps, and simulated time falls behind a loop slower than that
+  // (a rate of 1e-9 Hz would otherwise ask for 1e12 steps at once).
   const double per_iteration = 1.0 / options_.rate_hz / world_.stepSize();
-  steps_per_iteration_ = std::max<std::uint64_t>(1, std::llround(per_iteration));
+  const auto most = static_cast<double>(world_.settings().max_iterations);
+  steps_per_iteration_ =
+      static_cast<std::uint64_t>(std::clamp(std::round(per_iteration), 1.0, most));
   period_ = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(1.0 / options_.rate_hz));
 }

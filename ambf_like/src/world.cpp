@@ -301,7 +301,12 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
 
 World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
     : impl_(std::make_unique<Impl>(scene, options)) {
-  if (!(options.step_size > 0.0)) throw std::invalid_argument("step size must be positive");
+  // Below a microsecond a step only burns time (and a loop's period holds millions of them);
+  // above 0.1 s nothing this simulator holds stays stable.
+  if (!(options.step_size >= 1e-6 && options.step_size <= 0.1)) {
+    throw std::invalid_argument("the step size must be 1e-6 to 0.1 s (got " +
+                                std::to_string(options.step_size) + ")");
+  }
   for (std::size_t m = 0; m < scene.models.size(); ++m) {
     impl_->addModel(scene.models[m], static_cast<int>(m), meshes);
   }

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "ambf_like/physics_loop.hpp"
 #include "test_files.hpp"
 
@@ -69,6 +71,26 @@ TEST_F(Loop, FixedStepIterationsAdvanceOnePeriodEach) {
   for (int i = 0; i < 10; ++i) loop.iterate();
   EXPECT_EQ(world.stepCount(), 40u);
   EXPECT_EQ(loop.meter().iterations(), 10u);
+}
+
+TEST_F(Loop, AnIterationRunsAtMostTheWorldsMaxIterationsAsAmbfDoes) {
+  auto& world = *sim_->world;
+  ambf_like::LoopOptions options;
+  options.paced = false;
+  options.rate_hz = 1e-9;  // 1e12 steps of 1 ms per iteration, asked for
+  ambf_like::PhysicsLoop loop(world, options);
+  loop.iterate();
+  EXPECT_EQ(world.stepCount(), static_cast<std::uint64_t>(world.settings().max_iterations));
+}
+
+TEST_F(Loop, AStepOutsideAMicrosecondToATenthOfASecondIsRefused) {
+  for (double step : {1e-12, 0.0, 1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    SCOPED_TRACE(step);
+    ambf_like::WorldOptions options;
+    options.step_size = step;
+    EXPECT_THROW(test_support::simulate({test_support::exampleFile("floor.yaml")}, options),
+                 std::invalid_argument);
+  }
 }
 
 TEST_F(Loop, RejectsANonPositiveRate) {

@@ -34,6 +34,9 @@ class PhysicsLoop {
   void advanceTo(double sim_time);
 
   const FrequencyMeter& meter() const { return meter_; }
+  /// Internal steps a fixed-step iteration runs: 1/rate_hz over the step size, at least one and
+  /// at most the world's max iterations.
+  std::uint64_t stepsPerIteration() const { return steps_per_iteration_; }
   /// Called each time a 1 s window completes (e.g. to print "Phx").
   std::function<void(const FrequencyMeter&)> on_window;
 
