@@ -430,6 +430,15 @@ TEST(BadInput, XmlNestedDeeperThanAnyRealFileIsRefusedBeforeItsRecursiveParser) 
       "m.yaml", "bodies: [BODY b]\nBODY b: {name: b, mass: 1, mesh: " + dae.string() + "}\n");
   EXPECT_THAT(loadErrorOf([&] { test_support::simulate({model}); }),
               AllOf(HasSubstr("deep.stl: line 500"), HasSubstr("nested deeper")));
+  // An index list assimp would read as an index of billions (found by fuzz_mesh).
+  const auto bad_index =
+      dir.write("index.dae",
+                "<?xml version=\"1.0\"?>\n<COLLADA>\n<triangles count=\"1\">\n<p>0 1@2</p>\n"
+                "</triangles></COLLADA>\n");
+  const auto index_model = dir.write(
+      "i.yaml", "bodies: [BODY b]\nBODY b: {name: b, mass: 1, mesh: " + bad_index.string() + "}\n");
+  EXPECT_THAT(loadErrorOf([&] { test_support::simulate({index_model}); }),
+              AllOf(HasSubstr("index.dae: line 4"), HasSubstr("whole numbers")));
   // Comments, CDATA and quoted '>' are not elements.
   EXPECT_EQ(common::xmlNestedBeyond("<a><!-- <b><c> --><![CDATA[<d><e>]]><f x=\"<g>\"/></a>", 1),
             std::nullopt);
