@@ -75,10 +75,6 @@ void BulletWorld::addSoftBody(btSoftBody& body, std::optional<int> coulomb_subst
   }
 }
 
-int BulletWorld::substepsFor(const btSoftBody& body, double h) const {
-  return impl_->soft_solver.substepsFor(body, h);
-}
-
 void BulletWorld::removeSoftBody(btSoftBody& body) {
   impl_->soft_solver.forget(body);
   if (impl_->soft_rigid) {

@@ -37,8 +37,6 @@ class BulletWorld {
   /// many substeps (CoulombContactSolver), its tetrahedra the `material`'s elasticity if given.
   void addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps,
                    const std::optional<SoftMaterial>& material);
-  /// How many substeps a step of `h` takes `body` (1 for a body without Coulomb contacts).
-  int substepsFor(const btSoftBody& body, double h) const;
   void removeSoftBody(btSoftBody& body);
   /// The impulses of the last step's Coulomb contacts.
   const std::vector<NodeContactImpulse>& coulombImpulses() const;

@@ -33,18 +33,7 @@ void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps,
   }
   Registered& registered = coulomb_[&body];
   registered.substeps = substeps;
-  if (material) registered.elasticity = std::make_unique<NeoHookeanTets>(body, *material);
-}
-
-int CoulombContactSolver::Registered::substepsFor(btScalar h) const {
-  if (!elasticity) return substeps;
-  const double stable = std::ceil(h / elasticity->stableSubstep() - 1e-9);
-  return std::max(substeps, static_cast<int>(std::min(stable, 100000.0)));
-}
-
-int CoulombContactSolver::substepsFor(const btSoftBody& body, btScalar h) const {
-  const auto it = coulomb_.find(&body);
-  return it == coulomb_.end() ? 1 : it->second.substepsFor(h);
+  if (material) registered.elasticity = std::make_unique<ImplicitElasticBody>(body, *material);
 }
 
 void CoulombContactSolver::forget(const btSoftBody& body) {
@@ -78,14 +67,18 @@ void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
 void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
   prepareWithBullet(body);
   const btScalar h = body.m_sst.sdt;
-  const int substeps = registered.substepsFor(h);
+  const int substeps = registered.substeps;
   const btScalar hs = h / substeps;
   rewindPrediction(body, registered, substeps);
   startContacts(body, registered.elasticity != nullptr);
   body.m_sst.sdt = hs;
   body.m_sst.isdt = 1.0 / hs;
   for (int s = 0; s < substeps; ++s) {
-    substep(body, registered.elasticity.get(), hs, (s + 1) * hs);
+    if (registered.elasticity) {
+      elasticSubstep(body, registered, hs, (s + 1) * hs);
+    } else {
+      substep(body, hs, (s + 1) * hs);
+    }
   }
   body.m_sst.sdt = h;
   body.m_sst.isdt = 1.0 / h;
@@ -127,8 +120,7 @@ void CoulombContactSolver::rewindPrediction(btSoftBody& body, const Registered& 
   }
 }
 
-void CoulombContactSolver::substep(btSoftBody& body, NeoHookeanTets* elasticity, btScalar hs,
-                                   btScalar elapsed) {
+void CoulombContactSolver::substep(btSoftBody& body, btScalar hs, btScalar elapsed) {
   for (std::size_t k = 0; k < acceleration_.size(); ++k) {
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
     n.m_q = n.m_x;
@@ -136,16 +128,68 @@ void CoulombContactSolver::substep(btSoftBody& body, NeoHookeanTets* elasticity,
     n.m_x += n.m_v * hs + pose_pull_[k];
   }
   const auto& cfg = body.m_cfg;
-  if (elasticity) elasticity->warmStart(body, hs);
   for (int k = 0; k < cfg.piterations; ++k) {
-    if (elasticity) elasticity->iterate(body, hs);
     const btScalar ti = k / static_cast<btScalar>(cfg.piterations);
     for (int q = 0; q < cfg.m_psequence.size(); ++q) {
       btSoftBody::getSolver(cfg.m_psequence[q])(&body, 1.0, ti);
     }
   }
-  projectContacts(body, elapsed, elasticity != nullptr);
-  if (elasticity) elasticity->finishSubstep(hs);
+  projectContacts(body, elapsed);
+  for (int i = 0; i < body.m_nodes.size(); ++i) {
+    btSoftBody::Node& n = body.m_nodes[i];
+    n.m_v = (n.m_x - n.m_q) / hs;
+  }
+}
+
+void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& registered, btScalar hs,
+                                          btScalar elapsed) {
+  std::vector<ElasticContact> contacts;
+  std::vector<std::size_t> source;  // each one's index in m_rcontacts
+  const btScalar kdf = body.m_cfg.kDF;
+  for (int i = 0; i < body.m_rcontacts.size(); ++i) {
+    const btSoftBody::RContact& rc = body.m_rcontacts[i];
+    if (!isCoulombContact(rc)) continue;
+    const auto index = static_cast<std::size_t>(i);
+    const btVector3& n = rc.m_cti.m_normal;
+    const btVector3& x = rc.m_node->m_x;
+    ElasticContact c;
+    c.node = static_cast<int>(rc.m_node - &body.m_nodes[0]);
+    c.normal = {n.x(), n.y(), n.z()};
+    const btVector3& u = contacts_[index].surface_velocity;
+    c.surface_velocity = {u.x(), u.y(), u.z()};
+    const btScalar gap_at_end = n.dot(x) + rc.m_cti.m_offset - surfaceAdvance(rc, index, elapsed);
+    c.least_normal_velocity = -gap_at_end / hs;
+    c.start_depth = -(n.dot(x) + rc.m_cti.m_offset - surfaceAdvance(rc, index, elapsed - hs));
+    c.friction = kdf * rc.m_cti.m_colObj->getFriction();
+    if (const auto last = registered.last_impulse.find({c.node, rc.m_cti.m_colObj});
+        last != registered.last_impulse.end()) {
+      c.impulse = last->second;
+    }
+    contacts.push_back(c);
+    source.push_back(index);
+  }
+  for (std::size_t k = 0; k < acceleration_.size(); ++k) {
+    body.m_nodes[static_cast<int>(k)].m_q = body.m_nodes[static_cast<int>(k)].m_x;
+  }
+  registered.elasticity->step(body, hs, acceleration_, contacts);
+  runBulletSolvers(body);
+  registered.last_impulse.clear();
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const ElasticContact& c = contacts[k];
+    const btSoftBody::RContact& rc = body.m_rcontacts[static_cast<int>(source[k])];
+    registered.last_impulse[{c.node, rc.m_cti.m_colObj}] = c.impulse;
+    const btVector3 impulse(c.impulse.x(), c.impulse.y(), c.impulse.z());
+    Accumulated& state = contacts_[source[k]];
+    state.impulse += impulse;
+    state.normal_impulse += rc.m_cti.m_normal * rc.m_cti.m_normal.dot(impulse);
+  }
+}
+
+void CoulombContactSolver::runBulletSolvers(btSoftBody& body) {
+  const auto& sequence = body.m_cfg.m_psequence;
+  if (sequence.size() == 0) return;
+  for (int q = 0; q < sequence.size(); ++q) btSoftBody::getSolver(sequence[q])(&body, 1.0, 0.0);
+  const btScalar hs = body.m_sst.sdt;
   for (int i = 0; i < body.m_nodes.size(); ++i) {
     btSoftBody::Node& n = body.m_nodes[i];
     n.m_v = (n.m_x - n.m_q) / hs;
@@ -181,38 +225,36 @@ void CoulombContactSolver::startContacts(btSoftBody& body, bool elastic) {
   }
 }
 
-void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed, bool elastic) {
+btScalar CoulombContactSolver::surfaceAdvance(const btSoftBody::RContact& contact,
+                                              std::size_t index, btScalar elapsed) const {
+  const Accumulated& state = contacts_[index];
+  return state.placed ? 0.0 : contact.m_cti.m_normal.dot(state.surface_velocity) * elapsed;
+}
+
+void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
   const btScalar kdf = body.m_cfg.kDF;
   const btScalar hs = body.m_sst.sdt;
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
     const btSoftBody::RContact& contact = body.m_rcontacts[i];
     if (!isCoulombContact(contact)) continue;
     btSoftBody::Node& node = *contact.m_node;
-    Accumulated& state = contacts_[static_cast<std::size_t>(i)];
+    const auto index = static_cast<std::size_t>(i);
+    Accumulated& state = contacts_[index];
     const btVector3& normal = contact.m_cti.m_normal;
     // The contact plane was found where the rigid body was when the step began: move it along.
-    const btScalar moved = state.placed ? 0.0 : normal.dot(state.surface_velocity) * elapsed;
-    const btScalar depth = -(normal.dot(node.m_x) + contact.m_cti.m_offset - moved);
+    const btScalar depth =
+        -(normal.dot(node.m_x) + contact.m_cti.m_offset - surfaceAdvance(contact, index, elapsed));
     if (depth <= 0.0) continue;
-    // An elastic body's node that began the substep inside (placed there, or left there by the
-    // plane's turn) is moved out without that becoming motion: only what the substep pressed in
-    // pushes back, or the push would be an elastic solid's stored energy let loose.
-    const btScalar start_plane =
-        state.placed ? 0.0 : moved - normal.dot(state.surface_velocity) * hs;
-    const btScalar start_depth = -(normal.dot(node.m_q) + contact.m_cti.m_offset - start_plane);
-    const btScalar carried = elastic ? std::clamp(start_depth, btScalar(0), depth) : 0.0;
-    const btScalar pressed = depth - carried;
     node.m_x += normal * depth;
-    node.m_q += normal * carried;
     // Slip over the substep, relative to the surface: undone within mu x the normal push.
     const btVector3 relative = node.m_x - node.m_q - state.surface_velocity * hs;
     btVector3 friction = -(relative - normal * normal.dot(relative));
-    const btScalar limit = kdf * contact.m_cti.m_colObj->getFriction() * pressed;
+    const btScalar limit = kdf * contact.m_cti.m_colObj->getFriction() * depth;
     const btScalar size = friction.length();
     if (size > limit) friction *= limit / size;
     node.m_x += friction;
     const btScalar mass_rate = 1.0 / (node.m_im * hs);  // impulse per unit of correction
-    const btVector3 normal_impulse = normal * (pressed * mass_rate);
+    const btVector3 normal_impulse = normal * (depth * mass_rate);
     state.normal_impulse += normal_impulse;
     state.impulse += normal_impulse + friction * mass_rate;
   }

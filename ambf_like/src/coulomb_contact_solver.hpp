@@ -3,12 +3,14 @@
 
 #include <BulletSoftBody/btDefaultSoftBodySolver.h>
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
-#include "neo_hookean_tets.hpp"
+#include "implicit_elastic_body.hpp"
 
 class btCollisionObject;
 
@@ -44,8 +46,8 @@ struct NodeContactImpulse {
 /// mu J_n (slip), mu = kDF x the rigid body's friction. After the step the opposite impulses go
 /// to the rigid bodies: a grasp is held, and felt, by its squeeze and nothing else.
 ///
-/// A body with a material has no links in its solve: its tetrahedra answer a deformation as the
-/// material does (NeoHookeanTets), with at least as many substeps as the material is stable at.
+/// A body with a material has no links in its solve: each substep is one implicit step of its
+/// tetrahedra (ImplicitElasticBody), which solves its Coulomb contacts with the same matrix.
 ///
 /// Why substeps: a position-based body presses back on what squeezes it with about
 /// m x dx / h^2, so with n substeps n^2 times harder, at the cost of n passes over its
@@ -60,23 +62,19 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   void useCoulombContacts(btSoftBody& body, int substeps,
                           const std::optional<SoftMaterial>& material);
   void forget(const btSoftBody& body);
-  /// How many substeps a step of `h` takes a registered `body` (1 for any other).
-  int substepsFor(const btSoftBody& body, btScalar h) const;
   void predictMotion(btScalar solver_dt) override;
   void solveConstraints(btScalar solver_dt) override;
   /// The Coulomb contacts' impulses of the last step.
   const std::vector<NodeContactImpulse>& lastImpulses() const { return impulses_; }
 
  private:
-  /// A registered body: its substeps, its elasticity if it has a material, and its nodes'
-  /// velocities before Bullet's prediction.
+  /// A registered body: its substeps, its elasticity if it has a material (with its contacts'
+  /// last impulses, by node and surface), and its nodes' velocities before Bullet's prediction.
   struct Registered {
     int substeps = 1;
-    std::unique_ptr<NeoHookeanTets> elasticity;
+    std::unique_ptr<ImplicitElasticBody> elasticity;
+    std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_impulse;
     std::vector<btVector3> start_velocity;
-
-    /// Substeps for a step of `h`: as asked, and as many as the material is stable at.
-    int substepsFor(btScalar h) const;
   };
   /// One node-rigid contact over a step.
   struct Accumulated {
@@ -93,14 +91,21 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   /// step's start.
   void rewindPrediction(btSoftBody& body, const Registered& registered, int substeps);
   /// One substep of `hs`, ending `elapsed` into the step: integrate, iterate, contacts.
-  void substep(btSoftBody& body, NeoHookeanTets* elasticity, btScalar hs, btScalar elapsed);
+  void substep(btSoftBody& body, btScalar hs, btScalar elapsed);
+  /// One implicit substep of a body with a material, its contacts solved with it.
+  void elasticSubstep(btSoftBody& body, Registered& registered, btScalar hs, btScalar elapsed);
+  /// Bullet's position solvers left in the body's sequence (anchors, soft contacts), once.
+  static void runBulletSolvers(btSoftBody& body);
   /// Damping, the step's start back in m_q, forces cleared.
   void finishStep(btSoftBody& body);
   /// The surfaces' velocities; for an `elastic` body each contact plane moved from the
   /// detection band back to the margin.
   void startContacts(btSoftBody& body, bool elastic);
+  /// How far along its normal a contact's surface has moved `elapsed` into the step.
+  btScalar surfaceAdvance(const btSoftBody::RContact& contact, std::size_t index,
+                          btScalar elapsed) const;
   /// A substep's contacts, the rigid surfaces where they are `elapsed` into the step.
-  void projectContacts(btSoftBody& body, btScalar elapsed, bool elastic);
+  void projectContacts(btSoftBody& body, btScalar elapsed);
   void applyToRigidBodies(const btSoftBody& body);
 
   std::unordered_map<const btSoftBody*, Registered> coulomb_;

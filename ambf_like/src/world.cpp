@@ -136,7 +136,6 @@ struct World::Impl {
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
   /// Refuses a soft body whose material needs more substeps than kMaxSoftSubsteps at this
   /// world's step: one step would take as long as thousands.
-  void checkSubsteps(const SoftBodySpec& spec, const btSoftBody& soft) const;
   /// The last step's contacts (Coulomb forces) of the body with this filter tag; null: all.
   std::vector<Contact> contactsWith(const void* body_tag) const;
   std::vector<SoftContactForce> softContactForcesOn(const void* body_tag) const;
@@ -219,19 +218,6 @@ void World::Impl::addArticulation(const ModelSpec& model,
   }
 }
 
-void World::Impl::checkSubsteps(const SoftBodySpec& spec, const btSoftBody& soft) const {
-  constexpr int kMaxSoftSubsteps = 1000;
-  const int needed = bullet.substepsFor(soft, options.step_size);
-  if (!spec.material || needed <= kMaxSoftSubsteps) return;
-  SourceRef at = spec.where;
-  at.key_path += "/material/young's modulus";
-  throw LoadError(
-      at, "soft body '" + spec.name + "': this material on this mesh is stable only at " +
-              std::to_string(needed) + " substeps of the " + std::to_string(options.step_size) +
-              " s step (at most " + std::to_string(kMaxSoftSubsteps) +
-              "): a softer material, a coarser mesh or a shorter step");
-}
-
 void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes) {
   const bool articulate = articulates(model);
   std::map<std::string, detail::PlacedBody> by_name;
@@ -263,7 +249,6 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     soft->setUserPointer(&tag);
     bullet.addSoftBody(*soft, coulomb ? std::optional<int>(spec.substeps) : std::nullopt,
                        spec.material);
-    checkSubsteps(spec, *soft);
     soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
   }
   if (articulate) {

@@ -60,8 +60,8 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
   writeYaml(board, "Peg board with twelve posts" + note, dir / "peg_board.yaml");
 
   // Six soft rings, one resting on each start post.
-  // A solid ring (tetrahedra): the jaws squeeze its wall through its thickness, which its
-  // volume's links resist; a hollow surface ring would only fold.
+  // A solid ring (tetrahedra) of silicone: the jaws squeeze its wall through its thickness, and
+  // its material answers with the force that silicone would.
   solidRing(d.peg_major_radius, d.peg_minor_radius, d.peg_half_height, d.peg_ring_segments,
             d.peg_tube_segments)
       .writeVtk(dir / "meshes" / "peg.vtk", "soft ring peg" + note);
@@ -75,25 +75,22 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
     YAML::Node p;
     p["name"] = name;
     p["mesh"] = "peg.vtk";
-    p["mass"] = number(d.peg_mass);
+    YAML::Node material;
+    material["young's modulus"] = number(d.peg_youngs_modulus);
+    material["poisson's ratio"] = number(d.peg_poissons_ratio);
+    material["density"] = number(d.peg_density);
+    p["material"] = flow(material);
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = Eigen::Vector3d(d.posts[i].x(), d.posts[i].y(),
                                        d.board_top + d.peg_half_height + d.peg_margin);
     p["location"] = pose(at);
     p["collision margin"] = number(d.peg_margin);
-    // Held by friction alone: Coulomb contacts, and substeps that make the ring press back on
-    // the jaws as a rubber ring would (see ambf_like's CoulombContactSolver).
-    p["contact friction"] = "coulomb";
-    p["substeps"] = d.peg_substeps;
-    // Shape matching and volume conservation keep the ring round and resting (a bare surface
-    // mesh sags out of shape); kDP is per step in Bullet, so it stays small. Contact is
-    // node-vs-rigid SDF (SDF_RS): the world file sets a voxel fine enough for the posts.
+    // Held by friction alone: Coulomb contacts (the material implies them), friction
+    // kDF x the jaws' 1.0. kDP is per step in Bullet, so it stays small. Contact is node-vs-rigid
+    // SDF (SDF_RS): the world file sets a voxel fine enough for the posts.
     YAML::Node config;
     config["kDF"] = number(0.8);
     config["kDP"] = number(0.001);
-    config["kMT"] = number(0.1);
-    config["kVC"] = number(10.0);
-    config["piterations"] = d.peg_iterations;
     config["flags"] = 1;
     p["config"] = flow(config);
     pegs["BODY " + name] = p;

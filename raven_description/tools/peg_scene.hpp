@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 #include <filesystem>
 
 namespace raven::model {
@@ -35,9 +36,12 @@ struct PegSceneDesign {
   double peg_half_height = 0.005;
   int peg_ring_segments = 16;  ///< 144 nodes: a station every 3.1 mm around the ring
   int peg_tube_segments = 8;   ///< around the tube, about its axis node
-  int peg_substeps = 4;        ///< per 1 ms step
-  int peg_iterations = 2;      ///< per substep
-  double peg_mass = 0.002;
+  /// The ring's silicone: Shore 30A (a casting silicone's), whose modulus by Ruess' relation
+  /// log10(E / MPa) = 0.0235 S - 0.6403 is 1.16 MPa; silicone rubbers' Poisson's ratio and
+  /// density (../shared/reference/soft-materials.md).
+  double peg_youngs_modulus = 1.0e6 * std::pow(10.0, 0.0235 * 30.0 - 0.6403);
+  double peg_poissons_ratio = 0.45;
+  double peg_density = 1100.0;  ///< kg/m^3
   double peg_margin = 0.0005;
 };
 

@@ -260,7 +260,7 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"off", "contact"}))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // quickstart.sh's can be overridden
   app.add_option("--squeeze", s.squeeze_mm,
-                 "how far the closed jaws reach into a ring's 4 mm wall (mm, default 1.5)")
+                 "how far the closed jaws reach into a ring's 4 mm wall (mm, default 0.5)")
       ->check(CLI::Range(0.0, 4.0));
   app.add_option("--launch", s.launch,
                  "the scene's launch file (default: the shipped peg_transfer/launch.yaml)")

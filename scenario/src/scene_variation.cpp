@@ -19,10 +19,13 @@ SceneVariation SceneVariation::draw(std::uint64_t seed, const VariationRanges& r
     v.peg_offset[i] = radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
   }
   v.kDF = uniform(r.peg_kDF[0], r.peg_kDF[1]);
-  v.kLST = uniform(r.peg_kLST[0], r.peg_kLST[1]);
-  v.kMT = uniform(r.peg_kMT[0], r.peg_kMT[1]);
+  v.peg_shore_a = uniform(r.peg_shore_a[0], r.peg_shore_a[1]);
   v.board_friction = uniform(r.board_friction[0], r.board_friction[1]);
   return v;
+}
+
+double SceneVariation::pegYoungsModulus() const {
+  return 1.0e6 * std::pow(10.0, 0.0235 * peg_shore_a - 0.6403);
 }
 
 void SceneVariation::apply(ambf_like::SceneSpec& scene) const {
@@ -39,8 +42,7 @@ void SceneVariation::apply(ambf_like::SceneSpec& scene) const {
       soft.location.linear() =
           Eigen::AngleAxisd(peg_yaw[i], Eigen::Vector3d::UnitZ()) * soft.location.linear();
       soft.config.kDF = kDF;
-      soft.config.kLST = kLST;
-      soft.config.kMT = kMT;
+      if (soft.material) soft.material->youngs_modulus = pegYoungsModulus();
     }
   }
 }
@@ -51,8 +53,8 @@ nlohmann::json SceneVariation::json() const {
   j["peg_yaw_rad"] = peg_yaw;
   for (const auto& o : peg_offset) j["peg_offset_m"].push_back({o.x(), o.y()});
   j["peg_kDF"] = kDF;
-  j["peg_kLST"] = kLST;
-  j["peg_kMT"] = kMT;
+  j["peg_shore_a"] = peg_shore_a;
+  j["peg_youngs_modulus_pa"] = pegYoungsModulus();
   j["board_friction"] = board_friction;
   return j;
 }

@@ -28,8 +28,9 @@ class ArmRoutine {
   ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile, const PegLayout& layout,
              std::vector<PegJob> jobs, double squeeze = kDefaultSqueeze);
 
-  /// 1.5 mm of the ring's 4 mm wall: its elastic push then grips it well past its weight.
-  static constexpr double kDefaultSqueeze = 0.0015;
+  /// 0.5 mm of the silicone ring's 4 mm wall: each jaw then presses on it with about 1-2 N, the
+  /// force a real grasp of a peg-transfer ring takes (../shared/reference/soft-materials.md).
+  static constexpr double kDefaultSqueeze = 0.0005;
 
   /// The arm's next target. `target` is its current one, `world` shows the pegs.
   raven::ArmJoints next(const raven::ArmJoints& target, const ambf_like::World& world);

@@ -1,6 +1,6 @@
 #pragma once
-// Seeded variations of the peg-transfer scene for randomised batches: peg start poses, peg
-// friction and softness, board friction, each drawn uniformly from a stated range.
+// Seeded variations of the peg-transfer scene for randomised batches: peg start poses, the
+// pegs' silicone and friction, board friction, each drawn from a stated range.
 
 #include <array>
 #include <cstdint>
@@ -12,10 +12,12 @@ namespace scenario {
 
 /// The ranges the draws come from.
 struct VariationRanges {
-  double peg_offset = 0.001;                 ///< start position jitter radius (m)
-  std::array<double, 2> peg_kDF{0.4, 0.9};   ///< soft-rigid friction factor
-  std::array<double, 2> peg_kLST{0.7, 1.0};  ///< link stiffness
-  std::array<double, 2> peg_kMT{0.05, 0.2};  ///< shape matching
+  double peg_offset = 0.001;                ///< start position jitter radius (m)
+  std::array<double, 2> peg_kDF{0.4, 0.9};  ///< soft-rigid friction factor
+  /// The pegs' Shore A hardness, drawn uniformly; their Young's modulus follows by Ruess'
+  /// relation (0.68-2.0 MPa): the casting silicones and PDMS a peg set is made of
+  /// (../shared/reference/soft-materials.md).
+  std::array<double, 2> peg_shore_a{20.0, 40.0};
   std::array<double, 2> board_friction{0.4, 0.8};
 };
 
@@ -25,7 +27,10 @@ struct SceneVariation {
   bool nominal = true;              ///< the scene as designed, nothing varied
   std::array<double, 6> peg_yaw{};  ///< rad, about the peg's own axis
   std::array<Eigen::Vector2d, 6> peg_offset{};
-  double kDF = 0.8, kLST = 1.0, kMT = 0.1, board_friction = 0.6;
+  double kDF = 0.8, board_friction = 0.6;
+  double peg_shore_a = 30.0;
+  /// The pegs' Young's modulus (Pa) from their hardness, by Ruess' relation.
+  double pegYoungsModulus() const;
 
   /// Draws from `ranges` with `seed` (the same seed, the same draw, wherever libstdc++ runs it).
   static SceneVariation draw(std::uint64_t seed, const VariationRanges& ranges = {});

@@ -1,0 +1,51 @@
+#pragma once
+// A soft body's tetrahedra as a corotated linear-elastic solid: its forces and its stiffness.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+#include <array>
+#include <vector>
+
+#include "ambf_like/soft_body_spec.hpp"
+
+class btSoftBody;
+
+namespace ambf_like::detail {
+
+/// The corotated linear-elastic solid (Mueller et al. 2002; energy per rest volume
+/// psi = mu |eps|^2 + lambda/2 tr(eps)^2 with eps = sym(R^T F) - I, R the rotation of F): small
+/// strains answer as linear elasticity with the material's E and nu, and a rigid rotation of
+/// any size costs nothing. A uniaxial stretch s with free sides answers with the nominal stress
+/// E (s - 1) exactly, at any strain.
+///
+/// Each tetrahedron's rotation is found by Mueller, Bender, Chentanez and Macklin's (2016)
+/// iteration, warm started from the last one, so that it costs a few products per step.
+class CorotatedTets {
+ public:
+  /// The tetrahedra of `body` (rest shape: the nodes where they are now).
+  CorotatedTets(const btSoftBody& body, const SoftMaterial& material);
+
+  /// Adds each node's elastic force (N) at `positions` (3 per node) to `forces`.
+  void addForces(const Eigen::VectorXd& positions, Eigen::VectorXd& forces);
+  /// The stiffness matrix at rest (3 rows per node), as triplets.
+  std::vector<Eigen::Triplet<double>> restStiffness() const;
+
+ private:
+  /// One tetrahedron: its nodes, inverse rest edge matrix, rest volume and current rotation.
+  struct Tetrahedron {
+    std::array<int, 4> node;
+    Eigen::Matrix3d rest_inverse;
+    double volume = 0.0;
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+  };
+
+  double mu_;
+  double lambda_;
+  std::vector<Tetrahedron> tets_;
+};
+
+/// Updates `rotation` towards the rotation of `f`'s polar decomposition (a few iterations).
+void followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation);
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,219 @@
+#include "implicit_elastic_body.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace ambf_like::detail {
+
+namespace {
+
+using Nodes = Eigen::Map<Eigen::Matrix3Xd>;
+
+Eigen::Vector3d eigen(const btVector3& v) {
+  return {v.x(), v.y(), v.z()};
+}
+btVector3 bullet(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+/// Projected Gauss-Seidel stops when no impulse changed by more than this (N s: a micronewton
+/// over a 1 ms step), or after kMostContactSweeps sweeps.
+constexpr double kImpulseTolerance = 1e-9;
+constexpr int kMostContactSweeps = 100;
+
+/// The impulse that best keeps `contact` on its surface and inside its friction cone, given
+/// the velocity `others` its node would have without it and `w`, its velocity per impulse.
+Eigen::Vector3d contactImpulse(const ElasticContact& contact, const Eigen::Matrix3d& w,
+                               const Eigen::Matrix3d& w_inverse, const Eigen::Vector3d& others) {
+  const Eigen::Vector3d& n = contact.normal;
+  const double shortfall = contact.least_normal_velocity - n.dot(others);
+  if (shortfall <= 0.0) return Eigen::Vector3d::Zero();  // it leaves or rests unpressed
+  // Stuck: it moves with the surface along it and just reaches it.
+  const Eigen::Vector3d& u = contact.surface_velocity;
+  const Eigen::Vector3d goal = u - n * n.dot(u) + n * contact.least_normal_velocity;
+  const Eigen::Vector3d stuck = w_inverse * (goal - others);
+  const double normal = n.dot(stuck);
+  const Eigen::Vector3d tangential = stuck - n * normal;
+  const double slip_push = tangential.norm();
+  if (normal > 0.0 && slip_push <= contact.friction * normal) return stuck;
+  // Sliding: the friction impulse, mu times the normal one, against the slip.
+  Eigen::Vector3d direction = n;
+  if (slip_push > 0.0) direction += contact.friction * tangential / slip_push;
+  double reach = n.dot(w * direction);
+  if (!(reach > 0.0)) {
+    direction = n;
+    reach = n.dot(w * n);
+  }
+  return direction * std::max(0.0, shortfall / reach);
+}
+
+}  // namespace
+
+ImplicitElasticBody::ImplicitElasticBody(const btSoftBody& body, const SoftMaterial& material)
+    : tets_(body, material) {
+  const int count = body.m_nodes.size();
+  mass_.resize(3 * count);
+  rest_.resize(3 * count);
+  double total = 0.0;
+  rest_centre_.setZero();
+  for (int i = 0; i < count; ++i) {
+    const btSoftBody::Node& node = body.m_nodes[i];
+    const double mass = node.m_im > 0.0 ? 1.0 / node.m_im : 0.0;
+    mass_.segment<3>(3 * i).setConstant(mass);
+    rest_.segment<3>(3 * i) = eigen(node.m_x);
+    rest_centre_ += mass * rest_.segment<3>(3 * i);
+    total += mass;
+  }
+  if (total > 0.0) rest_centre_ /= total;
+}
+
+void ImplicitElasticBody::factor(double h) {
+  const auto size = mass_.size();
+  std::vector<Eigen::Triplet<double>> entries;
+  for (const auto& k : tets_.restStiffness()) {
+    // A node that stays put keeps only its diagonal: its velocity is zero.
+    if (mass_(k.row()) > 0.0 && mass_(k.col()) > 0.0) {
+      entries.emplace_back(k.row(), k.col(), h * h * k.value());
+    }
+  }
+  for (Eigen::Index i = 0; i < size; ++i) {
+    entries.emplace_back(i, i, mass_(i) > 0.0 ? mass_(i) : 1.0);
+  }
+  Eigen::SparseMatrix<double> system(size, size);
+  system.setFromTriplets(entries.begin(), entries.end());
+  system_.compute(system);
+  if (system_.info() != Eigen::Success) {
+    throw std::runtime_error("a soft body's implicit elastic system could not be factored");
+  }
+  factored_step_ = h;
+  responses_.clear();
+}
+
+const ImplicitElasticBody::Response& ImplicitElasticBody::responseTo(int node) {
+  auto it = responses_.find(node);
+  if (it != responses_.end()) return it->second;
+  const auto size = mass_.size();
+  Eigen::MatrixXd unit = Eigen::MatrixXd::Zero(size, 3);
+  for (int k = 0; k < 3; ++k) unit(3 * node + k, k) = 1.0;
+  return responses_.emplace(node, system_.solve(unit)).first->second;
+}
+
+void ImplicitElasticBody::followBodyRotation(const Eigen::VectorXd& positions) {
+  const auto count = positions.size() / 3;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double total = 0.0;
+  for (Eigen::Index i = 0; i < count; ++i) {
+    centre += mass_(3 * i) * positions.segment<3>(3 * i);
+    total += mass_(3 * i);
+  }
+  if (!(total > 0.0)) return;
+  centre /= total;
+  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
+  for (Eigen::Index i = 0; i < count; ++i) {
+    spread += mass_(3 * i) * (positions.segment<3>(3 * i) - centre) *
+              (rest_.segment<3>(3 * i) - rest_centre_).transpose();
+  }
+  followRotation(spread, body_rotation_);
+  turn_ = body_rotation_.toRotationMatrix();
+}
+
+void ImplicitElasticBody::step(btSoftBody& body, double h,
+                               const std::vector<btVector3>& acceleration,
+                               std::vector<ElasticContact>& contacts) {
+  if (h != factored_step_) factor(h);
+  const int count = body.m_nodes.size();
+  Eigen::VectorXd position(3 * count), velocity(3 * count);
+  for (int i = 0; i < count; ++i) {
+    position.segment<3>(3 * i) = eigen(body.m_nodes[i].m_x);
+    velocity.segment<3>(3 * i) = eigen(body.m_nodes[i].m_v);
+  }
+  followBodyRotation(position);
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(3 * count);
+  tets_.addForces(position, load);
+  for (int i = 0; i < count; ++i) {
+    const double mass = mass_(3 * i);
+    load.segment<3>(3 * i) =
+        mass > 0.0 ? Eigen::Vector3d(mass * velocity.segment<3>(3 * i) +
+                                     h * (load.segment<3>(3 * i) +
+                                          mass * eigen(acceleration[static_cast<std::size_t>(i)])))
+                   : Eigen::Vector3d::Zero();
+  }
+  // Solved in the rest frame, where the matrix was factored.
+  Nodes(load.data(), 3, count) = turn_.transpose() * Nodes(load.data(), 3, count);
+  Eigen::VectorXd next = system_.solve(load);
+  Nodes(next.data(), 3, count) = turn_ * Nodes(next.data(), 3, count);
+  solveContacts(next, contacts);
+  std::unordered_map<int, Eigen::Vector3d> pushed;
+  for (const auto& c : contacts) {
+    auto [it, fresh] = pushed.try_emplace(c.node, Eigen::Vector3d::Zero());
+    it->second += c.impulse;
+  }
+  for (const auto& [node, impulse] : pushed) {
+    Eigen::VectorXd answer = responseTo(node) * (turn_.transpose() * impulse);
+    Nodes(answer.data(), 3, count) = turn_ * Nodes(answer.data(), 3, count);
+    next += answer;
+  }
+  position += h * next;
+  // A node that began inside a surface was moved out: that is not motion it keeps.
+  for (const auto& c : contacts) {
+    if (c.start_depth <= 0.0) continue;
+    auto v = next.segment<3>(3 * c.node);
+    const double outward = c.normal.dot(v - c.surface_velocity);
+    v -= c.normal * std::clamp(c.start_depth / h, 0.0, std::max(0.0, outward));
+  }
+  for (int i = 0; i < count; ++i) {
+    btSoftBody::Node& node = body.m_nodes[i];
+    node.m_q = node.m_x;
+    node.m_x = bullet(position.segment<3>(3 * i));
+    node.m_v = bullet(next.segment<3>(3 * i));
+  }
+}
+
+void ImplicitElasticBody::solveContacts(const Eigen::VectorXd& free_velocity,
+                                        std::vector<ElasticContact>& contacts) {
+  if (contacts.empty()) return;
+  std::vector<int> nodes;
+  std::vector<std::size_t> slot_of(contacts.size());
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const auto found = std::find(nodes.begin(), nodes.end(), contacts[c].node);
+    slot_of[c] = static_cast<std::size_t>(found - nodes.begin());
+    if (found == nodes.end()) nodes.push_back(contacts[c].node);
+  }
+  const std::size_t slots = nodes.size();
+  // w[j * slots + i]: node j's velocity per impulse on node i, in the world frame.
+  std::vector<Eigen::Matrix3d> w(slots * slots);
+  for (std::size_t i = 0; i < slots; ++i) {
+    const Response& response = responseTo(nodes[i]);
+    for (std::size_t j = 0; j < slots; ++j) {
+      w[j * slots + i] = turn_ * response.middleRows<3>(3 * nodes[j]) * turn_.transpose();
+    }
+  }
+  std::vector<Eigen::Matrix3d> w_inverse(slots);
+  for (std::size_t i = 0; i < slots; ++i) w_inverse[i] = w[i * slots + i].inverse();
+  std::vector<Eigen::Vector3d> velocity(slots);
+  for (std::size_t j = 0; j < slots; ++j) {
+    velocity[j] = free_velocity.segment<3>(3 * nodes[j]);
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+      velocity[j] += w[j * slots + slot_of[c]] * contacts[c].impulse;
+    }
+  }
+  for (int sweep = 0; sweep < kMostContactSweeps; ++sweep) {
+    double largest_change = 0.0;
+    for (std::size_t c = 0; c < contacts.size(); ++c) {
+      ElasticContact& contact = contacts[c];
+      const std::size_t i = slot_of[c];
+      const Eigen::Matrix3d& own = w[i * slots + i];
+      const Eigen::Vector3d others = velocity[i] - own * contact.impulse;
+      const Eigen::Vector3d change =
+          contactImpulse(contact, own, w_inverse[i], others) - contact.impulse;
+      if (change.isZero(0.0)) continue;
+      for (std::size_t j = 0; j < slots; ++j) velocity[j] += w[j * slots + i] * change;
+      contact.impulse += change;
+      largest_change = std::max(largest_change, change.norm());
+    }
+    if (largest_change <= kImpulseTolerance) break;
+  }
+}
+
+}  // namespace ambf_like::detail
