@@ -8,7 +8,9 @@
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "harness/temp_dir.hpp"
 #include "peg_scene.hpp"
+#include "position_based_pegs.hpp"
 #include "raven/platform_profile.hpp"
 #include "raven/twin_arms.hpp"
 #include "sections.hpp"
@@ -92,6 +94,23 @@ void measureLoopFrequency(const BenchSettings& s, Report& report) {
   report.add(atLeast(kSection, "peg scene, both arms holding a ring (friction grasps)",
                      Spread::of(held), "steps/s", 5000,
                      "the iterations of the same runs in which both arms carried a ring"));
+  {
+    // The same runs with the rings as they were before they were silicone.
+    harness::TempDir dir;
+    const auto before = writePositionBasedPegScene(dir.path());
+    std::vector<PegSceneRate> position_based;
+    for (int i = 0; i < s.repeat; ++i) {
+      position_based.push_back(
+          pegScene({.launch = before, .seconds = seconds, .squeeze = kPositionBasedSqueeze}, 1)
+              .front());
+    }
+    std::vector<double> held_before;
+    for (const auto& r : position_based) held_before.push_back(r.both_holding);
+    report.add(measured(kSection, "peg scene, both arms holding a ring, position-based rings",
+                        Spread::of(held_before), "steps/s",
+                        "the rings before they were silicone (links, shape matching, 4 substeps "
+                        "of 2 iterations, gripped at 1.5 mm), same segment"));
+  }
   report.add(measured(kSection, "peg scene, free-running, grasp assist",
                       Spread::of(wholeRates(assisted)), "steps/s",
                       "the same segment with --grasp-assist contact, alternating"));

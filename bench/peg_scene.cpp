@@ -16,6 +16,7 @@ std::vector<PegSceneRate> pegScene(const PegSceneRun& run, int repeat) {
     options.time_limit = run.seconds;
     options.settle_time = 0.0;
     options.observe = run.observe;
+    options.squeeze = run.squeeze;
     // Iterations in which both arms held a ring from start to end: their simulated and wall time.
     double held_sim = 0.0, held_wall = 0.0;
     scenario::RunProgress last{};

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "bridge/raven_platform.hpp"
+#include "scenario/arm_routine.hpp"
 #include "scenario/peg_transfer.hpp"
 
 namespace bench {
@@ -17,6 +18,7 @@ struct PegSceneRun {
   scenario::AssistMode assist = scenario::AssistMode::Off;  ///< friction grasps by default
   double seconds = 0.0;
   scenario::WorldObserver observe{};
+  double squeeze = scenario::ArmRoutine::kDefaultSqueeze;  ///< m into the ring's wall
 };
 
 /// The loop frequency (physics steps per wall second) of one run, over the whole run and over

@@ -33,14 +33,15 @@ Eigen::Matrix<double, 3, 4> shapeGradients(const Eigen::Matrix3d& rest_inverse) 
 
 }  // namespace
 
-void followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation) {
+Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation) {
   // Each iteration turns the rotation about the axis that brings its columns towards F's, by
   // the quaternion (1, turn / 2) normalised: exact to second order in the turn, and the
-  // iterations converge on the rest.
+  // iterations converge on the rest. A turn below a micro-radian moves a force by a millionth
+  // of the stress.
   constexpr int kMostIterations = 4;
-  constexpr double kConverged = 1e-9;  // rad
+  constexpr double kConverged = 1e-6;  // rad
+  Eigen::Matrix3d r = rotation.toRotationMatrix();
   for (int i = 0; i < kMostIterations; ++i) {
-    const Eigen::Matrix3d r = rotation.toRotationMatrix();
     const Eigen::Vector3d torque =
         r.col(0).cross(f.col(0)) + r.col(1).cross(f.col(1)) + r.col(2).cross(f.col(2));
     const double alignment =
@@ -49,7 +50,9 @@ void followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation) {
     if (!(half_turn.squaredNorm() > 0.25 * kConverged * kConverged)) break;
     rotation = Eigen::Quaterniond(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * rotation;
     rotation.normalize();
+    r = rotation.toRotationMatrix();
   }
+  return r;
 }
 
 CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& material)
@@ -70,6 +73,7 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
     tet.volume = rest.determinant() / 6.0;
     if (!(tet.volume > 0.0)) continue;  // a flat tetrahedron carries no elasticity
     tet.rest_inverse = rest.inverse();
+    tet.shape_gradients = shapeGradients(tet.rest_inverse);
     tets_.push_back(tet);
   }
 }
@@ -78,15 +82,13 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (auto& tet : tets_) {
     const Eigen::Matrix3d f = edges(positions, tet.node) * tet.rest_inverse;
-    followRotation(f, tet.rotation);
-    const Eigen::Matrix3d r = tet.rotation.toRotationMatrix();
+    const Eigen::Matrix3d r = followRotation(f, tet.rotation);
     const Eigen::Matrix3d unrotated = r.transpose() * f;
     const Eigen::Matrix3d strain = 0.5 * (unrotated + unrotated.transpose()) - identity;
     const Eigen::Matrix3d stress = 2.0 * mu_ * strain + lambda_ * strain.trace() * identity;
     // Each node's force: minus the rest volume times the first Piola stress times its shape
     // function's gradient.
-    const Eigen::Matrix<double, 3, 4> nodal =
-        -tet.volume * (r * stress) * shapeGradients(tet.rest_inverse);
+    const Eigen::Matrix<double, 3, 4> nodal = -tet.volume * (r * stress) * tet.shape_gradients;
     for (int k = 0; k < 4; ++k) forces.segment<3>(3 * tet.node[k]) += nodal.col(k);
   }
 }
@@ -96,7 +98,7 @@ std::vector<Eigen::Triplet<double>> CorotatedTets::restStiffness() const {
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(tets_.size() * 144);
   for (const auto& tet : tets_) {
-    const Eigen::Matrix<double, 3, 4> g = shapeGradients(tet.rest_inverse);
+    const Eigen::Matrix<double, 3, 4>& g = tet.shape_gradients;
     for (int a = 0; a < 4; ++a) {
       for (int b = 0; b < 4; ++b) {
         const Eigen::Matrix3d block =

@@ -32,10 +32,12 @@ class CorotatedTets {
   std::vector<Eigen::Triplet<double>> restStiffness() const;
 
  private:
-  /// One tetrahedron: its nodes, inverse rest edge matrix, rest volume and current rotation.
+  /// One tetrahedron: its nodes, inverse rest edge matrix, its shape functions' gradients
+  /// (columns, node 0 first), rest volume and current rotation.
   struct Tetrahedron {
     std::array<int, 4> node;
     Eigen::Matrix3d rest_inverse;
+    Eigen::Matrix<double, 3, 4> shape_gradients;
     double volume = 0.0;
     Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
   };
@@ -45,7 +47,8 @@ class CorotatedTets {
   std::vector<Tetrahedron> tets_;
 };
 
-/// Updates `rotation` towards the rotation of `f`'s polar decomposition (a few iterations).
-void followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation);
+/// Updates `rotation` towards the rotation of `f`'s polar decomposition (a few iterations);
+/// the rotation as a matrix.
+Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation);
 
 }  // namespace ambf_like::detail

@@ -1,5 +1,6 @@
 #include "implicit_elastic_body.hpp"
 
+#include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -22,6 +23,13 @@ btVector3 bullet(const Eigen::Vector3d& v) {
 constexpr double kImpulseTolerance = 1e-9;
 constexpr int kMostContactSweeps = 100;
 
+/// The velocity that keeps `contact`'s node stuck to its surface, just reaching it.
+Eigen::Vector3d stuckVelocity(const ElasticContact& contact) {
+  const Eigen::Vector3d& n = contact.normal;
+  const Eigen::Vector3d& u = contact.surface_velocity;
+  return u - n * n.dot(u) + n * contact.least_normal_velocity;
+}
+
 /// The impulse that best keeps `contact` on its surface and inside its friction cone, given
 /// the velocity `others` its node would have without it and `w`, its velocity per impulse.
 Eigen::Vector3d contactImpulse(const ElasticContact& contact, const Eigen::Matrix3d& w,
@@ -30,9 +38,7 @@ Eigen::Vector3d contactImpulse(const ElasticContact& contact, const Eigen::Matri
   const double shortfall = contact.least_normal_velocity - n.dot(others);
   if (shortfall <= 0.0) return Eigen::Vector3d::Zero();  // it leaves or rests unpressed
   // Stuck: it moves with the surface along it and just reaches it.
-  const Eigen::Vector3d& u = contact.surface_velocity;
-  const Eigen::Vector3d goal = u - n * n.dot(u) + n * contact.least_normal_velocity;
-  const Eigen::Vector3d stuck = w_inverse * (goal - others);
+  const Eigen::Vector3d stuck = w_inverse * (stuckVelocity(contact) - others);
   const double normal = n.dot(stuck);
   const Eigen::Vector3d tangential = stuck - n * normal;
   const double slip_push = tangential.norm();
@@ -46,6 +52,46 @@ Eigen::Vector3d contactImpulse(const ElasticContact& contact, const Eigen::Matri
     reach = n.dot(w * n);
   }
   return direction * std::max(0.0, shortfall / reach);
+}
+
+/// Replaces the impulses of the contacts that pressed in the last step by those that keep all of
+/// them stuck, solved at once from their blocks of `w` (velocity per impulse, `slots` nodes): at
+/// a steady grasp that is the answer, and Gauss-Seidel then only confirms it (projecting what
+/// must slide or let go). Skipped when two of them share a node.
+void solveAsStuck(std::vector<ElasticContact>& contacts, const std::vector<std::size_t>& slot_of,
+                  const std::vector<Eigen::Matrix3d>& w, std::size_t slots,
+                  const std::vector<Eigen::Vector3d>& free_velocity) {
+  std::vector<std::size_t> pressing;
+  std::vector<bool> taken(slots, false);
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    if (!(contacts[c].normal.dot(contacts[c].impulse) > 0.0)) continue;
+    if (taken[slot_of[c]]) return;
+    taken[slot_of[c]] = true;
+    pressing.push_back(c);
+  }
+  if (pressing.empty()) return;
+  const auto size = static_cast<Eigen::Index>(3 * pressing.size());
+  Eigen::MatrixXd response(size, size);
+  Eigen::VectorXd wanted(size);
+  for (std::size_t r = 0; r < pressing.size(); ++r) {
+    const std::size_t i = slot_of[pressing[r]];
+    const auto row = static_cast<Eigen::Index>(3 * r);
+    // The other contacts' impulses are zero: they did not press.
+    wanted.segment<3>(row) = stuckVelocity(contacts[pressing[r]]) - free_velocity[i];
+    for (std::size_t k = 0; k < pressing.size(); ++k) {
+      response.block<3, 3>(row, static_cast<Eigen::Index>(3 * k)) =
+          w[i * slots + slot_of[pressing[k]]];
+    }
+  }
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    if (!taken[slot_of[c]]) contacts[c].impulse.setZero();
+  }
+  const Eigen::LLT<Eigen::MatrixXd> factor(response);
+  if (factor.info() != Eigen::Success) return;
+  const Eigen::VectorXd impulse = factor.solve(wanted);
+  for (std::size_t r = 0; r < pressing.size(); ++r) {
+    contacts[pressing[r]].impulse = impulse.segment<3>(static_cast<Eigen::Index>(3 * r));
+  }
 }
 
 }  // namespace
@@ -114,8 +160,7 @@ void ImplicitElasticBody::followBodyRotation(const Eigen::VectorXd& positions) {
     spread += mass_(3 * i) * (positions.segment<3>(3 * i) - centre) *
               (rest_.segment<3>(3 * i) - rest_centre_).transpose();
   }
-  followRotation(spread, body_rotation_);
-  turn_ = body_rotation_.toRotationMatrix();
+  turn_ = followRotation(spread, body_rotation_);
 }
 
 void ImplicitElasticBody::step(btSoftBody& body, double h,
@@ -192,8 +237,9 @@ void ImplicitElasticBody::solveContacts(const Eigen::VectorXd& free_velocity,
   std::vector<Eigen::Matrix3d> w_inverse(slots);
   for (std::size_t i = 0; i < slots; ++i) w_inverse[i] = w[i * slots + i].inverse();
   std::vector<Eigen::Vector3d> velocity(slots);
+  for (std::size_t j = 0; j < slots; ++j) velocity[j] = free_velocity.segment<3>(3 * nodes[j]);
+  solveAsStuck(contacts, slot_of, w, slots, velocity);
   for (std::size_t j = 0; j < slots; ++j) {
-    velocity[j] = free_velocity.segment<3>(3 * nodes[j]);
     for (std::size_t c = 0; c < contacts.size(); ++c) {
       velocity[j] += w[j * slots + slot_of[c]] * contacts[c].impulse;
     }

@@ -54,15 +54,17 @@ void ProgressBar::finish() {
 
 std::string pegTable(const PegTransferResult& result) {
   std::string out =
-      fmt::format("{:<5} {:<5} {:<12} {:<12} {:<7} {:>9} {:>8} {:<6} {:>9} {:>13}  {}\n", "peg",
-                  "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)", "regrasps", "placed",
-                  "miss (mm)", "volume ratio", "lost");
+      fmt::format("{:<5} {:<5} {:<12} {:<12} {:<7} {:>9} {:>8} {:>11} {:<6} {:>9} {:>13}  {}\n",
+                  "peg", "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)", "regrasps",
+                  "squeeze (N)", "placed", "miss (mm)", "volume ratio", "lost");
   for (const PegOutcome& p : result.pegs) {
     out += fmt::format(
-        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:<6} {:>9.1f} {:>6.2f}-{:<6.2f}  {}\n",
+        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:>11} {:<6} {:>9.1f} {:>6.2f}-{:<6.2f}  "
+        "{}\n",
         p.peg, raven::armName(p.arm), millimetres(p.from), millimetres(p.to), yesNo(p.grasped),
-        p.lift * 1e3, p.regrasps, yesNo(p.placed), p.miss * 1e3, p.min_volume_ratio,
-        p.max_volume_ratio, p.lost ? p.loss : "no");
+        p.lift * 1e3, p.regrasps,
+        fmt::format("{:.2f}/{:.2f}", p.carried_squeeze[0], p.carried_squeeze[1]), yesNo(p.placed),
+        p.miss * 1e3, p.min_volume_ratio, p.max_volume_ratio, p.lost ? p.loss : "no");
   }
   out += fmt::format("placed {}/{}, lost {}, re-grasps {}{}\n", result.placed(), result.pegs.size(),
                      result.lost(), result.regrasps(),

@@ -8,6 +8,7 @@
 #include "controller/cf_recording.hpp"
 #include "controller/recording_io.hpp"
 #include "scenario/arm_routine.hpp"
+#include "scenario/carried_squeeze.hpp"
 #include "scenario/grasp_assist.hpp"
 #include "scenario/peg_watch.hpp"
 #include "scenario/scripted_session.hpp"
@@ -56,6 +57,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   ambf_like::World& world = session.twin().world();
   const PegLayout layout;
   PegWatch watch(world, layout);  // rest volumes: before the first step
+  CarriedSqueeze squeeze;
   session.makeReady(options.time_limit);
   controller::DualPlatformController& controller = session.controller();
   bridge::TwinPlatform& twin = session.twin();
@@ -104,6 +106,12 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
       cf->write(state.time,
                 {twin.measuredCf(raven::Arm::Left), twin.measuredCf(raven::Arm::Right)});
     }
+    for (const ArmRoutine& routine : routines) {
+      const auto forces = twin.measuredCf(routine.arm());
+      if (routine.phase() == Phase::Carry && forces && routine.carrying(world)) {
+        squeeze.record(routine.jobs()[routine.finished()].peg, *forces);
+      }
+    }
     watch.observe();
     ++result.iterations;
     progress.sim_time = twin.now();
@@ -126,6 +134,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   show(WorldMoment::End);
 
   result.pegs = watch.finish();
+  for (PegOutcome& outcome : result.pegs) outcome.carried_squeeze = squeeze.median(outcome.peg);
   for (const ArmRoutine& routine : routines) {
     for (std::size_t j = 0; j < routine.jobs().size(); ++j) {
       for (PegOutcome& outcome : result.pegs) {

@@ -35,6 +35,7 @@ nlohmann::json PegTransferResult::json() const {
          {"grasped", p.grasped},
          {"lift_m", p.lift},
          {"regrasps", p.regrasps},
+         {"carried_squeeze_n", p.carried_squeeze},
          {"placed", p.placed},
          {"lost", p.lost},
          {"loss", p.loss},

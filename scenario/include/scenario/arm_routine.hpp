@@ -36,6 +36,9 @@ class ArmRoutine {
   raven::ArmJoints next(const raven::ArmJoints& target, const ambf_like::World& world);
   bool done() const { return phase_ == Phase::Done; }
   Phase phase() const { return phase_; }
+  raven::Arm arm() const { return arm_; }
+  /// True when the ring of the current job is off the board (the jaws have it).
+  bool carrying(const ambf_like::World& world) const { return !done() && ringFollows(world); }
   /// The outer jaw's angle that reaches `squeeze` (m) into a ring's wall, the grasper placed as
   /// the routine places it.
   double jawAngleFor(double squeeze) const;
