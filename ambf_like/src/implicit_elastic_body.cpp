@@ -55,9 +55,9 @@ Eigen::Vector3d contactImpulse(const ElasticContact& contact, const Eigen::Matri
 }
 
 /// Replaces the impulses of the contacts that pressed in the last step by those that keep all of
-/// them stuck, solved at once from their blocks of `w` (velocity per impulse, `slots` nodes): at
-/// a steady grasp that is the answer, and Gauss-Seidel then only confirms it (projecting what
-/// must slide or let go). Skipped when two of them share a node.
+/// them stuck, solved at once from their blocks of `w` (velocity per impulse, `slots` nodes),
+/// when that is feasible: at a steady grasp it is the answer, and Gauss-Seidel then only
+/// confirms it. Skipped when two of them share a node.
 void solveAsStuck(std::vector<ElasticContact>& contacts, const std::vector<std::size_t>& slot_of,
                   const std::vector<Eigen::Matrix3d>& w, std::size_t slots,
                   const std::vector<Eigen::Vector3d>& free_velocity) {
@@ -83,12 +83,23 @@ void solveAsStuck(std::vector<ElasticContact>& contacts, const std::vector<std::
           w[i * slots + slot_of[pressing[k]]];
     }
   }
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    if (!taken[slot_of[c]]) contacts[c].impulse.setZero();
-  }
   const Eigen::LLT<Eigen::MatrixXd> factor(response);
   if (factor.info() != Eigen::Success) return;
   const Eigen::VectorXd impulse = factor.solve(wanted);
+  // Taken only if every one of them presses and stays inside its cone: then it is the answer
+  // for them. Otherwise (a resting body's supports can pull against each other when all are held
+  // stuck) Gauss-Seidel starts from the last step's impulses.
+  for (std::size_t r = 0; r < pressing.size(); ++r) {
+    const ElasticContact& contact = contacts[pressing[r]];
+    const Eigen::Vector3d p = impulse.segment<3>(static_cast<Eigen::Index>(3 * r));
+    const double normal = contact.normal.dot(p);
+    if (!(normal > 0.0) || (p - contact.normal * normal).norm() > contact.friction * normal) {
+      return;
+    }
+  }
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    if (!taken[slot_of[c]]) contacts[c].impulse.setZero();
+  }
   for (std::size_t r = 0; r < pressing.size(); ++r) {
     contacts[pressing[r]].impulse = impulse.segment<3>(static_cast<Eigen::Index>(3 * r));
   }

@@ -36,7 +36,7 @@ TEST(PegTransferBatch, TheNominalSceneIsPlacedWholeByFrictionAlone) {
   }
 }
 
-TEST(PegTransferBatch, EighteenOfTwentyRandomisedRunsPlaceAllSixPegsAndNoneIsLost) {
+TEST(PegTransferBatch, NineteenOfTwentyRandomisedRunsPlaceAllSixPegsAndNoneIsLost) {
   scenario::PegTransferOptions options;
   options.randomize = true;
   ASSERT_EQ(options.assist, scenario::AssistMode::Off);
@@ -60,7 +60,7 @@ TEST(PegTransferBatch, EighteenOfTwentyRandomisedRunsPlaceAllSixPegsAndNoneIsLos
       }
     }
   }
-  EXPECT_GE(complete, 18u);
+  EXPECT_GE(complete, 19u);
 }
 
 TEST(PegTransferBatch, AnOperatorWhoseGripCannotHoldTriesEachRingThreeTimesAndMovesOn) {
