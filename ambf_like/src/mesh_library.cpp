@@ -90,9 +90,7 @@ void checkTetrahedra(const Mesh& mesh, const SourceRef& referenced_from) {
     for (int i = 0; i < 4; ++i) {
       for (int j = i + 1; j < 4; ++j) longest = std::max(longest, (corner(i) - corner(j)).norm());
     }
-    const double volume =
-        (corner(1) - corner(0)).cross(corner(2) - corner(0)).dot(corner(3) - corner(0)) / 6.0;
-    if (!(volume > kFlatness * longest * longest * longest)) {
+    if (!(mesh.volume(t) > kFlatness * longest * longest * longest)) {
       throw LoadError(referenced_from, "mesh " + mesh.file.string() + ": cell " +
                                            std::to_string(c) +
                                            " is flat (no volume to speak of for its size)");
@@ -195,6 +193,13 @@ Vec3 Mesh::centroid() const {
   Vec3 sum = Vec3::Zero();
   for (const auto& v : vertices) sum += v;
   return vertices.empty() ? sum : Vec3(sum / static_cast<double>(vertices.size()));
+}
+
+double Mesh::volume(const std::array<int, 4>& tetrahedron) const {
+  auto corner = [&](int k) -> const Vec3& {
+    return vertices[static_cast<std::size_t>(tetrahedron[static_cast<std::size_t>(k)])];
+  };
+  return (corner(1) - corner(0)).cross(corner(2) - corner(0)).dot(corner(3) - corner(0)) / 6.0;
 }
 
 std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,

@@ -84,14 +84,6 @@ class Tokens {
   std::size_t next_ = 0;
 };
 
-double signedVolume(const Mesh& mesh, const std::array<int, 4>& t) {
-  const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
-  return (mesh.vertices[static_cast<std::size_t>(t[1])] - a)
-             .cross(mesh.vertices[static_cast<std::size_t>(t[2])] - a)
-             .dot(mesh.vertices[static_cast<std::size_t>(t[3])] - a) /
-         6.0;
-}
-
 /// The faces that belong to one tetrahedron only, wound outward.
 std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 4>>& tets) {
   // Each face of a positive tetrahedron (a, b, c, d), wound so its normal leaves the tetrahedron.
@@ -156,7 +148,7 @@ Mesh readVtkTetMesh(const std::filesystem::path& file) {
     std::array<int, 4> t{};
     for (int& index : t) index = static_cast<int>(in.integer("a point index", 0, points - 1));
     tets.push_back(t);
-    const double volume = signedVolume(mesh, t);
+    const double volume = mesh.volume(t);
     if (!(std::abs(volume) > 0.0)) in.fail("cell " + std::to_string(c) + " has no volume", -1);
     if (volume < 0.0) std::swap(tets.back()[2], tets.back()[3]);
   }

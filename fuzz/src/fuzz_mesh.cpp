@@ -41,11 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkIndices(mesh->triangles, mesh->vertices.size(), "triangle");
     checkIndices(mesh->tetrahedra, mesh->vertices.size(), "tetrahedron");
     for (const auto& t : mesh->tetrahedra) {
-      const auto& a = mesh->vertices[static_cast<std::size_t>(t[0])];
-      const double volume = (mesh->vertices[static_cast<std::size_t>(t[1])] - a)
-                                .cross(mesh->vertices[static_cast<std::size_t>(t[2])] - a)
-                                .dot(mesh->vertices[static_cast<std::size_t>(t[3])] - a);
-      if (!(volume > 0.0)) fuzz::fail("a loaded tetrahedron has no positive volume");
+      if (!(mesh->volume(t) > 0.0)) fuzz::fail("a loaded tetrahedron has no positive volume");
     }
   } catch (const ambf_like::LoadError&) {
   }

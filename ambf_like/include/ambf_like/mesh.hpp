@@ -23,6 +23,9 @@ struct Mesh {
 
   /// Mean of the vertices (AMBF's default inertial offset for mesh bodies).
   Vec3 centroid() const;
+  /// The signed volume of the tetrahedron of these four vertex indices (positive when the fourth
+  /// lies on the side the first three's right-handed normal points to).
+  double volume(const std::array<int, 4>& tetrahedron) const;
 };
 
 /// Loads each mesh file once (assimp) and hands out shared, immutable copies.

@@ -77,34 +77,33 @@ std::set<std::string> connectedPublishers(const XmlRpcValue& bus_info, const std
   return uris;
 }
 
+/// Registers `topic` of `type` as this node's with the master (`method`: registerPublisher or
+/// registerSubscriber); the master's answer (for a subscriber, the topic's publishers) in
+/// `payload`. False when the master did not take it.
+bool registerWithMaster(const char* method, const std::string& topic, const std::string& type,
+                        XmlRpcValue& payload) {
+  XmlRpcValue request, response;
+  request[0] = ::ros::this_node::getName();
+  request[1] = topic;
+  request[2] = type;
+  request[3] = ::ros::XMLRPCManager::instance()->getServerURI();
+  return ::ros::master::execute(method, request, response, payload, false);
+}
+
 /// Registers every publication and subscription of this process with the (new) master and
 /// hands each subscription the publishers the master knows of. Returns how many topics.
 int registerEverything() {
-  const std::string me = ::ros::this_node::getName();
-  const std::string my_api = ::ros::XMLRPCManager::instance()->getServerURI();
   int registered = 0;
   for (const auto& [topic, type] : topicsOfThisNode("getPublications")) {
-    XmlRpcValue request, response, payload;
-    request[0] = me;
-    request[1] = topic;
-    request[2] = type;
-    request[3] = my_api;
-    if (::ros::master::execute("registerPublisher", request, response, payload, false)) {
-      ++registered;
-    }
+    XmlRpcValue payload;
+    if (registerWithMaster("registerPublisher", topic, type, payload)) ++registered;
   }
   XmlRpcValue no_request;
-  no_request[0] = me;
+  no_request[0] = ::ros::this_node::getName();
   const XmlRpcValue bus_info = askThisNode("getBusInfo", no_request).value_or(XmlRpcValue());
   for (const auto& [topic, type] : topicsOfThisNode("getSubscriptions")) {
-    XmlRpcValue request, response, payload;
-    request[0] = me;
-    request[1] = topic;
-    request[2] = type;
-    request[3] = my_api;
-    if (!::ros::master::execute("registerSubscriber", request, response, payload, false)) {
-      continue;
-    }
+    XmlRpcValue payload;
+    if (!registerWithMaster("registerSubscriber", topic, type, payload)) continue;
     ++registered;
     std::set<std::string> publishers = bus_info.getType() == XmlRpcValue::TypeArray
                                            ? connectedPublishers(bus_info, topic)

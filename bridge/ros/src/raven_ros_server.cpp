@@ -9,6 +9,7 @@
 #include <spdlog/spdlog.h>
 #include <std_msgs/String.h>
 
+#include <algorithm>
 #include <array>
 #include <deque>
 #include <optional>
@@ -61,6 +62,15 @@ IncomingCommand automoveFrom(const raven_2::raven_automove& message) {
     out.commands.push_back(ServoCr{arm, *increment.value});
   }
   return out;
+}
+
+/// How many commands of each topic `step` names (ids of no topic left out).
+std::array<std::size_t, kCommandTopicCount> namedCommands(const raven_twin::Step& step) {
+  std::array<std::size_t, kCommandTopicCount> named{};
+  for (std::uint8_t id : step.command_order) {
+    if (id < kCommandTopicCount) ++named[id];
+  }
+  return named;
 }
 
 }  // namespace
@@ -270,10 +280,7 @@ void RavenRosServer::Impl::spinOnce(double wait) {
 }
 
 std::string RavenRosServer::Impl::missingCommands(const StepMessage& step) const {
-  std::array<std::size_t, kCommandTopicCount> needed{};
-  for (std::uint8_t id : step.command_order) {
-    if (id < kCommandTopicCount) ++needed[id];
-  }
+  const auto needed = namedCommands(step);
   std::string missing;
   for (CommandTopic topic : allCommandTopics()) {
     const auto i = static_cast<std::size_t>(topic);
@@ -305,13 +312,10 @@ std::optional<std::string> RavenRosServer::Impl::stepRefusal(const PendingStep& 
 
 void RavenRosServer::Impl::refuseStep(const StepMessage& step, const std::string& why) {
   // The commands of it that did arrive go too: a later step must not take them for its own.
-  std::array<std::size_t, kCommandTopicCount> dropped{};
-  for (std::uint8_t id : step.command_order) {
-    if (id >= kCommandTopicCount || dropped[id] >= pending_[id].size()) continue;
-    ++dropped[id];
-  }
+  const auto named = namedCommands(step);
   for (std::size_t i = 0; i < kCommandTopicCount; ++i) {
-    pending_[i].erase(pending_[i].begin(), pending_[i].begin() + static_cast<long>(dropped[i]));
+    const auto dropped = static_cast<long>(std::min(named[i], pending_[i].size()));
+    pending_[i].erase(pending_[i].begin(), pending_[i].begin() + dropped);
   }
   log_.warn("refused a lock-step step",
             "refused lock-step step " + std::to_string(step.seq) + ": " + why, platform_.now());
