@@ -5,14 +5,11 @@
 #include <Eigen/LU>
 #include <cmath>
 
+#include "ambf_like/bullet_conversions.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
-
-Eigen::Vector3d restPosition(const btSoftBody& body, int node) {
-  const btVector3& x = body.m_nodes[node].m_x;
-  return {x.x(), x.y(), x.z()};
-}
 
 /// The edge matrix [x1 - x0, x2 - x0, x3 - x0] of four nodes of `positions`.
 Eigen::Matrix3d edges(const Eigen::VectorXd& positions, const std::array<int, 4>& node) {
@@ -64,7 +61,7 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
     for (int k = 0; k < 4; ++k) tet.node[k] = static_cast<int>(source.m_n[k] - &body.m_nodes[0]);
     Eigen::Matrix3d rest;
     for (int k = 0; k < 3; ++k) {
-      rest.col(k) = restPosition(body, tet.node[k + 1]) - restPosition(body, tet.node[0]);
+      rest.col(k) = toEigen(body.m_nodes[tet.node[k + 1]].m_x - body.m_nodes[tet.node[0]].m_x);
     }
     if (rest.determinant() < 0.0) {  // every tetrahedron positively oriented
       std::swap(tet.node[1], tet.node[2]);

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ambf_like/bullet_conversions.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
@@ -154,9 +156,8 @@ void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& register
     const btVector3& x = rc.m_node->m_x;
     ElasticContact c;
     c.node = static_cast<int>(rc.m_node - &body.m_nodes[0]);
-    c.normal = {n.x(), n.y(), n.z()};
-    const btVector3& u = contacts_[index].surface_velocity;
-    c.surface_velocity = {u.x(), u.y(), u.z()};
+    c.normal = toEigen(n);
+    c.surface_velocity = toEigen(contacts_[index].surface_velocity);
     const btScalar gap_at_end = n.dot(x) + rc.m_cti.m_offset - surfaceAdvance(rc, index, elapsed);
     c.least_normal_velocity = -gap_at_end / hs;
     c.start_depth = -(n.dot(x) + rc.m_cti.m_offset - surfaceAdvance(rc, index, elapsed - hs));
@@ -168,9 +169,6 @@ void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& register
     contacts.push_back(c);
     source.push_back(index);
   }
-  for (std::size_t k = 0; k < acceleration_.size(); ++k) {
-    body.m_nodes[static_cast<int>(k)].m_q = body.m_nodes[static_cast<int>(k)].m_x;
-  }
   registered.elasticity->step(body, hs, acceleration_, contacts);
   runBulletSolvers(body);
   registered.last_impulse.clear();
@@ -178,7 +176,7 @@ void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& register
     const ElasticContact& c = contacts[k];
     const btSoftBody::RContact& rc = body.m_rcontacts[static_cast<int>(source[k])];
     registered.last_impulse[{c.node, rc.m_cti.m_colObj}] = c.impulse;
-    const btVector3 impulse(c.impulse.x(), c.impulse.y(), c.impulse.z());
+    const btVector3 impulse = toBt(c.impulse);
     Accumulated& state = contacts_[source[k]];
     state.impulse += impulse;
     state.normal_impulse += rc.m_cti.m_normal * rc.m_cti.m_normal.dot(impulse);

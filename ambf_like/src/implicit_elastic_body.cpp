@@ -5,17 +5,16 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "ambf_like/bullet_conversions.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
 
-using Nodes = Eigen::Map<Eigen::Matrix3Xd>;
-
-Eigen::Vector3d eigen(const btVector3& v) {
-  return {v.x(), v.y(), v.z()};
-}
-btVector3 bullet(const Eigen::Vector3d& v) {
-  return {v.x(), v.y(), v.z()};
+/// Turns every node's 3-vector of `nodes` (3 entries per node) by `turn`.
+void turnEach(Eigen::VectorXd& nodes, const Eigen::Matrix3d& turn) {
+  Eigen::Map<Eigen::Matrix3Xd> each(nodes.data(), 3, nodes.size() / 3);
+  each = turn * each;
 }
 
 /// Projected Gauss-Seidel stops when no impulse changed by more than this (N s: a micronewton
@@ -118,7 +117,7 @@ ImplicitElasticBody::ImplicitElasticBody(const btSoftBody& body, const SoftMater
     const btSoftBody::Node& node = body.m_nodes[i];
     const double mass = node.m_im > 0.0 ? 1.0 / node.m_im : 0.0;
     mass_.segment<3>(3 * i).setConstant(mass);
-    rest_.segment<3>(3 * i) = eigen(node.m_x);
+    rest_.segment<3>(3 * i) = toEigen(node.m_x);
     rest_centre_ += mass * rest_.segment<3>(3 * i);
     total += mass;
   }
@@ -181,8 +180,8 @@ void ImplicitElasticBody::step(btSoftBody& body, double h,
   const int count = body.m_nodes.size();
   Eigen::VectorXd position(3 * count), velocity(3 * count);
   for (int i = 0; i < count; ++i) {
-    position.segment<3>(3 * i) = eigen(body.m_nodes[i].m_x);
-    velocity.segment<3>(3 * i) = eigen(body.m_nodes[i].m_v);
+    position.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_x);
+    velocity.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_v);
   }
   followBodyRotation(position);
   Eigen::VectorXd load = Eigen::VectorXd::Zero(3 * count);
@@ -190,24 +189,24 @@ void ImplicitElasticBody::step(btSoftBody& body, double h,
   for (int i = 0; i < count; ++i) {
     const double mass = mass_(3 * i);
     load.segment<3>(3 * i) =
-        mass > 0.0 ? Eigen::Vector3d(mass * velocity.segment<3>(3 * i) +
-                                     h * (load.segment<3>(3 * i) +
-                                          mass * eigen(acceleration[static_cast<std::size_t>(i)])))
-                   : Eigen::Vector3d::Zero();
+        mass > 0.0
+            ? Eigen::Vector3d(mass * velocity.segment<3>(3 * i) +
+                              h * (load.segment<3>(3 * i) +
+                                   mass * toEigen(acceleration[static_cast<std::size_t>(i)])))
+            : Eigen::Vector3d::Zero();
   }
   // Solved in the rest frame, where the matrix was factored.
-  Nodes(load.data(), 3, count) = turn_.transpose() * Nodes(load.data(), 3, count);
+  turnEach(load, turn_.transpose());
   Eigen::VectorXd next = system_.solve(load);
-  Nodes(next.data(), 3, count) = turn_ * Nodes(next.data(), 3, count);
+  turnEach(next, turn_);
   solveContacts(next, contacts);
   std::unordered_map<int, Eigen::Vector3d> pushed;
   for (const auto& c : contacts) {
-    auto [it, fresh] = pushed.try_emplace(c.node, Eigen::Vector3d::Zero());
-    it->second += c.impulse;
+    pushed.try_emplace(c.node, Eigen::Vector3d::Zero()).first->second += c.impulse;
   }
   for (const auto& [node, impulse] : pushed) {
     Eigen::VectorXd answer = responseTo(node) * (turn_.transpose() * impulse);
-    Nodes(answer.data(), 3, count) = turn_ * Nodes(answer.data(), 3, count);
+    turnEach(answer, turn_);
     next += answer;
   }
   position += h * next;
@@ -221,8 +220,8 @@ void ImplicitElasticBody::step(btSoftBody& body, double h,
   for (int i = 0; i < count; ++i) {
     btSoftBody::Node& node = body.m_nodes[i];
     node.m_q = node.m_x;
-    node.m_x = bullet(position.segment<3>(3 * i));
-    node.m_v = bullet(next.segment<3>(3 * i));
+    node.m_x = toBt(position.segment<3>(3 * i));
+    node.m_v = toBt(next.segment<3>(3 * i));
   }
 }
 

@@ -317,6 +317,34 @@ TEST(SoftMaterial, AMaterialThatIsNotPhysicalIsRefusedNamingItsKey) {
       materialError("  material: {young's modulus: 5e8, poisson's ratio: 0.49, density: 1}\n"), "");
 }
 
+TEST(SoftMaterial, AMaterialFarStifferThanTheStepCouldFollowRestsStillOnAPlate) {
+  // 500 MPa, nu 0.49, 1100 kg/m^3: an explicit step would need about 5 us (a 3.3 mm element
+  // over a 670 m/s wave). Its own weight squeezes it by nanometres, so it must rest where it was
+  // put, at every node, at 1 and 10 ms.
+  TempDir dir;
+  dir.write("cube.vtk", boxVtk(3, 3, 3, kSide / 3));
+  std::ostringstream adf;
+  adf << "bodies: [BODY bottom]\nsoft bodies: [BODY cube]\n"
+      << "BODY bottom: {name: bottom, mass: 0, collision shape: BOX, collision geometry: {x: 0.1, "
+         "y: 0.1, z: 0.02}, location: {position: {x: 0, y: 0, z: -0.01}}}\n"
+      << "BODY cube:\n  name: cube\n  mesh: cube.vtk\n"
+      << "  material: {young's modulus: 5e8, poisson's ratio: 0.49, density: 1100}\n"
+      << "  location: {position: {x: -0.005, y: -0.005, z: " << kMargin << "}}\n"
+      << "  collision margin: " << kMargin << "\n  config: {kDF: 0.8, kDP: 0.02}\n";
+  for (double step : {0.001, 0.01}) {
+    auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, contactWorld(step));
+    auto& cube = sim->world->softBody("cube");
+    const auto rest = cube.nodePositions();
+    sim->world->step(500);
+    ASSERT_TRUE(cube.isFinite()) << "step " << step;
+    double moved = 0.0;
+    for (std::size_t i = 0; i < rest.size(); ++i) {
+      moved = std::max(moved, (cube.nodePosition(i) - rest[i]).norm());
+    }
+    EXPECT_LT(moved, 1e-6) << "step " << step;
+  }
+}
+
 TEST(SoftMaterial, ItsMassIsItsDensityTimesItsVolume) {
   TempDir dir;
   dir.write("cube.vtk", boxVtk(2, 2, 2, 0.005));
