@@ -233,8 +233,12 @@ void YamlView::checkKeysImpl(std::span<const std::string_view> known, bool allow
   if (!node_.IsMap()) fail("expected a mapping");
   std::map<std::string, int> first_line;
   for (const auto& entry : node_) {
-    const auto key = entry.first.as<std::string>();
     const int key_line = entry.first.Mark().line + 1;
+    if (!entry.first.IsScalar()) {
+      throw LoadError(SourceRef{*file_, key_line, key_path_},
+                      "a key must be a name, not a list or a mapping ('? ' starts a complex key)");
+    }
+    const auto key = entry.first.as<std::string>();
     SourceRef key_where{*file_, key_line, childPath(key)};
     if (auto [it, inserted] = first_line.emplace(key, key_line); !inserted) {
       check.warnings.push_back({key_where, "duplicate key; the first one (line " +

@@ -136,6 +136,16 @@ TEST(BadInput, UnknownKeySuggestsTheRightOne) {
   EXPECT_THAT(scene.warnings[0].message, HasSubstr("unknown key 'frition'"));
 }
 
+TEST(BadInput, AKeyThatIsAListIsRefusedByLine) {
+  // YAML's complex key ('? ' then a list): yaml-cpp threw from inside the key check (found by
+  // fuzz_adf; fuzz/regressions/adf/complex_key_sequence).
+  TempDir dir;
+  const auto file = dir.write("m.yaml", model("1.0", "  ? - a\n    - b\n  : 1\n"));
+  const auto message = loadErrorOf([&] { ambf_like::loadModelFiles({file}); });
+  EXPECT_THAT(message, AllOf(HasSubstr(file.string() + ":13"), HasSubstr("BODY box"),
+                             HasSubstr("a key must be a name")));
+}
+
 TEST(BadInput, ListedButUndefinedIdentifier) {
   TempDir dir;
   const auto file = dir.write("m.yaml", "bodies: [BODY a]\n");
