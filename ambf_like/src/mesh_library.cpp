@@ -117,6 +117,31 @@ std::optional<std::size_t> malformedColladaIndexList(const std::string& text) {
   return std::nullopt;
 }
 
+/// The line of the first COLLADA <float_array> or <int_array> whose `count` is not the number of
+/// values it holds (assimp 5.2 reads an accessor's values past an array declared shorter).
+std::optional<std::size_t> miscountedColladaArray(const std::string& text) {
+  for (const char* tag : {"<float_array", "<int_array"}) {
+    for (auto open = text.find(tag); open != std::string::npos; open = text.find(tag, open + 1)) {
+      const auto body = text.find('>', open);
+      const auto end = text.find('<', body);
+      if (body == std::string::npos || end == std::string::npos) break;
+      const std::string head = text.substr(open, body - open);
+      const auto count_at = head.find("count=\"");
+      std::size_t values = 0;
+      std::istringstream tokens(text.substr(body + 1, end - body - 1));
+      for (std::string token; tokens >> token;) ++values;
+      const bool counted = count_at != std::string::npos &&
+                           head.compare(count_at + 7, std::to_string(values).size() + 1,
+                                        std::to_string(values) + "\"") == 0;
+      if (!counted) {
+        return 1 + static_cast<std::size_t>(
+                       std::count(text.begin(), text.begin() + static_cast<long>(open), '\n'));
+      }
+    }
+  }
+  return std::nullopt;
+}
+
 /// assimp's XML formats (COLLADA and others, whatever the file is called) recurse once per
 /// nested node until the stack ends: a file that is XML is measured first, and its COLLADA
 /// index lists checked.
@@ -139,6 +164,10 @@ void refuseDeepXml(const std::filesystem::path& file, Fail fail) {
   if (const auto line = malformedColladaIndexList(text.str())) {
     throw fail("line " + std::to_string(*line) +
                ": an index list (<p>, <v> or <vcount>) holds something other than whole numbers");
+  }
+  if (const auto line = miscountedColladaArray(text.str())) {
+    throw fail("line " + std::to_string(*line) +
+               ": an array's count is not the number of values it holds");
   }
 }
 
