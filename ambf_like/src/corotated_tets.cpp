@@ -30,26 +30,25 @@ Eigen::Matrix<double, 3, 4> shapeGradients(const Eigen::Matrix3d& rest_inverse) 
 
 }  // namespace
 
-Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation) {
+void followRotation(const Eigen::Matrix3d& f, Rotation& rotation, int most_iterations) {
   // Each iteration turns the rotation about the axis that brings its columns towards F's, by
   // the quaternion (1, turn / 2) normalised: exact to second order in the turn, and the
   // iterations converge on the rest. A turn below a micro-radian moves a force by a millionth
   // of the stress.
-  constexpr int kMostIterations = 4;
   constexpr double kConverged = 1e-6;  // rad
-  Eigen::Matrix3d r = rotation.toRotationMatrix();
-  for (int i = 0; i < kMostIterations; ++i) {
+  Eigen::Matrix3d& r = rotation.matrix;
+  for (int i = 0; i < most_iterations; ++i) {
     const Eigen::Vector3d torque =
         r.col(0).cross(f.col(0)) + r.col(1).cross(f.col(1)) + r.col(2).cross(f.col(2));
     const double alignment =
         std::abs(r.col(0).dot(f.col(0)) + r.col(1).dot(f.col(1)) + r.col(2).dot(f.col(2)));
     const Eigen::Vector3d half_turn = 0.5 * torque / (alignment + 1e-9);
     if (!(half_turn.squaredNorm() > 0.25 * kConverged * kConverged)) break;
-    rotation = Eigen::Quaterniond(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * rotation;
-    rotation.normalize();
-    r = rotation.toRotationMatrix();
+    rotation.quaternion =
+        Eigen::Quaterniond(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * rotation.quaternion;
+    rotation.quaternion.normalize();
+    r = rotation.quaternion.toRotationMatrix();
   }
-  return r;
 }
 
 CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& material)
@@ -79,7 +78,8 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (auto& tet : tets_) {
     const Eigen::Matrix3d f = edges(positions, tet.node) * tet.rest_inverse;
-    const Eigen::Matrix3d r = followRotation(f, tet.rotation);
+    followRotation(f, tet.rotation, kRotationIterationsPerStep);
+    const Eigen::Matrix3d& r = tet.rotation.matrix;
     const Eigen::Matrix3d unrotated = r.transpose() * f;
     const Eigen::Matrix3d strain = 0.5 * (unrotated + unrotated.transpose()) - identity;
     const Eigen::Matrix3d stress = 2.0 * mu_ * strain + lambda_ * strain.trace() * identity;

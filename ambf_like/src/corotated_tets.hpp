@@ -13,6 +13,12 @@ class btSoftBody;
 
 namespace ambf_like::detail {
 
+/// A rotation followed from step to step: as a unit quaternion, and as the matrix it makes.
+struct Rotation {
+  Eigen::Quaterniond quaternion = Eigen::Quaterniond::Identity();
+  Eigen::Matrix3d matrix = Eigen::Matrix3d::Identity();
+};
+
 /// The corotated linear-elastic solid (Mueller et al. 2002; energy per rest volume
 /// psi = mu |eps|^2 + lambda/2 tr(eps)^2 with eps = sym(R^T F) - I, R the rotation of F): small
 /// strains answer as linear elasticity with the material's E and nu, and a rigid rotation of
@@ -20,7 +26,11 @@ namespace ambf_like::detail {
 /// E (s - 1) exactly, at any strain.
 ///
 /// Each tetrahedron's rotation is found by Mueller, Bender, Chentanez and Macklin's (2016)
-/// iteration, warm started from the last one, so that it costs a few products per step.
+/// iteration, warm started from the last one, once per step as they advise: it tracks the
+/// rotation over the steps (a step's change is small), and an error in it moves a force only at
+/// second order (the strain is the symmetric part of R^T F), so more iterations per step would
+/// triple the cost of a held ring (1.9 on average to converge to a micro-radian while carried)
+/// for no force a test can see.
 class CorotatedTets {
  public:
   /// The tetrahedra of `body` (rest shape: the nodes where they are now).
@@ -39,7 +49,7 @@ class CorotatedTets {
     Eigen::Matrix3d rest_inverse;
     Eigen::Matrix<double, 3, 4> shape_gradients;
     double volume = 0.0;
-    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+    Rotation rotation;
   };
 
   double mu_;
@@ -47,8 +57,11 @@ class CorotatedTets {
   std::vector<Tetrahedron> tets_;
 };
 
-/// Updates `rotation` towards the rotation of `f`'s polar decomposition (a few iterations);
-/// the rotation as a matrix.
-Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Eigen::Quaterniond& rotation);
+/// Updates `rotation` towards the rotation of `f`'s polar decomposition, by at most
+/// `most_iterations` iterations (none once within a micro-radian).
+void followRotation(const Eigen::Matrix3d& f, Rotation& rotation, int most_iterations);
+
+/// Iterations of each tetrahedron's rotation per step.
+constexpr int kRotationIterationsPerStep = 1;
 
 }  // namespace ambf_like::detail

@@ -66,6 +66,14 @@ void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
   }
 }
 
+void CoulombContactSolver::updateSoftBodies() {
+  for (int i = 0; i < m_softBodySet.size(); ++i) {
+    btSoftBody& body = *m_softBodySet[i];
+    const bool aerodynamic = body.m_cfg.kLF > 0.0 || body.m_cfg.kDG > 0.0;
+    if (body.isActive() && (aerodynamic || !coulomb_.contains(&body))) body.integrateMotion();
+  }
+}
+
 void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
   prepareWithBullet(body);
   const btScalar h = body.m_sst.sdt;

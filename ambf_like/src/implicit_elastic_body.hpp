@@ -3,12 +3,13 @@
 
 #include <BulletSoftBody/btSoftBody.h>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
-#include <Eigen/SparseCholesky>
 #include <unordered_map>
 #include <vector>
 
 #include "corotated_tets.hpp"
+#include "node_block_cholesky.hpp"
 
 namespace ambf_like::detail {
 
@@ -21,6 +22,12 @@ struct ElasticContact {
   double start_depth = 0;            ///< how far inside the surface the node began the step
   double friction = 0;               ///< Coulomb's mu
   Eigen::Vector3d impulse{0, 0, 0};  ///< on the node (N s): in, the last step's; out, this one's
+};
+
+/// The contact nodes last solved as stuck together (in order), and their system factored.
+struct StuckSystem {
+  std::vector<int> nodes;
+  Eigen::LLT<Eigen::MatrixXd> factor;
 };
 
 /// Steps a soft body's nodes as a corotated solid of its material by linearly implicit (one
@@ -53,18 +60,19 @@ class ImplicitElasticBody {
   const Response& responseTo(int node);
   /// Follows the body's overall rotation (the polar rotation of its mass-weighted spread).
   void followBodyRotation(const Eigen::VectorXd& positions);
-  /// The impulses that keep `contacts` on their surfaces, from the nodes' free velocities.
+  /// The impulses that keep `contacts` on their surfaces, from the nodes' free velocities (all in
+  /// the rest frame).
   void solveContacts(const Eigen::VectorXd& free_velocity, std::vector<ElasticContact>& contacts);
 
   CorotatedTets tets_;
   Eigen::VectorXd mass_;  ///< per coordinate; 0 for a node that stays put
   Eigen::VectorXd rest_;  ///< rest positions
   Eigen::Vector3d rest_centre_;
-  Eigen::Quaterniond body_rotation_ = Eigen::Quaterniond::Identity();
-  Eigen::Matrix3d turn_ = Eigen::Matrix3d::Identity();  ///< body_rotation_ as a matrix
+  Rotation body_rotation_;
   double factored_step_ = 0.0;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> system_;
+  NodeBlockCholesky system_;
   std::unordered_map<int, Response> responses_;  ///< by node, for the factored step
+  StuckSystem stuck_;
 };
 
 }  // namespace ambf_like::detail
