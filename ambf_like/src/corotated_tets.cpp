@@ -42,8 +42,10 @@ void followRotation(const Eigen::Matrix3d& f, Rotation& rotation, int most_itera
         r.col(0).cross(f.col(0)) + r.col(1).cross(f.col(1)) + r.col(2).cross(f.col(2));
     const double alignment =
         std::abs(r.col(0).dot(f.col(0)) + r.col(1).dot(f.col(1)) + r.col(2).dot(f.col(2)));
-    const Eigen::Vector3d half_turn = 0.5 * torque / (alignment + 1e-9);
-    if (!(half_turn.squaredNorm() > 0.25 * kConverged * kConverged)) break;
+    // The turn is torque / alignment; compared before dividing (most calls end here).
+    const double scale = alignment + 1e-9;
+    if (!(torque.squaredNorm() > kConverged * kConverged * scale * scale)) break;
+    const Eigen::Vector3d half_turn = torque * (0.5 / scale);
     rotation.quaternion =
         Eigen::Quaterniond(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * rotation.quaternion;
     rotation.quaternion.normalize();
@@ -70,6 +72,7 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
     if (!(tet.volume > 0.0)) continue;  // a flat tetrahedron carries no elasticity
     tet.rest_inverse = rest.inverse();
     tet.shape_gradients = shapeGradients(tet.rest_inverse);
+    tet.force_gradients = -tet.volume * tet.rest_inverse.transpose();
     tets_.push_back(tet);
   }
 }
@@ -84,9 +87,10 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
     const Eigen::Matrix3d strain = 0.5 * (unrotated + unrotated.transpose()) - identity;
     const Eigen::Matrix3d stress = 2.0 * mu_ * strain + lambda_ * strain.trace() * identity;
     // Each node's force: minus the rest volume times the first Piola stress times its shape
-    // function's gradient.
-    const Eigen::Matrix<double, 3, 4> nodal = -tet.volume * (r * stress) * tet.shape_gradients;
-    for (int k = 0; k < 4; ++k) forces.segment<3>(3 * tet.node[k]) += nodal.col(k);
+    // function's gradient; node 0's gradient is minus the others' sum, so is its force.
+    const Eigen::Matrix3d nodal = (r * stress) * tet.force_gradients;
+    for (int k = 0; k < 3; ++k) forces.segment<3>(3 * tet.node[k + 1]) += nodal.col(k);
+    forces.segment<3>(3 * tet.node[0]) -= nodal.rowwise().sum();
   }
 }
 

@@ -48,6 +48,7 @@ class CorotatedTets {
     std::array<int, 4> node;
     Eigen::Matrix3d rest_inverse;
     Eigen::Matrix<double, 3, 4> shape_gradients;
+    Eigen::Matrix3d force_gradients;  ///< minus the volume times nodes 1-3's gradients
     double volume = 0.0;
     Rotation rotation;
   };

@@ -31,6 +31,8 @@ Vec3 SoftBody::centerOfMass() const {
 }
 
 bool SoftBody::isFinite() const {
+  // A body asleep has not moved since it fell asleep, which a body that is not finite never does.
+  if (isAsleep()) return true;
   for (int i = 0; i < body_->m_nodes.size(); ++i) {
     const auto& node = body_->m_nodes[i];
     if (!toEigen(node.m_x).allFinite() || !toEigen(node.m_v).allFinite()) return false;
