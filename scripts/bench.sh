@@ -17,7 +17,7 @@ import json, re, sys
 readme, results, table = sys.argv[1:]
 m = json.load(open(results))["machine"]
 block = (f"Measured {m['date']} on {m['cpu']}, {m['cores']} cores, {m['kernel']}, {m['compiler']}, "
-         f"Release build, with `scripts/bench.sh` (medians of 3 runs, range in brackets).\n\n"
+         f"Release build (RAVEN_NATIVE on, the default: -march=native), with `scripts/bench.sh` (medians of 3 runs, range in brackets).\n\n"
          + open(table).read())
 text = open(readme).read()
 new = re.sub(r"(<!-- bench:begin -->\n).*?(<!-- bench:end -->)", lambda g: g.group(1) + block + g.group(2),
