@@ -3,7 +3,6 @@
 
 #include <fmt/format.h>
 
-#include <chrono>
 #include <cmath>
 
 #include "ambf_like/scene_loader.hpp"
@@ -14,24 +13,13 @@
 #include "raven/platform_profile.hpp"
 #include "raven/twin_arms.hpp"
 #include "sections.hpp"
+#include "steps_per_second.hpp"
 
 namespace bench {
 
 namespace {
 
 const char* kSection = "loop frequency";
-
-/// Steps per wall second of `world` over `steps` steps, `each` run before every step.
-template <typename Each>
-double stepsPerSecond(ambf_like::World& world, int steps, Each each) {
-  const auto start = std::chrono::steady_clock::now();
-  for (int i = 0; i < steps; ++i) {
-    each(i);
-    world.step();
-  }
-  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
-  return steps / wall.count();
-}
 
 /// Our Raven-II alone (`scene`), both arms following a slow sine around home, gravity on, its
 /// arms in the given formulation (the model's own is reduced coordinates).

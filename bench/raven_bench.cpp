@@ -50,10 +50,10 @@ int main(int argc, char** argv) {
   std::vector<std::string> only;
   using Section = void (*)(const bench::BenchSettings&, bench::Report&);
   const std::vector<std::pair<std::string, Section>> sections{
-      {"loop", bench::measureLoopFrequency}, {"controller", bench::measureController},
-      {"replay", bench::measureReplay},      {"ros", bench::measureRosEdge},
-      {"viewer", bench::measureViewer},      {"memory", bench::measureMemory},
-      {"micro", bench::measureMicro}};
+      {"loop", bench::measureLoopFrequency},    {"ambf", bench::measureAmbfScenes},
+      {"controller", bench::measureController}, {"replay", bench::measureReplay},
+      {"ros", bench::measureRosEdge},           {"viewer", bench::measureViewer},
+      {"memory", bench::measureMemory},         {"micro", bench::measureMicro}};
   std::vector<std::string> names;
   for (const auto& section : sections) names.push_back(section.first);
 

@@ -19,6 +19,8 @@ struct BenchSettings {
 /// Dynamic loop frequency: the moving peg scene (simplified vs dense collision, free-running and
 /// paced), the Raven-II alone, AMBF's Raven-II.
 void measureLoopFrequency(const BenchSettings& settings, Report& report);
+/// AMBF's own description files (the Raven, puzzles, a cloth) against AMBF's figures on them.
+void measureAmbfScenes(const BenchSettings& settings, Report& report);
 /// Command rate and period jitter at 500 Hz and 1 kHz; virtual-gamepad-to-command latency.
 void measureController(const BenchSettings& settings, Report& report);
 /// The paper's 2arm inputs replayed on the twin in lock-step, as a multiple of real time.

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,10 +13,12 @@
 
 namespace raven::model {
 
-/// A number with 10 significant digits (yaml-cpp would print every double with 17).
+/// A number with 10 significant digits (yaml-cpp would print every double with 17); rounding
+/// noise below 1e-12 (a picometre, a picoradian) is written as 0, so the files do not depend on
+/// how the compiler contracts floating point (-march=native fuses multiply-adds).
 inline YAML::Node number(double value) {
   char text[32];
-  std::snprintf(text, sizeof text, "%.10g", value == 0.0 ? 0.0 : value);
+  std::snprintf(text, sizeof text, "%.10g", std::abs(value) < 1e-12 ? 0.0 : value);
   return YAML::Node(std::string(text));
 }
 
