@@ -33,9 +33,9 @@ Eigen::Matrix<double, 3, 4> shapeGradients(const Eigen::Matrix3d& rest_inverse) 
 void followRotation(const Eigen::Matrix3d& f, Rotation& rotation, int most_iterations) {
   // Each iteration turns the rotation about the axis that brings its columns towards F's, by
   // the quaternion (1, turn / 2) normalised: exact to second order in the turn, and the
-  // iterations converge on the rest. A turn below 1e-5 rad moves a force by about 1e-5 of the
+  // iterations converge on the rest. A turn below 1e-4 rad moves a force by about 1e-4 of the
   // stress (to first order in the turn times the strain).
-  constexpr double kConverged = 1e-5;  // rad
+  constexpr double kConverged = 1e-4;  // rad
   Eigen::Matrix3d& r = rotation.matrix;
   for (int i = 0; i < most_iterations; ++i) {
     const Eigen::Vector3d torque =

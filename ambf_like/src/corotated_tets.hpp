@@ -26,7 +26,7 @@ struct Rotation {
 /// E (s - 1) exactly, at any strain.
 ///
 /// Each tetrahedron's rotation is found by Mueller, Bender, Chentanez and Macklin's (2016)
-/// iteration, warm started from the last one, to within 1e-5 rad (at most 4 iterations a step).
+/// iteration, warm started from the last one, to within 1e-4 rad (at most 4 iterations a step).
 /// One iteration per step, as that paper does, let the rotations lag a ring that turned fast and
 /// blew 3 of 20 randomised peg scenes apart (seeds 6, 11 and 20 of the batch test).
 class CorotatedTets {
@@ -57,7 +57,7 @@ class CorotatedTets {
 };
 
 /// Updates `rotation` towards the rotation of `f`'s polar decomposition, by at most
-/// `most_iterations` iterations (none once within a micro-radian).
+/// `most_iterations` iterations (none once within 1e-4 rad).
 void followRotation(const Eigen::Matrix3d& f, Rotation& rotation, int most_iterations);
 
 /// Most iterations of each tetrahedron's rotation per step.
