@@ -30,14 +30,15 @@ Eigen::Matrix<double, 3, 4> shapeGradients(const Eigen::Matrix3d& rest_inverse) 
 
 }  // namespace
 
-void followRotation(const Eigen::Matrix3d& f, Rotation& rotation, int most_iterations) {
+void followRotation(const Eigen::Matrix3d& f, Rotation& rotation) {
   // Each iteration turns the rotation about the axis that brings its columns towards F's, by
   // the quaternion (1, turn / 2) normalised: exact to second order in the turn, and the
   // iterations converge on the rest. A turn below 1e-4 rad moves a force by about 1e-4 of the
   // stress (to first order in the turn times the strain).
+  constexpr int kMostIterations = 4;
   constexpr double kConverged = 1e-4;  // rad
   Eigen::Matrix3d& r = rotation.matrix;
-  for (int i = 0; i < most_iterations; ++i) {
+  for (int i = 0; i < kMostIterations; ++i) {
     const Eigen::Vector3d torque =
         r.col(0).cross(f.col(0)) + r.col(1).cross(f.col(1)) + r.col(2).cross(f.col(2));
     const double alignment =
@@ -71,7 +72,6 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
     tet.volume = rest.determinant() / 6.0;
     if (!(tet.volume > 0.0)) continue;  // a flat tetrahedron carries no elasticity
     tet.rest_inverse = rest.inverse();
-    tet.shape_gradients = shapeGradients(tet.rest_inverse);
     tet.force_gradients = -tet.volume * tet.rest_inverse.transpose();
     tets_.push_back(tet);
   }
@@ -81,7 +81,7 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (auto& tet : tets_) {
     const Eigen::Matrix3d f = edges(positions, tet.node) * tet.rest_inverse;
-    followRotation(f, tet.rotation, kMostRotationIterations);
+    followRotation(f, tet.rotation);
     const Eigen::Matrix3d& r = tet.rotation.matrix;
     const Eigen::Matrix3d unrotated = r.transpose() * f;
     const Eigen::Matrix3d strain = 0.5 * (unrotated + unrotated.transpose()) - identity;
@@ -99,7 +99,7 @@ std::vector<Eigen::Triplet<double>> CorotatedTets::restStiffness() const {
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(tets_.size() * 144);
   for (const auto& tet : tets_) {
-    const Eigen::Matrix<double, 3, 4>& g = tet.shape_gradients;
+    const Eigen::Matrix<double, 3, 4> g = shapeGradients(tet.rest_inverse);
     for (int a = 0; a < 4; ++a) {
       for (int b = 0; b < 4; ++b) {
         const Eigen::Matrix3d block =

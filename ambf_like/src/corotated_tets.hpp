@@ -40,12 +40,10 @@ class CorotatedTets {
   std::vector<Eigen::Triplet<double>> restStiffness() const;
 
  private:
-  /// One tetrahedron: its nodes, inverse rest edge matrix, its shape functions' gradients
-  /// (columns, node 0 first), rest volume and current rotation.
+  /// One tetrahedron: its nodes, inverse rest edge matrix, rest volume and current rotation.
   struct Tetrahedron {
     std::array<int, 4> node;
     Eigen::Matrix3d rest_inverse;
-    Eigen::Matrix<double, 3, 4> shape_gradients;
     Eigen::Matrix3d force_gradients;  ///< minus the volume times nodes 1-3's gradients
     double volume = 0.0;
     Rotation rotation;
@@ -56,11 +54,8 @@ class CorotatedTets {
   std::vector<Tetrahedron> tets_;
 };
 
-/// Updates `rotation` towards the rotation of `f`'s polar decomposition, by at most
-/// `most_iterations` iterations (none once within 1e-4 rad).
-void followRotation(const Eigen::Matrix3d& f, Rotation& rotation, int most_iterations);
-
-/// Most iterations of each tetrahedron's rotation per step.
-constexpr int kMostRotationIterations = 4;
+/// Updates `rotation` towards the rotation of `f`'s polar decomposition (at most 4 iterations,
+/// none once within 1e-4 rad).
+void followRotation(const Eigen::Matrix3d& f, Rotation& rotation);
 
 }  // namespace ambf_like::detail

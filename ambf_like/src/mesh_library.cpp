@@ -127,13 +127,14 @@ std::optional<std::size_t> miscountedColladaArray(const std::string& text) {
       if (body == std::string::npos || end == std::string::npos) break;
       const std::string head = text.substr(open, body - open);
       const auto count_at = head.find("count=\"");
+      const std::string declared =
+          count_at == std::string::npos
+              ? std::string()
+              : head.substr(count_at + 7, head.find('"', count_at + 7) - (count_at + 7));
       std::size_t values = 0;
       std::istringstream tokens(text.substr(body + 1, end - body - 1));
       for (std::string token; tokens >> token;) ++values;
-      const bool counted = count_at != std::string::npos &&
-                           head.compare(count_at + 7, std::to_string(values).size() + 1,
-                                        std::to_string(values) + "\"") == 0;
-      if (!counted) {
+      if (declared != std::to_string(values)) {
         return 1 + static_cast<std::size_t>(
                        std::count(text.begin(), text.begin() + static_cast<long>(open), '\n'));
       }
