@@ -190,6 +190,7 @@ int main(int argc, char** argv) {
     spdlog::error("{}", e.what());
     return 1;
   }
+  for (const auto& warning : world->warnings()) spdlog::warn("{}", warning);
 
   ambf_like::LoopOptions loop_options;
   loop_options.rate_hz = o.rate_hz;

@@ -7,7 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
+#include <set>
 
 #include "ambf_like/bullet_conversions.hpp"
 #include "bullet_world.hpp"
@@ -20,11 +20,6 @@ namespace {
 /// Steps between refreshes of the joint-space inverse inertia (one articulated-body pass per
 /// joint). In 10 ms a joint at 3 rad/s (the Raven's speed limit) turns 0.03 rad: it barely moves.
 constexpr int kInertiaRefreshSteps = 10;
-
-int dofCount(const ModelSpec& model) {
-  return static_cast<int>(std::count_if(model.joints.begin(), model.joints.end(),
-                                        [](const JointSpec& j) { return j.isSingleAxis(); }));
-}
 
 bool isArticulableJoint(JointType type) {
   return type == JointType::Revolute || type == JointType::Continuous ||
@@ -46,78 +41,106 @@ double coordinateAtLoad(const JointSpec& joint, const Transform& frame_a_in_worl
   }
 }
 
-std::string rootName(const ModelSpec& model) {
-  for (const auto& body : model.bodies) {
-    if (body.mass == 0.0) return body.name;
-  }
-  return {};
+/// The rate c whose force -c m v takes a free body's velocity down by Bullet's rigid-body
+/// damping factor (1 - d)^h in one step of h: c = (1 - (1 - d)^h) / h.
+double dampingRate(double damping, double step_size) {
+  const double kept = std::pow(1.0 - std::clamp(damping, 0.0, 1.0), step_size);
+  return (1.0 - kept) / step_size;
 }
 
-/// The model's joints, parents first, breadth first from its static root; those of bodies that
-/// do not hang from the root are missing.
-std::vector<std::size_t> jointsFromRoot(const ModelSpec& model) {
-  std::vector<std::size_t> order;
-  std::deque<std::string> frontier{rootName(model)};
-  while (!frontier.empty() && order.size() < model.joints.size()) {
-    const std::string parent = frontier.front();
-    frontier.pop_front();
+const BodySpec* findBody(const ModelSpec& model, const std::string& name) {
+  for (const auto& body : model.bodies) {
+    if (body.name == name) return &body;
+  }
+  return nullptr;  // another model's
+}
+
+/// Why the joint tree grown from `tree`'s first joint cannot be an articulation, or nothing
+/// (and the tree is complete) when it can.
+std::optional<std::string> growTree(const ModelSpec& model,
+                                    const std::map<std::string, int>& parents_of, JointTree& tree) {
+  for (std::size_t k = 0; k < tree.joints.size(); ++k) {
+    const JointSpec& joint = model.joints[tree.joints[k]];
+    const BodySpec* child = findBody(model, joint.child);
+    if (!isArticulableJoint(joint.type))
+      return "joint '" + joint.name + "' is not revolute, continuous, prismatic or fixed";
+    if (child == nullptr || child->mass == 0.0)
+      return "joint '" + joint.name + "' ends on a static body or another model's";
+    if (parents_of.at(child->name) != 1)
+      return "body '" + child->name + "' is the child of more than one joint";
     for (std::size_t j = 0; j < model.joints.size(); ++j) {
-      if (model.joints[j].parent != parent) continue;
-      order.push_back(j);
-      frontier.push_back(model.joints[j].child);
+      if (model.joints[j].parent == child->name) tree.joints.push_back(j);
     }
   }
-  return order;
+  return std::nullopt;
 }
 
 }  // namespace
 
-std::optional<std::string> whyNotArticulable(const ModelSpec& model) {
-  if (model.joints.empty()) return "it has no joints";
-  if (model.gravity) return "it has a gravity of its own";
+ArticulationPlan planArticulations(const ModelSpec& model) {
   std::map<std::string, int> parents_of;
-  for (const auto& joint : model.joints) {
-    if (!isArticulableJoint(joint.type))
-      return "joint '" + joint.name + "' is not revolute, continuous, prismatic or fixed";
-    ++parents_of[joint.child];
-  }
-  int roots = 0;
-  for (const auto& body : model.bodies) {
-    const int parents = parents_of.count(body.name) ? parents_of.at(body.name) : 0;
-    if (body.mass == 0.0) {
-      if (parents > 0) return "static body '" + body.name + "' hangs from a joint";
-      ++roots;
+  for (const auto& body : model.bodies) parents_of[body.name] = 0;
+  for (const auto& joint : model.joints) ++parents_of[joint.child];
+  ArticulationPlan plan;
+  std::set<std::string> placed;  // moving bodies in a tree
+  for (std::size_t j = 0; j < model.joints.size(); ++j) {
+    const JointSpec& joint = model.joints[j];
+    const BodySpec* parent = findBody(model, joint.parent);
+    const BodySpec* child = findBody(model, joint.child);
+    if (parent == nullptr || parent->mass != 0.0 || child == nullptr || child->mass == 0.0)
+      continue;  // not a branch from a static body
+    JointTree tree{parent->name, {j}};
+    if (const auto why = growTree(model, parents_of, tree)) {
+      plan.left_out.push_back("the branch from '" + parent->name + "' through joint '" +
+                              joint.name + "': " + *why);
       continue;
     }
-    if (parents != 1) return "body '" + body.name + "' is not the child of exactly one joint";
-    if (body.gravity) return "body '" + body.name + "' has a gravity of its own";
-    if (body.surface.linear_damping != 0.0 || body.surface.angular_damping != 0.0)
-      return "body '" + body.name + "' is damped";
+    for (const std::size_t k : tree.joints) placed.insert(model.joints[k].child);
+    plan.trees.push_back(std::move(tree));
   }
-  if (roots != 1) return "it has " + std::to_string(roots) + " static bodies, not one root";
-  if (jointsFromRoot(model).size() != model.joints.size())
-    return "its joints do not connect every body to its static root";
-  return std::nullopt;
+  for (const auto& body : model.bodies) {
+    const bool jointed = std::any_of(model.joints.begin(), model.joints.end(), [&](const auto& j) {
+      return j.parent == body.name || j.child == body.name;
+    });
+    // A child of a joint that is in no tree is in a branch already reported, or below a body
+    // that is.
+    const bool has_parent_joint = parents_of.at(body.name) > 0;
+    if (body.mass != 0.0 && jointed && !has_parent_joint && !placed.contains(body.name))
+      plan.left_out.push_back("body '" + body.name +
+                              "' is no joint's child, so no branch from a static body reaches it");
+  }
+  return plan;
 }
 
 struct Articulation::Link {
   RigidBody* body = nullptr;
+  /// Bullet's rigid-body damping as rates (1/s): see applyDampingAndOwnGravity.
+  double linear_damping_rate = 0.0;
+  double angular_damping_rate = 0.0;
+  /// What the body's own gravity (or its model's) adds to the world's pull on it (N).
+  btVector3 own_gravity_force{0, 0, 0};
   std::unique_ptr<btMultiBodyLinkCollider> collider;
   std::unique_ptr<btMultiBodyJointLimitConstraint> limit;
   JointType type = JointType::Fixed;
   double coordinate_at_load = 0.0;
 };
 
-Articulation::Articulation(const ModelSpec& model, const std::map<std::string, PlacedBody>& bodies,
-                           btMultiBodyDynamicsWorld& world)
-    : world_(world), link_of_joint_(model.joints.size(), -1), servo_(dofCount(model)) {
-  const auto order = jointsFromRoot(model);
-  std::map<std::string, int> link_of_body{{rootName(model), -1}};
+Articulation::Articulation(const ModelSpec& model, const JointTree& tree,
+                           const std::map<std::string, PlacedBody>& bodies,
+                           btMultiBodyDynamicsWorld& world, double step_size)
+    : world_(world),
+      step_size_(step_size),
+      link_of_joint_(model.joints.size(), -1),
+      servo_(static_cast<int>(std::count_if(tree.joints.begin(), tree.joints.end(), [&](auto j) {
+        return model.joints[j].isSingleAxis();
+      }))) {
+  const auto& order = tree.joints;
+  std::map<std::string, int> link_of_body{{tree.root, -1}};
   for (std::size_t link = 0; link < order.size(); ++link) {
     link_of_joint_[order[link]] = static_cast<int>(link);
     link_of_body[model.joints[order[link]].child] = static_cast<int>(link);
   }
-  const RigidBody& root = *bodies.at(rootName(model)).body;
+  const RigidBody& root = *bodies.at(tree.root).body;
 
   multibody_ = std::make_unique<btMultiBody>(static_cast<int>(order.size()), 0.0,
                                              btVector3(0, 0, 0), true, false);
@@ -130,6 +153,13 @@ Articulation::Articulation(const ModelSpec& model, const std::map<std::string, P
     const auto frames = computeJointFrames(joint, parent.com_in_body, parent.body->spec().scale,
                                            child.com_in_body, child.body->spec().scale);
     addLink(link_of_joint_[j], joint, frames, parent, child, link_of_body.at(joint.parent));
+    if (const auto gravity =
+            child.body->spec().gravity ? child.body->spec().gravity : model.gravity) {
+      // Bullet pulls every link down by the world's gravity; this makes up the difference.
+      links_[static_cast<std::size_t>(link_of_joint_[j])].own_gravity_force =
+          child.body->mass() * (toBt(*gravity) - world.getGravity());
+      extra_forces_ = true;
+    }
   }
   multibody_->finalizeMultiDof();
   omega_.resize(links_.size() + 1);  // the base's first
@@ -209,6 +239,10 @@ void Articulation::addLink(int index, const JointSpec& joint, const JointFrames&
   const btVector3 inertia = body.getLocalInertia();
   auto& link = links_[static_cast<std::size_t>(index)];
   link.body = child.body;
+  link.linear_damping_rate = dampingRate(child.body->spec().surface.linear_damping, step_size_);
+  link.angular_damping_rate = dampingRate(child.body->spec().surface.angular_damping, step_size_);
+  extra_forces_ =
+      extra_forces_ || link.linear_damping_rate > 0.0 || link.angular_damping_rate > 0.0;
   link.type = joint.type;
   link.coordinate_at_load = coordinateAtLoad(joint, frame_a, frame_b);
   const bool no_collision = joint.ignore_inter_collision;
@@ -267,6 +301,26 @@ void Articulation::beforeStep(double dt) {
   for (int i = 0; i < multibody_->getNumLinks(); ++i) {
     const auto& link = multibody_->getLink(i);
     if (link.m_dofCount == 1) multibody_->addJointTorque(i, torque(link.m_dofOffset));
+  }
+  if (extra_forces_) applyDampingAndOwnGravity();
+}
+
+void Articulation::applyDampingAndOwnGravity() {
+  // Bullet scales a damped rigid body's velocities by (1 - d)^h each step. A link is no free
+  // body, so the same decay comes as a force and torque on it against its own velocity, which
+  // the articulated-body pass shares out over the joints: -c m v and -c I w, in the link's
+  // principal frame, with c of dampingRate (exact for a free body, the formulations' difference
+  // being O((c h)^2) a step otherwise).
+  multibody_->compTreeLinkVelocities(omega_.data(), velocity_.data());
+  for (std::size_t i = 0; i < links_.size(); ++i) {
+    const Link& link = links_[i];
+    const auto& bullet_link = multibody_->getLink(static_cast<int>(i));
+    const btMatrix3x3& basis = link.collider->getWorldTransform().getBasis();
+    const btVector3 force = -link.linear_damping_rate * bullet_link.m_mass * velocity_[i + 1];
+    const btVector3 torque =
+        -link.angular_damping_rate * bullet_link.m_inertiaLocal * omega_[i + 1];
+    multibody_->addLinkForce(static_cast<int>(i), basis * force + link.own_gravity_force);
+    multibody_->addLinkTorque(static_cast<int>(i), basis * torque);
   }
 }
 

@@ -29,27 +29,42 @@ struct PlacedBody {
   Transform com_in_body = Transform::Identity();
 };
 
-/// Why a model cannot be one articulation, or nothing when it can: its joints must be revolute,
-/// continuous, prismatic or fixed and form a tree hanging from its one static body, and its
-/// moving bodies must have no damping and no gravity of their own.
-std::optional<std::string> whyNotArticulable(const ModelSpec& model);
+/// Joints hanging from one static body that one btMultiBody can simulate: a branch of
+/// revolute, continuous, prismatic or fixed joints whose every body is moving and the child of
+/// no other joint, and the parent of no joint outside the branch.
+struct JointTree {
+  std::string root;                 ///< the static body
+  std::vector<std::size_t> joints;  ///< indices into the model's joints, parents first
+};
 
-/// One model as a btMultiBody with a fixed base at its static root body. The joints are its
+/// Which of a model's joints become articulations, and why the moving bodies left to the
+/// constraint formulation are left there.
+struct ArticulationPlan {
+  std::vector<JointTree> trees;
+  std::vector<std::string> left_out;
+};
+ArticulationPlan planArticulations(const ModelSpec& model);
+
+/// One joint tree as a btMultiBody with a fixed base at its static root body. The joints are its
 /// degrees of freedom (no constraint rows), so a step costs one articulated-body pass instead
 /// of an iterative solve over 5-6 rows per joint. The root stays a static rigid body in the
 /// world; every other body's btRigidBody leaves the world and mirrors its link's pose and
-/// velocity after each step, so RigidBody reads the same either way.
+/// velocity after each step, so RigidBody reads the same either way. Damped bodies decay as
+/// Bullet's damped rigid bodies do (see applyDampingAndOwnGravity), and bodies with a gravity
+/// of their own (or their model's) fall by it.
 class Articulation {
  public:
-  /// The bodies must be at their loaded poses, the moving ones not in `world`; `model` must be
-  /// articulable.
-  Articulation(const ModelSpec& model, const std::map<std::string, PlacedBody>& bodies,
-               btMultiBodyDynamicsWorld& world);
+  /// The bodies must be at their loaded poses, the tree's moving ones not in `world`;
+  /// `step_size` is the world's fixed step.
+  Articulation(const ModelSpec& model, const JointTree& tree,
+               const std::map<std::string, PlacedBody>& bodies, btMultiBodyDynamicsWorld& world,
+               double step_size);
   ~Articulation();
   Articulation(const Articulation&) = delete;
   Articulation& operator=(const Articulation&) = delete;
 
-  /// The coordinate of joint `index` (of the model's joints) as a degree of freedom.
+  /// The coordinate of joint `index` (of the model's joints, one of the tree's) as a degree of
+  /// freedom.
   std::unique_ptr<JointDynamics> jointDynamics(std::size_t index);
   /// A joint's motor and effort for the coming step (`dof` as Bullet numbers them).
   void request(int dof, const JointActuation& actuation) { servo_.request(dof, actuation); }
@@ -70,9 +85,12 @@ class Articulation {
                const PlacedBody& parent, const PlacedBody& child, int parent_link);
   void addCollider(int index);
   void refreshInverseInertia();
+  void applyDampingAndOwnGravity();
   Eigen::Map<const Eigen::VectorXd> jointVelocities() const;
 
   btMultiBodyDynamicsWorld& world_;
+  double step_size_;
+  bool extra_forces_ = false;  ///< some link has damping or a gravity of its own
   std::unique_ptr<btMultiBody> multibody_;
   std::vector<Link> links_;         ///< in multibody link order (parents first)
   std::vector<int> link_of_joint_;  ///< model joint index -> link

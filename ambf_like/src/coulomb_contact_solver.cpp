@@ -60,6 +60,8 @@ void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
     if (!body.isActive()) continue;
     if (auto it = coulomb_.find(&body); it != coulomb_.end()) {
       solve(body, it->second);
+    } else if (PackedLinkSolver::handles(body)) {
+      packed_links_.solve(body);
     } else {
       body.solveConstraints();
     }

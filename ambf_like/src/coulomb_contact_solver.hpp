@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "implicit_elastic_body.hpp"
+#include "packed_link_solver.hpp"
 
 class btCollisionObject;
 
@@ -54,6 +55,9 @@ struct NodeContactImpulse {
 /// constraints (Macklin et al. 2019, "Small steps in physics simulation"). Without them a
 /// squeezed ring's push, and so its grip, is a few hundredths of a newton. Bullet's drift
 /// iterations (diterations) are not run for these bodies.
+///
+/// Every other body gets Bullet's own solve, on packed arrays when its step is only links
+/// (PackedLinkSolver).
 class CoulombContactSolver final : public btDefaultSoftBodySolver {
  public:
   /// `body` gets Coulomb contacts and `substeps` (>= 1) substeps of `piterations` iterations;
@@ -116,6 +120,7 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   std::vector<Accumulated> contacts_;  ///< of the body being solved, by m_rcontacts index
   std::vector<btVector3> acceleration_, pose_pull_, step_start_;  ///< scratch, per node
   std::vector<NodeContactImpulse> impulses_;
+  PackedLinkSolver packed_links_;  ///< the other bodies' steps that are links alone
 };
 
 }  // namespace ambf_like::detail

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include "ambf_like/bullet_conversions.hpp"
@@ -85,14 +86,16 @@ struct World::Impl {
   std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
+  std::vector<std::string> warnings;
   double time = 0.0;
   std::uint64_t steps = 0;
 
   Impl(const SceneSpec& scene, const WorldOptions& opts)
       : settings(scene.world),
         options(opts),
-        articulated(std::any_of(scene.models.begin(), scene.models.end(),
-                                [this](const ModelSpec& m) { return articulates(m); })),
+        articulated(
+            std::any_of(scene.models.begin(), scene.models.end(),
+                        [this](const ModelSpec& m) { return !articulationsOf(m).trees.empty(); })),
         bullet(articulated),
         world(bullet.dynamics()) {
     btGImpactCollisionAlgorithm::registerAlgorithm(&bullet.dispatcher());
@@ -128,10 +131,12 @@ struct World::Impl {
     }
   }
 
-  /// True when `model` is to be simulated in reduced coordinates.
-  bool articulates(const ModelSpec& model) const {
-    return options.articulation.value_or(settings.articulation) == Articulation::Reduced &&
-           !detail::whyNotArticulable(model);
+  /// The joint trees of `model` to be simulated in reduced coordinates (none unless asked).
+  detail::ArticulationPlan articulationsOf(const ModelSpec& model) const {
+    return asksForReduced() ? detail::planArticulations(model) : detail::ArticulationPlan{};
+  }
+  bool asksForReduced() const {
+    return options.articulation.value_or(settings.articulation) == Articulation::Reduced;
   }
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
   /// Refuses a soft body whose material needs more substeps than kMaxSoftSubsteps at this
@@ -141,10 +146,12 @@ struct World::Impl {
   std::vector<SoftContactForce> softContactForcesOn(const void* body_tag) const;
   RigidBody& addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
                      MeshLibrary& meshes, Transform& com_in_body);
-  void addConstraintJoints(const ModelSpec& model,
-                           const std::map<std::string, detail::PlacedBody>& by_name);
-  void addArticulation(const ModelSpec& model,
-                       const std::map<std::string, detail::PlacedBody>& by_name);
+  /// The model's joints in its order: those of `trees` as articulations, the others as
+  /// constraints.
+  void addJoints(const ModelSpec& model, const std::vector<detail::JointTree>& trees,
+                 const std::map<std::string, detail::PlacedBody>& by_name);
+  std::unique_ptr<detail::JointDynamics> constraintJoint(
+      const JointSpec& spec, const std::map<std::string, detail::PlacedBody>& by_name);
   void addJoint(const ModelSpec& model, const JointSpec& spec,
                 std::unique_ptr<detail::JointDynamics> dynamics);
 };
@@ -191,42 +198,53 @@ void World::Impl::addJoint(const ModelSpec& model, const JointSpec& spec,
   joints.push_back(std::move(named));
 }
 
-void World::Impl::addConstraintJoints(const ModelSpec& model,
-                                      const std::map<std::string, detail::PlacedBody>& by_name) {
-  for (const auto& spec : model.joints) {
-    const auto& parent = by_name.at(spec.parent);
-    const auto& child = by_name.at(spec.child);
-    const auto frames =
-        detail::computeJointFrames(spec, parent.com_in_body, parent.body->spec().scale,
-                                   child.com_in_body, child.body->spec().scale);
-    auto constraint =
-        detail::makeConstraint(spec, parent.body->bullet(), child.body->bullet(), frames);
-    world.addConstraint(constraint.get(), spec.ignore_inter_collision);
-    addJoint(model, spec,
-             std::make_unique<detail::ConstraintJoint>(spec, std::move(constraint),
-                                                       parent.body->bullet(), child.body->bullet(),
-                                                       frames.in_parent));
-  }
+std::unique_ptr<detail::JointDynamics> World::Impl::constraintJoint(
+    const JointSpec& spec, const std::map<std::string, detail::PlacedBody>& by_name) {
+  const auto& parent = by_name.at(spec.parent);
+  const auto& child = by_name.at(spec.child);
+  const auto frames =
+      detail::computeJointFrames(spec, parent.com_in_body, parent.body->spec().scale,
+                                 child.com_in_body, child.body->spec().scale);
+  auto constraint =
+      detail::makeConstraint(spec, parent.body->bullet(), child.body->bullet(), frames);
+  world.addConstraint(constraint.get(), spec.ignore_inter_collision);
+  return std::make_unique<detail::ConstraintJoint>(
+      spec, std::move(constraint), parent.body->bullet(), child.body->bullet(), frames.in_parent);
 }
 
-void World::Impl::addArticulation(const ModelSpec& model,
-                                  const std::map<std::string, detail::PlacedBody>& by_name) {
-  auto& articulation = *articulations.emplace_back(
-      std::make_unique<detail::Articulation>(model, by_name, bullet.articulations()));
+void World::Impl::addJoints(const ModelSpec& model, const std::vector<detail::JointTree>& trees,
+                            const std::map<std::string, detail::PlacedBody>& by_name) {
+  std::vector<detail::Articulation*> articulation_of(model.joints.size(), nullptr);
+  for (const auto& tree : trees) {
+    auto& articulation = *articulations.emplace_back(std::make_unique<detail::Articulation>(
+        model, tree, by_name, bullet.articulations(), options.step_size));
+    for (const std::size_t j : tree.joints) articulation_of[j] = &articulation;
+  }
   for (std::size_t j = 0; j < model.joints.size(); ++j) {
-    addJoint(model, model.joints[j], articulation.jointDynamics(j));
+    const JointSpec& spec = model.joints[j];
+    addJoint(
+        model, spec,
+        articulation_of[j] ? articulation_of[j]->jointDynamics(j) : constraintJoint(spec, by_name));
   }
 }
 
 void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes) {
-  const bool articulate = articulates(model);
+  const auto plan = articulationsOf(model);
+  for (const auto& why : plan.left_out) {
+    warnings.push_back(model.file.string() +
+                       ": articulation: reduced: left in maximal coordinates: " + why);
+  }
+  std::set<std::string> links;  // bodies that become articulation links
+  for (const auto& tree : plan.trees) {
+    for (const std::size_t j : tree.joints) links.insert(model.joints[j].child);
+  }
   std::map<std::string, detail::PlacedBody> by_name;
   for (const auto& spec : model.bodies) {
     Transform com_in_body;
     auto& body = addBody(spec, model, model_index, meshes, com_in_body);
     by_name[spec.name] = {&body, com_in_body};
     // An articulation's links collide through their own colliders; their bodies are mirrors.
-    if (!articulate || body.isStatic()) {
+    if (!links.contains(spec.name)) {
       world.addRigidBody(&body.bullet());
       detail::keepBroadphaseBalanced(world);
     }
@@ -251,11 +269,7 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
                        spec.material);
     soft_bodies.push_back(std::make_unique<SoftBody>(spec, tag.name, std::move(soft)));
   }
-  if (articulate) {
-    addArticulation(model, by_name);
-  } else {
-    addConstraintJoints(model, by_name);
-  }
+  addJoints(model, plan.trees, by_name);
   // A parent of this model by its name, or of any model loaded before by its qualified name.
   auto parentOf = [&](const std::string& parent, const SourceRef& where) -> RigidBody& {
     if (auto it = by_name.find(parent); it != by_name.end()) return *it->second.body;
@@ -276,9 +290,7 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
   for (const auto& spec : model.actuators) {
     RigidBody& parent = parentOf(spec.parent, spec.where);
     // An articulation link's btRigidBody is a mirror outside the Bullet world.
-    const bool in_world = by_name.count(spec.parent) != 0
-                              ? !articulate || parent.isStatic()
-                              : parent.bullet().getBroadphaseHandle() != nullptr;
+    const bool in_world = parent.bullet().getBroadphaseHandle() != nullptr;
     actuators.push_back(std::make_unique<ConstraintActuator>(spec, model.name_space + spec.name,
                                                              parent, in_world, world));
   }
@@ -496,7 +508,11 @@ bool World::isFinite() const {
                      [](const auto& s) { return s->isFinite(); });
 }
 
-std::size_t World::articulatedModelCount() const {
+const std::vector<std::string>& World::warnings() const {
+  return impl_->warnings;
+}
+
+std::size_t World::articulationCount() const {
   return impl_->articulations.size();
 }
 

@@ -1,6 +1,7 @@
 // The loader applies AMBF's defaults and conventions: surfaces, poses, inertial offsets,
 // controller output types, soft-body config, launch selection, world and model gravity.
 
+#include <BulletSoftBody/btSoftBody.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -164,6 +165,36 @@ TEST(AdfSemantics, SoftBodyConfigBlock) {
   EXPECT_EQ(soft.config.fixed_nodes, (std::vector<int>{0, 4}));
   EXPECT_EQ(soft.margin, 0.02);  // honoured when the body has no `collision margin`
   EXPECT_FALSE(soft.randomize_constraints);
+}
+
+TEST(AdfSemantics, RandomizeConstraintsShufflesTheBendingLinksInAsAmbfDoes) {
+  // AMBF shuffles a soft body's links once its config has made the bending ones: they end up
+  // spread among the mesh's links. Not asked to, Bullet appends them after the mesh's links.
+  TempDir dir;
+  auto links = [&](bool randomize) {
+    const auto model =
+        dir.write("m.yaml", "soft bodies: [BODY s]\nBODY s:\n  mass: 1\n  mesh: " +
+                                test_support::icosphereMesh().string() +
+                                "\n  randomize constraints: " + (randomize ? "true" : "false") +
+                                "\n  config: {bending constraint: 2}\n");
+    auto sim = test_support::simulate({model});
+    const btSoftBody& body = sim->world->softBody(0).bullet();
+    int first_bending = body.m_links.size();
+    int last_mesh_link = -1;
+    for (int i = 0; i < body.m_links.size(); ++i) {
+      if (body.m_links[i].m_bbending) {
+        first_bending = std::min(first_bending, i);
+      } else {
+        last_mesh_link = i;
+      }
+    }
+    EXPECT_LT(first_bending, body.m_links.size()) << "the config asks for bending links";
+    return std::pair{first_bending, last_mesh_link};
+  };
+  const auto [first_bending, last_mesh_link] = links(true);
+  EXPECT_LT(first_bending, last_mesh_link);
+  const auto [first_bending_in_order, last_mesh_link_in_order] = links(false);
+  EXPECT_GT(first_bending_in_order, last_mesh_link_in_order);
 }
 
 TEST(AdfSemantics, DuplicateKeysWarnAndTheFirstWins) {

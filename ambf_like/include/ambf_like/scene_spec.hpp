@@ -40,9 +40,10 @@ struct SoftBodySleep {
 };
 
 /// How jointed models are simulated. Maximal: every body is a rigid body and every joint a
-/// constraint the solver iterates on (AMBF's way). Reduced: a model whose joints form a tree on
-/// one static body becomes a Featherstone articulation whose joints are its coordinates; other
-/// models stay maximal.
+/// constraint the solver iterates on (AMBF's way). Reduced: each branch of joints hanging from a
+/// static body (revolute, continuous, prismatic or fixed, each body the child of one joint)
+/// becomes a Featherstone articulation whose joints are its coordinates; the rest stays maximal,
+/// and the World says why (World::warnings).
 enum class Articulation { Maximal, Reduced };
 
 /// World-file settings that matter to the physics.

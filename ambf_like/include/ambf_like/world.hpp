@@ -115,8 +115,12 @@ class World {
   std::vector<SoftContactForce> softContactForces(std::string_view rigid_body) const;
   /// False as soon as any pose, velocity or soft-body node is NaN or infinite.
   bool isFinite() const;
-  /// Models simulated in reduced coordinates (see Articulation).
-  std::size_t articulatedModelCount() const;
+  /// Joint trees simulated in reduced coordinates, one per branch from a static body (see
+  /// Articulation).
+  std::size_t articulationCount() const;
+  /// What the world built otherwise than its files asked, and why (e.g. a model asked to be
+  /// articulated that stays in maximal coordinates).
+  const std::vector<std::string>& warnings() const;
   /// Vertices of every mesh collision shape (primitives count as none).
   std::size_t collisionVertexCount() const;
   /// Primitive collision shapes (boxes, spheres, cylinders, capsules, cones, planes).
