@@ -157,11 +157,15 @@ std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& m
   body->getCollisionShape()->setMargin(detection);
   // Bullet sized each node's bounding-volume leaf with the default 0.25 m margin when it made the
   // node, and later only grows a leaf that no longer holds its node: refit them to the real
-  // margin, or every rigid body within 25 cm tests every node at every step.
-  for (int i = 0; i < body->m_nodes.size(); ++i) {
-    btSoftBody::Node& node = body->m_nodes[i];
-    btDbvtVolume volume = btDbvtVolume::FromCR(node.m_x, detection);
-    body->m_ndbvt.update(node.m_leaf, volume);
+  // margin, or every rigid body within 25 cm tests every node at every step. A body that touches
+  // no rigid body keeps Bullet's (and AMBF's) fat leaves: a tree that no rigid body asks is
+  // rebuilt less often as its nodes move (15 % of AMBF's cloth's step).
+  if (c.collision_flags & btSoftBody::fCollision::RVSmask) {
+    for (int i = 0; i < body->m_nodes.size(); ++i) {
+      btSoftBody::Node& node = body->m_nodes[i];
+      btDbvtVolume volume = btDbvtVolume::FromCR(node.m_x, detection);
+      body->m_ndbvt.update(node.m_leaf, volume);
+    }
   }
   body->updateBounds();
   return body;
