@@ -22,14 +22,19 @@ const char* kSection = "AMBF's scenes";
 /// Simulated seconds of each run, as AMBF's figures were taken: 20 s of 1 ms steps.
 constexpr int kSteps = 20000;
 
-/// One of AMBF's scenes: its world file and models (under AMBF's descriptions folder), and AMBF's
-/// own rate on them.
+/// One of AMBF's scenes: its world file and models (under AMBF's descriptions folder), whether
+/// the world file's floor is in it, and AMBF's own rate on them.
 struct AmbfScene {
   std::string name;
   std::string world;
   std::vector<std::string> models;
+  bool floor;
   double ambf_steps_per_second;
 };
+
+/// AMBF's floor (world.yaml's environment), which ../shared/data does not ship.
+const std::filesystem::path kAmbfFloor =
+    std::filesystem::path(AMBF_LIKE_EXAMPLES_DIR) / "ambf_checkered_floor.yaml";
 
 /// AMBF (branch ambf-2.0, built headless without ROS) on the same files: medians of three runs of
 /// 20 s of 1 ms steps on this machine class, from issue 26 (not measured in this run).
@@ -38,15 +43,22 @@ const std::vector<AmbfScene>& scenes() {
       {"raven_world + blender-raven2 (zero gravity, idle)",
        "world/raven_world.yaml",
        {"multi-bodies/robots/blender-raven2.yaml"},
+       false,
        37615},
-      {"world + puzzles/peg_and_base",
+      {"world + puzzles/peg_and_base, on AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/puzzles/peg_and_base.yaml"},
+       true,
        209680},
-      {"world + puzzles/puzzle2", "world/world.yaml", {"multi-bodies/puzzles/puzzle2.yaml"}, 19833},
-      {"world + sb/cloth (386-node soft body)",
+      {"world + puzzles/puzzle2, on AMBF's floor",
+       "world/world.yaml",
+       {"multi-bodies/puzzles/puzzle2.yaml"},
+       true,
+       19833},
+      {"world + sb/cloth (386-node soft body), AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/sb/cloth.yaml"},
+       true,
        7399},
   };
   return all;
@@ -57,6 +69,7 @@ double rate(const std::filesystem::path& root, const AmbfScene& scene,
             std::optional<ambf_like::Articulation> articulation = std::nullopt) {
   std::vector<std::filesystem::path> models;
   for (const auto& m : scene.models) models.push_back(root / m);
+  if (scene.floor) models.push_back(kAmbfFloor);
   const auto loaded = ambf_like::loadModelFiles(models, root / scene.world);
   ambf_like::MeshLibrary meshes;
   ambf_like::WorldOptions options;

@@ -8,9 +8,20 @@ namespace ambf_like::detail {
 
 namespace {
 
+const btCollisionObject* objectOf(const btBroadphaseProxy* proxy) {
+  return static_cast<const btCollisionObject*>(proxy->m_clientObject);
+}
+
 const CollisionTag* tagOf(const btBroadphaseProxy* proxy) {
-  const auto* object = static_cast<const btCollisionObject*>(proxy->m_clientObject);
+  const auto* object = objectOf(proxy);
   return object ? static_cast<const CollisionTag*>(object->getUserPointer()) : nullptr;
+}
+
+/// Whether `object` (tagged `tag`) may meet an object that is soft or not (`other_soft`).
+bool meetsSoftness(const btCollisionObject* object, const CollisionTag& tag, bool other_soft) {
+  if (tag.soft_stand_in == nullptr) return true;
+  const bool is_stand_in = object == tag.soft_stand_in;
+  return is_stand_in == other_soft;
 }
 
 bool shareGroup(const std::vector<int>& a, const std::vector<int>& b) {
@@ -34,6 +45,9 @@ bool CollisionFilter::needBroadphaseCollision(btBroadphaseProxy* a, btBroadphase
   const CollisionTag* ta = tagOf(a);
   const CollisionTag* tb = tagOf(b);
   if (ta == nullptr || tb == nullptr) return true;
+  if (!meetsSoftness(objectOf(a), *ta, tb->soft) || !meetsSoftness(objectOf(b), *tb, ta->soft)) {
+    return false;
+  }
   if (ta->model == tb->model && ta->model_ignores_inter_collision && !ta->soft && !tb->soft) {
     return false;
   }

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+class btCollisionObject;
+
 namespace ambf_like::detail {
 
 /// What the filter knows about one collision object (set as its user pointer).
@@ -15,10 +17,15 @@ struct CollisionTag {
   bool model_ignores_inter_collision = false;
   bool soft = false;
   std::vector<int> groups;  ///< sorted; empty collides with every group
+  /// The object soft bodies meet instead of this body (a plane's box, see buildBodyShape); it
+  /// shares this tag, so contacts with either read as the body's.
+  const btCollisionObject* soft_stand_in = nullptr;
 };
 
 /// Two objects collide unless both are rigid bodies of a model that ignores inter-collision,
-/// or both have groups and share none. Pairs joined by a joint are excluded by Bullet itself.
+/// or both have groups and share none; a body with a soft stand-in meets soft bodies only
+/// through it, and the stand-in meets nothing else. Pairs joined by a joint are excluded by
+/// Bullet itself.
 class CollisionFilter : public btOverlapFilterCallback {
  public:
   bool needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const override;

@@ -9,8 +9,11 @@
 #include <BulletCollision/CollisionShapes/btConvexTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btCylinderShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletCollision/CollisionShapes/btStaticPlaneShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleIndexVertexArray.h>
 #include <BulletCollision/Gimpact/btGImpactShape.h>
+
+#include <algorithm>
 
 #include "ambf_like/bullet_conversions.hpp"
 
@@ -94,14 +97,22 @@ std::unique_ptr<btCollisionShape> makeConvexPrimitive(const PrimitiveShape& p, d
   return nullptr;
 }
 
-/// Half size of the box that realises a PLANE. Bullet's soft bodies cannot rest on a
-/// btStaticPlaneShape (soft-vs-concave contact goes through temporary triangles and its sparse
-/// SDF: they float or fall through), so a plane is the top face of a convex 1 km box.
+/// Half size of the box that realises a PLANE for soft bodies (and moving bodies). Bullet's soft
+/// bodies cannot rest on a btStaticPlaneShape (soft-vs-concave contact goes through temporary
+/// triangles and its sparse SDF: they float or fall through), so there a plane is the top face
+/// of a convex 1 km box.
 constexpr double kPlaneHalfSize = 500.0;
 
-/// The primitive's shape and where it sits relative to the primitive's own frame.
+/// The primitive's shape and where it sits relative to the primitive's own frame; a plane as a
+/// half-space or as the top of a box.
 std::pair<std::unique_ptr<btCollisionShape>, Transform> makePrimitive(const PrimitiveShape& p,
-                                                                      double scale) {
+                                                                      double scale,
+                                                                      bool plane_as_half_space) {
+  if (p.type == PrimitiveType::Plane && plane_as_half_space) {
+    return {std::make_unique<btStaticPlaneShape>(toBt(p.plane_normal.normalized()),
+                                                 p.plane_offset * scale),
+            Transform::Identity()};
+  }
   if (p.type == PrimitiveType::Plane) {
     Transform below = Transform::Identity();
     below.linear() = rotationBetween(Vec3::UnitZ(), p.plane_normal).toRotationMatrix();
@@ -139,6 +150,29 @@ Transform scaledPose(const Transform& pose, double scale) {
   return out;
 }
 
+/// The body's primitives as one shape in its COM frame: the primitive itself when there is one
+/// at the COM, else a compound.
+btCollisionShape* primitivesShape(const BodySpec& body, const Transform& body_in_com,
+                                  const Transform& com_in_body, bool planes_as_half_spaces,
+                                  ShapeStore& store) {
+  const auto& collision = body.collision;
+  std::vector<std::pair<btCollisionShape*, Transform>> children;
+  for (const auto& primitive : collision.primitives) {
+    const Transform offset =
+        primitive.offset ? scaledPose(*primitive.offset, body.scale) : com_in_body;
+    auto [made, local] = makePrimitive(primitive, body.scale, planes_as_half_spaces);
+    auto* shape = store.keep(std::move(made));
+    shape->setMargin(collision.margin);
+    children.emplace_back(shape, body_in_com * offset * local);
+  }
+  const bool single_at_com =
+      children.size() == 1 && children[0].second.isApprox(Transform::Identity());
+  if (single_at_com) return children[0].first;
+  auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(children.size()));
+  for (const auto& [shape, pose] : children) compound->addChildShape(toBt(pose), shape);
+  return store.keep(std::move(compound));
+}
+
 }  // namespace
 
 BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& store) {
@@ -164,25 +198,16 @@ BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& 
     out.shape = makeMeshShape(body, *mesh, body_in_com, store);
   } else if (!collision.primitives.empty()) {
     out.primitive_count = collision.primitives.size();
-    std::vector<std::pair<btCollisionShape*, Transform>> children;
-    for (const auto& primitive : collision.primitives) {
-      const Transform offset =
-          primitive.offset ? scaledPose(*primitive.offset, body.scale) : out.com_in_body;
-      auto [made, local] = makePrimitive(primitive, body.scale);
-      auto* shape = store.keep(std::move(made));
-      shape->setMargin(collision.margin);
-      children.emplace_back(shape, body_in_com * offset * local);
-    }
-    const bool single_at_com =
-        children.size() == 1 && children[0].second.isApprox(Transform::Identity());
-    if (single_at_com) {
-      out.shape = children[0].first;
-    } else {
-      auto compound = std::make_unique<btCompoundShape>(true, static_cast<int>(children.size()));
-      for (const auto& [shape, pose] : children) compound->addChildShape(toBt(pose), shape);
-      out.shape = store.keep(std::move(compound));
+    const bool has_plane =
+        std::any_of(collision.primitives.begin(), collision.primitives.end(),
+                    [](const PrimitiveShape& p) { return p.type == PrimitiveType::Plane; });
+    const bool half_spaces = has_plane && body.mass == 0.0;
+    out.shape = primitivesShape(body, body_in_com, out.com_in_body, half_spaces, store);
+    if (half_spaces) {
+      out.soft_stand_in = primitivesShape(body, body_in_com, out.com_in_body, false, store);
     }
   }
+  if (out.soft_stand_in != nullptr) out.soft_stand_in->setMargin(collision.margin);
   if (out.shape != nullptr) {
     out.shape->setMargin(collision.margin);
     if (auto* gimpact = dynamic_cast<btGImpactShapeInterface*>(out.shape)) gimpact->updateBound();

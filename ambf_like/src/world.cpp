@@ -78,6 +78,8 @@ struct World::Impl {
   btEmptyShape no_geometry;  ///< for bodies without collision geometry
   std::deque<detail::CollisionTag> tags;
   std::vector<std::unique_ptr<RigidBody>> bodies;
+  /// What soft bodies meet instead of a static body's planes (see buildBodyShape).
+  std::vector<std::unique_ptr<btCollisionObject>> soft_stand_ins;
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
   std::vector<std::unique_ptr<detail::Articulation>> articulations;
@@ -125,6 +127,7 @@ struct World::Impl {
     }
     articulations.clear();
     for (auto& s : soft_bodies) bullet.removeSoftBody(s->bullet());
+    for (auto& o : soft_stand_ins) world.removeCollisionObject(o.get());
     for (auto& b : bodies) {
       // An articulation's link bodies are mirrors that never entered the world.
       if (b->bullet().getBroadphaseHandle()) world.removeRigidBody(&b->bullet());
@@ -181,6 +184,22 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
   auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name, model_index,
                                                      model.ignore_inter_collision, false, groups});
   rigid->setUserPointer(&tag);
+  if (shape.soft_stand_in != nullptr) {
+    auto& stand_in = soft_stand_ins.emplace_back(std::make_unique<btCollisionObject>());
+    stand_in->setCollisionShape(shape.soft_stand_in);
+    stand_in->setWorldTransform(rigid->getWorldTransform());
+    stand_in->setFriction(rigid->getFriction());
+    stand_in->setRollingFriction(rigid->getRollingFriction());
+    stand_in->setRestitution(rigid->getRestitution());
+    stand_in->setUserPointer(&tag);
+    // Asleep, as Bullet puts static rigid bodies: sleeping soft bodies are then not tested
+    // against it (Bullet collides a pair only if one of them is awake).
+    stand_in->setActivationState(ISLAND_SLEEPING);
+    tag.soft_stand_in = stand_in.get();
+    world.addCollisionObject(stand_in.get(), btBroadphaseProxy::StaticFilter,
+                             btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
+    detail::keepBroadphaseBalanced(world);
+  }
   if (const auto gravity = spec.gravity ? spec.gravity : model.gravity) {
     rigid->setFlags(rigid->getFlags() | BT_DISABLE_WORLD_GRAVITY);
     rigid->setGravity(toBt(*gravity));

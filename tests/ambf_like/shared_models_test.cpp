@@ -109,11 +109,12 @@ struct FinalPosition {
   double x, y, z;
 };
 
-/// Steps `world` + `models` (under AMBF's descriptions folder) for 20 s and compares every rigid
-/// body's final position with `expected`, printing what it found when they differ.
-void expectFinalPositions(const std::filesystem::path& descriptions, const std::string& world,
-                          const std::string& model, const std::vector<FinalPosition>& expected) {
-  const auto scene = ambf_like::loadModelFiles({descriptions / model}, descriptions / world);
+/// Steps `world` + `models` for 20 s and compares every rigid body's final position with
+/// `expected`, printing what it found when they differ.
+void expectFinalPositions(const std::filesystem::path& world,
+                          const std::vector<std::filesystem::path>& models,
+                          const std::vector<FinalPosition>& expected) {
+  const auto scene = ambf_like::loadModelFiles(models, world);
   ambf_like::MeshLibrary meshes;
   ambf_like::World sim(scene.spec, meshes);
   sim.step(20000);
@@ -141,8 +142,8 @@ void expectFinalPositions(const std::filesystem::path& descriptions, const std::
 // far as their damping lets them).
 TEST_F(SharedModels, AmbfsRigidScenesEndWhereTheyEndedBeforeTheSpeedWork) {
   const auto descriptions = data_ / "ambf/ambf_models/descriptions";
-  expectFinalPositions(descriptions, "world/raven_world.yaml",
-                       "multi-bodies/robots/blender-raven2.yaml",
+  expectFinalPositions(descriptions / "world/raven_world.yaml",
+                       {descriptions / "multi-bodies/robots/blender-raven2.yaml"},
                        {
                            {"0_link", 0.000013793, 0.000000000, -0.000006405},
                            {"base_link_L", -0.000000000, 0.680000000, 0.000000000},
@@ -162,12 +163,14 @@ TEST_F(SharedModels, AmbfsRigidScenesEndWhereTheyEndedBeforeTheSpeedWork) {
                            {"grasper1_R", -0.009799523, -0.710084059, -0.000944578},
                            {"grasper2_R", -0.009799523, -0.710084059, -0.000944578},
                        });
-  expectFinalPositions(descriptions, "world/world.yaml", "multi-bodies/puzzles/peg_and_base.yaml",
+  expectFinalPositions(descriptions / "world/world.yaml",
+                       {descriptions / "multi-bodies/puzzles/peg_and_base.yaml"},
                        {
                            {"PegBase", -0.608000000, -0.525800000, -262.972868942},
                            {"Torus", 0.000000000, 0.000000000, -262.736668942},
                        });
-  expectFinalPositions(descriptions, "world/world.yaml", "multi-bodies/puzzles/puzzle2.yaml",
+  expectFinalPositions(descriptions / "world/world.yaml",
+                       {descriptions / "multi-bodies/puzzles/puzzle2.yaml"},
                        {
                            {"Ball_A", 1.186000000, -0.554000000, -1522.125880860},
                            {"Ball_B", 1.090000000, -0.013000000, -1522.218880860},
@@ -188,6 +191,46 @@ TEST_F(SharedModels, AmbfsRigidScenesEndWhereTheyEndedBeforeTheSpeedWork) {
                            {"LightCube", -0.874000000, 0.051000000, 0.751930972},
                            {"LightCylinder", -0.874000000, 0.051000000, 1.215000000},
                            {"LightSphere", -0.874000000, 0.051000000, 1.040970287},
+                       });
+}
+
+// On AMBF's floor (its PLANE now Bullet's half-space, as AMBF makes it). Taken after that change;
+// against the 1 km box before it, resting heights differ by the floor's 1 mm collision margin
+// (which Bullet's convex-plane contact leaves out) and the puzzle pieces that slide on landing
+// end up to 16 mm apart.
+TEST_F(SharedModels, AmbfsPuzzlesOnItsFloorEndWhereTheyEnded) {
+  const auto descriptions = data_ / "ambf/ambf_models/descriptions";
+  const auto floor = test_support::exampleFile("ambf_checkered_floor.yaml");
+  expectFinalPositions(descriptions / "world/world.yaml",
+                       {descriptions / "multi-bodies/puzzles/peg_and_base.yaml", floor},
+                       {
+                           {"PegBase", -0.607748790, -0.525800000, -1.475582534},
+                           {"Torus", -0.000050507, 0.000943096, -1.464669253},
+                           {"Plane", 0.000000000, 0.000000000, -1.500000000},
+                       });
+  expectFinalPositions(descriptions / "world/world.yaml",
+                       {descriptions / "multi-bodies/puzzles/puzzle2.yaml", floor},
+                       {
+                           {"Ball_A", 1.186000000, -0.554000000, -1.351000000},
+                           {"Ball_B", 1.090000000, -0.013000000, -1.300500000},
+                           {"Box_A", 0.960877476, -1.122369374, -1.307000769},
+                           {"Box_B", 0.697702432, -0.519503800, -1.284500068},
+                           {"Cylinder_A", 1.435298310, -0.018000000, -1.307000020},
+                           {"Cylinder_B", 0.688939318, -0.004000000, -1.284500411},
+                           {"Mold_A", -0.838514170, -0.015248912, -1.373316854},
+                           {"HandleBaseLeft", -0.894775632, -1.270811382, -1.359334896},
+                           {"HandleLidLeft", -0.897930587, -1.623057888, -0.850793404},
+                           {"HandleBaseRight", -0.872015596, 1.267118713, -1.349326373},
+                           {"HandleLidRight", -0.868813220, 1.623778679, -0.851019936},
+                           {"MoldHinge", -1.687478284, -0.007636035, -1.101349022},
+                           {"TopPlate", -1.642858477, -0.008036527, -0.927002602},
+                           {"Triangle_A", 0.991781418, 1.160955274, -1.305197571},
+                           {"Triangle_B", 0.679598913, 0.542101163, -1.282646446},
+                           {"LightCone", -0.874000000, 0.051000000, 0.434911381},
+                           {"LightCube", -0.874000000, 0.051000000, 0.751930972},
+                           {"LightCylinder", -0.874000000, 0.051000000, 1.215000000},
+                           {"LightSphere", -0.874000000, 0.051000000, 1.040970287},
+                           {"Plane", 0.000000000, 0.000000000, -1.500000000},
                        });
 }
 
