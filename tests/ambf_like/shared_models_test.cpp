@@ -110,10 +110,10 @@ struct FinalPosition {
 };
 
 /// Steps `world` + `models` for 20 s and compares every rigid body's final position with
-/// `expected`, printing what it found when they differ.
+/// `expected` within `tolerance` (m), printing what it found when they differ.
 void expectFinalPositions(const std::filesystem::path& world,
                           const std::vector<std::filesystem::path>& models,
-                          const std::vector<FinalPosition>& expected) {
+                          const std::vector<FinalPosition>& expected, double tolerance = 1e-6) {
   const auto scene = ambf_like::loadModelFiles(models, world);
   ambf_like::MeshLibrary meshes;
   ambf_like::World sim(scene.spec, meshes);
@@ -130,7 +130,7 @@ void expectFinalPositions(const std::filesystem::path& world,
   for (std::size_t b = 0; b < expected.size(); ++b) {
     const ambf_like::Vec3 p = sim.body(b).pose().translation();
     EXPECT_EQ(sim.body(b).name(), expected[b].body);
-    EXPECT_LT((p - ambf_like::Vec3(expected[b].x, expected[b].y, expected[b].z)).norm(), 1e-6)
+    EXPECT_LT((p - ambf_like::Vec3(expected[b].x, expected[b].y, expected[b].z)).norm(), tolerance)
         << expected[b].body << "; found:\n"
         << found.str();
   }
@@ -197,8 +197,10 @@ TEST_F(SharedModels, AmbfsRigidScenesEndWhereTheyEndedBeforeTheSpeedWork) {
 // On AMBF's floor (its PLANE now Bullet's half-space, as AMBF makes it). Taken after that change;
 // against the 1 km box before it, resting heights differ by the floor's 1 mm collision margin
 // (which Bullet's convex-plane contact leaves out) and the puzzle pieces that slide on landing
-// end up to 16 mm apart.
+// end up to 16 mm apart. Pieces that land and slide also carry the compiler's rounding forward:
+// the Clang sanitizer build ends 1.3 um from GCC's, hence 0.1 mm here.
 TEST_F(SharedModels, AmbfsPuzzlesOnItsFloorEndWhereTheyEnded) {
+  constexpr double kLandedTolerance = 1e-4;
   const auto descriptions = data_ / "ambf/ambf_models/descriptions";
   const auto floor = test_support::exampleFile("ambf_checkered_floor.yaml");
   expectFinalPositions(descriptions / "world/world.yaml",
@@ -207,7 +209,8 @@ TEST_F(SharedModels, AmbfsPuzzlesOnItsFloorEndWhereTheyEnded) {
                            {"PegBase", -0.607748790, -0.525800000, -1.475582534},
                            {"Torus", -0.000050507, 0.000943096, -1.464669253},
                            {"Plane", 0.000000000, 0.000000000, -1.500000000},
-                       });
+                       },
+                       kLandedTolerance);
   expectFinalPositions(descriptions / "world/world.yaml",
                        {descriptions / "multi-bodies/puzzles/puzzle2.yaml", floor},
                        {
@@ -231,7 +234,8 @@ TEST_F(SharedModels, AmbfsPuzzlesOnItsFloorEndWhereTheyEnded) {
                            {"LightCylinder", -0.874000000, 0.051000000, 1.215000000},
                            {"LightSphere", -0.874000000, 0.051000000, 1.040970287},
                            {"Plane", 0.000000000, 0.000000000, -1.500000000},
-                       });
+                       },
+                       kLandedTolerance);
 }
 
 // The cloth after 20 s: its centre of mass and every 77th node. Taken with AMBF's order of its
