@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "bridge/grasp_forces.hpp"
 #include "bridge/ideal_actuation.hpp"
 #include "raven_state_builder.hpp"
 

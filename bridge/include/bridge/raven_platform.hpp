@@ -7,7 +7,7 @@
 #include <string>
 
 #include "bridge/command_result.hpp"
-#include "bridge/grasp_forces.hpp"
+#include "bridge/grasper_forces.hpp"
 #include "bridge/operating_state.hpp"
 #include "bridge/platform_command.hpp"
 #include "bridge/raven_state.hpp"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/grasp_forces.hpp"
+#include "bridge/grasper_forces.hpp"
 #include "controller/recording_io.hpp"
 
 namespace controller {
