@@ -158,7 +158,7 @@ Articulation::Articulation(const ModelSpec& model, const JointTree& tree,
       // Bullet pulls every link down by the world's gravity; this makes up the difference.
       links_[static_cast<std::size_t>(link_of_joint_[j])].own_gravity_force =
           child.body->mass() * (toBt(*gravity) - world.getGravity());
-      extra_forces_ = true;
+      own_gravity_ = true;
     }
   }
   multibody_->finalizeMultiDof();
@@ -241,8 +241,7 @@ void Articulation::addLink(int index, const JointSpec& joint, const JointFrames&
   link.body = child.body;
   link.linear_damping_rate = dampingRate(child.body->spec().surface.linear_damping, step_size_);
   link.angular_damping_rate = dampingRate(child.body->spec().surface.angular_damping, step_size_);
-  extra_forces_ =
-      extra_forces_ || link.linear_damping_rate > 0.0 || link.angular_damping_rate > 0.0;
+  damped_ = damped_ || link.linear_damping_rate > 0.0 || link.angular_damping_rate > 0.0;
   link.type = joint.type;
   link.coordinate_at_load = coordinateAtLoad(joint, frame_a, frame_b);
   const bool no_collision = joint.ignore_inter_collision;
@@ -302,7 +301,7 @@ void Articulation::beforeStep(double dt) {
     const auto& link = multibody_->getLink(i);
     if (link.m_dofCount == 1) multibody_->addJointTorque(i, torque(link.m_dofOffset));
   }
-  if (extra_forces_) applyDampingAndOwnGravity();
+  if (damped_ || own_gravity_) applyDampingAndOwnGravity();
 }
 
 void Articulation::applyDampingAndOwnGravity() {
@@ -311,16 +310,18 @@ void Articulation::applyDampingAndOwnGravity() {
   // the articulated-body pass shares out over the joints: -c m v and -c I w, in the link's
   // principal frame, with c of dampingRate (exact for a free body, the formulations' difference
   // being O((c h)^2) a step otherwise).
-  multibody_->compTreeLinkVelocities(omega_.data(), velocity_.data());
+  if (damped_) multibody_->compTreeLinkVelocities(omega_.data(), velocity_.data());
   for (std::size_t i = 0; i < links_.size(); ++i) {
     const Link& link = links_[i];
-    const auto& bullet_link = multibody_->getLink(static_cast<int>(i));
+    const int index = static_cast<int>(i);
+    multibody_->addLinkForce(index, link.own_gravity_force);
+    if (!damped_) continue;
+    const auto& bullet_link = multibody_->getLink(index);
     const btMatrix3x3& basis = link.collider->getWorldTransform().getBasis();
-    const btVector3 force = -link.linear_damping_rate * bullet_link.m_mass * velocity_[i + 1];
-    const btVector3 torque =
-        -link.angular_damping_rate * bullet_link.m_inertiaLocal * omega_[i + 1];
-    multibody_->addLinkForce(static_cast<int>(i), basis * force + link.own_gravity_force);
-    multibody_->addLinkTorque(static_cast<int>(i), basis * torque);
+    multibody_->addLinkForce(
+        index, basis * (-link.linear_damping_rate * bullet_link.m_mass * velocity_[i + 1]));
+    multibody_->addLinkTorque(
+        index, basis * (-link.angular_damping_rate * bullet_link.m_inertiaLocal * omega_[i + 1]));
   }
 }
 

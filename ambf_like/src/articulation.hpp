@@ -90,7 +90,8 @@ class Articulation {
 
   btMultiBodyDynamicsWorld& world_;
   double step_size_;
-  bool extra_forces_ = false;  ///< some link has damping or a gravity of its own
+  bool damped_ = false;       ///< some link has damping
+  bool own_gravity_ = false;  ///< some link has a gravity of its own (or its model's)
   std::unique_ptr<btMultiBody> multibody_;
   std::vector<Link> links_;         ///< in multibody link order (parents first)
   std::vector<int> link_of_joint_;  ///< model joint index -> link

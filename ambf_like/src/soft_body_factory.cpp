@@ -159,7 +159,7 @@ std::unique_ptr<btSoftBody> makeSoftBody(const SoftBodySpec& spec, const Mesh& m
   // node, and later only grows a leaf that no longer holds its node: refit them to the real
   // margin, or every rigid body within 25 cm tests every node at every step. A body that touches
   // no rigid body keeps Bullet's (and AMBF's) fat leaves: a tree that no rigid body asks is
-  // rebuilt less often as its nodes move (15 % of AMBF's cloth's step).
+  // rebuilt less often as its nodes move (about 9 % of AMBF's cloth's step).
   if (c.collision_flags & btSoftBody::fCollision::RVSmask) {
     for (int i = 0; i < body->m_nodes.size(); ++i) {
       btSoftBody::Node& node = body->m_nodes[i];

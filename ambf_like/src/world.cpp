@@ -70,6 +70,8 @@ struct NamedJoint {
 struct World::Impl {
   WorldSpec settings;
   WorldOptions options;
+  /// Per model, its joint trees to be simulated in reduced coordinates (none unless asked).
+  std::vector<detail::ArticulationPlan> plans;
   bool articulated;  ///< some model is simulated in reduced coordinates
   detail::BulletWorld bullet;
   btDiscreteDynamicsWorld& world;
@@ -95,9 +97,9 @@ struct World::Impl {
   Impl(const SceneSpec& scene, const WorldOptions& opts)
       : settings(scene.world),
         options(opts),
-        articulated(
-            std::any_of(scene.models.begin(), scene.models.end(),
-                        [this](const ModelSpec& m) { return !articulationsOf(m).trees.empty(); })),
+        plans(planEach(scene.models)),
+        articulated(std::any_of(plans.begin(), plans.end(),
+                                [](const auto& plan) { return !plan.trees.empty(); })),
         bullet(articulated),
         world(bullet.dynamics()) {
     btGImpactCollisionAlgorithm::registerAlgorithm(&bullet.dispatcher());
@@ -134,12 +136,12 @@ struct World::Impl {
     }
   }
 
-  /// The joint trees of `model` to be simulated in reduced coordinates (none unless asked).
-  detail::ArticulationPlan articulationsOf(const ModelSpec& model) const {
-    return asksForReduced() ? detail::planArticulations(model) : detail::ArticulationPlan{};
-  }
-  bool asksForReduced() const {
-    return options.articulation.value_or(settings.articulation) == Articulation::Reduced;
+  std::vector<detail::ArticulationPlan> planEach(const std::vector<ModelSpec>& models) const {
+    std::vector<detail::ArticulationPlan> out(models.size());
+    if (options.articulation.value_or(settings.articulation) == Articulation::Reduced) {
+      std::transform(models.begin(), models.end(), out.begin(), detail::planArticulations);
+    }
+    return out;
   }
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
   /// Refuses a soft body whose material needs more substeps than kMaxSoftSubsteps at this
@@ -248,7 +250,7 @@ void World::Impl::addJoints(const ModelSpec& model, const std::vector<detail::Jo
 }
 
 void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes) {
-  const auto plan = articulationsOf(model);
+  const auto& plan = plans[static_cast<std::size_t>(model_index)];
   for (const auto& why : plan.left_out) {
     warnings.push_back(model.file.string() +
                        ": articulation: reduced: left in maximal coordinates: " + why);

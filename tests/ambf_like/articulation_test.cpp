@@ -58,6 +58,22 @@ std::unique_ptr<test_support::Simulation> load(const std::filesystem::path& mode
   return test_support::simulate({model}, options);
 }
 
+/// Steps all three `steps` times; the largest distance between the tip of `reduced` and that of
+/// `maximal` on the way (`alongside` is a third world stepped with them).
+double worstTipGap(test_support::Simulation& reduced, test_support::Simulation& maximal,
+                   test_support::Simulation& alongside, int steps) {
+  double worst = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    reduced.world->step();
+    maximal.world->step();
+    alongside.world->step();
+    const Vec3 gap = reduced.world->body("tip").pose().translation() -
+                     maximal.world->body("tip").pose().translation();
+    worst = std::max(worst, gap.norm());
+  }
+  return worst;
+}
+
 TEST(Articulation, AJointTreeOnAStaticBodyStartsWhereItsBodiesWereLoaded) {
   test_support::TempDir dir;
   // The elbow's zero is turned by 0.3 rad: the loaded pose reads -0.3 either way.
@@ -192,15 +208,7 @@ TEST(Articulation, DampedBodiesSlowDownAsBulletsDampedRigidBodiesDo) {
   ASSERT_EQ(reduced->world->articulationCount(), 1u);
   EXPECT_TRUE(reduced->world->warnings().empty());
   auto undamped = load(doublePendulum(dir), Articulation::Reduced);
-  double worst_gap = 0.0;
-  for (int i = 0; i < 1000; ++i) {
-    reduced->world->step();
-    maximal->world->step();
-    undamped->world->step();
-    worst_gap = std::max(worst_gap, (reduced->world->body("tip").pose().translation() -
-                                     maximal->world->body("tip").pose().translation())
-                                        .norm());
-  }
+  const double worst_gap = worstTipGap(*reduced, *maximal, *undamped, 1000);
   RecordProperty("tip_gap_m", std::to_string(worst_gap));
   const double shoulder = reduced->world->joint("shoulder").position();
   const double free_shoulder = undamped->world->joint("shoulder").position();
@@ -222,15 +230,7 @@ TEST(Articulation, AModelWithAGravityOfItsOwnSwingsByIt) {
   auto maximal = load(mars, Articulation::Maximal);
   auto on_earth = load(earth, Articulation::Reduced);
   ASSERT_EQ(reduced->world->articulationCount(), 1u);
-  double worst_gap = 0.0;
-  for (int i = 0; i < 300; ++i) {
-    reduced->world->step();
-    maximal->world->step();
-    on_earth->world->step();
-    worst_gap = std::max(worst_gap, (reduced->world->body("tip").pose().translation() -
-                                     maximal->world->body("tip").pose().translation())
-                                        .norm());
-  }
+  const double worst_gap = worstTipGap(*reduced, *maximal, *on_earth, 300);
   // In 0.3 s the tip falls about g t^2 / 2 at first: 17 cm on Mars, 44 cm on Earth (less, as
   // it swings); the two formulations agree on Mars's.
   const double fallen = -reduced->world->body("tip").pose().translation().z();
