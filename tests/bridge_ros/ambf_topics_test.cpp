@@ -48,11 +48,13 @@ class AmbfTopics : public ::testing::Test {
     topics_.update(world().time());
     queue_.callAvailable(::ros::WallDuration(0.002));
   }
-  /// Steps until the latest state carries a step at least as new as this one.
+  /// Steps, then waits for the state of this very step. (Not "a newer sim_step": sim_step counts
+  /// publications, and waitFor republishes, so a message of the step before could still be on
+  /// its way with a newer sim_step.)
   void stepAndReceive() {
-    const std::uint32_t before = sensor_ ? sensor_->sim_step : 0;
     step();
-    waitFor([&] { return sensor_ && sensor_->sim_step > before; });
+    const auto now = static_cast<float>(world().time());  // the message's own type
+    waitFor([&] { return sensor_ && sensor_->sim_time == now; });
   }
   template <typename Condition>
   void waitFor(Condition condition) {
