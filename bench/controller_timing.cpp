@@ -9,11 +9,11 @@
 #include <thread>
 
 #include "bridge/enable_and_home.hpp"
-#include "bridge/twin_platform.hpp"
 #include "controller/session.hpp"
 #include "harness/virtual_gamepad.hpp"
 #include "sections.hpp"
 #include "stamping_platform.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace bench {
 
@@ -27,10 +27,10 @@ double seconds(Clock::duration d) {
 }
 
 /// The in-process twin (Raven-II alone) on the wall clock, enabled and homed.
-std::unique_ptr<bridge::TwinPlatform> wallTwin() {
-  bridge::TwinOptions options;
+std::unique_ptr<twin::TwinPlatform> wallTwin() {
+  twin::TwinOptions options;
   options.clock = bridge::ClockKind::Wall;
-  auto twin = std::make_unique<bridge::TwinPlatform>(options);
+  auto twin = std::make_unique<twin::TwinPlatform>(options);
   bridge::enableAndHome(*twin, 30.0);
   return twin;
 }

@@ -11,9 +11,9 @@
 #include "peg_scene.hpp"
 #include "position_based_pegs.hpp"
 #include "raven/platform_profile.hpp"
-#include "raven/twin_arms.hpp"
 #include "sections.hpp"
 #include "steps_per_second.hpp"
+#include "twin/twin_arms.hpp"
 
 namespace bench {
 
@@ -28,7 +28,7 @@ double ravenAloneMoving(const ambf_like::SceneSpec& scene, ambf_like::Articulati
   ambf_like::WorldOptions options;
   options.articulation = articulation;
   ambf_like::World world(scene, meshes, options);
-  raven::TwinArms arms(world, raven::ArmBindings::ourRaven());
+  twin::TwinArms arms(world, twin::ArmBindings::ourRaven());
   const auto home = raven::builtinProfile("physical").home;
   for (auto arm : raven::kArms) arms.command(arm, home);
   world.step(500);

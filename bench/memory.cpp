@@ -35,7 +35,7 @@ void measureMemory(const BenchSettings& s, Report& report) {
     }
   }
   harness::RosMaster master;
-  harness::ChildProcess node({(s.programs / "bridge/ros/raven_twin_node").string()},
+  harness::ChildProcess node({(s.programs / "twin/ros/raven_twin_node").string()},
                              dir.path() / "node.log");
   std::this_thread::sleep_for(std::chrono::seconds(10));  // serving at 1 kHz meanwhile
   const long peak_kib = node.peakResidentKiB();

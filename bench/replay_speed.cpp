@@ -6,17 +6,17 @@
 #include <chrono>
 
 #include "bridge/enable_and_home.hpp"
-#include "bridge/twin_platform.hpp"
 #include "controller/session.hpp"
 #include "sections.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace bench {
 
 namespace {
 
 /// Simulated over wall seconds of one replay of `inputs`.
-double replayOnce(const std::vector<controller::GamepadState>& inputs) {
-  bridge::TwinPlatform twin;
+double replayOnce(const std::vector<recording::GamepadState>& inputs) {
+  twin::TwinPlatform twin;
   bridge::enableAndHome(twin, 30.0);
   controller::ControllerOptions options;
   options.mapping.deadzone_reads_y_twice = true;  // the released controller's, as recorded
@@ -43,7 +43,7 @@ void measureReplay(const BenchSettings& s, Report& report) {
     report.skip("replay", "paper 2arm replay (O3, lock-step)", "../shared/data is absent");
     return;
   }
-  const auto inputs = controller::readCi(ci);
+  const auto inputs = recording::readCi(ci);
   std::vector<double> factors;
   for (int i = 0; i < s.repeat; ++i) factors.push_back(replayOnce(inputs));
   report.add(atLeast("replay", "paper 2arm replay on the twin, O3, lock-step", Spread::of(factors),

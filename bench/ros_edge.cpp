@@ -64,7 +64,7 @@ bool differs(const std::array<std::vector<double>, 2>& a,
 void measureRosEdge(const BenchSettings& s, Report& report) {
   harness::TempDir dir;
   harness::RosMaster master;
-  harness::ChildProcess node({(s.programs / "bridge/ros/raven_twin_node").string()},
+  harness::ChildProcess node({(s.programs / "twin/ros/raven_twin_node").string()},
                              dir.path() / "node.log");
   int argc = 1;
   char name[] = "raven_bench";

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fits the twin's tracking response to the paper's three physical replays of 2arm_ci.csv with
 # raven_calibrate (leave-one-out included) and writes the profile to $1 (default
-# build/calibration_paper_2arm.yaml; the shipped one is bridge/config/calibration_paper_2arm.yaml).
+# build/calibration_paper_2arm.yaml; the shipped one is twin/config/calibration_paper_2arm.yaml).
 #   scripts/calibrate-paper.sh [OUT.yaml] [raven_calibrate flags, e.g. --stand-in]
 # Needs a build (scripts/build.sh) and ../shared/data.
 set -euo pipefail

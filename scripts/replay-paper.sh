@@ -4,7 +4,7 @@
 # (raven_analyze: ../shared/reference/recordings.md's figures per joint, correlating factors and
 # figures) to $OUT_DIR/report (default build/replay/report).
 #   scripts/replay-paper.sh [raven_controller flags, e.g. --stand-in, or
-#     --calibration bridge/config/calibration_paper_2arm.yaml]
+#     --calibration twin/config/calibration_paper_2arm.yaml]
 # Needs a build (scripts/build.sh) and ../shared/data.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"

@@ -6,7 +6,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
-node_bin="$build/bridge/ros/raven_twin_node"
+node_bin="$build/twin/ros/raven_twin_node"
 [ -x "$node_bin" ] || { echo "twin-node-hz: $node_bin not built; run scripts/build.sh" >&2; exit 1; }
 seconds="${1:-5}"
 topic="${2:-/ravenstate}"

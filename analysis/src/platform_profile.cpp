@@ -5,7 +5,7 @@
 namespace analysis {
 
 bool PlatformProfile::claims(const std::filesystem::path& file,
-                             const controller::RsVariant& variant) const {
+                             const recording::RsVariant& variant) const {
   if (ambf_rows && variant.from_ambf) return true;
   const std::string file_name = file.filename().string();
   for (const auto& pattern : file_patterns) {
@@ -73,7 +73,7 @@ std::filesystem::path defaultProfilesFile() {
 
 const PlatformProfile* profileFor(const std::vector<PlatformProfile>& profiles,
                                   const std::filesystem::path& file,
-                                  const controller::RsVariant& variant) {
+                                  const recording::RsVariant& variant) {
   for (const auto& p : profiles) {
     if (p.claims(file, variant)) return &p;
   }

@@ -11,7 +11,7 @@
 
 #include "analysis/factors.hpp"
 #include "analysis/metrics.hpp"
-#include "controller/cf_recording.hpp"
+#include "recording/cf_recording.hpp"
 
 namespace analysis {
 
@@ -190,7 +190,7 @@ void writeGraspForceFiles(const TrialSet& set, const std::filesystem::path& dir)
   out << "platform,file\n";
   for (const auto& p : set.platforms) {
     for (const auto& t : p.trials) {
-      const auto cf = controller::cfPathFor(t.path);
+      const auto cf = recording::cfPathFor(t.path);
       if (std::filesystem::is_regular_file(cf)) {
         out << csvField(p.profile.name) << "," << csvField(cf.string()) << "\n";
       }

@@ -67,7 +67,7 @@ std::vector<std::string> nanRuns(const Trial& t) {
 
 }  // namespace
 
-Trial toTrial(const controller::RsRecording& rs, const PlatformProfile& profile) {
+Trial toTrial(const recording::RsRecording& rs, const PlatformProfile& profile) {
   Trial t;
   t.path = rs.path;
   std::array<std::size_t, kJointColumns> pos{}, vel{};
@@ -103,7 +103,7 @@ TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
   std::map<std::string, std::vector<Trial>> by_platform;
   for (const auto& file : expand(inputs)) {
     try {
-      const auto rs = controller::readRs(file, controller::NonFiniteJoints::Keep);
+      const auto rs = recording::readRs(file, recording::NonFiniteJoints::Keep);
       const PlatformProfile* profile = profileFor(profiles, file, rs.variant);
       if (!profile) {
         set.issues.push_back({file, "no platform profile claims this file"});

@@ -9,7 +9,7 @@
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
 #include "raven/platform_profile.hpp"
-#include "raven/twin_arms.hpp"
+#include "twin/twin_arms.hpp"
 
 namespace {
 
@@ -25,7 +25,7 @@ void stepScene(benchmark::State& state, const ambf_like::LoadedScene& scene,
   ambf_like::MeshLibrary meshes;
   ambf_like::World world(scene.spec, meshes);
   if (holdRaven) {
-    raven::TwinArms arms(world, raven::ArmBindings::ourRaven());
+    twin::TwinArms arms(world, twin::ArmBindings::ourRaven());
     const auto home = raven::builtinProfile("physical").home;
     for (auto arm : raven::kArms) arms.command(arm, home);
   }

@@ -15,7 +15,8 @@
 #include "calibration/calibration_file.hpp"
 #include "calibration/replay_timing.hpp"
 #include "calibration/tracking_fit.hpp"
-#include "controller/recording_io.hpp"
+#include "raven/control_cycle.hpp"
+#include "recording/recording_io.hpp"
 
 namespace {
 
@@ -38,12 +39,12 @@ struct Settings {
 
 calibration::ReplaySetup replaySetup(const Settings& s) {
   calibration::ReplaySetup setup;
-  setup.inputs = controller::readCi(s.ci);
+  setup.inputs = recording::readCi(s.ci);
   setup.controller.rate = s.rate;
   setup.controller.caps.min_steps = s.man_steps;
   setup.controller.scheme = controller::mappingSchemeNamed(s.mapping);
   setup.controller.mapping.deadzone_reads_y_twice = s.paper_deadzone;
-  if (s.stand_in) setup.twin.stand_in = bridge::CableActuationParams::physicalStandIn();
+  if (s.stand_in) setup.twin.stand_in = twin::CableActuationParams::physicalStandIn();
   return setup;
 }
 
@@ -254,7 +255,7 @@ int main(int argc, char** argv) {
   app.add_option("--mapping", s.mapping, "initial mapping of the replay: m2, m1-left, m1-right")
       ->check(CLI::IsMember({"m2", "m1-left", "m1-right"}));
   app.add_option("--rate", s.rate, "command steps per second of the replay")
-      ->check(CLI::Range(1.0, 1000.0));
+      ->check(CLI::Range(1.0, raven::kControlRate));
   app.add_option("--man-steps", s.man_steps, "least steps per manual iteration")
       ->check(CLI::Range(1, 100));
   app.add_option("--max-evaluations", s.max_evaluations, "replays per fit at most")

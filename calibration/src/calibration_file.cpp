@@ -15,9 +15,9 @@ std::vector<double> listOf(const raven::ArmJoints& joints) {
 
 }  // namespace
 
-void writeCalibration(const std::filesystem::path& file, const bridge::CalibrationProfile& profile,
+void writeCalibration(const std::filesystem::path& file, const twin::CalibrationProfile& profile,
                       const FitProvenance& provenance) {
-  const bridge::TrackingParams& tracking = profile.tracking;
+  const twin::TrackingParams& tracking = profile.tracking;
   YAML::Emitter out;
   out.SetDoublePrecision(6);
   out << YAML::BeginMap;

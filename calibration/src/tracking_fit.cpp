@@ -58,12 +58,12 @@ const std::vector<Parameter>& trackingParameters() {
   return parameters;
 }
 
-bridge::TrackingParams toTracking(const std::vector<double>& values) {
+twin::TrackingParams toTracking(const std::vector<double>& values) {
   if (values.size() != trackingParameters().size()) {
     throw std::invalid_argument("toTracking: expected " +
                                 std::to_string(trackingParameters().size()) + " values");
   }
-  bridge::TrackingParams t;
+  twin::TrackingParams t;
   t.latency_cycles = values[0];
   std::size_t next = 1;
   for (const auto& [name, joints] : driveGroups()) {

@@ -1,31 +1,31 @@
 #include "calibration/twin_replay.hpp"
 
 #include "bridge/enable_and_home.hpp"
-#include "controller/recording_format.hpp"
 #include "controller/session.hpp"
+#include "recording/recording_format.hpp"
 
 namespace calibration {
 
 analysis::Trial replayOnTwin(const ReplaySetup& setup,
-                             const std::optional<bridge::TrackingParams>& tracking) {
-  bridge::TwinOptions twin_options = setup.twin;
+                             const std::optional<twin::TrackingParams>& tracking) {
+  twin::TwinOptions twin_options = setup.twin;
   twin_options.clock = bridge::ClockKind::Simulated;
   twin_options.tracking = tracking;
-  bridge::TwinPlatform twin(twin_options);
+  twin::TwinPlatform twin(twin_options);
   bridge::enableAndHome(twin, 30.0);
   controller::DualPlatformController control({{"twin", &twin, controller::CommandStyle::ServoJr}},
                                              setup.controller);
 
-  controller::RsRecording rs;
+  recording::RsRecording rs;
   rs.path = "twin replay";
-  rs.names = controller::rsColumnNames();
+  rs.names = recording::rsColumnNames();
   double t0 = 0.0;
   controller::SessionOptions options;
   options.replay_delay = setup.replay_delay;
   options.end_after_replay = true;
   options.on_state = [&](std::size_t, const bridge::RavenStateSnapshot& state) {
     if (rs.rows.empty()) t0 = state.time;
-    rs.rows.push_back(controller::rsRow(state, t0));
+    rs.rows.push_back(recording::rsRow(state, t0));
   };
   controller::SessionInputs inputs;
   inputs.inputs = setup.inputs;

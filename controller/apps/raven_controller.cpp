@@ -12,14 +12,15 @@
 #include <memory>
 #include <optional>
 
-#include "bridge/calibration_profile.hpp"
 #include "bridge/enable_and_home.hpp"
 #include "bridge/ros/master_watch.hpp"
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_runtime.hpp"
-#include "bridge/twin_platform.hpp"
 #include "controller/session.hpp"
 #include "controller/terminal_keys.hpp"
+#include "raven/control_cycle.hpp"
+#include "twin/calibration_profile.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace {
 
@@ -34,7 +35,7 @@ struct Settings {
   std::string twin_ns = "/twin";
   std::string physical_ns;
   bool stand_in = false;
-  std::optional<bridge::CalibrationProfile> calibration;
+  std::optional<twin::CalibrationProfile> calibration;
   std::string twin_launch;
   bool lock_step = false;
   bool no_arm_swap = false;
@@ -53,7 +54,7 @@ struct Settings {
 
 /// Owns whichever platforms the settings ask for.
 struct Platforms {
-  std::unique_ptr<bridge::TwinPlatform> twin;
+  std::unique_ptr<twin::TwinPlatform> twin;
   std::vector<std::unique_ptr<bridge::ros1::RavenRosClient>> clients;
   std::vector<controller::PlatformSlot> slots;
 };
@@ -76,12 +77,12 @@ Platforms makePlatforms(const Settings& s) {
     p.clients.push_back(std::make_unique<bridge::ros1::RavenRosClient>(o));
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
-    bridge::TwinOptions o;
+    twin::TwinOptions o;
     if (!s.twin_launch.empty()) o.launch_file = s.twin_launch;
     o.clock = s.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
-    if (s.stand_in) o.stand_in = bridge::CableActuationParams::physicalStandIn();
+    if (s.stand_in) o.stand_in = twin::CableActuationParams::physicalStandIn();
     if (s.calibration) o.tracking = s.calibration->tracking;
-    p.twin = std::make_unique<bridge::TwinPlatform>(o);
+    p.twin = std::make_unique<twin::TwinPlatform>(o);
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -121,9 +122,9 @@ int run(const Settings& s) {
         "--lock-step needs a replay (--replay-ci / --replay-rs) or --mode o1/o5");
   }
   controller::SessionInputs inputs;
-  if (!s.replay_ci.empty()) inputs.inputs = controller::readCi(s.replay_ci);
+  if (!s.replay_ci.empty()) inputs.inputs = recording::readCi(s.replay_ci);
   if (!s.replay_rs.empty()) {
-    inputs.joints = controller::readRs(s.replay_rs);
+    inputs.joints = recording::readRs(s.replay_rs);
     spdlog::info("{}: {}", s.replay_rs, inputs.joints->variant.describe());
   }
   std::optional<bridge::ros1::MasterWatch> master_watch;  // over ROS: survive a master restart
@@ -264,8 +265,8 @@ int main(int argc, char** argv) {
   app.add_flag("--no-keyboard", s.no_keyboard, "do not read mode keys from the terminal");
   app.add_option("--duration", s.duration, "stop after this many seconds of platform time")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--rate", s.rate, "command steps per second (1..1000)")
-      ->check(CLI::Range(1.0, 1000.0));
+  app.add_option("--rate", s.rate, "command steps per second (1..one per robot cycle)")
+      ->check(CLI::Range(1.0, raven::kControlRate));
   app.add_option("--man-steps", s.man_steps,
                  "least steps per manual iteration; the pad is read between iterations, so this "
                  "bounds the input latency (10, the paper's, is needed to replay its recordings)")
@@ -274,7 +275,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, [](int) { interrupted = true; });
   std::signal(SIGTERM, [](int) { interrupted = true; });
   try {
-    if (!calibration.empty()) s.calibration = bridge::CalibrationProfile::load(calibration);
+    if (!calibration.empty()) s.calibration = twin::CalibrationProfile::load(calibration);
     return run(s);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "raven/control_cycle.hpp"
+
 namespace controller {
 
 namespace {
@@ -22,8 +24,10 @@ DualPlatformController::DualPlatformController(std::vector<PlatformSlot> platfor
       profile_(raven::builtinProfile(options_.profile)),
       commanded_(measuredOf(*platforms_.at(0).platform)),
       mapping_(profile_, options_.scheme, commanded_, options_.mapping) {
-  if (!(options_.rate >= 1.0 && options_.rate <= 1000.0)) {
-    throw std::invalid_argument("the command rate must be 1..1000 Hz (the robot's cycle is 1 ms)");
+  if (!(options_.rate >= 1.0 && options_.rate <= raven::kControlRate)) {
+    throw std::invalid_argument("the command rate must be 1.." +
+                                std::to_string(int(raven::kControlRate)) +
+                                " Hz (one command per robot cycle at most)");
   }
   if (!(options_.iteration_overhead >= 0.0 && options_.iteration_overhead <= 1.0)) {
     throw std::invalid_argument("the iteration overhead must be within 0..1 s");
@@ -80,7 +84,7 @@ IterationReport DualPlatformController::home() {
   return report;
 }
 
-IterationReport DualPlatformController::manual(const GamepadState& pad) {
+IterationReport DualPlatformController::manual(const recording::GamepadState& pad) {
   const ArmPair now = measured(platforms_.front());
   // A re-reads the pose: this iteration's move starts where the arms are, so a re-read alone
   // sends no motion (servo_jr increments are taken from the re-read joints, as the released

@@ -44,7 +44,7 @@ bool GamepadMapping::outsideDeadzone(double x, double y) const {
   return std::sqrt(across * across + y * y) > constants_.deadzone;
 }
 
-void GamepadMapping::selectScheme(const GamepadState& pad) {
+void GamepadMapping::selectScheme(const recording::GamepadState& pad) {
   if (pad.back && pad.start) {
     scheme_ = MappingScheme::M2;
   } else if (pad.back) {
@@ -108,7 +108,7 @@ bool GamepadMapping::solve(Arm arm, IkMode mode, MappingResult& result) {
   return true;
 }
 
-MappingResult GamepadMapping::apply(const GamepadState& pad, const ArmPair& measured) {
+MappingResult GamepadMapping::apply(const recording::GamepadState& pad, const ArmPair& measured) {
   selectScheme(pad);
   if (pad.a) {
     ik_mode_ = IkMode::WristLocked;

@@ -54,7 +54,7 @@ SdlGamepad::~SdlGamepad() {
   SDL_QuitSubSystem(SDL_INIT_GAMECONTROLLER | SDL_INIT_EVENTS);
 }
 
-std::optional<GamepadState> SdlGamepad::read() const {
+std::optional<recording::GamepadState> SdlGamepad::read() const {
   std::lock_guard lock(mutex_);
   return state_;
 }
@@ -88,7 +88,7 @@ void SdlGamepad::poll() {
   }
   if (!d.pad) return;
   SDL_GameController* pad = d.pad;
-  GamepadState s;
+  recording::GamepadState s;
   s.left_x = stick(SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTX));
   s.left_y = stick(SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_LEFTY));
   s.right_x = stick(SDL_GameControllerGetAxis(pad, SDL_CONTROLLER_AXIS_RIGHTX));

@@ -76,13 +76,16 @@ void ControllerSession::startRecording() {
   const auto& platforms = controller_.platforms();
   for (const auto& slot : platforms) {
     const std::string suffix = platforms.size() > 1 ? "_" + slot.name : "";
-    rs_.push_back(std::make_unique<RsWriter>(options_.out_dir / (stem + suffix + "_rs.csv")));
+    rs_.push_back(
+        std::make_unique<recording::RsWriter>(options_.out_dir / (stem + suffix + "_rs.csv")));
     files_.push_back(rs_.back()->path());
     const bool has_forces = slot.platform->measuredCf(raven::Arm::Left).has_value();
-    cf_.push_back(has_forces ? std::make_unique<CfWriter>(cfPathFor(rs_.back()->path())) : nullptr);
+    cf_.push_back(
+        has_forces ? std::make_unique<recording::CfWriter>(recording::cfPathFor(rs_.back()->path()))
+                   : nullptr);
     if (cf_.back()) files_.push_back(cf_.back()->path());
   }
-  ci_ = std::make_unique<CiWriter>(options_.out_dir / (stem + "_ci.csv"));
+  ci_ = std::make_unique<recording::CiWriter>(options_.out_dir / (stem + "_ci.csv"));
   files_.push_back(options_.out_dir / (stem + "_ci.csv"));
   spdlog::info("recording to {}", (options_.out_dir / stem).string());
 }
@@ -96,7 +99,7 @@ std::size_t ControllerSession::stopRecording() {
   return rows;
 }
 
-void ControllerSession::record(const std::optional<GamepadState>& pad) {
+void ControllerSession::record(const std::optional<recording::GamepadState>& pad) {
   if (!recording() && !options_.on_state) return;
   const auto& platforms = controller_.platforms();
   for (std::size_t i = 0; i < platforms.size(); ++i) {
@@ -166,7 +169,7 @@ bool ControllerSession::turn() {
       report(controller_.manual(inputs_.inputs[next_row_++]));
       break;
     case Mode::ReplayJoints: {
-      const RsRecording& rs = *inputs_.joints;
+      const recording::RsRecording& rs = *inputs_.joints;
       if (next_row_ >= rs.rows.size()) {
         finishReplay();
         break;

@@ -5,12 +5,12 @@
 #include <cmath>
 #include <cstdint>
 
-#include "controller/recording_io.hpp"
 #include "fuzz_file.hpp"
+#include "recording/recording_io.hpp"
 
 namespace {
 
-void checkRs(const controller::RsRecording& rs) {
+void checkRs(const recording::RsRecording& rs) {
   for (std::size_t r = 0; r < rs.rows.size(); ++r) {
     const double t = rs.time(r);
     if (!std::isfinite(t)) fuzz::fail("an rs row with a non-finite time");
@@ -27,20 +27,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   try {
     if (data[0] % 2 == 0) {
-      checkRs(controller::readRs(fuzz::asFile(data + 1, size - 1, "run_rs.csv")));
+      checkRs(recording::readRs(fuzz::asFile(data + 1, size - 1, "run_rs.csv")));
     } else {
-      for (const auto& pad : controller::readCi(fuzz::asFile(data + 1, size - 1, "run_ci.csv"))) {
+      for (const auto& pad : recording::readCi(fuzz::asFile(data + 1, size - 1, "run_ci.csv"))) {
         (void)pad;
       }
     }
-  } catch (const controller::RecordingError&) {
+  } catch (const recording::RecordingError&) {
   }
   try {
     if (data[0] % 2 == 0) {
-      controller::readRs(fuzz::asFile(data + 1, size - 1, "analysed_rs.csv"),
-                         controller::NonFiniteJoints::Keep);
+      recording::readRs(fuzz::asFile(data + 1, size - 1, "analysed_rs.csv"),
+                        recording::NonFiniteJoints::Keep);
     }
-  } catch (const controller::RecordingError&) {
+  } catch (const recording::RecordingError&) {
   }
   return 0;
 }

@@ -14,10 +14,10 @@
 #include <cstring>
 
 #include "bridge/operating_state.hpp"
-#include "bridge/raven_core.hpp"
 #include "bridge/ros/ros_conversions.hpp"
 #include "fuzz_file.hpp"
 #include "raven/platform_profile.hpp"
+#include "twin/raven_core.hpp"
 
 namespace {
 
@@ -60,10 +60,10 @@ geometry_msgs::Transform anyTransform(FuzzedDataProvider& in) {
 }
 
 /// An enabled, homed command layer of the physical robot, made once and copied per input.
-const bridge::RavenCore& readyCore() {
-  static const bridge::RavenCore ready = [] {
+const twin::RavenCore& readyCore() {
+  static const twin::RavenCore ready = [] {
     const auto profile = raven::builtinProfile("physical");
-    bridge::RavenCore core(profile, bridge::ServoLimits{}, {profile.home, profile.home});
+    twin::RavenCore core(profile, bridge::ServoLimits{}, {profile.home, profile.home});
     core.apply(bridge::StateCommand::Enable);
     core.apply(bridge::StateCommand::Home);
     for (int i = 0; i < 30000 && core.status().is_busy; ++i) {
@@ -74,7 +74,7 @@ const bridge::RavenCore& readyCore() {
   return ready;
 }
 
-void checkSetpoints(const bridge::RavenCore& core, const raven::JointLimits& limits) {
+void checkSetpoints(const twin::RavenCore& core, const raven::JointLimits& limits) {
   for (Arm arm : raven::kArms) {
     const auto& q = core.setpoint(arm);
     if (!q.allFinite()) fuzz::fail("a non-finite setpoint");
@@ -90,7 +90,7 @@ void checkSetpoints(const bridge::RavenCore& core, const raven::JointLimits& lim
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   FuzzedDataProvider in(data, size);
   static const raven::JointLimits limits = raven::builtinProfile("physical").limits;
-  bridge::RavenCore core = readyCore();
+  twin::RavenCore core = readyCore();
   while (in.remaining_bytes() > 0) {
     const Arm arm = in.ConsumeBool() ? Arm::Left : Arm::Right;
     switch (in.ConsumeIntegralInRange<int>(0, 7)) {

@@ -4,6 +4,7 @@
 #include <set>
 #include <tuple>
 
+#include "raven/control_cycle.hpp"
 #include "yaml_out.hpp"
 
 namespace raven::model {
@@ -183,9 +184,10 @@ std::size_t writeModel(const ModelDraft& model, Collision collision,
     limits["low"] = number(joint.low);
     limits["high"] = number(joint.high);
     j["joint limits"] = flow(limits);
-    // A stiff position servo: the motor closes the error within its effort limit each step.
+    // A stiff position servo: the motor closes the error within its effort limit each step; the
+    // twin steps its physics once per robot cycle.
     j["controller output type"] = "POSITION";
-    j["max motor impulse"] = number(joint.max_effort * 0.001);
+    j["max motor impulse"] = number(joint.max_effort * raven::kControlCycle);
     j["max velocity"] = number(joint.max_velocity);
     j["joint erp"] = number(0.8);
     j["joint cfm"] = number(0.0);

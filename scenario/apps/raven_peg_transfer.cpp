@@ -13,7 +13,7 @@
 #include <fstream>
 #include <thread>
 
-#include "controller/cf_recording.hpp"
+#include "recording/cf_recording.hpp"
 #include "scenario/batch.hpp"
 #include "scenario/batch_summary.hpp"
 #include "scenario/console_report.hpp"
@@ -203,7 +203,7 @@ int runPegTransfers(const Settings& s) {
   fmt::print("wrote {}{}, {}\n",
              single && record
                  ? fmt::format("{} ({} rows), {}, ", first.rs_file.string(), first.rs_rows,
-                               controller::cfPathFor(first.rs_file).string())
+                               recording::cfPathFor(first.rs_file).string())
                  : "",
              summary_path.string(), jsonl_path.string());
   return stop_requested ? 130 : 0;

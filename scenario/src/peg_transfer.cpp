@@ -5,8 +5,8 @@
 #include <optional>
 
 #include "ambf_like/scene_loader.hpp"
-#include "controller/cf_recording.hpp"
-#include "controller/recording_io.hpp"
+#include "recording/cf_recording.hpp"
+#include "recording/recording_io.hpp"
 #include "scenario/arm_routine.hpp"
 #include "scenario/carried_squeeze.hpp"
 #include "scenario/grasp_assist.hpp"
@@ -17,9 +17,8 @@ namespace scenario {
 
 namespace {
 
-bridge::TwinOptions twinOptions(const PegTransferOptions& options,
-                                const SceneVariation& variation) {
-  bridge::TwinOptions twin;
+twin::TwinOptions twinOptions(const PegTransferOptions& options, const SceneVariation& variation) {
+  twin::TwinOptions twin;
   twin.launch_file = options.launch_file.empty()
                          ? raven::modelDirectory() / "peg_transfer" / "launch.yaml"
                          : options.launch_file;
@@ -32,7 +31,7 @@ bridge::TwinOptions twinOptions(const PegTransferOptions& options,
     // The assist's jaw sensors and actuators, after the arms whose jaws carry them.
     if (assist) ambf_like::appendModelFiles(scene, {GraspAssist::modelFile()});
   };
-  if (options.stand_in) twin.stand_in = bridge::CableActuationParams::physicalStandIn();
+  if (options.stand_in) twin.stand_in = twin::CableActuationParams::physicalStandIn();
   return twin;
 }
 
@@ -60,7 +59,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   CarriedSqueeze squeeze;
   session.makeReady(options.time_limit);
   controller::DualPlatformController& controller = session.controller();
-  bridge::TwinPlatform& twin = session.twin();
+  twin::TwinPlatform& twin = session.twin();
 
   const auto profile = raven::builtinProfile("physical");
   std::array<ArmRoutine, 2> routines{
@@ -74,15 +73,15 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     for (const PegJob& job : layout.jobs) pegs.push_back(job.peg);
     assist.emplace(world, pegs);
   }
-  std::unique_ptr<controller::RsWriter> rs;
-  std::unique_ptr<controller::CfWriter> cf;
+  std::unique_ptr<recording::RsWriter> rs;
+  std::unique_ptr<recording::CfWriter> cf;
   const std::filesystem::path rs_file =
       !options.rs_file.empty() || options.rs_folder.empty()
           ? options.rs_file
           : options.rs_folder / ("peg_transfer_seed" + std::to_string(options.seed) + "_rs.csv");
   if (!rs_file.empty()) {
-    rs = std::make_unique<controller::RsWriter>(rs_file);
-    cf = std::make_unique<controller::CfWriter>(controller::cfPathFor(rs_file));
+    rs = std::make_unique<recording::RsWriter>(rs_file);
+    cf = std::make_unique<recording::CfWriter>(recording::cfPathFor(rs_file));
   }
 
   RunProgress progress{twin.now(), 0, layout.jobs.size()};

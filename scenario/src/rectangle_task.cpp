@@ -4,8 +4,8 @@
 #include <memory>
 #include <stdexcept>
 
-#include "controller/recording_io.hpp"
 #include "raven/arm_kinematics.hpp"
+#include "recording/recording_io.hpp"
 #include "scenario/scripted_session.hpp"
 
 namespace scenario {
@@ -13,8 +13,8 @@ namespace scenario {
 namespace {
 
 /// Both sticks pushed the same way: (x, y) in the stick's own sense (y down when pushed forward).
-controller::GamepadState bothSticks(double x, double y) {
-  controller::GamepadState pad;
+recording::GamepadState bothSticks(double x, double y) {
+  recording::GamepadState pad;
   pad.left_x = pad.right_x = x;
   pad.left_y = pad.right_y = y;
   return pad;
@@ -22,8 +22,8 @@ controller::GamepadState bothSticks(double x, double y) {
 
 }  // namespace
 
-std::vector<controller::GamepadState> rectangleInputs(const RectangleOptions& options,
-                                                      const controller::MappingConstants& mapping) {
+std::vector<recording::GamepadState> rectangleInputs(const RectangleOptions& options,
+                                                     const controller::MappingConstants& mapping) {
   if (!(options.width > 0.0 && options.depth > 0.0 && std::isfinite(options.width) &&
         std::isfinite(options.depth))) {
     throw std::invalid_argument("rectangle: width and depth must be positive and finite");
@@ -33,16 +33,16 @@ std::vector<controller::GamepadState> rectangleInputs(const RectangleOptions& op
   }
   const double per_loop = options.deflection / mapping.divisor;  // M2: dx = x / DIV, dy = -y / DIV
   const double d = options.deflection;
-  const std::array<std::pair<controller::GamepadState, double>, 4> edges{
+  const std::array<std::pair<recording::GamepadState, double>, 4> edges{
       {{bothSticks(d, 0.0), options.width},
        {bothSticks(0.0, -d), options.depth},
        {bothSticks(-d, 0.0), options.width},
        {bothSticks(0.0, d), options.depth}}};
-  std::vector<controller::GamepadState> inputs;
+  std::vector<recording::GamepadState> inputs;
   for (const auto& [pad, length] : edges) {
     inputs.insert(inputs.end(), static_cast<std::size_t>(std::lround(length / per_loop)), pad);
     inputs.insert(inputs.end(), static_cast<std::size_t>(std::max(options.dwell, 0)),
-                  controller::GamepadState{});
+                  recording::GamepadState{});
   }
   return inputs;
 }
@@ -74,17 +74,17 @@ nlohmann::json RectangleResult::json() const {
 RectangleResult runRectangle(const RectangleOptions& options) {
   const controller::ControllerOptions controller_options;  // M2, the paper's constants
   const auto inputs = rectangleInputs(options, controller_options.mapping);
-  bridge::TwinOptions twin_options;
-  if (options.stand_in) twin_options.stand_in = bridge::CableActuationParams::physicalStandIn();
+  twin::TwinOptions twin_options;
+  if (options.stand_in) twin_options.stand_in = twin::CableActuationParams::physicalStandIn();
   ScriptedSession session(twin_options, controller_options);
   session.makeReady(options.time_limit);
-  bridge::TwinPlatform& twin = session.twin();
+  twin::TwinPlatform& twin = session.twin();
   controller::DualPlatformController& controller = session.controller();
 
-  std::unique_ptr<controller::RsWriter> rs;
-  std::unique_ptr<controller::CiWriter> ci;
-  if (!options.rs_file.empty()) rs = std::make_unique<controller::RsWriter>(options.rs_file);
-  if (!options.ci_file.empty()) ci = std::make_unique<controller::CiWriter>(options.ci_file);
+  std::unique_ptr<recording::RsWriter> rs;
+  std::unique_ptr<recording::CiWriter> ci;
+  if (!options.rs_file.empty()) rs = std::make_unique<recording::RsWriter>(options.rs_file);
+  if (!options.ci_file.empty()) ci = std::make_unique<recording::CiWriter>(options.ci_file);
   const auto profile = raven::builtinProfile(controller_options.profile);
   const std::array<raven::ArmKinematics, 2> kinematics{
       raven::ArmKinematics::of(profile, raven::Arm::Left),
@@ -99,7 +99,7 @@ RectangleResult runRectangle(const RectangleOptions& options) {
   };
   recordPose();  // the homed pose the rectangle starts from
   RunProgress progress{twin.now(), 0, inputs.size()};
-  for (const controller::GamepadState& pad : inputs) {
+  for (const recording::GamepadState& pad : inputs) {
     if (twin.now() >= options.time_limit) break;
     const controller::IterationReport report = controller.manual(pad);
     result.refused += report.refused;

@@ -7,7 +7,7 @@
 
 namespace scenario {
 
-ScriptedSession::ScriptedSession(const bridge::TwinOptions& options,
+ScriptedSession::ScriptedSession(const twin::TwinOptions& options,
                                  controller::ControllerOptions controller_options)
     : twin_(options),
       first_step_(twin_.world().stepCount()),

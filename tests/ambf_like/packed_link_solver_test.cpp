@@ -1,7 +1,7 @@
 // The packed link solve is Bullet's own position solve, bit for bit, on the bodies it takes; the
 // others stay with Bullet.
 
-#include "packed_link_solver.hpp"
+#include "ambf_like/dynamics/packed_link_solver.hpp"
 
 #include <BulletSoftBody/btSoftBody.h>
 #include <BulletSoftBody/btSoftBodyHelpers.h>

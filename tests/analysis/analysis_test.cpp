@@ -18,8 +18,8 @@
 #include "analysis/report.hpp"
 #include "analysis/trial_set.hpp"
 #include "common/load_error.hpp"
-#include "controller/cf_recording.hpp"
-#include "controller/recording_io.hpp"
+#include "recording/cf_recording.hpp"
+#include "recording/recording_io.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -35,7 +35,7 @@ template <typename Value>
 std::filesystem::path writeRs(const test_support::TempDir& dir, const std::string& name, int rows,
                               Value value) {
   const auto path = dir.path() / name;
-  controller::RsWriter writer(path);
+  recording::RsWriter writer(path);
   for (int r = 0; r < rows; ++r) {
     bridge::RavenStateSnapshot s;
     s.time = 0.02 * r;
@@ -51,7 +51,7 @@ std::filesystem::path writeRs(const test_support::TempDir& dir, const std::strin
 std::filesystem::path writeRsAt(const test_support::TempDir& dir, const std::string& name,
                                 const std::vector<double>& times) {
   const auto path = dir.path() / name;
-  controller::RsWriter writer(path);
+  recording::RsWriter writer(path);
   for (double t : times) {
     bridge::RavenStateSnapshot s;
     s.time = t;
@@ -295,7 +295,7 @@ TEST(Analysis, ResamplingOnTimeAlignsTrialsRecordedAtDifferentRates) {
   const auto slow = dir.path() / "slow_physical_rs.csv";
   const auto fast = dir.path() / "fast_physical_rs.csv";
   for (auto [path, period] : {std::pair{slow, 0.04}, std::pair{fast, 0.01}}) {
-    controller::RsWriter writer(path);
+    recording::RsWriter writer(path);
     for (double t = 0.0; t <= 2.0 + 1e-9; t += period) {
       bridge::RavenStateSnapshot s;
       s.time = t;
@@ -331,7 +331,7 @@ TEST(Analysis, GraspForceRecordingsBesideRsFilesAreListedForTheirFigureNotReadAs
   test_support::TempDir dir;
   const auto twin = writeRs(dir, "run_twin_rs.csv", 50, [](int r, int) { return 1e-3 * r; });
   {
-    controller::CfWriter cf(controller::cfPathFor(twin));
+    recording::CfWriter cf(recording::cfPathFor(twin));
     bridge::GrasperForces held;
     held.jaws[0].normal = Eigen::Vector3d(0.15, 0, 0);
     held.jaws[0].contacts = 3;
@@ -350,7 +350,7 @@ TEST(Analysis, GraspForceRecordingsBesideRsFilesAreListedForTheirFigureNotReadAs
   EXPECT_NE(listing.find("run_twin_cf.csv"), std::string::npos) << listing;
   EXPECT_EQ(listing.find("physical"), std::string::npos) << "no forces beside the robot's file";
 
-  const std::string cf = test_support::readFile(controller::cfPathFor(twin));
+  const std::string cf = test_support::readFile(recording::cfPathFor(twin));
   EXPECT_EQ(cf.substr(0, cf.find('\n')).find("time,left_fx,"), 0u);
   EXPECT_NE(cf.find(",0.15,0,0,0,3,nan,"), std::string::npos) << "jaw 1 normal 0.15 N, 3 contacts";
 }

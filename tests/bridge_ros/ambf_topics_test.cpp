@@ -11,8 +11,8 @@
 
 #include <optional>
 
-#include "bridge/ros/ambf_object_topics.hpp"
 #include "test_files.hpp"
+#include "twin/ros/ambf_object_topics.hpp"
 
 namespace {
 
@@ -74,7 +74,7 @@ class AmbfTopics : public ::testing::Test {
   }
 
   std::unique_ptr<test_support::Simulation> sim_;
-  bridge::ros1::AmbfObjectTopics topics_;
+  twin::ros1::AmbfObjectTopics topics_;
   ::ros::NodeHandle client_;
   ::ros::CallbackQueue queue_;
   ::ros::Subscriber sensor_sub_, actuator_sub_;

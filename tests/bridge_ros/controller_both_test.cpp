@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "controller/recording_io.hpp"
+#include "recording/recording_io.hpp"
 #include "ros_peers.hpp"
 
 namespace {
@@ -30,11 +30,11 @@ TEST(ControllerOverRos, BothPlatformsGetTheSameCommandsAndTheirDivergenceIsRepor
   for (const auto& entry : std::filesystem::directory_iterator(dir.path() / "out")) {
     const std::string name = entry.path().filename().string();
     if (name.find("_physical_rs.csv") != std::string::npos) {
-      rows["physical"] = controller::readRs(entry.path()).rows.size();
+      rows["physical"] = recording::readRs(entry.path()).rows.size();
     } else if (name.find("_twin_rs.csv") != std::string::npos) {
-      rows["twin"] = controller::readRs(entry.path()).rows.size();
+      rows["twin"] = recording::readRs(entry.path()).rows.size();
     } else if (name.find("_ci.csv") != std::string::npos) {
-      rows["ci"] = controller::readCi(entry.path()).size();
+      rows["ci"] = recording::readCi(entry.path()).size();
     }
   }
   EXPECT_EQ(rows["physical"], 40u);

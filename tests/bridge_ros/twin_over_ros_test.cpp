@@ -16,8 +16,8 @@
 #include "bridge/ros/low_latency.hpp"
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_conversions.hpp"
-#include "bridge/twin_platform.hpp"
 #include "ros_peers.hpp"
+#include "twin/twin_platform.hpp"
 #include "twin_fixtures.hpp"
 
 namespace {
@@ -251,8 +251,8 @@ std::vector<std::array<ArmJoints, 2>> runScript(RavenPlatform& robot) {
 }
 
 void expectSameTrajectory(const std::vector<std::string>& node_args,
-                          const bridge::TwinOptions& in_process_options) {
-  bridge::TwinPlatform in_process(in_process_options);
+                          const twin::TwinOptions& in_process_options) {
+  twin::TwinPlatform in_process(in_process_options);
   const auto expected = runScript(in_process);
   Rig rig(node_args);
   const auto over_ros = runScript(rig.client);
@@ -270,12 +270,12 @@ void expectSameTrajectory(const std::vector<std::string>& node_args,
 }
 
 TEST(TwinOverRos, SameCommandsGiveTheSameTrajectoryInProcessAndOverRos) {
-  expectSameTrajectory({}, bridge::TwinOptions{});
+  expectSameTrajectory({}, twin::TwinOptions{});
 }
 
 TEST(TwinOverRos, ThePhysicalStandInGivesTheSameTrajectoryInProcessAndOverRos) {
-  bridge::TwinOptions options;
-  options.stand_in = bridge::CableActuationParams::physicalStandIn();
+  twin::TwinOptions options;
+  options.stand_in = twin::CableActuationParams::physicalStandIn();
   expectSameTrajectory({"--stand-in"}, options);
 }
 

@@ -62,13 +62,13 @@ TEST(TrackingFit, TheScoreIsTheMeanOfTheFiguresOverTheRobotsOwn) {
 
 TEST(CalibrationFile, WhatIsWrittenIsReadBack) {
   test_support::TempDir dir;
-  bridge::CalibrationProfile profile;
+  twin::CalibrationProfile profile;
   profile.tracking = calibration::toTracking(
       {8.25, 19.5, 1.0, 0.001, 21.0, 0.9, 0.0, 4.5, 1.05, 0.0002, 20.0, 1.0, 0.003});
   profile.iteration_overhead = 0.001;
   calibration::writeCalibration(dir.path() / "c.yaml", profile,
                                 {"inputs_ci.csv", {"a_physical_1.csv"}, {"a note"}});
-  const auto read = bridge::CalibrationProfile::load(dir.path() / "c.yaml");
+  const auto read = twin::CalibrationProfile::load(dir.path() / "c.yaml");
   EXPECT_NEAR(read.tracking.latency_cycles, 8.25, 1e-9);
   EXPECT_TRUE(read.tracking.bandwidth_hz.isApprox(profile.tracking.bandwidth_hz, 1e-6));
   EXPECT_TRUE(read.tracking.damping_ratio.isApprox(profile.tracking.damping_ratio, 1e-6));
@@ -87,7 +87,7 @@ std::optional<Paper2arm> paper2arm() {
   if (shared.empty()) return std::nullopt;
   const auto dir = shared / "recordings/paper_2arm";
   Paper2arm p;
-  p.setup.inputs = controller::readCi(dir / "2arm_ci.csv");
+  p.setup.inputs = recording::readCi(dir / "2arm_ci.csv");
   p.setup.controller.mapping.deadzone_reads_y_twice = true;
   std::vector<std::filesystem::path> files;
   for (int k = 1; k <= 3; ++k)
@@ -101,7 +101,7 @@ std::optional<Paper2arm> paper2arm() {
 TEST(ShippedCalibration, PutsThe2armReplayWithinTheRobotsRepeatabilityInPositionsAndVelocities) {
   auto paper = paper2arm();
   if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
-  const auto profile = bridge::CalibrationProfile::load(RAVEN_SHIPPED_CALIBRATION);
+  const auto profile = twin::CalibrationProfile::load(RAVEN_SHIPPED_CALIBRATION);
   paper->setup.controller.iteration_overhead = profile.iteration_overhead;
   const auto twin = calibration::replayOnTwin(paper->setup, profile.tracking);
   ASSERT_EQ(twin.rows(), 1351u);

@@ -5,17 +5,17 @@
 
 #include <random>
 
-#include "bridge/twin_platform.hpp"
 #include "controller/dual_platform_controller.hpp"
 #include "random_pad.hpp"
+#include "twin/twin_platform.hpp"
 #include "twin_fixtures.hpp"
 
 namespace {
 
 using controller::ArmPair;
-using controller::GamepadState;
 using raven::Arm;
 using raven::ArmJoints;
+using recording::GamepadState;
 
 /// A platform that passes everything to another and keeps every servo_jr increment it saw.
 class CommandLog final : public bridge::RavenPlatform {

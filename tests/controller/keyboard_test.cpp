@@ -12,8 +12,8 @@
 #include <cmath>
 #include <csignal>
 
-#include "controller/recording_io.hpp"
 #include "raven/platform_profile.hpp"
+#include "recording/recording_io.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -93,7 +93,7 @@ TEST(Keyboard, ModeKeysRecordingAndQuitReachTheCommandThread) {
   for (const auto& entry : std::filesystem::directory_iterator(out.path())) {
     if (entry.path().string().find("_rs.csv") == std::string::npos) continue;
     ++rs_files;
-    EXPECT_GT(controller::readRs(entry.path()).rows.size(), 0u);
+    EXPECT_GT(recording::readRs(entry.path()).rows.size(), 0u);
   }
   EXPECT_EQ(rs_files, 1u);
 }
@@ -114,7 +114,7 @@ TEST(Keyboard, SigtermStopsAReplayCleanlyWithItsRecordingOnDisk) {
   const auto roll = first.path() / "roll_rs.csv";
   constexpr std::size_t kRows = 600;
   {
-    controller::RsWriter writer(roll);
+    recording::RsWriter writer(roll);
     const auto home = raven::builtinProfile("physical").home;
     for (std::size_t r = 0; r < kRows; ++r) {
       bridge::RavenStateSnapshot s;
@@ -143,7 +143,7 @@ TEST(Keyboard, SigtermStopsAReplayCleanlyWithItsRecordingOnDisk) {
   const auto rows = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) - 1;
   EXPECT_LT(rows, kRows) << "the replay ran to its end: the signal did not stop it";
   if (rows > 0) {
-    EXPECT_EQ(controller::readRs(onlyRsFile(second.path())).rows.size(), rows);
+    EXPECT_EQ(recording::readRs(onlyRsFile(second.path())).rows.size(), rows);
   }
 }
 

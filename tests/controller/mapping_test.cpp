@@ -15,10 +15,10 @@ namespace {
 
 using controller::ArmPair;
 using controller::GamepadMapping;
-using controller::GamepadState;
 using controller::MappingScheme;
 using raven::Arm;
 using raven::ArmJoints;
+using recording::GamepadState;
 
 /// The firmware's home: roll 0, jaws pi/4 each.
 ArmPair home() {

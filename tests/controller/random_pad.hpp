@@ -3,19 +3,19 @@
 
 #include <random>
 
-#include "controller/gamepad_state.hpp"
 #include "raven/arm.hpp"
+#include "recording/gamepad_state.hpp"
 
 namespace test_support {
 
 /// Random and adversarial pads: saturated sticks, triggers slammed, every button at random.
-inline controller::GamepadState randomPad(std::mt19937_64& random, bool adversarial) {
+inline recording::GamepadState randomPad(std::mt19937_64& random, bool adversarial) {
   std::uniform_real_distribution<double> axis(-1.0, 1.0), trigger(0.0, 3.996);
   std::bernoulli_distribution coin(adversarial ? 0.5 : 0.05);
   auto stick = [&] {
     return adversarial ? (coin(random) ? 1.0 : -1.0) * (coin(random) ? 1.0 : 0.999) : axis(random);
   };
-  controller::GamepadState p;
+  recording::GamepadState p;
   p.left_x = stick();
   p.left_y = stick();
   p.right_x = stick();
@@ -35,7 +35,7 @@ inline controller::GamepadState randomPad(std::mt19937_64& random, bool adversar
 
 /// Clears the one button that would leave M1 of `selected` (Start selects the right arm, Back the
 /// left): every other input stays as drawn.
-inline void keepM1(controller::GamepadState& pad, raven::Arm selected) {
+inline void keepM1(recording::GamepadState& pad, raven::Arm selected) {
   (selected == raven::Arm::Left ? pad.start : pad.back) = false;
 }
 

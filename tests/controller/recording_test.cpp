@@ -6,14 +6,14 @@
 #include <cmath>
 #include <fstream>
 
-#include "controller/recording_format.hpp"
-#include "controller/recording_io.hpp"
+#include "recording/recording_format.hpp"
+#include "recording/recording_io.hpp"
 #include "test_files.hpp"
 
 namespace {
 
-using controller::GamepadState;
-using controller::RecordingError;
+using recording::GamepadState;
+using recording::RecordingError;
 
 bridge::RavenStateSnapshot sampleState(double t, double scale) {
   bridge::RavenStateSnapshot s;
@@ -37,11 +37,11 @@ bridge::RavenStateSnapshot sampleState(double t, double scale) {
 TEST(Recording, RsRoundTripKeepsEveryFieldInTheRobotsConventions) {
   test_support::TempDir dir;
   {
-    controller::RsWriter w(dir.path() / "a_rs.csv");
+    recording::RsWriter w(dir.path() / "a_rs.csv");
     w.write(sampleState(10.0, 1.0));
     w.write(sampleState(10.022, 2.0));
   }
-  const auto rec = controller::readRs(dir.path() / "a_rs.csv");
+  const auto rec = recording::readRs(dir.path() / "a_rs.csv");
   EXPECT_TRUE(rec.variant.index_column);
   EXPECT_EQ(rec.variant.columns, 240u);
   EXPECT_FALSE(rec.variant.from_ambf);
@@ -49,9 +49,9 @@ TEST(Recording, RsRoundTripKeepsEveryFieldInTheRobotsConventions) {
   ASSERT_EQ(rec.rows.size(), 2u);
   EXPECT_EQ(rec.time(0), 0.0) << "time is relative to the first row";
   EXPECT_NEAR(rec.time(1), 0.022, 1e-12);
-  const auto expected = controller::rsRow(sampleState(10.022, 2.0), 10.0);
+  const auto expected = recording::rsRow(sampleState(10.022, 2.0), 10.0);
   for (std::size_t c = 0; c < expected.size(); ++c) {
-    EXPECT_NEAR(rec.rows[1][c + 1], expected[c], 5e-7) << controller::rsColumnNames()[c];
+    EXPECT_NEAR(rec.rows[1][c + 1], expected[c], 5e-7) << recording::rsColumnNames()[c];
   }
   EXPECT_NEAR(rec.rows[0][rec.column("jpos2")], 0.4, 1e-6) << "jpos in radians and metres";
   EXPECT_EQ(rec.rows[0][rec.column("pos0")], -78246.0) << "pos stays in microns";
@@ -69,11 +69,11 @@ TEST(Recording, CiRoundTripIsExact) {
   b.right_y = -1.0;
   b.y = true;
   {
-    controller::CiWriter w(dir.path() / "a_ci.csv");
+    recording::CiWriter w(dir.path() / "a_ci.csv");
     w.write(a);
     w.write(b);
   }
-  const auto rows = controller::readCi(dir.path() / "a_ci.csv");
+  const auto rows = recording::readCi(dir.path() / "a_ci.csv");
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_EQ(rows[0], a);
   EXPECT_EQ(rows[1], b);
@@ -82,12 +82,12 @@ TEST(Recording, CiRoundTripIsExact) {
 }
 
 TEST(Recording, ValuesArePrintedAsThePapersRecorderPrintsThem) {
-  EXPECT_EQ(controller::formatRsValue(0.0), "0.0");
-  EXPECT_EQ(controller::formatRsValue(-0.0), "0.0");
-  EXPECT_EQ(controller::formatRsValue(0.5221714), "0.522171");
-  EXPECT_EQ(controller::formatRsValue(-78246.0), "-78246.0");
-  EXPECT_EQ(controller::formatRsValue(std::nan("")), "");
-  EXPECT_EQ(controller::formatRsValue(1.3640589714050293, false), "1.3640589714050293");
+  EXPECT_EQ(recording::formatRsValue(0.0), "0.0");
+  EXPECT_EQ(recording::formatRsValue(-0.0), "0.0");
+  EXPECT_EQ(recording::formatRsValue(0.5221714), "0.522171");
+  EXPECT_EQ(recording::formatRsValue(-78246.0), "-78246.0");
+  EXPECT_EQ(recording::formatRsValue(std::nan("")), "");
+  EXPECT_EQ(recording::formatRsValue(1.3640589714050293, false), "1.3640589714050293");
 }
 
 std::string header(const std::vector<std::string>& names, bool index) {
@@ -98,7 +98,7 @@ std::string header(const std::vector<std::string>& names, bool index) {
 
 TEST(Recording, TheReaderTellsEachVariantApart) {
   test_support::TempDir dir;
-  auto names = controller::rsColumnNames();
+  auto names = recording::rsColumnNames();
   std::vector<std::string> row(names.size(), "0.0");
   auto write = [&](const std::string& file, const std::vector<std::string>& cols, bool index,
                    const std::vector<std::string>& values) {
@@ -110,7 +110,7 @@ TEST(Recording, TheReaderTellsEachVariantApart) {
   auto degrees = row;
   degrees[3] = "22.918312";  // jpos2
   degrees[1] = "30.0";       // jpos0
-  auto rec = controller::readRs(write("deg.csv", names, true, degrees));
+  auto rec = recording::readRs(write("deg.csv", names, true, degrees));
   EXPECT_TRUE(rec.variant.jpos_in_degrees);
   EXPECT_NEAR(rec.rows[0][rec.column("jpos2")], 0.4, 1e-6);
   EXPECT_NEAR(rec.rows[0][rec.column("jpos0")], M_PI / 6, 1e-9);
@@ -121,7 +121,7 @@ TEST(Recording, TheReaderTellsEachVariantApart) {
   ambf[5] = "0.0";    // jpos4 = roll + pi/4 with roll -pi/4
   ambf[15] = "-0.5";  // jpos14: the right jaw 1, negated by AMBF
   for (std::size_t c = 17; c < 200; ++c) ambf[c] = "";
-  rec = controller::readRs(write("ambf.csv", names, true, ambf));
+  rec = recording::readRs(write("ambf.csv", names, true, ambf));
   EXPECT_TRUE(rec.variant.from_ambf);
   EXPECT_TRUE(std::isnan(rec.rows[0][rec.column("runlevel")]));
   const auto right = rec.joints(0, raven::Arm::Right);
@@ -137,7 +137,7 @@ TEST(Recording, TheReaderTellsEachVariantApart) {
   }
   for (int i = 0; i < 16; ++i) legacy.push_back("grasp_d" + std::to_string(i));
   EXPECT_EQ(legacy.size(), 238u);
-  rec = controller::readRs(
+  rec = recording::readRs(
       write("legacy.csv", legacy, false, std::vector<std::string>(legacy.size(), "0.1")));
   EXPECT_TRUE(rec.variant.legacy);
   EXPECT_FALSE(rec.variant.index_column);
@@ -148,14 +148,14 @@ TEST(Recording, ThePapersFilesAreRecognised) {
   const auto shared = test_support::sharedDataDir();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
   const auto dir = shared / "recordings/paper_2arm";
-  const auto physical = controller::readRs(dir / "2arm_physical_1.csv");
+  const auto physical = recording::readRs(dir / "2arm_physical_1.csv");
   EXPECT_EQ(physical.rows.size(), 1351u);
   EXPECT_FALSE(physical.variant.from_ambf);
   EXPECT_EQ(physical.variant.columns, 240u);
-  const auto ambf = controller::readRs(dir / "2arm_ambf_1.csv");
+  const auto ambf = recording::readRs(dir / "2arm_ambf_1.csv");
   EXPECT_TRUE(ambf.variant.from_ambf);
   EXPECT_NEAR(ambf.joints(0, raven::Arm::Left)(raven::kInsertion), -0.07, 1e-4);
-  EXPECT_EQ(controller::readCi(dir / "2arm_ci.csv").size(), 1351u);
+  EXPECT_EQ(recording::readCi(dir / "2arm_ci.csv").size(), 1351u);
 }
 
 /// Writes a ci file with `rows` after a correct header.
@@ -169,7 +169,7 @@ std::filesystem::path ciFile(const test_support::TempDir& dir, const std::string
 
 std::string errorOf(const std::filesystem::path& file) {
   try {
-    controller::readCi(file);
+    recording::readCi(file);
   } catch (const RecordingError& e) {
     return e.what();
   }
@@ -201,7 +201,7 @@ TEST(Recording, BadCiFilesNameTheRow) {
 /// Writes an rs file of rows at `times` (s) and returns its path.
 std::filesystem::path rsFileAt(const test_support::TempDir& dir, const std::vector<double>& times) {
   const auto path = dir.path() / "t_rs.csv";
-  controller::RsWriter w(path);
+  recording::RsWriter w(path);
   for (std::size_t i = 0; i < times.size(); ++i) w.write(sampleState(times[i], 1.0 + i));
   return path;
 }
@@ -209,7 +209,7 @@ std::filesystem::path rsFileAt(const test_support::TempDir& dir, const std::vect
 /// The message readRs (for a replay) throws for `file` ("" when it reads it).
 std::string rsErrorOf(const std::filesystem::path& file) {
   try {
-    controller::readRs(file);
+    recording::readRs(file);
   } catch (const RecordingError& e) {
     return e.what();
   }

@@ -9,21 +9,21 @@
 #include <gtest/gtest.h>
 
 #include "analysis/metrics.hpp"
-#include "bridge/twin_platform.hpp"
 #include "harness/virtual_gamepad.hpp"
 #include "test_files.hpp"
+#include "twin/twin_platform.hpp"
 #include "twin_fixtures.hpp"
 
 namespace {
 
-using controller::GamepadState;
 using controller::Mode;
 using raven::Arm;
+using recording::GamepadState;
 
 /// A homed in-process twin on `clock`.
-std::unique_ptr<bridge::TwinPlatform> readyTwin(
+std::unique_ptr<twin::TwinPlatform> readyTwin(
     bridge::ClockKind clock = bridge::ClockKind::Simulated) {
-  bridge::TwinOptions options;
+  twin::TwinOptions options;
   options.clock = clock;
   return test_support::readyTwin(options);
 }
@@ -93,8 +93,8 @@ TEST(Gamepad, TriggersAreScaledOntoThePapersRange) {
 }
 
 /// Replays `inputs` with O3 on a fresh twin on `clock`, recording; returns the rs file.
-controller::RsRecording replay(const std::vector<GamepadState>& inputs, bridge::ClockKind clock,
-                               const std::filesystem::path& out) {
+recording::RsRecording replay(const std::vector<GamepadState>& inputs, bridge::ClockKind clock,
+                              const std::filesystem::path& out) {
   auto twin = readyTwin(clock);
   controller::DualPlatformController control(
       {{"twin", twin.get(), controller::CommandStyle::ServoJr}}, {});
@@ -108,14 +108,14 @@ controller::RsRecording replay(const std::vector<GamepadState>& inputs, bridge::
   while (session.turn()) {
   }
   session.stopRecording();
-  return controller::readRs(session.recordings().front());
+  return recording::readRs(session.recordings().front());
 }
 
 TEST(Replay, AJointReplayPastTheLimitsIsClampedAndSaysSo) {
   test_support::TempDir dir;
   const auto path = dir.path() / "far_rs.csv";
   {
-    controller::RsWriter writer(path);
+    recording::RsWriter writer(path);
     const auto home = raven::builtinProfile("physical").home;
     for (int r = 0; r < 5; ++r) {
       bridge::RavenStateSnapshot s;
@@ -134,7 +134,7 @@ TEST(Replay, AJointReplayPastTheLimitsIsClampedAndSaysSo) {
   controller::SessionOptions options;
   options.out_dir = dir.path();
   options.end_after_replay = true;
-  controller::ControllerSession session(control, {nullptr, {}, controller::readRs(path)}, options);
+  controller::ControllerSession session(control, {nullptr, {}, recording::readRs(path)}, options);
   session.select(Mode::ReplayJoints);
   while (session.turn()) {
   }
@@ -176,13 +176,13 @@ TEST(Replay, ThePapersInputsOnTheTwinLandWithinThePhysicalRobotsRepeatability) {
   session_options.out_dir = out.path();
   session_options.end_after_replay = true;
   controller::ControllerSession session(
-      control, {nullptr, controller::readCi(dir / "2arm_ci.csv"), std::nullopt}, session_options);
+      control, {nullptr, recording::readCi(dir / "2arm_ci.csv"), std::nullopt}, session_options);
   session.select(Mode::ReplayInputs);
   session.startRecording();
   while (session.turn()) {
   }
   session.stopRecording();
-  ASSERT_EQ(controller::readRs(session.recordings().front()).rows.size(), 1351u);
+  ASSERT_EQ(recording::readRs(session.recordings().front()).rows.size(), 1351u);
   // Named as the twin's, beside the three physical replays of the same inputs.
   const auto twin_file = out.path() / "twin_paper_2arm_rs.csv";
   std::filesystem::rename(session.recordings().front(), twin_file);

@@ -10,8 +10,8 @@
 
 #include "ambf_like/scene_loader.hpp"
 #include "raven/arm_kinematics.hpp"
-#include "raven/twin_arms.hpp"
 #include "test_files.hpp"
+#include "twin/twin_arms.hpp"
 #include "twin_fixtures.hpp"
 
 namespace {
@@ -27,11 +27,11 @@ struct Twin {
   explicit Twin(const std::filesystem::path& launch)
       : scene(ambf_like::loadLaunchFile(launch, {})),
         world(scene.spec, meshes),
-        arms(world, raven::ArmBindings::ourRaven()) {}
+        arms(world, twin::ArmBindings::ourRaven()) {}
   ambf_like::LoadedScene scene;
   ambf_like::MeshLibrary meshes;
   ambf_like::World world;
-  raven::TwinArms arms;
+  twin::TwinArms arms;
 
   Vector3d wristPoint(Arm arm) {
     return world.body("/raven2/" + std::string(raven::armName(arm)) + "/wrist_link")
@@ -220,7 +220,7 @@ TEST(Twin, AmbfsOwnRavenIsDrivableThroughTheSameArmLayer) {
       ambf_like::loadLaunchFile(shared / "ambf/ambf_controller/raven2/launch.yaml", {}, options);
   ambf_like::MeshLibrary meshes;
   ambf_like::World world(scene.spec, meshes);
-  raven::TwinArms arms(world, raven::ArmBindings::ambfRaven());
+  twin::TwinArms arms(world, twin::ArmBindings::ambfRaven());
   const auto ambf = raven::builtinProfile("ambf");
   ArmJoints target = ambf.home;
   target(raven::kShoulder) += 0.1;

@@ -19,7 +19,7 @@ using raven::Arm;
 using scenario::Phase;
 
 /// The peg scene with the assist's model loaded after the arms.
-bridge::TwinOptions assistedScene() {
+twin::TwinOptions assistedScene() {
   return scenario_test::pegScene([](ambf_like::SceneSpec& scene) {
     ambf_like::appendModelFiles(scene, {scenario::GraspAssist::modelFile()});
   });

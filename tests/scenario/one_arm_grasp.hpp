@@ -17,8 +17,8 @@ namespace scenario_test {
 
 /// The peg scene with every ring awake (a sleeping ring reports no contacts), changed further by
 /// `adjust` if given.
-inline bridge::TwinOptions pegScene(std::function<void(ambf_like::SceneSpec&)> adjust = {}) {
-  bridge::TwinOptions options;
+inline twin::TwinOptions pegScene(std::function<void(ambf_like::SceneSpec&)> adjust = {}) {
+  twin::TwinOptions options;
   options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
   options.adjust_scene = [adjust](ambf_like::SceneSpec& scene) {
     scene.world.soft_body_sleep.enabled = false;
@@ -31,7 +31,7 @@ inline bridge::TwinOptions pegScene(std::function<void(ambf_like::SceneSpec&)> a
 class OneArmGrasp : public ::testing::Test {
  protected:
   explicit OneArmGrasp(double squeeze = scenario::ArmRoutine::kDefaultSqueeze,
-                       const bridge::TwinOptions& options = pegScene())
+                       const twin::TwinOptions& options = pegScene())
       : session_(options),
         routine_(raven::Arm::Left, raven::builtinProfile("physical"), layout_, {layout_.jobs[0]},
                  squeeze) {

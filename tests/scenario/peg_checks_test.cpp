@@ -8,17 +8,17 @@
 #include <cmath>
 #include <limits>
 
-#include "bridge/twin_platform.hpp"
 #include "scenario/peg_layout.hpp"
 #include "scenario/peg_state.hpp"
 #include "scenario/peg_watch.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace {
 
 using scenario::PegLayout;
 
-bridge::TwinOptions pegScene() {
-  bridge::TwinOptions options;
+twin::TwinOptions pegScene() {
+  twin::TwinOptions options;
   options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
   return options;
 }
@@ -28,7 +28,7 @@ void translate(btSoftBody& body, const btVector3& by) {
 }
 
 TEST(PegChecks, EveryRingIsThreadedOnItsStartPostAndOnNoOther) {
-  bridge::TwinPlatform twin(pegScene());
+  twin::TwinPlatform twin(pegScene());
   const PegLayout layout;
   for (const auto& job : layout.jobs) {
     const auto& peg = twin.world().softBody(job.peg);
@@ -40,7 +40,7 @@ TEST(PegChecks, EveryRingIsThreadedOnItsStartPostAndOnNoOther) {
 }
 
 TEST(PegChecks, ARingPerchedAboveItsPostOrBesideItIsNotPlaced) {
-  bridge::TwinPlatform twin(pegScene());
+  twin::TwinPlatform twin(pegScene());
   const PegLayout layout;
   const auto& job = layout.jobs[0];
   auto& peg = twin.world().softBody(job.peg);
@@ -52,7 +52,7 @@ TEST(PegChecks, ARingPerchedAboveItsPostOrBesideItIsNotPlaced) {
 }
 
 TEST(PegChecks, TheVolumeFromTheNodesIsTheRingsPolyhedralVolume) {
-  bridge::TwinPlatform twin(pegScene());
+  twin::TwinPlatform twin(pegScene());
   const PegLayout layout;
   // An octagon inscribed in the 2 x 5 mm elliptical section (area 2 sqrt(2) a b) lofted in 16
   // straight segments around the 8 mm radius: each segment holds A R 2 sin(pi/16) cos(pi/16).
@@ -66,7 +66,7 @@ TEST(PegChecks, TheVolumeFromTheNodesIsTheRingsPolyhedralVolume) {
 }
 
 TEST(PegWatch, CallsAPegLostForEachKindOfLoss) {
-  bridge::TwinPlatform twin(pegScene());
+  twin::TwinPlatform twin(pegScene());
   auto& world = twin.world();
   scenario::PegWatch watch(world, PegLayout{});
   watch.observe();

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "controller/recording_io.hpp"
+#include "recording/recording_io.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -43,8 +43,8 @@ TEST(RectangleTask, BothArmsTraceTheRectangleAtConstantHeightAndItIsRecorded) {
     EXPECT_LT((path.back() - start).norm(), 3e-4) << raven::armName(arm);
   }
 
-  EXPECT_EQ(controller::readCi(options.ci_file), inputs);
-  const auto rs = controller::readRs(options.rs_file);
+  EXPECT_EQ(recording::readCi(options.ci_file), inputs);
+  const auto rs = recording::readRs(options.rs_file);
   EXPECT_EQ(rs.rows.size(), result.iterations);
 }
 

@@ -22,8 +22,8 @@ void makeReady(bridge::RavenPlatform& platform) {
       << bridge::wireName(platform.operatingStatus().state);
 }
 
-std::unique_ptr<bridge::TwinPlatform> readyTwin(const bridge::TwinOptions& options) {
-  auto twin = std::make_unique<bridge::TwinPlatform>(options);
+std::unique_ptr<twin::TwinPlatform> readyTwin(const twin::TwinOptions& options) {
+  auto twin = std::make_unique<twin::TwinPlatform>(options);
   makeReady(*twin);
   return twin;
 }

@@ -4,7 +4,7 @@
 
 #include <memory>
 
-#include "bridge/twin_platform.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace test_support {
 
@@ -22,6 +22,6 @@ void advanceUntil(bridge::RavenPlatform& platform, Done done) {
 void makeReady(bridge::RavenPlatform& platform);
 
 /// A new in-process twin, enabled and homed.
-std::unique_ptr<bridge::TwinPlatform> readyTwin(const bridge::TwinOptions& options = {});
+std::unique_ptr<twin::TwinPlatform> readyTwin(const twin::TwinOptions& options = {});
 
 }  // namespace test_support

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "controller/recording_io.hpp"
+#include "recording/recording_io.hpp"
 
 namespace analysis {
 
@@ -33,7 +33,7 @@ struct PlatformProfile {
   JointRow position_offset{};  ///< added to recorded jpos (rad, m)
 
   /// Does this recording belong to the platform?
-  bool claims(const std::filesystem::path& file, const controller::RsVariant& variant) const;
+  bool claims(const std::filesystem::path& file, const recording::RsVariant& variant) const;
 };
 
 /// Reads a profiles file. Throws common::LoadError naming the file, line and key.
@@ -44,6 +44,6 @@ std::filesystem::path defaultProfilesFile();
 /// The first profile claiming the file, if any.
 const PlatformProfile* profileFor(const std::vector<PlatformProfile>& profiles,
                                   const std::filesystem::path& file,
-                                  const controller::RsVariant& variant);
+                                  const recording::RsVariant& variant);
 
 }  // namespace analysis

@@ -41,7 +41,7 @@ struct TrialSet {
 };
 
 /// One recording as a trial of `profile`'s platform (its offsets applied, time from row 0).
-Trial toTrial(const controller::RsRecording& rs, const PlatformProfile& profile);
+Trial toTrial(const recording::RsRecording& rs, const PlatformProfile& profile);
 
 /// A run of at least this many rows with NaN in a joint column is reported.
 constexpr std::size_t kNanRunReported = 5;

@@ -3,12 +3,13 @@
 // (../shared/reference/raven2-ros-interface.md and raven2-kinematics.md).
 
 #include "raven/arm.hpp"
+#include "raven/control_cycle.hpp"
 
 namespace bridge {
 
 /// How far and how fast the robot lets a command move a joint.
 struct ServoLimits {
-  double cycle = 0.001;  ///< the robot's control period (s)
+  double cycle = raven::kControlCycle;  ///< the robot's control period (s)
   /// What one cycle consumes of pending servo motion: 0.0025 rad, 0.00005 m (insertion).
   raven::ArmJoints per_cycle =
       (raven::ArmJoints() << 0.0025, 0.0025, 0.00005, 0.0025, 0.0025, 0.0025, 0.0025).finished();

@@ -20,6 +20,7 @@
 #include "bridge/ros/ros_conversions.hpp"
 #include "bridge/throttled_log.hpp"
 #include "common/printable.hpp"
+#include "raven/control_cycle.hpp"
 
 namespace bridge::ros1 {
 
@@ -345,7 +346,7 @@ void RavenRosServer::Impl::answerStep(const StepMessage& step, const std::string
 }
 
 void RavenRosServer::Impl::runCycle() {
-  platform_.advance(0.001);
+  platform_.advance(raven::kControlCycle);
   if (options_.after_cycle) options_.after_cycle();
   publishState();
 }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/calibration_profile.hpp"
+#include "twin/calibration_profile.hpp"
 
 namespace calibration {
 
@@ -18,9 +18,9 @@ struct FitProvenance {
   std::vector<std::string> notes;     ///< scores, options, stop reason
 };
 
-/// Writes `profile` and `provenance` as YAML (bridge::CalibrationProfile::load reads it back);
+/// Writes `profile` and `provenance` as YAML (twin::CalibrationProfile::load reads it back);
 /// throws std::runtime_error when it cannot.
-void writeCalibration(const std::filesystem::path& file, const bridge::CalibrationProfile& profile,
+void writeCalibration(const std::filesystem::path& file, const twin::CalibrationProfile& profile,
                       const FitProvenance& provenance);
 
 }  // namespace calibration

@@ -1,5 +1,5 @@
 #pragma once
-// Fits the twin's tracking response (bridge::TrackingParams) to physical replays of the same
+// Fits the twin's tracking response (twin::TrackingParams) to physical replays of the same
 // inputs: a derivative-free bounded optimiser (NLopt's BOBYQA) minimises the twin's j_P and j_V
 // figures against the physical trials, each relative to the robot's own repeatability.
 
@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "bridge/tracking_response.hpp"
 #include "calibration/fidelity.hpp"
 #include "calibration/twin_replay.hpp"
+#include "twin/tracking_response.hpp"
 
 namespace calibration {
 
@@ -26,7 +26,7 @@ struct Parameter {
 /// recording).
 const std::vector<Parameter>& trackingParameters();
 /// Parameter values (in trackingParameters() order) as a tracking response.
-bridge::TrackingParams toTracking(const std::vector<double>& values);
+twin::TrackingParams toTracking(const std::vector<double>& values);
 
 /// The fit's objective: the mean over the four summary figures of twin-vs-physical over the
 /// robot's own T_PP (with one physical trial, over `scale`'s figures instead).
@@ -39,7 +39,7 @@ struct FitOptions {
 
 struct FitResult {
   std::vector<double> values;  ///< in trackingParameters() order
-  bridge::TrackingParams tracking;
+  twin::TrackingParams tracking;
   double score = 0.0;
   int evaluations = 0;
   std::string stop_reason;

@@ -6,24 +6,24 @@
 #include <vector>
 
 #include "analysis/trial_set.hpp"
-#include "bridge/twin_platform.hpp"
 #include "controller/dual_platform_controller.hpp"
-#include "controller/gamepad_state.hpp"
+#include "recording/gamepad_state.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace calibration {
 
 /// What a replay needs besides the tracking response being tried.
 struct ReplaySetup {
-  std::vector<controller::GamepadState> inputs;  ///< one ci row per manual-loop iteration
-  controller::ControllerOptions controller;      ///< rate, man_steps, scheme, deadzone quirk
-  bridge::TwinOptions twin;                      ///< model, stand-in; always on the simulated clock
-  double replay_delay = 1.0;                     ///< O3's wait after loading (s)
+  std::vector<recording::GamepadState> inputs;  ///< one ci row per manual-loop iteration
+  controller::ControllerOptions controller;     ///< rate, man_steps, scheme, deadzone quirk
+  twin::TwinOptions twin;                       ///< model, stand-in; always on the simulated clock
+  double replay_delay = 1.0;                    ///< O3's wait after loading (s)
 };
 
 /// Builds, enables and homes a twin with `tracking` (none: the twin as it is), replays every
 /// input row and returns one trial row per input row (the state before each iteration, as the
 /// recorder writes it), in the physical robot's conventions.
 analysis::Trial replayOnTwin(const ReplaySetup& setup,
-                             const std::optional<bridge::TrackingParams>& tracking);
+                             const std::optional<twin::TrackingParams>& tracking);
 
 }  // namespace calibration

@@ -67,7 +67,7 @@ class DualPlatformController {
   /// wrist values are reset.
   IterationReport home();
   /// O2 / O3: one manual-loop iteration from a pad reading.
-  IterationReport manual(const GamepadState& pad);
+  IterationReport manual(const recording::GamepadState& pad);
   /// O4: one recorded joint row, reached under the caps; then the platforms' clocks run on to
   /// `due` seconds after the replay began (the recording's own timing).
   IterationReport replayJoints(const ArmPair& joints, double due);

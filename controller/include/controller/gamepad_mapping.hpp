@@ -7,8 +7,8 @@
 #include <array>
 #include <string_view>
 
-#include "controller/gamepad_state.hpp"
 #include "raven/arm_kinematics.hpp"
+#include "recording/gamepad_state.hpp"
 
 namespace controller {
 
@@ -56,7 +56,7 @@ class GamepadMapping {
   /// Re-reads the pose: targets, stored wrist values and grasp from `joints`.
   void reset(const ArmPair& joints);
   /// One manual-loop iteration. `measured` is read when A asks to re-read the pose.
-  MappingResult apply(const GamepadState& pad, const ArmPair& measured);
+  MappingResult apply(const recording::GamepadState& pad, const ArmPair& measured);
 
   MappingScheme scheme() const { return scheme_; }
   IkMode ikMode() const { return ik_mode_; }
@@ -77,7 +77,7 @@ class GamepadMapping {
   };
   static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
 
-  void selectScheme(const GamepadState& pad);
+  void selectScheme(const recording::GamepadState& pad);
   /// Moves `arm`'s target by the stick (x, y), or along z when `bumper` is held.
   void translate(Arm arm, double x, double y, bool bumper);
   /// M1's right stick on the selected arm: joint 4 by -rx / wrist_divisor, joint 5 by

@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-#include "controller/gamepad_state.hpp"
+#include "recording/gamepad_state.hpp"
 
 namespace controller {
 
@@ -43,7 +43,7 @@ class SdlGamepad {
   SdlGamepad& operator=(const SdlGamepad&) = delete;
 
   /// The latest reading; empty while no pad is connected.
-  std::optional<GamepadState> read() const;
+  std::optional<recording::GamepadState> read() const;
   /// The connected pad's name ("" when none).
   std::string name() const;
   /// How many times a pad was unplugged so far.
@@ -63,7 +63,7 @@ class SdlGamepad {
   struct Device;
   std::unique_ptr<Device> device_;  ///< touched by the polling thread only
   mutable std::mutex mutex_;
-  std::optional<GamepadState> state_;
+  std::optional<recording::GamepadState> state_;
   std::string name_;
   std::atomic<std::uint64_t> unplugs_{0};
   std::atomic<bool> rumble_requested_{false};

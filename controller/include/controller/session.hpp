@@ -10,10 +10,10 @@
 #include <string_view>
 #include <vector>
 
-#include "controller/cf_recording.hpp"
 #include "controller/dual_platform_controller.hpp"
-#include "controller/recording_io.hpp"
 #include "controller/sdl_gamepad.hpp"
+#include "recording/cf_recording.hpp"
+#include "recording/recording_io.hpp"
 
 namespace controller {
 
@@ -25,9 +25,9 @@ std::string_view modeName(Mode mode);
 
 /// Where a session's inputs come from.
 struct SessionInputs {
-  SdlGamepad* gamepad = nullptr;      ///< O2's live pad (may be absent)
-  std::vector<GamepadState> inputs;   ///< O3: one row per manual-loop iteration
-  std::optional<RsRecording> joints;  ///< O4: recorded joint positions
+  SdlGamepad* gamepad = nullptr;                 ///< O2's live pad (may be absent)
+  std::vector<recording::GamepadState> inputs;   ///< O3: one row per manual-loop iteration
+  std::optional<recording::RsRecording> joints;  ///< O4: recorded joint positions
 };
 
 /// Session settings.
@@ -72,7 +72,7 @@ class ControllerSession {
   std::size_t padlessTurns() const { return padless_turns_; }
 
  private:
-  void record(const std::optional<GamepadState>& pad);
+  void record(const std::optional<recording::GamepadState>& pad);
   void finishReplay();
   void report(const IterationReport& report);
 
@@ -82,9 +82,10 @@ class ControllerSession {
   Mode mode_ = Mode::Idle;
   std::size_t next_row_ = 0;
   std::size_t clamped_rows_ = 0;  ///< replayed rows a joint limit clamped
-  std::vector<std::unique_ptr<RsWriter>> rs_;
-  std::vector<std::unique_ptr<CfWriter>> cf_;  ///< per platform; null where it has no forces
-  std::unique_ptr<CiWriter> ci_;
+  std::vector<std::unique_ptr<recording::RsWriter>> rs_;
+  std::vector<std::unique_ptr<recording::CfWriter>>
+      cf_;  ///< per platform; null where it has no forces
+  std::unique_ptr<recording::CiWriter> ci_;
   std::vector<std::filesystem::path> files_;
   std::size_t padless_turns_ = 0;
   bool warned_padless_ = false;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "bridge/grasp_forces.hpp"
+#include "twin/grasp_forces.hpp"
 
 namespace scenario {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "controller/gamepad_mapping.hpp"
-#include "controller/gamepad_state.hpp"
+#include "recording/gamepad_state.hpp"
 #include "scenario/run_progress.hpp"
 #include "scenario/run_timing.hpp"
 
@@ -33,8 +33,8 @@ struct RectangleOptions {
 /// The pad readings that trace the rectangle: +x, +y, -x, -y, both sticks alike, each edge a
 /// whole number of iterations at the mapping's metres per loop. Throws std::invalid_argument
 /// when the deflection is inside the deadzone or the rectangle is not positive and finite.
-std::vector<controller::GamepadState> rectangleInputs(const RectangleOptions& options,
-                                                      const controller::MappingConstants& mapping);
+std::vector<recording::GamepadState> rectangleInputs(const RectangleOptions& options,
+                                                     const controller::MappingConstants& mapping);
 
 /// One run of the rectangle task.
 struct RectangleResult {

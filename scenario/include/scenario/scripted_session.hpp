@@ -6,9 +6,9 @@
 #include <chrono>
 #include <optional>
 
-#include "bridge/twin_platform.hpp"
 #include "controller/dual_platform_controller.hpp"
 #include "scenario/run_timing.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace scenario {
 
@@ -16,7 +16,7 @@ namespace scenario {
 class ScriptedSession {
  public:
   /// Builds the twin. Throws common::LoadError for bad model files.
-  explicit ScriptedSession(const bridge::TwinOptions& options,
+  explicit ScriptedSession(const twin::TwinOptions& options,
                            controller::ControllerOptions controller_options = {});
   ScriptedSession(const ScriptedSession&) = delete;
   ScriptedSession& operator=(const ScriptedSession&) = delete;
@@ -25,7 +25,7 @@ class ScriptedSession {
   /// std::runtime_error when homing has not finished by `time_limit` simulated seconds.
   void makeReady(double time_limit);
 
-  bridge::TwinPlatform& twin() { return twin_; }
+  twin::TwinPlatform& twin() { return twin_; }
   /// Valid after makeReady().
   controller::DualPlatformController& controller() { return *controller_; }
   /// The clocks so far.
@@ -34,7 +34,7 @@ class ScriptedSession {
  private:
   using Clock = std::chrono::steady_clock;
   Clock::time_point wall_start_ = Clock::now();
-  bridge::TwinPlatform twin_;
+  twin::TwinPlatform twin_;
   Clock::time_point loop_start_ = Clock::now();
   std::uint64_t first_step_ = 0;
   controller::ControllerOptions controller_options_;

@@ -1,0 +1,58 @@
+#include "ambf_like/dynamics/collision_filter.hpp"
+
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+
+#include <algorithm>
+
+namespace ambf_like::detail {
+
+namespace {
+
+const btCollisionObject* objectOf(const btBroadphaseProxy* proxy) {
+  return static_cast<const btCollisionObject*>(proxy->m_clientObject);
+}
+
+const CollisionTag* tagOf(const btBroadphaseProxy* proxy) {
+  const auto* object = objectOf(proxy);
+  return object ? static_cast<const CollisionTag*>(object->getUserPointer()) : nullptr;
+}
+
+/// Whether `object` (tagged `tag`) may meet an object that is soft or not (`other_soft`).
+bool meetsSoftness(const btCollisionObject* object, const CollisionTag& tag, bool other_soft) {
+  if (tag.soft_stand_in == nullptr) return true;
+  const bool is_stand_in = object == tag.soft_stand_in;
+  return is_stand_in == other_soft;
+}
+
+bool shareGroup(const std::vector<int>& a, const std::vector<int>& b) {
+  auto i = a.begin();
+  auto j = b.begin();
+  while (i != a.end() && j != b.end()) {
+    if (*i == *j) return true;
+    (*i < *j) ? ++i : ++j;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool CollisionFilter::needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const {
+  // Bullet's own group/mask test (keeps static-static pairs out).
+  if ((a->m_collisionFilterGroup & b->m_collisionFilterMask) == 0 ||
+      (b->m_collisionFilterGroup & a->m_collisionFilterMask) == 0) {
+    return false;
+  }
+  const CollisionTag* ta = tagOf(a);
+  const CollisionTag* tb = tagOf(b);
+  if (ta == nullptr || tb == nullptr) return true;
+  if (!meetsSoftness(objectOf(a), *ta, tb->soft) || !meetsSoftness(objectOf(b), *tb, ta->soft)) {
+    return false;
+  }
+  if (ta->model == tb->model && ta->model_ignores_inter_collision && !ta->soft && !tb->soft) {
+    return false;
+  }
+  if (ta->groups.empty() || tb->groups.empty()) return true;
+  return shareGroup(ta->groups, tb->groups);
+}
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,77 @@
+#include "ambf_like/dynamics/multibody_joint.hpp"
+
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
+#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
+
+#include <cmath>
+
+#include "ambf_like/dynamics/joint_space_servo.hpp"
+
+namespace ambf_like::detail {
+
+namespace {
+
+/// How near a bound (rad or m), beyond two steps of travel, a joint's limit is put into the
+/// world. Each engaged limit costs the solver's set-up and island work every step even while
+/// its bound is far (Bullet makes its rows only once the bound is reached).
+constexpr double kLimitWatchBand = 1e-3;
+
+}  // namespace
+
+MultiBodyJoint::MultiBodyJoint(JointType type, JointSpaceServo& servo,
+                               btMultiBodyDynamicsWorld& world, btMultiBody& multibody, int link,
+                               double coordinate_at_load, btMultiBodyJointLimitConstraint* limit)
+    : type_(type),
+      servo_(servo),
+      world_(world),
+      multibody_(multibody),
+      link_(link),
+      dof_(multibody.getLink(link).m_dofOffset),
+      coordinate_at_load_(coordinate_at_load),
+      limit_(limit) {}
+
+double MultiBodyJoint::coordinate() const {
+  return hasCoordinate() ? coordinate_at_load_ + multibody_.getJointPos(link_) : 0.0;
+}
+
+double MultiBodyJoint::velocity() const {
+  return hasCoordinate() ? multibody_.getJointVel(link_) : 0.0;
+}
+
+double MultiBodyJoint::effort() const {
+  if (!hasCoordinate()) return 0.0;
+  double limit_effort = 0.0;
+  if (limit_ && last_step_ > 0.0) {
+    // Row 0 pushes the coordinate up from its lower bound, row 1 down from its upper one.
+    limit_effort = (limit_->getAppliedImpulse(0) - limit_->getAppliedImpulse(1)) / last_step_;
+  }
+  return servo_.appliedTorque(dof_) + limit_effort;
+}
+
+void MultiBodyJoint::actuate(const JointActuation& actuation, double dt) {
+  if (!hasCoordinate()) return;
+  servo_.request(dof_, actuation);
+  if (limit_) watchLimit(dt);
+  last_step_ = dt;
+}
+
+void MultiBodyJoint::watchLimit(double dt) {
+  // The solver writes a row's impulse only in steps where the bound is reached.
+  limit_->internalSetAppliedImpulse(0, 0.0);
+  limit_->internalSetAppliedImpulse(1, 0.0);
+  const double q = multibody_.getJointPos(link_);
+  const double reach = 2.0 * dt * std::abs(velocity()) + kLimitWatchBand;
+  const bool near = q - reach <= limit_->getLowerBound() || q + reach >= limit_->getUpperBound();
+  if (near != limit_engaged_) {
+    // Added near a bound, removed far from it (see kLimitWatchBand).
+    if (near) {
+      world_.addMultiBodyConstraint(limit_);
+    } else {
+      world_.removeMultiBodyConstraint(limit_);
+    }
+    limit_engaged_ = near;
+  }
+}
+
+}  // namespace ambf_like::detail

@@ -1,0 +1,137 @@
+#pragma once
+// The running simulation: a Bullet world built from a SceneSpec, stepped at a fixed internal step.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ambf_like/constraint_actuator.hpp"
+#include "ambf_like/joint.hpp"
+#include "ambf_like/mesh.hpp"
+#include "ambf_like/proximity_sensor.hpp"
+#include "ambf_like/rigid_body.hpp"
+#include "ambf_like/scene_spec.hpp"
+#include "ambf_like/soft_body.hpp"
+
+namespace ambf_like {
+
+/// AMBF's fixed internal physics step (s): 1 ms (reference/adf-format.md, the `-t` flag).
+inline constexpr double kAmbfStepSize = 0.001;
+
+/// World settings that are not part of the model files.
+struct WorldOptions {
+  double step_size = kAmbfStepSize;  ///< fixed internal step (s)
+  /// Sequential-impulse iterations per step; unset: the world file's, else Bullet's 10.
+  std::optional<int> solver_iterations;
+  /// Soft-vs-rigid signed-distance grid (m); unset: the world file's, else 0.01. Bullet's own
+  /// 0.25 m cannot represent rigid parts thinner than a few voxels (a 10 mm board lets soft
+  /// bodies sink through it).
+  std::optional<double> sdf_voxel_size;
+  /// Overrides the world file's `soft body sleep: {enabled}` (benchmarks compare both).
+  std::optional<bool> soft_body_sleep;
+  /// Overrides the world file's `articulation` (benchmarks and tests compare both).
+  std::optional<Articulation> articulation;
+};
+
+/// One contact point between two bodies after the last step.
+struct Contact {
+  std::string body_a;  ///< qualified names
+  std::string body_b;
+  Vec3 position_on_b = Vec3::Zero();
+  Vec3 normal_on_b = Vec3::Zero();       ///< points from b towards a
+  double distance = 0.0;                 ///< negative when penetrating
+  double normal_impulse = 0.0;           ///< on a, along normal_on_b (N s)
+  Vec3 friction_impulse = Vec3::Zero();  ///< on a, tangential (N s)
+  bool soft = false;  ///< a soft body's node (a) on a rigid body: no impulses recorded
+};
+
+/// The force a rigid body put on one node of a soft body with Coulomb contacts in the last step.
+struct SoftContactForce {
+  std::string soft_body;  ///< qualified names
+  std::string rigid_body;
+  Vec3 position = Vec3::Zero();        ///< the node
+  Vec3 normal = Vec3::Zero();          ///< of the rigid surface, towards the node
+  Vec3 normal_force = Vec3::Zero();    ///< on the node (N)
+  Vec3 friction_force = Vec3::Zero();  ///< on the node, tangential (N)
+};
+
+/// Mutable simulation state built once from an immutable SceneSpec (MuJoCo's model/data split).
+/// Bodies and joints are indexed in load order; names may be plain (if unique) or qualified
+/// with their model namespace.
+class World {
+ public:
+  /// Throws LoadError if a mesh cannot be read or a soft-body fixed node does not exist.
+  World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options = {});
+  ~World();
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Advances one fixed internal step: joint controllers, then Bullet.
+  void step();
+  void step(std::uint64_t count);
+
+  double time() const;
+  std::uint64_t stepCount() const;
+  double stepSize() const;
+  const WorldSpec& settings() const;
+
+  std::size_t jointCount() const;
+  Joint& joint(std::size_t index);
+  const Joint& joint(std::size_t index) const;
+  /// Throws std::out_of_range naming the joint when it does not exist or is ambiguous.
+  Joint& joint(std::string_view name);
+  std::optional<std::size_t> findJoint(std::string_view name) const;
+
+  std::size_t bodyCount() const;
+  RigidBody& body(std::size_t index);
+  const RigidBody& body(std::size_t index) const;
+  RigidBody& body(std::string_view name);
+  const RigidBody& body(std::string_view name) const;
+
+  std::size_t softBodyCount() const;
+  SoftBody& softBody(std::size_t index);
+  const SoftBody& softBody(std::size_t index) const;
+  SoftBody& softBody(std::string_view name);
+  const SoftBody& softBody(std::string_view name) const;
+
+  /// Proximity sensors (cast after every step) and constraint actuators, by load order or by
+  /// (qualified) name; unknown or ambiguous names throw std::out_of_range.
+  std::size_t sensorCount() const;
+  ProximitySensor& sensor(std::size_t index);
+  ProximitySensor& sensor(std::string_view name);
+  std::size_t actuatorCount() const;
+  ConstraintActuator& actuator(std::size_t index);
+  ConstraintActuator& actuator(std::string_view name);
+
+  /// Every contact point of the last step, rigid-rigid and soft-rigid.
+  std::vector<Contact> contacts() const;
+  /// Only those that touch the rigid body `body` (named as body() takes it, and throwing the same
+  /// way): what a per-step reader of one body's contacts should call.
+  std::vector<Contact> contacts(std::string_view body) const;
+  /// Per node, the forces of the last step's Coulomb contacts (soft bodies with
+  /// `contact friction: coulomb`); the rigid body felt the opposite.
+  std::vector<SoftContactForce> softContactForces() const;
+  /// Only those from the rigid body `rigid_body`.
+  std::vector<SoftContactForce> softContactForces(std::string_view rigid_body) const;
+  /// False as soon as any pose, velocity or soft-body node is NaN or infinite.
+  bool isFinite() const;
+  /// Joint trees simulated in reduced coordinates, one per branch from a static body (see
+  /// Articulation).
+  std::size_t articulationCount() const;
+  /// What the world built otherwise than its files asked, and why (e.g. a model asked to be
+  /// articulated that stays in maximal coordinates).
+  const std::vector<std::string>& warnings() const;
+  /// Vertices of every mesh collision shape (primitives count as none).
+  std::size_t collisionVertexCount() const;
+  /// Primitive collision shapes (boxes, spheres, cylinders, capsules, cones, planes).
+  std::size_t collisionPrimitiveCount() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ambf_like

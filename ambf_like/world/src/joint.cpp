@@ -1,0 +1,169 @@
+#include "ambf_like/joint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "ambf_like/dynamics/joint_dynamics.hpp"
+
+namespace ambf_like {
+
+namespace {
+
+double wrapToPi(double angle) {
+  return std::remainder(angle, 2.0 * M_PI);
+}
+
+const char* typeName(JointType type) {
+  switch (type) {
+    case JointType::Revolute:
+      return "revolute";
+    case JointType::Continuous:
+      return "continuous";
+    case JointType::Prismatic:
+      return "prismatic";
+    case JointType::Fixed:
+      return "fixed";
+    case JointType::P2P:
+      return "p2p";
+    case JointType::LinearSpring:
+      return "linear spring";
+    case JointType::TorsionSpring:
+      return "torsion spring";
+    case JointType::ConeTwist:
+      return "cone twist";
+    case JointType::SixDof:
+      return "six dof";
+    case JointType::SixDofSpring:
+      return "six dof spring";
+  }
+  return "?";
+}
+
+}  // namespace
+
+Joint::Joint(JointSpec spec, std::unique_ptr<detail::JointDynamics> dynamics)
+    : spec_(std::move(spec)), dynamics_(std::move(dynamics)), pid_(spec_.controller) {
+  last_raw_ = dynamics_->coordinate();
+  position_ = last_raw_;
+}
+
+Joint::~Joint() = default;
+
+bool Joint::isControllable() const {
+  const bool commandable_type = spec_.type == JointType::Revolute ||
+                                spec_.type == JointType::Continuous ||
+                                spec_.type == JointType::Prismatic;
+  return commandable_type && !spec_.passive && spec_.enable_motor;
+}
+
+void Joint::updateCoordinate() {
+  const double raw = dynamics_->coordinate();
+  if (spec_.isAngular()) {
+    position_ += wrapToPi(raw - last_raw_);
+  } else {
+    position_ = raw;
+  }
+  last_raw_ = raw;
+}
+
+double Joint::velocity() const {
+  return spec_.isSingleAxis() ? dynamics_->velocity() : 0.0;
+}
+
+double Joint::effort() const {
+  return spec_.isSingleAxis() ? dynamics_->effort() : 0.0;
+}
+
+void Joint::requireCommandable(const char* what, double value) const {
+  if (!isControllable()) {
+    throw std::invalid_argument(
+        "joint '" + spec_.name + "' (" + typeName(spec_.type) + (spec_.passive ? ", passive" : "") +
+        (spec_.enable_motor ? "" : ", motor disabled") + ") takes no commands");
+  }
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument("joint '" + spec_.name + "': " + what + " command " +
+                                std::to_string(value) + " is not a finite number; ignored");
+  }
+}
+
+void Joint::setDrive(JointDrive drive, double target) {
+  if (drive != drive_) pid_.reset();
+  drive_ = drive;
+  target_ = target;
+}
+
+double Joint::commandPosition(double position) {
+  requireCommandable("position", position);
+  if (spec_.limits) position = std::clamp(position, spec_.limits->low, spec_.limits->high);
+  setDrive(JointDrive::Position, position);
+  return position;
+}
+
+void Joint::commandVelocity(double velocity) {
+  requireCommandable("velocity", velocity);
+  setDrive(JointDrive::Velocity, velocity);
+}
+
+void Joint::commandEffort(double effort) {
+  requireCommandable("effort", effort);
+  setDrive(JointDrive::Effort, effort);
+}
+
+void Joint::release() {
+  setDrive(JointDrive::Free, 0.0);
+}
+
+void Joint::setMotor(detail::JointActuation& actuation, double velocity) const {
+  if (spec_.max_velocity)
+    velocity = std::clamp(velocity, -*spec_.max_velocity, *spec_.max_velocity);
+  actuation.motor_on = true;
+  actuation.motor_velocity = velocity;
+  actuation.motor_max_impulse = spec_.max_motor_impulse;
+}
+
+detail::JointActuation Joint::drivenActuation(double dt) {
+  detail::JointActuation actuation;
+  switch (drive_) {
+    case JointDrive::Free:
+      break;
+    case JointDrive::Position: {
+      const double error = target_ - position_;
+      const double output = pid_.update(error, dt);
+      switch (spec_.output) {
+        case ControlOutput::Effort:
+          actuation.effort = output;
+          break;
+        case ControlOutput::Velocity:
+          setMotor(actuation, output);
+          break;
+        case ControlOutput::Position:
+          // Close half the error each step (the deadbeat e/dt is only marginally stable in
+          // Bullet's iterative solver: a slider then oscillates step to step), no faster than
+          // `max velocity` (setMotor caps it): without a cap a large jump asks for hundreds of
+          // rad/s and the torque-limited joint overshoots wildly.
+          setMotor(actuation, error / (2.0 * dt));
+          break;
+      }
+      break;
+    }
+    case JointDrive::Velocity:
+      setMotor(actuation, target_);
+      break;
+    case JointDrive::Effort:
+      actuation.effort = target_;
+      break;
+  }
+  return actuation;
+}
+
+void Joint::applyControl(double dt) {
+  const bool springs_damp_themselves =
+      spec_.type == JointType::LinearSpring || spec_.type == JointType::TorsionSpring;
+  if (!spec_.isSingleAxis() || springs_damp_themselves) return;
+  auto actuation = isControllable() ? drivenActuation(dt) : detail::JointActuation{};
+  if (spec_.damping > 0.0) actuation.effort -= spec_.damping * velocity();
+  dynamics_->actuate(actuation, dt);
+}
+
+}  // namespace ambf_like

@@ -1,0 +1,71 @@
+#include "recording/cf_recording.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace recording {
+
+namespace {
+
+constexpr std::array<const char*, 11> kPerArm{"fx",          "fy",
+                                              "fz",          "tx",
+                                              "ty",          "tz",
+                                              "jaw1_normal", "jaw1_friction",
+                                              "jaw2_normal", "jaw2_friction",
+                                              "contacts"};
+
+std::vector<double> armValues(const std::optional<bridge::GrasperForces>& cf) {
+  if (!cf) return std::vector<double>(kPerArm.size(), std::nan(""));
+  const auto& j = cf->jaws;
+  return {cf->force.x(),
+          cf->force.y(),
+          cf->force.z(),
+          cf->torque.x(),
+          cf->torque.y(),
+          cf->torque.z(),
+          j[0].normal.norm(),
+          j[0].friction.norm(),
+          j[1].normal.norm(),
+          j[1].friction.norm(),
+          static_cast<double>(j[0].contacts + j[1].contacts)};
+}
+
+}  // namespace
+
+std::filesystem::path cfPathFor(const std::filesystem::path& rs_path) {
+  std::string name = rs_path.filename().string();
+  const std::string rs = "_rs.csv";
+  if (name.ends_with(rs)) {
+    name.replace(name.size() - rs.size(), rs.size(), "_cf.csv");
+  } else {
+    name = rs_path.stem().string() + "_cf.csv";
+  }
+  return rs_path.parent_path() / name;
+}
+
+const std::vector<std::string>& CfWriter::columnNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out{"time"};
+    for (const char* arm : {"left_", "right_"}) {
+      for (const char* column : kPerArm) out.push_back(std::string(arm) + column);
+    }
+    return out;
+  }();
+  return names;
+}
+
+CfWriter::CfWriter(const std::filesystem::path& path)
+    : file_(path, fmt::format("{}", fmt::join(columnNames(), ","))) {}
+
+void CfWriter::write(double time, const std::array<std::optional<bridge::GrasperForces>, 2>& arms) {
+  if (rows_ == 0) t0_ = time;
+  std::string line = fmt::format("{:.6f}", time - t0_);
+  for (const auto& arm : arms) {
+    for (double v : armValues(arm)) line += fmt::format(",{:.6g}", v);
+  }
+  file_.writeLine(line);
+  ++rows_;
+}
+
+}  // namespace recording

@@ -1,0 +1,141 @@
+#!/usr/bin/env python3
+"""Checks the house's floors: every quoted #include stays in its room or goes down to a room the
+room's README allows ("May include: ..."), no include climbs with "..", and the allowed rooms
+form no cycle (no two rooms include each other, directly or around a loop).
+
+  scripts/check-rooms.py [--graph]     (--graph prints the includes as found, room by room)
+Exit status 1 with one line per breach, naming file and line."""
+
+import re
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+
+# Code rooms, each a folder with a README.md. A file belongs to the deepest room holding it.
+ROOMS = [
+    "common", "harness", "ambf_like", "ambf_like/model", "ambf_like/loading", "ambf_like/dynamics",
+    "ambf_like/world", "ambf_like_cli", "raven_description", "bridge", "bridge/ros", "twin",
+    "twin/ros", "recording", "controller", "analysis", "calibration", "viewer", "scenario",
+    "bench", "tests", "fuzz",
+]
+# Include prefixes of rooms whose public headers sit under <room>/include/<prefix>.
+PREFIXES = {
+    "common/": "common", "harness/": "harness", "ambf_like/dynamics/": "ambf_like/dynamics",
+    "raven/": "raven_description", "bridge/ros/": "bridge/ros", "bridge/": "bridge",
+    "twin/ros/": "twin/ros", "twin/": "twin", "recording/": "recording",
+    "controller/": "controller", "analysis/": "analysis", "calibration/": "calibration",
+    "viewer/": "viewer", "scenario/": "scenario",
+}
+ENGINE_STAGES = ["ambf_like/model", "ambf_like/loading", "ambf_like/world"]
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
+MAY_INCLUDE = re.compile(r"^May include:\s*(.*)$", re.MULTILINE)
+
+
+def room_of_file(path):
+    rel = path.relative_to(ROOT).as_posix()
+    owners = [room for room in ROOMS if rel.startswith(room + "/")]
+    return max(owners, key=len) if owners else None
+
+
+def room_of_include(target):
+    """The room an include names, or None for a room's own (unprefixed) file."""
+    if target.startswith("ambf_like/") and not target.startswith("ambf_like/dynamics/"):
+        for stage in ENGINE_STAGES:
+            if (ROOT / stage / "include" / target).exists():
+                return stage
+        return "ambf_like"
+    for prefix in sorted(PREFIXES, key=len, reverse=True):
+        if target.startswith(prefix):
+            return PREFIXES[prefix]
+    return None
+
+
+def allowed_rooms(room, problems):
+    readme = ROOT / room / "README.md"
+    if not readme.exists():
+        problems.append(f"{room}/: no README.md (each room says what it is for and may include)")
+        return set()
+    match = MAY_INCLUDE.search(readme.read_text())
+    if not match:
+        problems.append(f"{room}/README.md: no 'May include:' line")
+        return set()
+    text = match.group(1).strip().rstrip(".")
+    if text.startswith("nothing"):
+        return set()
+    if text.startswith("any room"):
+        return {"*"}
+    return {name.strip().strip("`") for name in text.split(",") if name.strip()}
+
+
+def find_cycle(graph):
+    state = {}
+
+    def visit(node, path):
+        state[node] = "open"
+        for nxt in sorted(graph.get(node, ())):
+            if state.get(nxt) == "open":
+                return path[path.index(nxt):] + [nxt] if nxt in path else path + [nxt]
+            if nxt not in state:
+                found = visit(nxt, path + [nxt])
+                if found:
+                    return found
+        state[node] = "done"
+        return None
+
+    for node in sorted(graph):
+        if node not in state:
+            found = visit(node, [node])
+            if found:
+                return found
+    return None
+
+
+def main():
+    problems = []
+    declared = {room: allowed_rooms(room, problems) for room in ROOMS}
+    found = {room: set() for room in ROOMS}
+    sources = [p for p in ROOT.rglob("*") if p.suffix in (".hpp", ".cpp", ".h")
+               and not any(part.startswith("build") or part.startswith(".") for part in
+                           p.relative_to(ROOT).parts)]
+    for path in sorted(sources):
+        room = room_of_file(path)
+        if room is None:
+            continue
+        for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+            match = INCLUDE.match(line)
+            if not match:
+                continue
+            target = match.group(1)
+            where = f"{path.relative_to(ROOT)}:{number}"
+            if ".." in Path(target).parts:
+                problems.append(f'{where}: "{target}" climbs a floor with ".."')
+                continue
+            other = room_of_include(target)
+            if other is None or other == room:
+                continue
+            found[room].add(other)
+            allowed = declared[room]
+            if "*" not in allowed and other not in allowed:
+                problems.append(f'{where}: {room} includes "{target}" of {other}, which '
+                                f"{room}/README.md does not allow")
+    for room, allowed in declared.items():
+        for name in allowed - {"*"}:
+            if name not in ROOMS:
+                problems.append(f"{room}/README.md: may include '{name}', which is no room")
+            elif name not in found[room]:
+                problems.append(f"{room}/README.md: allows {name}, which it does not include")
+    cycle = find_cycle(found)
+    if cycle:
+        problems.append("rooms include each other: " + " -> ".join(cycle))
+    if "--graph" in sys.argv:
+        for room in ROOMS:
+            print(f"{room}: {', '.join(sorted(found[room])) or 'nothing'}")
+    for problem in problems:
+        print(problem)
+    if not problems:
+        print(f"rooms: {len(ROOMS)} rooms, {len(sources)} files, every include goes down")
+    return 1 if problems else 0
+
+if __name__ == "__main__":
+    sys.exit(main())

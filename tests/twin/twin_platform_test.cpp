@@ -1,0 +1,245 @@
+// The in-process twin behind RavenPlatform: it follows servo streams, reports raven_state in the
+// robot's units and layout, holds when the controller goes silent, and repeats itself exactly.
+// The physical stand-in adds lag and quantised encoders.
+
+#include "twin/twin_platform.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bridge/enable_and_home.hpp"
+#include "test_files.hpp"
+#include "twin_fixtures.hpp"
+
+namespace {
+
+using bridge::Arm;
+using bridge::ArmJoints;
+using bridge::StateCommand;
+using test_support::makeReady;
+using twin::TwinPlatform;
+
+twin::TwinOptions standIn() {
+  twin::TwinOptions options;
+  options.stand_in = twin::CableActuationParams::physicalStandIn();
+  return options;
+}
+
+/// A smooth 500 Hz servo_jr stream on both arms: `count` increments, one every 2 ms.
+ArmJoints streamIncrement(int k) {
+  const double s = std::sin(0.01 * k);
+  return (ArmJoints() << 1.5e-4 * s, -1.0e-4 * s, 2.0e-5 * s, 4e-4 * s, 3e-4 * s, 2e-4 * s,
+          -1e-4 * s)
+      .finished();
+}
+void stream(bridge::RavenPlatform& platform, int count) {
+  for (int k = 0; k < count; ++k) {
+    for (Arm arm : raven::kArms) {
+      ASSERT_TRUE(platform.send(bridge::ServoJr{arm, streamIncrement(k)}));
+    }
+    platform.advance(0.002);
+  }
+}
+
+TEST(TwinPlatform, FollowsAServoJrStreamOnTheSimulatedClock) {
+  TwinPlatform twin;
+  EXPECT_EQ(twin.clockKind(), bridge::ClockKind::Simulated);
+  makeReady(twin);
+  const double t0 = twin.now();
+  const ArmJoints start = twin.setpointJs(Arm::Left).position;
+  stream(twin, 500);
+  EXPECT_NEAR(twin.now() - t0, 1.0, 1e-9);
+  ArmJoints expected = start;
+  for (int k = 0; k < 500; ++k) expected += streamIncrement(k);
+  EXPECT_LT((twin.setpointJs(Arm::Left).position - expected).cwiseAbs().maxCoeff(), 1e-12);
+  // In motion the servos trail the setpoint by about a cycle (the roll moves at 0.2 rad/s);
+  // at rest they sit on it (the joint-space servo halves the error every step, under load too).
+  for (Arm arm : raven::kArms) {
+    const ArmJoints error =
+        (twin.measuredJs(arm).position - twin.setpointJs(arm).position).cwiseAbs();
+    EXPECT_LT(error.maxCoeff(), 3e-4) << error.transpose();
+  }
+  twin.advance(0.05);
+  for (Arm arm : raven::kArms) {
+    const ArmJoints error =
+        (twin.measuredJs(arm).position - twin.setpointJs(arm).position).cwiseAbs();
+    EXPECT_LT(error.maxCoeff(), 1e-9) << error.transpose();
+  }
+}
+
+TEST(TwinPlatform, RavenStateIsInDegreesAndMicronsInTheRobotsLayout) {
+  TwinPlatform twin;
+  makeReady(twin);
+  twin.advance(0.1);
+  const auto state = twin.ravenState();
+  ASSERT_TRUE(state);
+  EXPECT_EQ(state->runlevel, bridge::kPedalDown);
+  EXPECT_EQ(state->sublevel, 1);
+  EXPECT_EQ(state->type, (std::array<std::int32_t, 2>{24, 10}));
+  EXPECT_DOUBLE_EQ(state->dt, 0.001);
+  EXPECT_NEAR(state->time, twin.now(), 1e-12);
+  // Homed: shoulder 30 deg, elbow 90 deg, insertion 0.4 m = 22.918 "deg", roll 0, jaws 45 deg.
+  for (int base : {0, 8}) {
+    EXPECT_NEAR(state->jpos[base + 0], 30.0, 0.01);
+    EXPECT_NEAR(state->jpos[base + 1], 90.0, 0.01);
+    EXPECT_NEAR(state->jpos[base + 2], 22.918, 0.001);
+    EXPECT_EQ(state->jpos[base + 3], 0.0f) << "index 3 is not connected";
+    EXPECT_NEAR(state->jpos[base + 4], 0.0, 0.01);
+    EXPECT_NEAR(state->jpos[base + 6], 45.0, 0.01);
+    EXPECT_NEAR(state->jpos[base + 7], 45.0, 0.01);
+    EXPECT_NEAR(state->jpos_d[base + 2], 22.918, 0.001);
+    EXPECT_NEAR(state->grasp_d[static_cast<std::size_t>(base / 8)], 90.0, 0.01);
+  }
+  const auto drive = twin::DriveTrain::raven2();
+  for (Arm arm : raven::kArms) {
+    const auto measured = twin.measuredJs(arm).position;
+    for (int i = 0; i < raven::kJointCount; ++i) {
+      const auto k = static_cast<std::size_t>(bridge::ravenStateIndex(arm, i));
+      EXPECT_NEAR(state->jpos[k], measured(i) * 180.0 / M_PI, 1e-3);
+      EXPECT_NEAR(state->mpos[k], measured(i) * drive.transmission(i) * 180.0 / M_PI, 0.05);
+    }
+    // pos: the tool point in microns, in the firmware's frame, as measured_cp reports it.
+    const auto pose = twin.measuredCp(arm).pose;
+    const auto a = static_cast<std::size_t>(raven::index(arm));
+    for (std::size_t r = 0; r < 3; ++r) {
+      EXPECT_NEAR(state->pos[a * 3 + r], pose.translation()(static_cast<int>(r)) * 1e6, 1.0);
+      EXPECT_NEAR(state->ori[a * 9 + r * 3 + 1], pose.linear()(static_cast<int>(r), 1), 1e-6);
+    }
+  }
+}
+
+TEST(TwinPlatform, RunlevelFollowsTheOperatingState) {
+  TwinPlatform twin;
+  EXPECT_EQ(twin.ravenState()->runlevel, bridge::kEStop);
+  ASSERT_TRUE(twin.send(StateCommand::Enable));
+  EXPECT_EQ(twin.ravenState()->runlevel, bridge::kInit);
+  EXPECT_EQ(twin.ravenState()->sublevel, 0);
+  makeReady(twin);
+  ASSERT_TRUE(twin.send(StateCommand::Pause));
+  EXPECT_EQ(twin.ravenState()->runlevel, bridge::kPedalUp);
+}
+
+TEST(TwinPlatform, SameCommandsGiveTheSameTrajectoryEveryTime) {
+  auto run = [] {
+    TwinPlatform twin(standIn());
+    makeReady(twin);
+    stream(twin, 200);
+    return std::make_pair(twin.measuredJs(Arm::Left).position,
+                          twin.measuredJs(Arm::Right).velocity);
+  };
+  const auto first = run();
+  const auto second = run();
+  EXPECT_EQ(first.first, second.first);
+  EXPECT_EQ(first.second, second.second);
+}
+
+TEST(TwinPlatform, TheStandInLagsBehindAndReadsQuantisedEncoders) {
+  TwinPlatform twin(standIn());
+  makeReady(twin);
+  const auto drive = twin::DriveTrain::raven2();
+  const ArmJoints start = twin.measuredJs(Arm::Left).position;
+  // A 0.02 rad shoulder step through servo_jp: the setpoint gets there in 8 cycles; the motor
+  // PD, held back by the amplifiers' current limit, follows over about 200 ms.
+  ArmJoints goal = twin.setpointJs(Arm::Left).position;
+  goal(raven::kShoulder) += 0.02;
+  ASSERT_TRUE(twin.send(bridge::ServoJp{Arm::Left, goal}));
+  twin.advance(0.01);
+  const double error_at_10ms = goal(0) - twin.measuredJs(Arm::Left).position(0);
+  EXPECT_GT(error_at_10ms, 0.002) << "the stand-in should lag behind a step";
+  double peak = 0.0;
+  for (int i = 0; i < 600; ++i) {
+    twin.advance(0.001);
+    peak = std::max(peak, twin.measuredJs(Arm::Left).position(0) - start(0));
+  }
+  EXPECT_LT(peak - 0.02, 0.002) << "overshoot above 10 %";
+  const ArmJoints settled = twin.measuredJs(Arm::Left).position;
+  EXPECT_NEAR(settled(0), goal(0), 2e-4);
+  // Every reading is a whole number of motor encoder counts.
+  for (int i = 0; i < raven::kJointCount; ++i) {
+    const double counts = settled(i) * drive.transmission(i) * drive.countsPerMotorRadian();
+    EXPECT_NEAR(counts, std::round(counts), 1e-6)
+        << raven::kJointNames[static_cast<std::size_t>(i)];
+  }
+}
+
+TEST(TwinPlatform, TheArmsHoldWhenTheControllerGoesSilent) {
+  TwinPlatform twin(standIn());
+  makeReady(twin);
+  stream(twin, 250);
+  twin.advance(0.5);  // the last increments are consumed and the motors have caught up
+  const auto held_setpoint = twin.setpointJs(Arm::Left).position;
+  const auto held = twin.measuredJs(Arm::Left).position;
+  double drift = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    twin.advance(0.01);
+    drift = std::max(drift, (twin.measuredJs(Arm::Left).position - held).cwiseAbs().maxCoeff());
+  }
+  EXPECT_EQ(twin.setpointJs(Arm::Left).position, held_setpoint);
+  EXPECT_LT(drift, 3e-4) << "more than two encoder counts of the roll";
+  EXPECT_EQ(twin.operatingStatus().state, bridge::OperatingState::Enabled);
+}
+
+TEST(TwinPlatform, AmbfsOwnRavenIsDrivenThroughTheSamePlatformWithTheAmbfProfile) {
+  const auto shared = test_support::sharedDataDir();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent: AMBF's Raven-II model is needed";
+  twin::TwinOptions options;
+  options.launch_file = shared / "ambf/ambf_controller/raven2/launch.yaml";
+  options.bindings = twin::ArmBindings::ambfRaven();
+  options.profile = "ambf";
+  TwinPlatform twin(options);
+  makeReady(twin);
+  const auto ambf = raven::builtinProfile("ambf");
+  for (Arm arm : raven::kArms) {
+    EXPECT_LT((twin.setpointJs(arm).position - ambf.home).cwiseAbs().maxCoeff(), 1e-12);
+  }
+  ArmJoints step = ArmJoints::Zero();
+  step(raven::kInsertion) = 0.0001;  // the cycle clamp's pace: 0.05 m/s
+  for (int k = 0; k < 50; ++k) {
+    ASSERT_TRUE(twin.send(bridge::ServoJr{Arm::Right, step}));
+    twin.advance(0.002);
+  }
+  EXPECT_NEAR(twin.setpointJs(Arm::Right).position(raven::kInsertion),
+              ambf.home(raven::kInsertion) + 0.005, 1e-12);
+  twin.advance(1.5);  // AMBF's own joint controllers settle in about half a second
+  EXPECT_NEAR(twin.measuredJs(Arm::Right).position(raven::kInsertion),
+              ambf.home(raven::kInsertion) + 0.005, 1e-4);
+}
+
+TEST(TwinPlatform, AdvanceRefusesNegativeOrNonFiniteTime) {
+  TwinPlatform twin;
+  EXPECT_THROW(twin.advance(-0.001), std::invalid_argument);
+  EXPECT_THROW(twin.advance(std::nan("")), std::invalid_argument);
+  EXPECT_EQ(twin.now(), 0.0);
+}
+
+TEST(TwinPlatform, StandInParametersAreCheckedWhenLoaded) {
+  const auto params = twin::CableActuationParams::physicalStandIn();
+  EXPECT_DOUBLE_EQ(params.kp(0), 0.3);
+  EXPECT_DOUBLE_EQ(params.kd(2), 0.012);
+}
+
+TEST(EnableAndHome, BringsTheTwinToReadyOrSaysWhereItStopped) {
+  twin::TwinPlatform slow;
+  try {
+    bridge::enableAndHome(slow, 0.05);  // homing takes seconds
+    ADD_FAILURE() << "ready after 0.05 s";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("within 0.05"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("(state "), std::string::npos) << e.what();
+  }
+  EXPECT_LT(slow.now(), 0.07);
+
+  twin::TwinPlatform twin;
+  bridge::enableAndHome(twin, 60.0);
+  EXPECT_TRUE(twin.operatingStatus().ready());
+  const double homed_at = twin.now();
+  bridge::enableAndHome(twin, 60.0);  // already ready: no time passes
+  EXPECT_EQ(twin.now(), homed_at);
+
+  twin::TwinPlatform interrupted;
+  EXPECT_THROW(bridge::enableAndHome(interrupted, 60.0, [] { return false; }), std::runtime_error);
+  EXPECT_EQ(interrupted.now(), 0.0);
+}
+
+}  // namespace

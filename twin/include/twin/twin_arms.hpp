@@ -1,0 +1,67 @@
+#pragma once
+// The arm layer over a simulated Raven-II: both arms' joint vectors, in a platform profile's
+// convention, mapped onto a World's joints, whichever model (ours or AMBF's) is loaded.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "ambf_like/world.hpp"
+#include "raven/arm.hpp"
+#include "twin/vocabulary.hpp"
+
+namespace twin {
+
+/// Where one Raven joint lives in a simulated model: model value = scale * joint + offset.
+struct JointBinding {
+  std::string name;  ///< the World's joint name (qualified or unique plain name)
+  double scale = 1.0;
+  double offset = 0.0;
+};
+
+/// The seven joints of each arm in a model.
+struct ArmBindings {
+  std::array<std::array<JointBinding, kJointCount>, 2> joints;
+
+  /// This project's Raven-II (raven_description/models): joints named /raven2/<arm>/<joint>.
+  static ArmBindings ourRaven();
+  /// AMBF's blender-raven2.yaml, driven with the `ambf` profile as the paper's controller drove
+  /// it: joint values as they are, except the right arm's jaws, which AMBF turns the other way.
+  static ArmBindings ambfRaven();
+};
+
+/// Commands and reads both arms of a Raven-II inside a World.
+class TwinArms {
+ public:
+  /// Throws std::out_of_range naming the first bound joint the World does not have.
+  TwinArms(ambf_like::World& world, const ArmBindings& bindings);
+
+  /// Position command for every joint of `arm` (each clamped by its joint's limits in the model).
+  /// Throws std::invalid_argument, before moving anything, if a value is NaN or infinite.
+  void command(Arm arm, const ArmJoints& joints);
+  ArmJoints measured(Arm arm) const;
+  ArmJoints velocities(Arm arm) const;
+  /// Joint torques (N m) and the insertion force (N) the drives exert, in the arm's sense.
+  ArmJoints efforts(Arm arm) const;
+  /// The two jaw bodies of `arm` (the jaw joints' children), qualified names.
+  const std::array<std::string, 2>& jawBodies(Arm arm) const {
+    return jaws_[static_cast<std::size_t>(index(arm))];
+  }
+  /// Every body the arm's joints connect, qualified names.
+  const std::vector<std::string>& bodies(Arm arm) const {
+    return bodies_[static_cast<std::size_t>(index(arm))];
+  }
+
+ private:
+  struct Bound {
+    ambf_like::Joint* joint;
+    double scale, offset;
+  };
+  template <typename Read>
+  ArmJoints read(Arm arm, Read read) const;
+  std::array<std::array<Bound, kJointCount>, 2> bound_;
+  std::array<std::array<std::string, 2>, 2> jaws_;
+  std::array<std::vector<std::string>, 2> bodies_;
+};
+
+}  // namespace twin

@@ -1,0 +1,89 @@
+#pragma once
+// The in-process twin: our Raven-II (or AMBF's) in an ambf_like World, behind RavenPlatform,
+// on the simulated or the wall clock.
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "ambf_like/scene_loader.hpp"
+#include "ambf_like/world.hpp"
+#include "bridge/raven_platform.hpp"
+#include "bridge/wall_pacer.hpp"
+#include "twin/actuation.hpp"
+#include "twin/cable_actuation.hpp"
+#include "twin/drive_train.hpp"
+#include "twin/raven_core.hpp"
+#include "twin/tracking_response.hpp"
+#include "twin/twin_arms.hpp"
+#include "twin/vocabulary.hpp"
+
+namespace twin {
+
+/// What a twin is built from.
+struct TwinOptions {
+  /// A launch file with the robot (and perhaps a scene); default: our Raven-II alone.
+  std::filesystem::path launch_file = raven::modelDirectory() / "raven2" / "launch.yaml";
+  /// How strictly the model files are read (AMBF's own Raven-II loads with warnings: two of
+  /// its meshes are missing upstream).
+  ambf_like::LoadOptions load;
+  /// Applied to the loaded scene before the World is built (randomised batches vary friction,
+  /// softness and start poses this way).
+  std::function<void(ambf_like::SceneSpec&)> adjust_scene;
+  twin::ArmBindings bindings = twin::ArmBindings::ourRaven();
+  /// "physical" (our model) or "ambf" (AMBF's blender-raven2.yaml), or a profile file.
+  std::string profile = "physical";
+  ClockKind clock = ClockKind::Simulated;
+  /// Set: the physical stand-in's actuation model; unset: the twin's ideal servos.
+  std::optional<CableActuationParams> stand_in;
+  /// Set: the robot's tracking response (a calibration) in front of either actuation.
+  std::optional<TrackingParams> tracking;
+  ServoLimits limits;
+};
+
+/// A simulated Raven-II, one robot cycle per World step.
+class TwinPlatform final : public RavenPlatform {
+ public:
+  /// Throws common::LoadError for bad model or profile files, std::out_of_range for bindings
+  /// that name joints the model lacks.
+  explicit TwinPlatform(const TwinOptions& options = {});
+
+  CommandResult send(const PlatformCommand& command) override { return core_.apply(command); }
+  OperatingStatus operatingStatus() const override { return core_.status(); }
+  JointSample measuredJs(Arm arm) const override;
+  JointSample setpointJs(Arm arm) const override;
+  PoseSample measuredCp(Arm arm) const override;
+  /// Contact forces of the jaws in the last physics step (GrasperForces).
+  std::optional<GrasperForces> measuredCf(Arm arm) const override;
+  PoseSample setpointCp(Arm arm) const override;
+  std::optional<RavenStateSnapshot> ravenState() const override;
+  ClockKind clockKind() const override { return clock_; }
+  double now() const override { return core_.time(); }
+  void advance(double seconds) override;
+
+  /// The simulation, for scenes that need more than the arms (pegs, contacts).
+  ambf_like::World& world() { return world_; }
+  const ambf_like::World& world() const { return world_; }
+  const RavenCore& core() const { return core_; }
+
+ private:
+  void runCycle();
+  static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
+  ArmPair measuredPositions() const;
+
+  ambf_like::LoadedScene scene_;
+  ambf_like::MeshLibrary meshes_;
+  ambf_like::World world_;
+  twin::TwinArms arms_;
+  DriveTrain drive_;
+  std::unique_ptr<Actuation> actuation_;
+  std::array<ActuatorReadings, 2> readings_;
+  ArmPair previous_position_;
+  RavenCore core_;
+  ClockKind clock_;
+  WallPacer pacer_;
+  double requested_ = 0.0;  ///< platform time asked for so far
+};
+
+}  // namespace twin

@@ -1,0 +1,87 @@
+// raven_twin_node: the twin served on the physical Raven-II's ROS topics. With --stand-in it is
+// the physical stand-in (the physical profile and a cable-drive actuation model), for testing
+// the physical path without a robot.
+
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <filesystem>
+
+#include "bridge/ros/master_watch.hpp"
+#include "bridge/ros/raven_ros_server.hpp"
+#include "bridge/ros/ros_runtime.hpp"
+#include "twin/calibration_profile.hpp"
+#include "twin/ros/ambf_object_topics.hpp"
+#include "twin/twin_platform.hpp"
+
+int main(int argc, char** argv) {
+  bridge::ros1::initRos(argc, argv, "raven_twin");  // takes ROS remappings out of argv
+
+  CLI::App app{"The Raven-II twin on the physical robot's ROS 1 topics."};
+  twin::TwinOptions twin;
+  std::string launch = twin.launch_file.string();
+  app.add_option("--launch", launch, "launch file of the scene with the robot")
+      ->check(CLI::ExistingFile);
+  app.add_option("--profile", twin.profile, "platform profile: physical, ambf or a YAML file");
+  bool ambf_model = false;
+  app.add_flag("--ambf-model", ambf_model,
+               "the launch file holds AMBF's blender-raven2.yaml (AMBF joint names)");
+  app.add_flag("--strict", twin.load.strict,
+               "refuse model files AMBF would load with warnings (unknown keys, missing meshes)");
+  std::optional<std::string> stand_in;
+  app.add_option("--stand-in", stand_in,
+                 "run as the physical stand-in: actuation model parameters (default: "
+                 "twin/config/physical_stand_in.yaml)")
+      ->expected(0, 1);
+  std::string calibration;
+  app.add_option("--calibration", calibration,
+                 "a tracking response fitted by raven_calibrate (YAML), in front of the actuation")
+      ->check(CLI::ExistingFile);
+  std::optional<double> noise;
+  app.add_option("--encoder-noise", noise, "stand-in encoder noise, counts (standard deviation)")
+      ->check(CLI::NonNegativeNumber);
+  bridge::ros1::RosServerOptions server;
+  app.add_flag("--lock-step", server.lock_step,
+               "run on the simulated clock, one step per client request (raven_twin/step)");
+  bool no_arm_swap = false;
+  app.add_flag("--no-arm-swap", no_arm_swap,
+               "publish each arm on its own measured_js (upstream swaps them: arm1 = green)");
+  app.add_option("--command-wait", server.command_wait,
+                 "lock-step: wall seconds a step waits for the commands it names before it is "
+                 "refused")
+      ->check(CLI::PositiveNumber);
+  double duration = 0.0;
+  app.add_option("--duration", duration,
+                 "stop after this much platform time (s); 0: run until "
+                 "interrupted")
+      ->check(CLI::NonNegativeNumber);
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    twin.launch_file = launch;
+    twin.clock = server.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
+    if (ambf_model) twin.bindings = twin::ArmBindings::ambfRaven();
+    if (stand_in) {
+      twin.stand_in = stand_in->empty() ? twin::CableActuationParams::physicalStandIn()
+                                        : twin::CableActuationParams::load(*stand_in);
+      if (noise) twin.stand_in->encoder_noise_counts = *noise;
+    }
+    if (!calibration.empty()) twin.tracking = twin::CalibrationProfile::load(calibration).tracking;
+    server.arm_swap = !no_arm_swap;
+    twin::TwinPlatform platform(twin);
+    // The scene's sensors and actuators on AMBF's topics, served after every cycle.
+    twin::ros1::AmbfObjectTopics objects(platform.world());
+    server.after_cycle = [&] { objects.update(platform.now()); };
+    bridge::ros1::RavenRosServer ros_server(platform, "", server);
+    const bridge::ros1::MasterWatch master_watch;  // registers again with a restarted master
+    spdlog::info("raven_twin: {} on {} ({}, {} clock, arm swap {})",
+                 stand_in ? "the PHYSICAL STAND-IN" : "the twin", bridge::ros1::masterUri(),
+                 twin.profile, server.lock_step ? "lock-step simulated" : "wall",
+                 server.arm_swap ? "on" : "off");
+    ros_server.spin(duration);
+  } catch (const std::exception& e) {
+    spdlog::error("{}", e.what());
+    return 1;
+  }
+  return 0;
+}

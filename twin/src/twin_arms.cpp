@@ -1,0 +1,107 @@
+#include "twin/twin_arms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace twin {
+
+ArmBindings ArmBindings::ourRaven() {
+  ArmBindings b;
+  for (Arm arm : kArms) {
+    for (int i = 0; i < kJointCount; ++i) {
+      b.joints[static_cast<std::size_t>(index(arm))][static_cast<std::size_t>(i)].name =
+          "/raven2/" + std::string(armName(arm)) + "/" +
+          std::string(kJointNames[static_cast<std::size_t>(i)]);
+    }
+  }
+  return b;
+}
+
+ArmBindings ArmBindings::ambfRaven() {
+  ArmBindings b;
+  for (Arm arm : kArms) {
+    const std::string s = arm == Arm::Left ? "L" : "R";
+    const std::array<std::string, kJointCount> names{"base_link_" + s + "-link1_" + s,
+                                                     "link1_" + s + "-link2_" + s,
+                                                     "link2_" + s + "-link3_" + s,
+                                                     "link3_" + s + "-instrument_shaft_" + s,
+                                                     "instrument_shaft_" + s + "-wrist_" + s,
+                                                     "wrist_" + s + "-grasper1_" + s,
+                                                     "wrist_" + s + "-grasper2_" + s};
+    for (int i = 0; i < kJointCount; ++i) {
+      auto& joint = b.joints[static_cast<std::size_t>(index(arm))][static_cast<std::size_t>(i)];
+      joint.name = names[static_cast<std::size_t>(i)];
+      if (arm == Arm::Right && (i == raven::kJaw1 || i == raven::kJaw2)) joint.scale = -1.0;
+    }
+  }
+  return b;
+}
+
+namespace {
+
+/// The qualified name of a body a joint (found by `joint_name`) names by its plain name: the
+/// joint's namespace, when `joint_name` is qualified, else the body's own unique name.
+std::string bodyOf(const ambf_like::World& world, const std::string& joint_name,
+                   const ambf_like::Joint& joint, const std::string& body) {
+  const std::string& plain = joint.name();
+  const bool qualified =
+      joint_name.size() > plain.size() &&
+      joint_name.compare(joint_name.size() - plain.size(), plain.size(), plain) == 0;
+  const std::string prefix =
+      qualified ? joint_name.substr(0, joint_name.size() - plain.size()) : "";
+  return world.body(prefix + body).qualifiedName();
+}
+
+}  // namespace
+
+TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings) {
+  for (std::size_t a = 0; a < 2; ++a) {
+    for (std::size_t i = 0; i < kJointCount; ++i) {
+      const auto& b = bindings.joints[a][i];
+      ambf_like::Joint& joint = world.joint(b.name);
+      bound_[a][i] = {&joint, b.scale, b.offset};
+      const std::string child = bodyOf(world, b.name, joint, joint.spec().child);
+      for (const auto& name : {bodyOf(world, b.name, joint, joint.spec().parent), child}) {
+        if (std::find(bodies_[a].begin(), bodies_[a].end(), name) == bodies_[a].end()) {
+          bodies_[a].push_back(name);
+        }
+      }
+      if (i == raven::kJaw1 || i == raven::kJaw2) jaws_[a][i - raven::kJaw1] = child;
+    }
+  }
+}
+
+void TwinArms::command(Arm arm, const ArmJoints& joints) {
+  if (!joints.allFinite()) {
+    throw std::invalid_argument(std::string(armName(arm)) +
+                                " arm: joint command holds NaN or inf; nothing moved");
+  }
+  for (std::size_t i = 0; i < kJointCount; ++i) {
+    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    b.joint->commandPosition(b.scale * joints(static_cast<int>(i)) + b.offset);
+  }
+}
+
+template <typename Read>
+ArmJoints TwinArms::read(Arm arm, Read read) const {
+  ArmJoints out;
+  for (std::size_t i = 0; i < kJointCount; ++i) {
+    out(static_cast<int>(i)) = read(bound_[static_cast<std::size_t>(index(arm))][i]);
+  }
+  return out;
+}
+
+ArmJoints TwinArms::measured(Arm arm) const {
+  return read(arm, [](const Bound& b) { return (b.joint->position() - b.offset) / b.scale; });
+}
+
+ArmJoints TwinArms::velocities(Arm arm) const {
+  return read(arm, [](const Bound& b) { return b.joint->velocity() / b.scale; });
+}
+
+ArmJoints TwinArms::efforts(Arm arm) const {
+  return read(arm, [](const Bound& b) { return b.joint->effort() * b.scale; });
+}
+
+}  // namespace twin

@@ -1,0 +1,119 @@
+#include "twin/twin_platform.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "raven_state_builder.hpp"
+#include "twin/grasp_forces.hpp"
+#include "twin/ideal_actuation.hpp"
+
+namespace twin {
+
+namespace {
+
+raven::PlatformProfile loadProfile(const std::string& name_or_file) {
+  if (name_or_file == "physical" || name_or_file == "ambf") {
+    return raven::builtinProfile(name_or_file);
+  }
+  return raven::loadPlatformProfile(name_or_file);
+}
+
+ambf_like::WorldOptions worldOptions(const ServoLimits& limits) {
+  ambf_like::WorldOptions options;
+  options.step_size = limits.cycle;
+  return options;
+}
+
+std::unique_ptr<Actuation> makeActuation(twin::TwinArms& arms, const DriveTrain& drive,
+                                         const TwinOptions& options) {
+  std::unique_ptr<Actuation> actuation;
+  if (options.stand_in) {
+    actuation =
+        std::make_unique<CableActuation>(arms, drive, *options.stand_in, options.limits.cycle);
+  } else {
+    actuation = std::make_unique<IdealActuation>(arms, drive);
+  }
+  if (!options.tracking) return actuation;
+  return std::make_unique<TrackingActuation>(std::move(actuation), *options.tracking,
+                                             options.limits.cycle);
+}
+
+ambf_like::LoadedScene loadScene(const TwinOptions& options) {
+  ambf_like::LoadedScene scene = ambf_like::loadLaunchFile(options.launch_file, {}, options.load);
+  if (options.adjust_scene) options.adjust_scene(scene.spec);
+  return scene;
+}
+
+std::array<ActuatorReadings, 2> readAll(const Actuation& actuation) {
+  return {actuation.read(Arm::Left), actuation.read(Arm::Right)};
+}
+
+}  // namespace
+
+TwinPlatform::TwinPlatform(const TwinOptions& options)
+    : scene_(loadScene(options)),
+      world_(scene_.spec, meshes_, worldOptions(options.limits)),
+      arms_(world_, options.bindings),
+      drive_(DriveTrain::raven2()),
+      actuation_(makeActuation(arms_, drive_, options)),
+      readings_(readAll(*actuation_)),
+      previous_position_{readings_[0].position, readings_[1].position},
+      core_(loadProfile(options.profile), options.limits, measuredPositions()),
+      clock_(options.clock) {}
+
+ArmPair TwinPlatform::measuredPositions() const {
+  return {readings_[0].position, readings_[1].position};
+}
+
+void TwinPlatform::advance(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0.0) {
+    throw std::invalid_argument("advance: seconds must be finite and >= 0, not " +
+                                std::to_string(seconds));
+  }
+  requested_ += seconds;
+  const auto target = static_cast<std::uint64_t>(std::llround(requested_ / core_.limits().cycle));
+  while (core_.cycles() < target) {
+    if (clock_ == ClockKind::Wall) pacer_.waitUntil(core_.time());
+    runCycle();
+  }
+  if (clock_ == ClockKind::Wall) pacer_.waitUntil(requested_);
+}
+
+void TwinPlatform::runCycle() {
+  previous_position_ = measuredPositions();
+  core_.cycle(previous_position_);
+  for (Arm arm : raven::kArms) {
+    actuation_->drive(arm, core_.setpoint(arm), core_.setpointVelocity(arm));
+  }
+  world_.step();
+  readings_ = readAll(*actuation_);
+  if (!world_.isFinite()) core_.fault("the simulation became non-finite");
+}
+
+JointSample TwinPlatform::measuredJs(Arm arm) const {
+  const ActuatorReadings& r = readings_[slot(arm)];
+  return {now(), r.position, r.velocity, r.effort};
+}
+
+JointSample TwinPlatform::setpointJs(Arm arm) const {
+  return {now(), core_.setpoint(arm), core_.setpointVelocity(arm), ArmJoints::Zero()};
+}
+
+PoseSample TwinPlatform::measuredCp(Arm arm) const {
+  return {now(), core_.reportedPose(arm, readings_[slot(arm)].position)};
+}
+
+PoseSample TwinPlatform::setpointCp(Arm arm) const {
+  return {now(), core_.reportedPose(arm, core_.setpoint(arm))};
+}
+
+std::optional<GrasperForces> TwinPlatform::measuredCf(Arm arm) const {
+  const auto& jaws = arms_.jawBodies(arm);
+  return graspForces(world_, jaws, arms_.bodies(arm), world_.body(jaws[0]).pose().translation());
+}
+
+std::optional<RavenStateSnapshot> TwinPlatform::ravenState() const {
+  return makeRavenState({core_, drive_, readings_, previous_position_});
+}
+
+}  // namespace twin
