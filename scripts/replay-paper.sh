@@ -13,7 +13,7 @@ data="${RAVEN_SHARED_DATA_DIR:-$root/../shared/data}/recordings/paper_2arm"
 [ -f "$data/2arm_ci.csv" ] || { echo "replay-paper: $data/2arm_ci.csv not found" >&2; exit 1; }
 out="${OUT_DIR:-$build/replay}"
 # --paper-deadzone: the released controller's deadzone test, which its recordings show
-# (README: "Replaying the paper's recordings").
+# (docs/controller.md: "Replaying the paper's recordings").
 "$build/controller/raven_controller" --lock-step --paper-deadzone --replay-ci "$data/2arm_ci.csv" \
   --record twin_2arm --out "$out" "$@"
 latest="$(ls -t "$out"/twin_2arm_*_rs.csv | head -1)"
