@@ -18,9 +18,8 @@
 #include "bridge/ros/ros_runtime.hpp"
 #include "controller/session.hpp"
 #include "controller/terminal_keys.hpp"
+#include "in_process_twin.hpp"
 #include "raven/control_cycle.hpp"
-#include "twin/calibration_profile.hpp"
-#include "twin/twin_platform.hpp"
 
 namespace {
 
@@ -35,7 +34,7 @@ struct Settings {
   std::string twin_ns = "/twin";
   std::string physical_ns;
   bool stand_in = false;
-  std::optional<twin::CalibrationProfile> calibration;
+  std::string calibration_file;
   std::string twin_launch;
   bool lock_step = false;
   bool no_arm_swap = false;
@@ -54,7 +53,7 @@ struct Settings {
 
 /// Owns whichever platforms the settings ask for.
 struct Platforms {
-  std::unique_ptr<twin::TwinPlatform> twin;
+  std::unique_ptr<bridge::RavenPlatform> twin;
   std::vector<std::unique_ptr<bridge::ros1::RavenRosClient>> clients;
   std::vector<controller::PlatformSlot> slots;
 };
@@ -77,12 +76,8 @@ Platforms makePlatforms(const Settings& s) {
     p.clients.push_back(std::make_unique<bridge::ros1::RavenRosClient>(o));
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
-    twin::TwinOptions o;
-    if (!s.twin_launch.empty()) o.launch_file = s.twin_launch;
-    o.clock = s.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
-    if (s.stand_in) o.stand_in = twin::CableActuationParams::physicalStandIn();
-    if (s.calibration) o.tracking = s.calibration->tracking;
-    p.twin = std::make_unique<twin::TwinPlatform>(o);
+    p.twin = controller_app::makeInProcessTwin(
+        {s.twin_launch, s.lock_step, s.stand_in, s.calibration_file});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -121,6 +116,11 @@ int run(const Settings& s) {
     throw std::runtime_error(
         "--lock-step needs a replay (--replay-ci / --replay-rs) or --mode o1/o5");
   }
+  std::optional<controller_app::ControllerCalibration>
+      calibration;  // refused before anything moves
+  if (!s.calibration_file.empty()) {
+    calibration = controller_app::loadControllerCalibration(s.calibration_file);
+  }
   controller::SessionInputs inputs;
   if (!s.replay_ci.empty()) inputs.inputs = recording::readCi(s.replay_ci);
   if (!s.replay_rs.empty()) {
@@ -143,7 +143,7 @@ int run(const Settings& s) {
   options.caps.min_steps = s.man_steps;
   options.scheme = controller::mappingSchemeNamed(s.mapping);
   options.mapping.deadzone_reads_y_twice = s.paper_deadzone;
-  if (s.calibration) options.iteration_overhead = s.calibration->iteration_overhead;
+  if (calibration) options.iteration_overhead = calibration->iteration_overhead;
   controller::DualPlatformController control(platforms.slots, options);
 
   std::unique_ptr<controller::SdlGamepad> pad;
@@ -235,8 +235,7 @@ int main(int argc, char** argv) {
   app.add_option("--physical-ns", s.physical_ns, "the physical robot's ROS namespace");
   app.add_flag("--no-arm-swap", s.no_arm_swap, "the robot publishes each arm on its own topic");
   app.add_flag("--stand-in", s.stand_in, "in-process twin with the physical stand-in actuation");
-  std::string calibration;
-  app.add_option("--calibration", calibration,
+  app.add_option("--calibration", s.calibration_file,
                  "a profile fitted by raven_calibrate (YAML): the in-process twin's tracking "
                  "response, and replays timed as the recording controller's iterations were")
       ->check(CLI::ExistingFile);
@@ -275,7 +274,6 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, [](int) { interrupted = true; });
   std::signal(SIGTERM, [](int) { interrupted = true; });
   try {
-    if (!calibration.empty()) s.calibration = twin::CalibrationProfile::load(calibration);
     return run(s);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());

@@ -1,0 +1,33 @@
+#pragma once
+// raven_controller's in-process twin, which only a build with the simulator has
+// (RAVEN_SIMULATOR, on by default): in_process_twin.cpp builds it, without_simulator.cpp says
+// how to get it. Everything else in the program runs on the physical robot's side alone.
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bridge/raven_platform.hpp"
+
+namespace controller_app {
+
+/// What the command line asks of the in-process twin.
+struct InProcessTwinSettings {
+  std::string launch_file;       ///< empty: our Raven-II alone
+  bool lock_step = false;        ///< simulated clock
+  bool stand_in = false;         ///< the physical stand-in's actuation
+  std::string calibration_file;  ///< a raven_calibrate profile, or empty
+};
+
+/// A calibration profile's part the controller itself uses.
+struct ControllerCalibration {
+  double iteration_overhead = 0.0;  ///< s per manual iteration, as the recording controller's
+};
+
+/// The in-process twin; throws std::runtime_error in a build without the simulator.
+std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSettings& settings);
+
+/// Reads a raven_calibrate profile; throws std::runtime_error in a build without the simulator.
+ControllerCalibration loadControllerCalibration(const std::string& file);
+
+}  // namespace controller_app
