@@ -3,9 +3,11 @@
 # through another target. Checked on the link graph at configure time; a link that brings the
 # simulator back stops the configure and names the path it came by.
 
-# Fails if `forbidden` is reachable from `target` through LINK_LIBRARIES or
-# INTERFACE_LINK_LIBRARIES; `path` is the chain walked so far (for the message).
-function(raven_forbid_link target forbidden path)
+# Fails if `forbidden` is reachable from the last target of `chain` (a list: the targets walked
+# so far, for the message) through LINK_LIBRARIES or INTERFACE_LINK_LIBRARIES. Each target is
+# walked once per check (CMake allows static libraries to link each other in a loop).
+function(raven_forbid_link forbidden chain)
+  list(GET chain -1 target)
   if(NOT TARGET ${target})
     return()
   endif()
@@ -14,9 +16,15 @@ function(raven_forbid_link target forbidden path)
     set(target ${aliased})
   endif()
   if(target STREQUAL forbidden)
+    list(JOIN chain " -> " path)
     message(FATAL_ERROR "${path} links ${forbidden}: the simulator has reached a room that must "
                         "build without it (cmake/SimulatorFreeTargets.cmake)")
   endif()
+  get_property(walked GLOBAL PROPERTY RAVEN_WALKED_TARGETS)
+  if(target IN_LIST walked)
+    return()
+  endif()
+  set_property(GLOBAL APPEND PROPERTY RAVEN_WALKED_TARGETS ${target})
   get_target_property(type ${target} TYPE)
   set(links)
   if(NOT type STREQUAL "INTERFACE_LIBRARY")
@@ -32,7 +40,7 @@ function(raven_forbid_link target forbidden path)
   list(REMOVE_DUPLICATES links)
   foreach(link ${links})
     string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" link "${link}")
-    raven_forbid_link(${link} ${forbidden} "${path} -> ${link}")
+    raven_forbid_link(${forbidden} "${chain};${link}")
   endforeach()
 endfunction()
 
@@ -42,7 +50,8 @@ function(raven_check_simulator_free)
       message(FATAL_ERROR "raven_check_simulator_free: no target ${target}")
     endif()
     foreach(forbidden ambf_like PkgConfig::BULLET)
-      raven_forbid_link(${target} ${forbidden} ${target})
+      set_property(GLOBAL PROPERTY RAVEN_WALKED_TARGETS "")
+      raven_forbid_link(${forbidden} ${target})
     endforeach()
   endforeach()
 endfunction()

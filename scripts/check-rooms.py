@@ -69,23 +69,24 @@ def allowed_rooms(room, problems):
 
 
 def find_cycle(graph):
-    state = {}
+    """A loop of rooms (its first room repeated at the end), or None. Depth first: a room met
+    again while still on the path closes a loop."""
+    done = set()
 
-    def visit(node, path):
-        state[node] = "open"
-        for nxt in sorted(graph.get(node, ())):
-            if state.get(nxt) == "open":
-                return path[path.index(nxt):] + [nxt] if nxt in path else path + [nxt]
-            if nxt not in state:
-                found = visit(nxt, path + [nxt])
+    def visit(path):
+        for nxt in sorted(graph.get(path[-1], ())):
+            if nxt in path:
+                return path[path.index(nxt):] + [nxt]
+            if nxt not in done:
+                found = visit(path + [nxt])
                 if found:
                     return found
-        state[node] = "done"
+        done.add(path[-1])
         return None
 
     for node in sorted(graph):
-        if node not in state:
-            found = visit(node, [node])
+        if node not in done:
+            found = visit([node])
             if found:
                 return found
     return None

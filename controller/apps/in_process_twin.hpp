@@ -4,24 +4,27 @@
 // how to get it. Everything else in the program runs on the physical robot's side alone.
 
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "bridge/raven_platform.hpp"
 
 namespace controller_app {
 
-/// What the command line asks of the in-process twin.
-struct InProcessTwinSettings {
-  std::string launch_file;       ///< empty: our Raven-II alone
-  bool lock_step = false;        ///< simulated clock
-  bool stand_in = false;         ///< the physical stand-in's actuation
-  std::string calibration_file;  ///< a raven_calibrate profile, or empty
-};
+/// The twin's part of a calibration profile (its tracking response), known to in_process_twin.cpp.
+struct TwinTracking;
 
-/// A calibration profile's part the controller itself uses.
+/// A raven_calibrate profile, read once: what the controller uses, and what the twin does.
 struct ControllerCalibration {
   double iteration_overhead = 0.0;  ///< s per manual iteration, as the recording controller's
+  std::shared_ptr<const TwinTracking> twin_tracking;
+};
+
+/// What the command line asks of the in-process twin.
+struct InProcessTwinSettings {
+  std::string launch_file;                             ///< empty: our Raven-II alone
+  bool lock_step = false;                              ///< simulated clock
+  bool stand_in = false;                               ///< the physical stand-in's actuation
+  const ControllerCalibration* calibration = nullptr;  ///< from --calibration, or none
 };
 
 /// The in-process twin; throws std::runtime_error in a build without the simulator.

@@ -58,7 +58,9 @@ struct Platforms {
   std::vector<controller::PlatformSlot> slots;
 };
 
-Platforms makePlatforms(const Settings& s) {
+/// `calibration`: the loaded --calibration profile, or null.
+Platforms makePlatforms(const Settings& s,
+                        const controller_app::ControllerCalibration* calibration) {
   Platforms p;
   const bool want_physical = s.platform != "twin";
   const bool want_twin = s.platform != "physical";
@@ -76,8 +78,8 @@ Platforms makePlatforms(const Settings& s) {
     p.clients.push_back(std::make_unique<bridge::ros1::RavenRosClient>(o));
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
-    p.twin = controller_app::makeInProcessTwin(
-        {s.twin_launch, s.lock_step, s.stand_in, s.calibration_file});
+    p.twin =
+        controller_app::makeInProcessTwin({s.twin_launch, s.lock_step, s.stand_in, calibration});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -116,8 +118,8 @@ int run(const Settings& s) {
     throw std::runtime_error(
         "--lock-step needs a replay (--replay-ci / --replay-rs) or --mode o1/o5");
   }
-  std::optional<controller_app::ControllerCalibration>
-      calibration;  // refused before anything moves
+  // Read once, and refused before anything moves.
+  std::optional<controller_app::ControllerCalibration> calibration;
   if (!s.calibration_file.empty()) {
     calibration = controller_app::loadControllerCalibration(s.calibration_file);
   }
@@ -135,7 +137,7 @@ int run(const Settings& s) {
     bridge::ros1::initRos(argc, argv, "raven_controller", /*ros_handles_sigint=*/false);
     master_watch.emplace();
   }
-  Platforms platforms = makePlatforms(s);
+  Platforms platforms = makePlatforms(s, calibration ? &*calibration : nullptr);
   makeReady(platforms.slots);
 
   controller::ControllerOptions options;
