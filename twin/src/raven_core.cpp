@@ -48,11 +48,7 @@ CommandResult RavenCore::apply(const PlatformCommand& command) {
             return servoToPose(c.arm, to);
           },
           [&](const ServoJawJp& c) {
-            ArmJoints q = servoBase(c.arm);
-            const double difference = q(raven::kJaw1) - q(raven::kJaw2);
-            q(raven::kJaw1) = 0.5 * (c.opening + difference);
-            q(raven::kJaw2) = 0.5 * (c.opening - difference);
-            return servoTo(c.arm, q);
+            return servoTo(c.arm, raven::withJawOpening(servoBase(c.arm), c.opening));
           },
           [&](const ServoJawJr& c) {
             ArmJoints q = servoBase(c.arm);

@@ -30,7 +30,34 @@ constexpr std::array<TopicEntry, kCommandTopicCount> kTopics{{
     {CommandTopic::RavenAutomove, "raven_automove", M::RavenAutomove},
 }};
 
+constexpr std::array<std::string_view, kCrtkCommandCount> kCrtkNames{
+    "state_command", "servo_jp",     "servo_jr",     "servo_cp",    "servo_cr",
+    "move_jp",       "move_cp",      "jaw/servo_jp", "jaw/servo_jr", "jaw/move_jp"};
+
 }  // namespace
+
+const std::array<CrtkCommand, kCrtkCommandCount>& allCrtkCommands() {
+  static const auto all = [] {
+    std::array<CrtkCommand, kCrtkCommandCount> out{};
+    for (std::size_t i = 0; i < kCrtkCommandCount; ++i) out[i] = static_cast<CrtkCommand>(i);
+    return out;
+  }();
+  return all;
+}
+
+std::string_view relativeName(CrtkCommand command) {
+  return kCrtkNames[static_cast<std::size_t>(command)];
+}
+
+std::uint8_t lockStepId(CommandTopic topic) {
+  return static_cast<std::uint8_t>(topic);
+}
+
+std::uint8_t lockStepId(CrtkCommand command, raven::Arm arm) {
+  return static_cast<std::uint8_t>(kCommandTopicCount +
+                                   static_cast<std::size_t>(raven::index(arm)) * kCrtkCommandCount +
+                                   static_cast<std::size_t>(command));
+}
 
 std::string_view topicName(CommandTopic topic) {
   return kTopics[static_cast<std::size_t>(topic)].name;

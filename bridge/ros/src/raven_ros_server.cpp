@@ -19,7 +19,8 @@
 #include "bridge/ros/low_latency.hpp"
 #include "bridge/ros/ros_conversions.hpp"
 #include "bridge/throttled_log.hpp"
-#include "common/printable.hpp"
+#include "command_inbox.hpp"
+#include "crtk_face.hpp"
 #include "raven/control_cycle.hpp"
 
 namespace bridge::ros1 {
@@ -41,12 +42,10 @@ IncomingCommand fromParsed(const Parsed<Value>& parsed, Arm arm) {
   return {{Command{arm, *parsed.value}}, {}};
 }
 
-IncomingCommand stateCommandFrom(const crtk_msgs::StringStamped& message) {
-  if (auto command = parseStateCommand(message.string)) return {{*command}, {}};
-  constexpr std::size_t kLongestEcho = 40;
-  return {{},
-          "unknown state command '" + common::printable(message.string, kLongestEcho) +
-              "' (expected enable, disable, pause, resume, home or unhome)"};
+IncomingCommand fromStateCommand(const crtk_msgs::StringStamped& message) {
+  const auto parsed = stateCommandFrom(message);
+  if (!parsed.value) return {{}, parsed.error};
+  return {{*parsed.value}, {}};
 }
 
 /// raven_automove: per arm, a translation in microns and a rotation, applied incrementally.
@@ -66,10 +65,10 @@ IncomingCommand automoveFrom(const raven_2::raven_automove& message) {
 }
 
 /// How many commands of each topic `step` names (ids of no topic left out).
-std::array<std::size_t, kCommandTopicCount> namedCommands(const raven_twin::Step& step) {
-  std::array<std::size_t, kCommandTopicCount> named{};
+std::array<std::size_t, kLockStepIdCount> namedCommands(const raven_twin::Step& step) {
+  std::array<std::size_t, kLockStepIdCount> named{};
   for (std::uint8_t id : step.command_order) {
-    if (id < kCommandTopicCount) ++named[id];
+    if (id < kLockStepIdCount) ++named[id];
   }
   return named;
 }
@@ -85,11 +84,16 @@ struct Publishers {
 
 /// The server's ROS side: a private callback queue spun by the serving loop (one thread, no
 /// locks), and in lock-step mode the commands held back until a step names them.
-class RavenRosServer::Impl {
+class RavenRosServer::Impl final : public CommandInbox {
  public:
   Impl(RavenPlatform& platform, const std::string& ros_namespace, RosServerOptions options);
   void spinOnce(double wait);
   const RavenPlatform& platform() const { return platform_; }
+
+  void expect(std::uint8_t id, std::string topic) override;
+  void receive(std::uint8_t id, std::function<void()> apply) override;
+  void refuse(std::uint8_t id, const std::string& why) override;
+  ::ros::Time stamp() const override;
 
  private:
   using StepMessage = raven_twin::Step;
@@ -102,9 +106,7 @@ class RavenRosServer::Impl {
   void subscribeCommands();
   template <typename Message, typename Parse>
   void subscribeCommand(CommandTopic topic, Parse parse);
-  void received(CommandTopic topic, IncomingCommand incoming);
   void apply(CommandTopic topic, const IncomingCommand& incoming);
-  void refuse(CommandTopic topic, const std::string& why);
   void runCycle();
   void publishState();
   std::string missingCommands(const StepMessage& step) const;
@@ -112,7 +114,6 @@ class RavenRosServer::Impl {
   void refuseStep(const StepMessage& step, const std::string& why);
   void runStep(const StepMessage& step);
   void answerStep(const StepMessage& step, const std::string& refused);
-  ::ros::Time stamp() const;
 
   RavenPlatform& platform_;
   RosServerOptions options_;
@@ -120,7 +121,10 @@ class RavenRosServer::Impl {
   ::ros::NodeHandle node_;
   std::vector<::ros::Subscriber> subscribers_;
   Publishers publishers_;
-  std::array<std::deque<IncomingCommand>, kCommandTopicCount> pending_;
+  /// Per lock-step id: the topic's name ("" while nothing serves it) and its held commands.
+  std::array<std::string, kLockStepIdCount> topic_names_;
+  std::array<std::deque<std::function<void()>>, kLockStepIdCount> pending_;
+  std::optional<CrtkFace> crtk_;
   std::deque<PendingStep> steps_;
   std::uint64_t cycles_published_ = 0;
   ThrottledLog log_;
@@ -183,16 +187,19 @@ RavenRosServer::Impl::Impl(RavenPlatform& platform, const std::string& ros_names
     }
   }
   subscribeCommands();
+  if (options_.crtk) crtk_.emplace(platform_, node_, *options_.crtk, *this);
   publishState();
 }
 
 template <typename Message, typename Parse>
 void RavenRosServer::Impl::subscribeCommand(CommandTopic topic, Parse parse) {
   constexpr std::uint32_t kCommandQueue = 10000;  // never drop a command
+  expect(lockStepId(topic), std::string(topicName(topic)));
   subscribers_.push_back(node_.subscribe<Message>(
       std::string(topicName(topic)), kCommandQueue,
       [this, topic, parse](const typename Message::ConstPtr& message) {
-        received(topic, parse(*message));
+        receive(lockStepId(topic),
+                [this, topic, incoming = parse(*message)] { apply(topic, incoming); });
       },
       {}, lowLatency()));
 }
@@ -202,7 +209,7 @@ void RavenRosServer::Impl::subscribeCommands() {
   using sensor_msgs::JointState;
   for (CommandTopic topic : {CommandTopic::StateCommand, CommandTopic::Arm1StateCommand,
                              CommandTopic::Arm2StateCommand}) {
-    subscribeCommand<crtk_msgs::StringStamped>(topic, stateCommandFrom);
+    subscribeCommand<crtk_msgs::StringStamped>(topic, fromStateCommand);
   }
   for (Arm arm : raven::kArms) {
     subscribeCommand<JointState>(
@@ -229,30 +236,34 @@ void RavenRosServer::Impl::subscribeCommands() {
   subscribeCommand<raven_2::raven_automove>(CommandTopic::RavenAutomove, automoveFrom);
 }
 
-void RavenRosServer::Impl::received(CommandTopic topic, IncomingCommand incoming) {
+void RavenRosServer::Impl::expect(std::uint8_t id, std::string topic) {
+  topic_names_.at(id) = std::move(topic);
+}
+
+void RavenRosServer::Impl::receive(std::uint8_t id, std::function<void()> apply) {
   if (options_.lock_step) {
-    pending_[static_cast<std::size_t>(topic)].push_back(std::move(incoming));
+    pending_[id].push_back(std::move(apply));
   } else {
-    apply(topic, incoming);
+    apply();
   }
 }
 
 void RavenRosServer::Impl::apply(CommandTopic topic, const IncomingCommand& incoming) {
   if (!incoming.error.empty()) {
-    const std::string where = "refused a message on " + std::string(topicName(topic));
-    log_.warn(where, where + ": " + incoming.error, platform_.now());
-    refuse(topic, incoming.error);
+    refuse(lockStepId(topic), incoming.error);
     return;
   }
   for (const auto& command : incoming.commands) {
     const CommandResult result = platform_.send(command);
-    if (!result) refuse(topic, result.note);  // the platform logs its own refusals
+    if (!result) refuse(lockStepId(topic), result.note);
   }
 }
 
-void RavenRosServer::Impl::refuse(CommandTopic topic, const std::string& why) {
+void RavenRosServer::Impl::refuse(std::uint8_t id, const std::string& why) {
+  const std::string where = "refused a message on " + topic_names_[id];
+  log_.warn(where, where + ": " + why, platform_.now());
   std_msgs::String message;
-  message.data = std::string(topicName(topic)) + ": " + why;
+  message.data = topic_names_[id] + ": " + why;
   publishers_.refusals.publish(message);
 }
 
@@ -283,11 +294,10 @@ void RavenRosServer::Impl::spinOnce(double wait) {
 std::string RavenRosServer::Impl::missingCommands(const StepMessage& step) const {
   const auto needed = namedCommands(step);
   std::string missing;
-  for (CommandTopic topic : allCommandTopics()) {
-    const auto i = static_cast<std::size_t>(topic);
+  for (std::size_t i = 0; i < kLockStepIdCount; ++i) {
     if (pending_[i].size() >= needed[i]) continue;
     missing += (missing.empty() ? "" : ", ") + std::to_string(needed[i] - pending_[i].size()) +
-               " on " + std::string(topicName(topic));
+               " on " + topic_names_[i];
   }
   return missing;
 }
@@ -299,8 +309,8 @@ std::optional<std::string> RavenRosServer::Impl::stepRefusal(const PendingStep& 
            std::to_string(kMostCyclesPerStep) + " one step may run";
   }
   for (std::uint8_t id : step.command_order) {
-    if (!commandTopicFromId(id)) {
-      return "it names command topic id " + std::to_string(id) + ", which does not exist";
+    if (id >= kLockStepIdCount || topic_names_[id].empty()) {
+      return "it names command topic id " + std::to_string(id) + ", which this node does not serve";
     }
   }
   const double waited = (::ros::WallTime::now() - pending.arrived).toSec();
@@ -314,7 +324,7 @@ std::optional<std::string> RavenRosServer::Impl::stepRefusal(const PendingStep& 
 void RavenRosServer::Impl::refuseStep(const StepMessage& step, const std::string& why) {
   // The commands of it that did arrive go too: a later step must not take them for its own.
   const auto named = namedCommands(step);
-  for (std::size_t i = 0; i < kCommandTopicCount; ++i) {
+  for (std::size_t i = 0; i < kLockStepIdCount; ++i) {
     const auto dropped = static_cast<long>(std::min(named[i], pending_[i].size()));
     pending_[i].erase(pending_[i].begin(), pending_[i].begin() + dropped);
   }
@@ -329,8 +339,9 @@ void RavenRosServer::Impl::refuseStep(const StepMessage& step, const std::string
 void RavenRosServer::Impl::runStep(const StepMessage& step) {
   for (std::uint8_t id : step.command_order) {
     auto& queue = pending_[id];
-    apply(*commandTopicFromId(id), queue.front());
+    const auto apply = std::move(queue.front());
     queue.pop_front();
+    apply();
   }
   for (std::uint32_t c = 0; c < step.cycles && ::ros::ok(); ++c) runCycle();
   if (step.cycles == 0) publishState();
@@ -389,6 +400,7 @@ void RavenRosServer::Impl::publishState() {
   }
   if (cycles_published_ % kJointStatesEvery == 0) p.joint_states.publish(both);
   if (const auto state = platform_.ravenState()) p.ravenstate.publish(toRavenState(*state, now));
+  if (crtk_) crtk_->publishState(now);
   ++cycles_published_;
 }
 

@@ -3,14 +3,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/printable.hpp"
+
 namespace bridge::ros1 {
 
 namespace {
 
 using raven::kJointCount;
 
-std::string positionError(std::size_t index, double value) {
-  return "position[" + std::to_string(index) + "] is " + std::to_string(value) +
+std::string valueError(const std::string& field, std::size_t index, double value) {
+  return field + "[" + std::to_string(index) + "] is " + std::to_string(value) +
          ": values must be finite";
 }
 
@@ -58,17 +60,16 @@ void pairFields(Message& m, Snapshot& s, F f) {
 
 }  // namespace
 
-Parsed<ArmJoints> armJointsFromCommand(const sensor_msgs::JointState& message) {
-  const auto& p = message.position;
+Parsed<ArmJoints> armJointsFromValues(const std::vector<double>& p, const std::string& field) {
   if (p.size() != 7 && p.size() != 15) {
-    return Parsed<ArmJoints>::fail("position has " + std::to_string(p.size()) +
+    return Parsed<ArmJoints>::fail(field + " has " + std::to_string(p.size()) +
                                    " values; expected 7 (shoulder, elbow, insertion, roll, "
                                    "wrist, jaw1, jaw2) or 15 (those 7, then 8 zeros)");
   }
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (!std::isfinite(p[i])) return Parsed<ArmJoints>::fail(positionError(i, p[i]));
+    if (!std::isfinite(p[i])) return Parsed<ArmJoints>::fail(valueError(field, i, p[i]));
     if (i >= 7 && p[i] != 0.0) {
-      return Parsed<ArmJoints>::fail("position[" + std::to_string(i) +
+      return Parsed<ArmJoints>::fail(field + "[" + std::to_string(i) +
                                      "] is not 0: values 7..14 of a 15-value command are unused "
                                      "and must be 0");
     }
@@ -76,24 +77,35 @@ Parsed<ArmJoints> armJointsFromCommand(const sensor_msgs::JointState& message) {
   return Parsed<ArmJoints>::ok(Eigen::Map<const ArmJoints>(p.data()));
 }
 
+Parsed<ArmJoints> armJointsFromCommand(const sensor_msgs::JointState& message) {
+  return armJointsFromValues(message.position, "position");
+}
+
+Parsed<StateCommand> stateCommandFrom(const crtk_msgs::StringStamped& message) {
+  if (auto command = parseStateCommand(message.string)) return Parsed<StateCommand>::ok(*command);
+  constexpr std::size_t kLongestEcho = 40;
+  return Parsed<StateCommand>::fail(
+      "unknown state command '" + common::printable(message.string, kLongestEcho) +
+      "' (expected enable, disable, pause, resume, home or unhome)");
+}
+
 Parsed<double> graspFromCommand(const sensor_msgs::JointState& message) {
   if (message.position.empty()) {
     return Parsed<double>::fail("position is empty; expected the grasper value in position[0]");
   }
   if (!std::isfinite(message.position[0])) {
-    return Parsed<double>::fail(positionError(0, message.position[0]));
+    return Parsed<double>::fail(valueError("position", 0, message.position[0]));
   }
   return Parsed<double>::ok(message.position[0]);
 }
 
-Parsed<Eigen::Isometry3d> poseFromTransform(const geometry_msgs::Transform& message,
-                                            bool zero_is_identity) {
-  const auto& t = message.translation;
-  const auto& r = message.rotation;
-  const Eigen::Vector3d translation(t.x, t.y, t.z);
-  Eigen::Quaterniond q(r.w, r.x, r.y, r.z);
+namespace {
+
+/// A rigid transform from a message's translation and quaternion, checked.
+Parsed<Eigen::Isometry3d> checkedPose(const Eigen::Vector3d& translation, Eigen::Quaterniond q,
+                                      bool zero_is_identity) {
   if (!translation.allFinite() || !q.coeffs().allFinite()) {
-    return Parsed<Eigen::Isometry3d>::fail("the transform holds NaN or infinite values");
+    return Parsed<Eigen::Isometry3d>::fail("the pose holds NaN or infinite values");
   }
   if (zero_is_identity && q.coeffs().isZero(0.0)) q = Eigen::Quaterniond::Identity();
   if (std::abs(q.norm() - 1.0) > 1e-3) {
@@ -104,6 +116,21 @@ Parsed<Eigen::Isometry3d> poseFromTransform(const geometry_msgs::Transform& mess
   pose.linear() = q.normalized().toRotationMatrix();
   pose.translation() = translation;
   return Parsed<Eigen::Isometry3d>::ok(pose);
+}
+
+}  // namespace
+
+Parsed<Eigen::Isometry3d> poseFromTransform(const geometry_msgs::Transform& message,
+                                            bool zero_is_identity) {
+  const auto& t = message.translation;
+  const auto& r = message.rotation;
+  return checkedPose({t.x, t.y, t.z}, {r.w, r.x, r.y, r.z}, zero_is_identity);
+}
+
+Parsed<Eigen::Isometry3d> poseFromPose(const geometry_msgs::Pose& message) {
+  const auto& t = message.position;
+  const auto& r = message.orientation;
+  return checkedPose({t.x, t.y, t.z}, {r.w, r.x, r.y, r.z}, false);
 }
 
 sensor_msgs::JointState toJointState(const JointSample& sample, std::string_view colour,
@@ -152,6 +179,16 @@ sensor_msgs::JointState toGraspState(const JointSample& sample, std::string_view
   return m;
 }
 
+sensor_msgs::JointState toJawState(const JointSample& sample, ::ros::Time stamp) {
+  sensor_msgs::JointState m;
+  m.header.stamp = stamp;
+  m.name = {"jaw"};
+  m.position = {sample.position(raven::kJaw1) + sample.position(raven::kJaw2)};
+  m.velocity = {sample.velocity(raven::kJaw1) + sample.velocity(raven::kJaw2)};
+  m.effort = {sample.effort(raven::kJaw1) + sample.effort(raven::kJaw2)};
+  return m;
+}
+
 geometry_msgs::Pose toPose(const Eigen::Isometry3d& pose) {
   geometry_msgs::Pose m;
   m.position.x = pose.translation().x();
@@ -165,20 +202,26 @@ geometry_msgs::Pose toPose(const Eigen::Isometry3d& pose) {
   return m;
 }
 
+geometry_msgs::PoseStamped toPoseStamped(const Eigen::Isometry3d& pose, ::ros::Time stamp,
+                                         std::string frame) {
+  geometry_msgs::PoseStamped m;
+  m.header.stamp = stamp;
+  m.header.frame_id = std::move(frame);
+  m.pose = toPose(pose);
+  return m;
+}
+
 geometry_msgs::TransformStamped toTransformStamped(const Eigen::Isometry3d& pose, ::ros::Time stamp,
                                                    std::string frame, std::string child_frame) {
+  const geometry_msgs::Pose p = toPose(pose);
   geometry_msgs::TransformStamped m;
   m.header.stamp = stamp;
   m.header.frame_id = std::move(frame);
   m.child_frame_id = std::move(child_frame);
-  m.transform.translation.x = pose.translation().x();
-  m.transform.translation.y = pose.translation().y();
-  m.transform.translation.z = pose.translation().z();
-  const Eigen::Quaterniond q(pose.linear());
-  m.transform.rotation.w = q.w();
-  m.transform.rotation.x = q.x();
-  m.transform.rotation.y = q.y();
-  m.transform.rotation.z = q.z();
+  m.transform.translation.x = p.position.x;
+  m.transform.translation.y = p.position.y;
+  m.transform.translation.z = p.position.z;
+  m.transform.rotation = p.orientation;
   return m;
 }
 
@@ -235,15 +278,6 @@ Parsed<GrasperForces> grasperForcesFrom(const raven_twin::GraspForces& jaws,
     return {std::nullopt, "measured_cf: the wrench is not finite"};
   }
   return {out, {}};
-}
-
-crtk_msgs::operating_state toOperatingState(const OperatingStatus& status, ::ros::Time stamp) {
-  crtk_msgs::operating_state m;
-  m.header.stamp = stamp;
-  m.state = std::string(wireName(status.state));
-  m.is_homed = status.is_homed;
-  m.is_busy = status.is_busy;
-  return m;
 }
 
 Parsed<OperatingStatus> operatingStatusFrom(const crtk_msgs::operating_state& message) {

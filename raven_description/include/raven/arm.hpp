@@ -31,4 +31,13 @@ inline std::string_view armName(Arm arm) {
   return arm == Arm::Left ? "left" : "right";
 }
 
+/// `q` with its jaws opened to `opening` (jaw1 + jaw2, rad), their difference (the grasper's
+/// orientation) kept.
+inline ArmJoints withJawOpening(ArmJoints q, double opening) {
+  const double difference = q(kJaw1) - q(kJaw2);
+  q(kJaw1) = 0.5 * (opening + difference);
+  q(kJaw2) = 0.5 * (opening - difference);
+  return q;
+}
+
 }  // namespace raven

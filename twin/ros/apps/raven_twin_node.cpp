@@ -5,7 +5,9 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 
 #include "bridge/ros/master_watch.hpp"
 #include "bridge/ros/raven_ros_server.hpp"
@@ -50,6 +52,19 @@ int main(int argc, char** argv) {
                  "lock-step: wall seconds a step waits for the commands it names before it is "
                  "refused")
       ->check(CLI::PositiveNumber);
+  bridge::ros1::CrtkFaceOptions crtk;
+  app.add_option("--crtk-namespace", crtk.ros_namespace,
+                 "namespace of the standard CRTK face, relative to the node's (absolute with a "
+                 "leading /)")
+      ->capture_default_str();
+  std::vector<std::string> crtk_arms{crtk.arm_names.begin(), crtk.arm_names.end()};
+  app.add_option("--crtk-arms", crtk_arms,
+                 "the standard CRTK face's names of the gold (left) and green (right) arm, e.g. "
+                 "PSM1 PSM2")
+      ->expected(2)
+      ->capture_default_str();
+  bool no_crtk = false;
+  app.add_flag("--no-crtk", no_crtk, "serve the robot's own topics only, no standard CRTK face");
   double duration = 0.0;
   app.add_option("--duration", duration,
                  "stop after this much platform time (s); 0: run until "
@@ -69,15 +84,22 @@ int main(int argc, char** argv) {
     if (!calibration.empty()) twin.tracking = twin::CalibrationProfile::load(calibration).tracking;
     server.arm_swap = !no_arm_swap;
     twin::TwinPlatform platform(twin);
+    if (!no_crtk) {
+      std::copy(crtk_arms.begin(), crtk_arms.end(), crtk.arm_names.begin());
+      crtk.profile = platform.core().profile();
+      server.crtk = crtk;
+    }
     // The scene's sensors and actuators on AMBF's topics, served after every cycle.
     twin::ros1::AmbfObjectTopics objects(platform.world());
     server.after_cycle = [&] { objects.update(platform.now()); };
     bridge::ros1::RavenRosServer ros_server(platform, "", server);
     const bridge::ros1::MasterWatch master_watch;  // registers again with a restarted master
-    spdlog::info("raven_twin: {} on {} ({}, {} clock, arm swap {})",
+    spdlog::info("raven_twin: {} on {} ({}, {} clock, arm swap {}, standard CRTK {})",
                  stand_in ? "the PHYSICAL STAND-IN" : "the twin", bridge::ros1::masterUri(),
                  twin.profile, server.lock_step ? "lock-step simulated" : "wall",
-                 server.arm_swap ? "on" : "off");
+                 server.arm_swap ? "on" : "off",
+                 no_crtk ? "off" : "under " + crtk.ros_namespace + "/{" + crtk.arm_names[0] + "," +
+                                       crtk.arm_names[1] + "}");
     ros_server.spin(duration);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());

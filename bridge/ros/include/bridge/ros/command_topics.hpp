@@ -1,6 +1,7 @@
 #pragma once
 // The Raven-II's ROS topic names: the command topics it subscribes to (with the ids the twin
-// node's lock-step protocol orders them by) and the per-arm namespaces.
+// node's lock-step protocol orders them by), the per-arm namespaces, and the command topics of
+// the twin node's standard CRTK face.
 
 #include <array>
 #include <cstdint>
@@ -47,6 +48,31 @@ const std::array<CommandTopic, kCommandTopicCount>& allCommandTopics();
 /// `arm`'s version of a per-arm topic given by its arm-1 name: forArm(Arm1ServoJr, Right) is
 /// Arm2ServoJr.
 CommandTopic forArm(CommandTopic arm1_topic, raven::Arm arm);
+
+/// The command topics of one arm in the twin node's standard CRTK face (under its own namespace,
+/// one per arm, the jaw under the arm's `jaw/`), in lock-step id order.
+enum class CrtkCommand : std::uint8_t {
+  StateCommand,
+  ServoJp,
+  ServoJr,
+  ServoCp,
+  ServoCr,
+  MoveJp,
+  MoveCp,
+  JawServoJp,
+  JawServoJr,
+  JawMoveJp,
+};
+inline constexpr std::size_t kCrtkCommandCount = 10;
+const std::array<CrtkCommand, kCrtkCommandCount>& allCrtkCommands();
+/// "servo_jp", "jaw/move_jp", ...: relative to the arm's CRTK namespace.
+std::string_view relativeName(CrtkCommand command);
+
+/// Lock-step ids: the robot's command topics (0-15, their CommandTopic value), then the CRTK
+/// face's commands of arm 1 (16-25, in CrtkCommand order), then arm 2's (26-35).
+inline constexpr std::size_t kLockStepIdCount = kCommandTopicCount + 2 * kCrtkCommandCount;
+std::uint8_t lockStepId(CommandTopic topic);
+std::uint8_t lockStepId(CrtkCommand command, raven::Arm arm);
 
 /// "arm1" (gold, left) or "arm2" (green, right), and "grasp1" / "grasp2".
 std::string armNamespace(raven::Arm arm);

@@ -1,15 +1,32 @@
 #pragma once
 // Serves any RavenPlatform on the physical Raven-II's ROS topics (what the twin node runs): the
 // CRTK command and state topics of /arm1, /arm2, grasp1, grasp2, `ravenstate` every cycle, and
-// `raven_automove`; optionally in lock-step with a client on the simulated clock.
+// `raven_automove`; beside them, optionally, standard CRTK under a namespace of its own; and
+// optionally in lock-step with a client on the simulated clock.
 
+#include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "bridge/raven_platform.hpp"
+#include "raven/platform_profile.hpp"
 
 namespace bridge::ros1 {
+
+/// The standard CRTK face: what a standard CRTK client (crtk_python_client, dVRK-style scripts)
+/// expects, per arm under `<ros_namespace>/<arm name>/`: crtk_msgs/OperatingState published on
+/// change and latched, PoseStamped poses, move_jp and move_cp with the busy flag, the jaw under
+/// `jaw/`, query_cp / query_jp; no arm swap.
+struct CrtkFaceOptions {
+  std::string ros_namespace = "crtk";
+  /// Left (gold) arm's name first: a dVRK user may call them "PSM1", "PSM2".
+  std::array<std::string, 2> arm_names{"arm1", "arm2"};
+  /// The served platform's profile: its reporting chain for query_cp / query_jp and move_cp,
+  /// its joint limits for telling when a move has arrived.
+  raven::PlatformProfile profile;
+};
 
 /// How the server runs.
 struct RosServerOptions {
@@ -28,6 +45,8 @@ struct RosServerOptions {
   /// Called after every 1 ms cycle, on the serving thread (the twin node serves its world's
   /// sensors and actuators from here).
   std::function<void()> after_cycle;
+  /// Serve standard CRTK too (none: the robot's own dialect only).
+  std::optional<CrtkFaceOptions> crtk;
 };
 
 /// The robot's side of the ROS interface, over a platform. Refused commands are logged and
