@@ -93,6 +93,19 @@ Vector3d ArmKinematics::wristPoint(const ArmJoints& q) const {
   return frames(q)[4].translation();
 }
 
+Eigen::Matrix<double, 6, 1> ArmKinematics::toolTwist(const ArmJoints& q,
+                                                     const ArmJoints& qdot) const {
+  // A central difference along the motion: exact to O(h^2) for the smooth chain.
+  constexpr double h = 1e-6;
+  const Isometry3d ahead = toolPose(q + h * qdot);
+  const Isometry3d behind = toolPose(q - h * qdot);
+  const Eigen::AngleAxisd turn(ahead.linear() * behind.linear().transpose());
+  Eigen::Matrix<double, 6, 1> twist;
+  twist.head<3>() = (ahead.translation() - behind.translation()) / (2.0 * h);
+  twist.tail<3>() = turn.axis() * turn.angle() / (2.0 * h);
+  return twist;
+}
+
 // The insertion axis z3 = Rx(a0) Rz(t1) Rx(a1) Rz(t2) Rx(a2) z. With w = Rx(-a0) z3, its
 // z component fixes the elbow: w_z = cos(a1) cos(a2) - sin(a1) sin(a2) cos(t2); the shoulder
 // then turns the remaining (x', y') onto (w_x, w_y).

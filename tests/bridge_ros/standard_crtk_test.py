@@ -91,7 +91,7 @@ class CrtkArm:
 
     def __init__(self, rospy, ns):
         from crtk_msgs.msg import OperatingState, StringStamped
-        from geometry_msgs.msg import PoseStamped, WrenchStamped
+        from geometry_msgs.msg import PoseStamped, TwistStamped, WrenchStamped
         from sensor_msgs.msg import JointState
 
         self.rospy = rospy
@@ -102,6 +102,7 @@ class CrtkArm:
         self.setpoint_js = topic("setpoint_js", JointState)
         self.measured_cp = topic("measured_cp", PoseStamped)
         self.setpoint_cp = topic("setpoint_cp", PoseStamped)
+        self.measured_cv = topic("measured_cv", TwistStamped)
         self.measured_cf = topic("measured_cf", WrenchStamped)
         self.jaw_measured_js = topic("jaw/measured_js", JointState)
         publisher = lambda name, kind: rospy.Publisher(f"{ns}/{name}", kind, queue_size=10,
@@ -224,6 +225,12 @@ class StandardCrtkFace(unittest.TestCase):
         arm.move_jp.publish(joint_state(goal))
         arm.wait(lambda: any(m.is_busy and m.header.stamp > sent
                              for m in arm.operating_state.messages), "busy after move_jp")
+
+        def tool_speed():
+            v = arm.measured_cv.last.twist.linear if arm.measured_cv.last else None
+            return math.sqrt(v.x ** 2 + v.y ** 2 + v.z ** 2) if v else 0.0
+
+        arm.wait(lambda: tool_speed() > 0.005, "measured_cv: the tool moving")
         arm.wait(lambda: not arm.operating_state.last.is_busy, "idle after move_jp")
         arrived = arm.joints(arm.setpoint_js)
         for joint in range(7):

@@ -238,3 +238,52 @@ TEST(Kinematics, ClampReportsExactlyWhatItMoved) {
 }
 
 }  // namespace
+
+namespace {
+
+/// Joints well inside the limits (so every small motion stays a motion of the chain).
+ArmJoints midJoints(const raven::JointLimits& limits) {
+  return 0.5 * (limits.low + limits.high) + 0.1 * (limits.high - limits.low);
+}
+
+}  // namespace
+
+TEST(Kinematics, ToolTwistOfAnInsertionIsASlideAlongTheShaft) {
+  const auto& profile = test_support::physicalProfile();
+  const ArmKinematics k = ArmKinematics::of(profile, Arm::Left);
+  const ArmJoints q = midJoints(profile.limits);
+  ArmJoints qdot = ArmJoints::Zero();
+  qdot(raven::kInsertion) = 0.03;  // m/s
+  const auto twist = k.toolTwist(q, qdot);
+  EXPECT_NEAR(twist.tail<3>().norm(), 0.0, 1e-9);  // a prismatic joint turns nothing
+  EXPECT_NEAR(twist.head<3>().norm(), 0.03, 1e-8);
+  const Vector3d shaft = k.frames(q)[2].linear().col(2);  // the insertion slides along z of row 2
+  EXPECT_NEAR(std::abs(twist.head<3>().normalized().dot(shaft)), 1.0, 1e-9);
+}
+
+TEST(Kinematics, ToolTwistOfAShoulderTurnIsARotationAboutItsAxis) {
+  for (const auto* profile : {&test_support::physicalProfile(), &ambf()}) {
+    const ArmKinematics k = ArmKinematics::of(*profile, Arm::Right);
+    const ArmJoints q = midJoints(profile->limits);
+    ArmJoints qdot = ArmJoints::Zero();
+    qdot(raven::kShoulder) = -0.4;  // rad/s
+    const auto twist = k.toolTwist(q, qdot);
+    EXPECT_NEAR(twist.tail<3>().norm(), 0.4, 1e-8);
+    // v = w x (p - c) for a point c on the axis: the tool point moves across the axis.
+    EXPECT_NEAR(twist.head<3>().dot(twist.tail<3>()), 0.0, 1e-9);
+    EXPECT_GT(twist.head<3>().norm(), 1e-3);
+  }
+}
+
+TEST(Kinematics, ToolTwistIsLinearInTheJointVelocity) {
+  const auto& profile = test_support::physicalProfile();
+  const ArmKinematics k = ArmKinematics::of(profile, Arm::Left);
+  std::mt19937_64 random(7);
+  for (int trial = 0; trial < 100; ++trial) {
+    const ArmJoints q = randomJoints(profile.limits, random);
+    const ArmJoints a = ArmJoints::Random() * 0.5, b = ArmJoints::Random() * 0.5;
+    const auto sum = k.toolTwist(q, a + b);
+    EXPECT_TRUE(sum.isApprox(k.toolTwist(q, a) + k.toolTwist(q, b), 1e-6))
+        << "trial " << trial;
+  }
+}

@@ -47,6 +47,7 @@ void CrtkFace::advertise(Arm arm) {
   p.setpoint_js = node_.advertise<sensor_msgs::JointState>(topic(arm, "setpoint_js"), kQueue);
   p.measured_cp = node_.advertise<geometry_msgs::PoseStamped>(topic(arm, "measured_cp"), kQueue);
   p.setpoint_cp = node_.advertise<geometry_msgs::PoseStamped>(topic(arm, "setpoint_cp"), kQueue);
+  p.measured_cv = node_.advertise<geometry_msgs::TwistStamped>(topic(arm, "measured_cv"), kQueue);
   if (platform_.measuredCf(arm)) {  // a platform that senses forces (the twin)
     p.measured_cf =
         node_.advertise<geometry_msgs::WrenchStamped>(topic(arm, "measured_cf"), kQueue);
@@ -240,10 +241,12 @@ void CrtkFace::publishArmState(Arm arm, ::ros::Time stamp) {
   auto wanted = [](const ::ros::Publisher& publisher) {
     return publisher && publisher.getNumSubscribers() > 0;
   };
-  if (wanted(p.measured_js) || wanted(p.jaw_measured_js)) {
+  if (wanted(p.measured_js) || wanted(p.jaw_measured_js) || wanted(p.measured_cv)) {
     const JointSample measured = platform_.measuredJs(arm);
     p.measured_js.publish(toJointState(measured, colour, stamp));
     p.jaw_measured_js.publish(toJawState(measured, stamp));
+    const auto twist = kinematics_[slot(arm)].toolTwist(measured.position, measured.velocity);
+    p.measured_cv.publish(toTwistStamped(twist, stamp, std::string(colour) + "_base"));
   }
   if (wanted(p.setpoint_js) || wanted(p.jaw_setpoint_js)) {
     const JointSample setpoint = platform_.setpointJs(arm);

@@ -39,7 +39,7 @@ class CrtkFace {
   /// One arm's state publishers.
   struct ArmPublishers {
     ::ros::Publisher operating_state, measured_js, setpoint_js, measured_cp, setpoint_cp,
-        measured_cf, jaw_measured_js, jaw_setpoint_js;
+        measured_cv, measured_cf, jaw_measured_js, jaw_setpoint_js;
   };
 
   std::string topic(Arm arm, std::string_view relative) const;

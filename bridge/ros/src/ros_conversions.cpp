@@ -237,6 +237,16 @@ geometry_msgs::Vector3 toVector3(const Eigen::Vector3d& v) {
 
 }  // namespace
 
+geometry_msgs::TwistStamped toTwistStamped(const Eigen::Matrix<double, 6, 1>& twist,
+                                           ::ros::Time stamp, std::string frame) {
+  geometry_msgs::TwistStamped m;
+  m.header.stamp = stamp;
+  m.header.frame_id = std::move(frame);
+  m.twist.linear = toVector3(twist.head<3>());
+  m.twist.angular = toVector3(twist.tail<3>());
+  return m;
+}
+
 geometry_msgs::WrenchStamped toWrenchStamped(const GrasperForces& forces, ::ros::Time stamp,
                                              std::string frame) {
   geometry_msgs::WrenchStamped m;

@@ -46,6 +46,9 @@ class ArmKinematics {
   std::array<Eigen::Isometry3d, 6> frames(const ArmJoints& q) const;
   Eigen::Isometry3d toolPose(const ArmJoints& q) const;
   Eigen::Vector3d wristPoint(const ArmJoints& q) const;
+  /// The tool's twist (reporting frame) when the joints at `q` move at `qdot`: the tool point's
+  /// velocity (m/s), then the angular velocity (rad/s). CRTK's measured_cv.
+  Eigen::Matrix<double, 6, 1> toolTwist(const ArmJoints& q, const ArmJoints& qdot) const;
 
   /// Every exact solution for the tool pose (up to 8: two jaw-axis placements, two insertion
   /// signs, two elbows), unclamped, each revolute joint at the turn nearest `near`.

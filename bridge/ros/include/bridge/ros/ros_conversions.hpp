@@ -8,6 +8,7 @@
 #include <crtk_msgs/operating_state.h>
 #include <geometry_msgs/Pose.h>
 #include <geometry_msgs/PoseStamped.h>
+#include <geometry_msgs/TwistStamped.h>
 #include <geometry_msgs/Transform.h>
 #include <geometry_msgs/TransformStamped.h>
 #include <geometry_msgs/WrenchStamped.h>
@@ -69,6 +70,9 @@ geometry_msgs::PoseStamped toPoseStamped(const Eigen::Isometry3d& pose, ::ros::T
 geometry_msgs::TransformStamped toTransformStamped(const Eigen::Isometry3d& pose, ::ros::Time stamp,
                                                    std::string frame, std::string child_frame);
 
+/// measured_cv as CRTK carries it: linear (m/s), then angular (rad/s) velocity, `frame` named.
+geometry_msgs::TwistStamped toTwistStamped(const Eigen::Matrix<double, 6, 1>& twist,
+                                           ::ros::Time stamp, std::string frame);
 /// measured_cf as CRTK carries it: the grasper's total force and torque, `frame` named.
 geometry_msgs::WrenchStamped toWrenchStamped(const GrasperForces& forces, ::ros::Time stamp,
                                              std::string frame);
