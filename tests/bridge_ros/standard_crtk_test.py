@@ -301,6 +301,26 @@ class StandardCrtkFace(unittest.TestCase):
         self.assertTrue(all(math.isfinite(v) for v in (fk.x, fk.y, fk.z)))
 
 
+    def test_the_documented_example_runs(self):
+        import importlib.util
+        path = os.path.join(os.path.dirname(__file__), "..", "..", "docs", "examples",
+                            "standard_crtk.py")
+        spec = importlib.util.spec_from_file_location("standard_crtk_example", path)
+        example = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(example)
+        example.session("/s1/crtk/PSM2")
+        jaw = self.other.fresh(self.other.jaw_measured_js).position[0]
+        self.assertAlmostEqual(jaw, 0.1, delta=0.01)
+
+
+class FaceOnTheRobotsTopics(unittest.TestCase):
+    def test_arm_names_that_would_take_the_robots_topics_are_refused(self):
+        run = subprocess.run([NODE, "__ns:=/s4", "--crtk-namespace", "", "--crtk-arms", "arm2",
+                              "PSM2"], capture_output=True, text=True, timeout=120)
+        self.assertEqual(run.returncode, 1)
+        self.assertIn("arm 'arm2' would take the robot's own /arm2 topics", run.stdout + run.stderr)
+
+
 class LockStepCrtk(unittest.TestCase):
     """A standard-CRTK command named in a lock-step step runs in that step, on the simulated clock."""
 

@@ -283,7 +283,6 @@ TEST(Kinematics, ToolTwistIsLinearInTheJointVelocity) {
     const ArmJoints q = randomJoints(profile.limits, random);
     const ArmJoints a = ArmJoints::Random() * 0.5, b = ArmJoints::Random() * 0.5;
     const auto sum = k.toolTwist(q, a + b);
-    EXPECT_TRUE(sum.isApprox(k.toolTwist(q, a) + k.toolTwist(q, b), 1e-6))
-        << "trial " << trial;
+    EXPECT_TRUE(sum.isApprox(k.toolTwist(q, a) + k.toolTwist(q, b), 1e-6)) << "trial " << trial;
   }
 }

@@ -31,8 +31,8 @@ constexpr std::array<TopicEntry, kCommandTopicCount> kTopics{{
 }};
 
 constexpr std::array<std::string_view, kCrtkCommandCount> kCrtkNames{
-    "state_command", "servo_jp",     "servo_jr",     "servo_cp",    "servo_cr",
-    "move_jp",       "move_cp",      "jaw/servo_jp", "jaw/servo_jr", "jaw/move_jp"};
+    "state_command", "servo_jp", "servo_jr",     "servo_cp",     "servo_cr",
+    "move_jp",       "move_cp",  "jaw/servo_jp", "jaw/servo_jr", "jaw/move_jp"};
 
 }  // namespace
 

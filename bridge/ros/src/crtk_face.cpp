@@ -3,6 +3,8 @@
 #include <crtk_msgs/QueryForwardKinematics.h>
 #include <crtk_msgs/QueryInverseKinematics.h>
 
+#include <stdexcept>
+
 #include "bridge/ros/low_latency.hpp"
 #include "bridge/ros/ros_conversions.hpp"
 
@@ -15,16 +17,40 @@ constexpr double kArrived = 1e-9;
 
 }  // namespace
 
-CrtkFace::CrtkFace(RavenPlatform& platform, ::ros::NodeHandle& node,
-                   const CrtkFaceOptions& options, CommandInbox& inbox)
+namespace {
+
+/// The options, or why their topics would be the robot's own (ROS 1 carries one type per topic,
+/// and a state command heard twice would be applied twice).
+const CrtkFaceOptions& checked(const CrtkFaceOptions& options) {
+  if (options.arm_names[0].empty() || options.arm_names[1].empty() ||
+      options.arm_names[0] == options.arm_names[1]) {
+    throw std::invalid_argument("the standard CRTK face needs two different, non-empty arm names");
+  }
+  if (!options.ros_namespace.empty()) return options;
+  for (const std::string& name : options.arm_names) {
+    for (Arm arm : raven::kArms) {
+      if (name == armNamespace(arm) || name == graspNamespace(arm)) {
+        throw std::invalid_argument("the standard CRTK face's arm '" + name +
+                                    "' would take the robot's own /" + name +
+                                    " topics: give the face a namespace (--crtk-namespace) or "
+                                    "other arm names");
+      }
+    }
+  }
+  return options;
+}
+
+}  // namespace
+
+CrtkFace::CrtkFace(RavenPlatform& platform, ::ros::NodeHandle& node, const CrtkFaceOptions& options,
+                   CommandInbox& inbox)
     : platform_(platform),
       node_(node),
-      options_(options),
+      options_(checked(options)),
       inbox_(inbox),
-      kinematics_{raven::ArmKinematics(options.profile.reportingArm(Arm::Left),
-                                       options.profile.limits),
-                  raven::ArmKinematics(options.profile.reportingArm(Arm::Right),
-                                       options.profile.limits)} {
+      kinematics_{
+          raven::ArmKinematics(options.profile.reportingArm(Arm::Left), options.profile.limits),
+          raven::ArmKinematics(options.profile.reportingArm(Arm::Right), options.profile.limits)} {
   for (Arm arm : raven::kArms) {
     advertise(arm);
     subscribeCommands(arm);
@@ -226,8 +252,8 @@ void CrtkFace::publishState(::ros::Time stamp) {
   const bool busy = platform_.operatingStatus().is_busy;
   for (Arm arm : raven::kArms) {
     auto& goal = moving_to_[slot(arm)];
-    if (goal && (!busy || (platform_.setpointJs(arm).position - *goal).cwiseAbs().maxCoeff() <
-                              kArrived)) {
+    if (goal &&
+        (!busy || (platform_.setpointJs(arm).position - *goal).cwiseAbs().maxCoeff() < kArrived)) {
       goal.reset();
     }
     publishArmState(arm, stamp);

@@ -84,9 +84,9 @@ Parsed<ArmJoints> armJointsFromCommand(const sensor_msgs::JointState& message) {
 Parsed<StateCommand> stateCommandFrom(const crtk_msgs::StringStamped& message) {
   if (auto command = parseStateCommand(message.string)) return Parsed<StateCommand>::ok(*command);
   constexpr std::size_t kLongestEcho = 40;
-  return Parsed<StateCommand>::fail(
-      "unknown state command '" + common::printable(message.string, kLongestEcho) +
-      "' (expected enable, disable, pause, resume, home or unhome)");
+  return Parsed<StateCommand>::fail("unknown state command '" +
+                                    common::printable(message.string, kLongestEcho) +
+                                    "' (expected enable, disable, pause, resume, home or unhome)");
 }
 
 Parsed<double> graspFromCommand(const sensor_msgs::JointState& message) {

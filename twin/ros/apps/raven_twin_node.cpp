@@ -98,8 +98,9 @@ int main(int argc, char** argv) {
                  stand_in ? "the PHYSICAL STAND-IN" : "the twin", bridge::ros1::masterUri(),
                  twin.profile, server.lock_step ? "lock-step simulated" : "wall",
                  server.arm_swap ? "on" : "off",
-                 no_crtk ? "off" : "under " + crtk.ros_namespace + "/{" + crtk.arm_names[0] + "," +
-                                       crtk.arm_names[1] + "}");
+                 no_crtk ? "off"
+                         : "under " + crtk.ros_namespace + "/{" + crtk.arm_names[0] + "," +
+                               crtk.arm_names[1] + "}");
     ros_server.spin(duration);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
