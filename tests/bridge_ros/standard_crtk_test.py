@@ -111,6 +111,7 @@ class CrtkArm:
         self.servo_jp = publisher("servo_jp", JointState)
         self.servo_cp = publisher("servo_cp", PoseStamped)
         self.move_jp = publisher("move_jp", JointState)
+        self.move_cp = publisher("move_cp", PoseStamped)
         self.jaw_move_jp = publisher("jaw/move_jp", JointState)
         self.ns = ns
 
@@ -250,6 +251,23 @@ class StandardCrtkFace(unittest.TestCase):
                     abs(now.y - before.y) < 1e-4)
 
         arm.wait(moved_2mm, "measured_cp 2 mm higher")
+
+        # move_cp 1 cm along x and y (crtk_python_client's example): busy, then idle with the
+        # setpoint on the goal, orientation kept.
+        goal = arm.fresh(arm.setpoint_cp)
+        goal.pose.position.x += 0.01
+        goal.pose.position.y += 0.01
+        sent = self.rospy.Time.now()
+        arm.move_cp.publish(goal)
+        arm.wait(lambda: any(m.is_busy and m.header.stamp > sent
+                             for m in arm.operating_state.messages), "busy after move_cp")
+        arm.wait(lambda: not arm.operating_state.last.is_busy, "idle after move_cp")
+        there = arm.fresh(arm.setpoint_cp).pose
+        for axis in "xyz":
+            self.assertAlmostEqual(getattr(there.position, axis),
+                                   getattr(goal.pose.position, axis), delta=1e-6)
+        q, g = there.orientation, goal.pose.orientation
+        self.assertAlmostEqual(abs(q.x * g.x + q.y * g.y + q.z * g.z + q.w * g.w), 1.0, delta=1e-9)
 
         # The jaw: move_jp opens it, then closes it; jaw/measured_js follows.
         for opening in (0.9, 0.2):
