@@ -17,7 +17,7 @@ ROOMS = [
     "common", "harness", "ambf_like", "ambf_like/model", "ambf_like/loading", "ambf_like/dynamics",
     "ambf_like/world", "ambf_like_cli", "raven_description", "bridge", "bridge/ros", "twin",
     "twin/ros", "recording", "controller", "analysis", "calibration", "viewer", "scenario",
-    "bench", "tests", "fuzz",
+    "python", "bench", "tests", "fuzz",
 ]
 # Include prefixes of rooms whose public headers sit under <room>/include/<prefix>.
 PREFIXES = {

@@ -8,6 +8,7 @@ packages=(
   libyaml-cpp-dev liburdfdom-dev liburdfdom-headers-dev
   libgtest-dev libgmock-dev libbenchmark-dev time
   libsdl2-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libnlopt-cxx-dev
+  pybind11-dev python3-dev
   libroscpp-dev libstd-msgs-dev libsensor-msgs-dev libgeometry-msgs-dev
   ros-std-msgs ros-sensor-msgs ros-geometry-msgs
   python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag

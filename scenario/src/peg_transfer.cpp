@@ -15,9 +15,8 @@
 
 namespace scenario {
 
-namespace {
-
-twin::TwinOptions twinOptions(const PegTransferOptions& options, const SceneVariation& variation) {
+twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
+                                  const SceneVariation& variation) {
   twin::TwinOptions twin;
   twin.launch_file = options.launch_file.empty()
                          ? raven::modelDirectory() / "peg_transfer" / "launch.yaml"
@@ -35,15 +34,12 @@ twin::TwinOptions twinOptions(const PegTransferOptions& options, const SceneVari
   return twin;
 }
 
-std::vector<PegJob> jobsOf(const PegLayout& layout, raven::Arm arm) {
-  std::vector<PegJob> jobs;
-  for (const PegJob& job : layout.jobs) {
-    if (job.arm == arm) jobs.push_back(job);
-  }
-  return jobs;
+std::array<ArmRoutine, 2> pegTransferOperators(const PegLayout& layout, double squeeze) {
+  const auto profile = raven::builtinProfile("physical");
+  return {
+      ArmRoutine(raven::Arm::Left, profile, layout, layout.jobsOf(raven::Arm::Left), squeeze),
+      ArmRoutine(raven::Arm::Right, profile, layout, layout.jobsOf(raven::Arm::Right), squeeze)};
 }
-
-}  // namespace
 
 PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   PegTransferResult result;
@@ -52,7 +48,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   result.assist = options.assist;
   result.stand_in = options.stand_in;
 
-  ScriptedSession session(twinOptions(options, result.variation));
+  ScriptedSession session(pegTransferTwin(options, result.variation));
   ambf_like::World& world = session.twin().world();
   const PegLayout layout;
   PegWatch watch(world, layout);  // rest volumes: before the first step
@@ -61,12 +57,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   controller::DualPlatformController& controller = session.controller();
   twin::TwinPlatform& twin = session.twin();
 
-  const auto profile = raven::builtinProfile("physical");
-  std::array<ArmRoutine, 2> routines{
-      ArmRoutine(raven::Arm::Left, profile, layout, jobsOf(layout, raven::Arm::Left),
-                 options.squeeze),
-      ArmRoutine(raven::Arm::Right, profile, layout, jobsOf(layout, raven::Arm::Right),
-                 options.squeeze)};
+  std::array<ArmRoutine, 2> routines = pegTransferOperators(layout, options.squeeze);
   std::optional<GraspAssist> assist;
   if (options.assist == AssistMode::Contact) {
     std::vector<std::string> pegs;

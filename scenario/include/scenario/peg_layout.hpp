@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <string>
+#include <vector>
 
 #include "raven/arm.hpp"
 #include "scenario/peg_state.hpp"
@@ -34,6 +35,15 @@ struct PegLayout {
       PegJob{"peg5", raven::Arm::Right, {-0.300, 0.058}, {-0.300, 0.100}},
       PegJob{"peg6", raven::Arm::Right, {-0.334, 0.058}, {-0.334, 0.100}},
   };
+
+  /// The jobs of one arm, in order.
+  std::vector<PegJob> jobsOf(raven::Arm arm) const {
+    std::vector<PegJob> out;
+    for (const PegJob& job : jobs) {
+      if (job.arm == arm) out.push_back(job);
+    }
+    return out;
+  }
 };
 
 }  // namespace scenario

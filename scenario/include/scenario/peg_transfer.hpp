@@ -4,6 +4,7 @@
 // a gamepad uses (DualPlatformController: velocity caps, wrist-locked IK), on the simulated
 // clock, optionally recording the paper's rs file.
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
@@ -12,6 +13,8 @@
 #include "scenario/arm_routine.hpp"
 #include "scenario/peg_transfer_result.hpp"
 #include "scenario/run_progress.hpp"
+#include "scenario/scene_variation.hpp"
+#include "twin/twin_platform.hpp"
 
 namespace scenario {
 
@@ -54,5 +57,12 @@ struct PegTransferOptions {
 
 /// Runs the scenario once. Throws common::LoadError if the scene's files are bad.
 PegTransferResult runPegTransfer(const PegTransferOptions& options);
+
+/// The twin of a run: its scene (the shipped one or `launch_file`) with `variation` applied,
+/// sleep, the assist's sensors and the stand-in as the options say.
+twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
+                                  const SceneVariation& variation);
+/// The scripted operators of both arms (left first), each with its arm's jobs.
+std::array<ArmRoutine, 2> pegTransferOperators(const PegLayout& layout, double squeeze);
 
 }  // namespace scenario

@@ -1,0 +1,21 @@
+"""raven_sim: the Raven-II twin in process, at C++ speed.
+
+    import raven_sim                                  # with build/python on PYTHONPATH
+    twin = raven_sim.Twin()                           # our Raven-II, simulated clock
+    twin.enable_and_home()
+    q = twin.setpoint_js(raven_sim.Arm.LEFT).position
+    q[0] += 0.02
+    twin.send(raven_sim.ServoJp(raven_sim.Arm.LEFT, q))
+    twin.advance(0.1)                                 # 100 robot cycles
+
+The same command objects and results as the C++ RavenPlatform; errors keep their messages
+(LoadError names file, line and key). World loads AMBF's files; read_ci / read_rs / RsWriter
+handle the paper's recordings; PegTransferEnv is the peg transfer as a learning environment.
+"""
+
+from ._raven_sim import (Arm, CommandResult, Controller, ControllerSession, Mode, GrasperForces, JointSample, LoadError, MoveJp,
+                         OperatingStatus, PegTransferCore, PegTransferStep, RavenState,
+                         RecordingError, RsRecording, RsWriter, ServoCp, ServoCr, ServoJawJp,
+                         ServoJawJr, ServoJp, ServoJr, StateCommand, Twin, World, ci_columns,
+                         read_ci, read_rs, write_ci)
+from .env import PegTransferEnv, VectorPegTransferEnv

@@ -1,0 +1,114 @@
+"""The peg transfer as a learning environment, in Gymnasium's API convention.
+
+One step is one manual-loop iteration of the controller a gamepad drives (at least 2 ms of robot
+time at the controller's 500 Hz): the action is either both arms' joint targets (14 values,
+left arm first, ArmJoints order: shoulder, elbow, insertion (m), roll, wrist, jaw1, jaw2),
+reached under the controller's velocity caps, or a pad reading (a ci row of 14 values). The
+observation (72 values) is, per arm, measured joints [0, 14), commanded targets [14, 28), tool
+pose x, y, z, qw, qx, qy, qz [28, 42), grasp force and torque [42, 54); then each ring's centre
+[54, 72). The reward is the change in the number of rings resting threaded on their target
+posts (+1 as one comes to rest there, -1 if one leaves); an episode terminates with all six
+placed and is truncated at the time limit. The main job's scripted operator is the expert:
+`expert_action()`. The same seed and actions give the same episode.
+"""
+
+from concurrent.futures import ThreadPoolExecutor
+
+import numpy as np
+
+from ._raven_sim import PegTransferCore
+
+try:  # Gymnasium when it is there; the same API without it
+    import gymnasium
+    from gymnasium.spaces import Box
+    _Env = gymnasium.Env
+except ImportError:
+    _Env = object
+
+    class Box:
+        """A box of real vectors (gymnasium.spaces.Box's fields, for describing and sampling)."""
+
+        def __init__(self, low, high, shape=None, dtype=np.float64):
+            self.dtype = np.dtype(dtype)
+            self.shape = tuple(shape) if shape is not None else np.shape(low)
+            self.low = np.broadcast_to(np.asarray(low, self.dtype), self.shape).copy()
+            self.high = np.broadcast_to(np.asarray(high, self.dtype), self.shape).copy()
+
+        def contains(self, x):
+            x = np.asarray(x, self.dtype)
+            return x.shape == self.shape and bool(np.all(x >= self.low) and np.all(x <= self.high))
+
+        def sample(self, rng=None):
+            rng = rng or np.random.default_rng()
+            return rng.uniform(self.low, self.high).astype(self.dtype)
+
+# A pad reading's ranges: sticks in [-1, 1], triggers on the paper's 0 .. 3.996, buttons 0 or 1.
+PAD_LOW = [-1, -1, 0, 0, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0]
+PAD_HIGH = [1, 1, 3.996, 1, 1, 1, 3.996, 1, 1, 1, 1, 1, 1, 1]
+
+
+class PegTransferEnv(_Env):
+    """The peg transfer on the in-process twin (see the module's documentation)."""
+
+    metadata = {"render_modes": []}
+
+    def __init__(self, action_type="joints", randomize=False, time_limit=240.0, launch_file=None):
+        if action_type not in ("joints", "pad"):
+            raise ValueError(f"action_type is '{action_type}': expected 'joints' or 'pad'")
+        self.core = PegTransferCore(randomize, time_limit, launch_file)
+        self.action_type = action_type
+        self.observation_space = Box(-np.inf, np.inf, (PegTransferCore.observation_size,))
+        if action_type == "joints":
+            self.action_space = Box(self.core.action_low, self.core.action_high)
+        else:
+            self.action_space = Box(PAD_LOW, PAD_HIGH)
+        self._next_seed = 0
+
+    def reset(self, *, seed=None, options=None):
+        """A new episode from `seed` (None: the previous seed + 1, from 0)."""
+        seed = self._next_seed if seed is None else int(seed)
+        self._next_seed = seed + 1
+        observation = self.core.reset(seed)
+        return observation, {"seed": seed, "placed": self.core.placed, "time": self.core.time}
+
+    def step(self, action):
+        action = np.asarray(action, dtype=np.float64)
+        if self.action_type == "joints":
+            result = self.core.step(action)
+        else:
+            result = self.core.step_pad(action)
+        info = {"placed": result.placed, "refused": result.refused, "time": self.core.time}
+        return result.observation, result.reward, result.terminated, result.truncated, info
+
+    def expert_action(self):
+        """The main job's scripted operator's next joint targets (call once per step)."""
+        return self.core.expert_action()
+
+
+class VectorPegTransferEnv:
+    """N peg-transfer environments stepped together, each on a worker thread (their steps
+    release the GIL). No automatic reset: reset the ones that ended."""
+
+    def __init__(self, n, **kwargs):
+        self.envs = [PegTransferEnv(**kwargs) for _ in range(n)]
+        self._pool = ThreadPoolExecutor(max_workers=n)
+
+    def __len__(self):
+        return len(self.envs)
+
+    def reset(self, seeds):
+        results = list(self._pool.map(lambda pair: pair[0].reset(seed=pair[1]),
+                                      zip(self.envs, seeds)))
+        return np.stack([r[0] for r in results]), [r[1] for r in results]
+
+    def step(self, actions):
+        results = list(self._pool.map(lambda pair: pair[0].step(pair[1]), zip(self.envs, actions)))
+        observations, rewards, terminated, truncated, infos = zip(*results)
+        return (np.stack(observations), np.array(rewards), np.array(terminated),
+                np.array(truncated), list(infos))
+
+    def expert_actions(self):
+        return np.stack([env.expert_action() for env in self.envs])
+
+    def close(self):
+        self._pool.shutdown()

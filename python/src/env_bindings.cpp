@@ -1,0 +1,69 @@
+// The peg transfer environment's core for Python (raven_sim.env wraps it in Gymnasium's API):
+// reset and step release the GIL, so environments on several threads run in parallel.
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "bindings.hpp"
+#include "scenario/peg_transfer_env.hpp"
+
+namespace py = pybind11;
+
+namespace raven_python {
+
+void bindPegTransferEnv(py::module_& m) {
+  using E = scenario::PegTransferEnv;
+  using Action = Eigen::Matrix<double, E::kActionSize, 1>;
+  py::class_<scenario::PegTransferStep>(m, "PegTransferStep")
+      .def_readonly("observation", &scenario::PegTransferStep::observation)
+      .def_readonly("reward", &scenario::PegTransferStep::reward)
+      .def_readonly("terminated", &scenario::PegTransferStep::terminated)
+      .def_readonly("truncated", &scenario::PegTransferStep::truncated)
+      .def_readonly("placed", &scenario::PegTransferStep::placed)
+      .def_readonly("refused", &scenario::PegTransferStep::refused);
+
+  py::class_<E>(m, "PegTransferCore", "the peg transfer, one manual-loop iteration per step")
+      .def(py::init([](bool randomize, double time_limit,
+                       std::optional<std::filesystem::path> launch_file) {
+             scenario::PegTransferEnvOptions options;
+             options.randomize = randomize;
+             options.time_limit = time_limit;
+             if (launch_file) options.launch_file = *launch_file;
+             return std::make_unique<E>(options);
+           }),
+           py::arg("randomize") = false, py::arg("time_limit") = 240.0,
+           py::arg("launch_file") = py::none())
+      .def_readonly_static("observation_size", &E::kObservationSize)
+      .def_readonly_static("action_size", &E::kActionSize)
+      .def(
+          "reset",
+          [](E& e, std::uint64_t seed) {
+            py::gil_scoped_release release;
+            return e.reset(seed);
+          },
+          py::arg("seed"))
+      .def(
+          "step",
+          [](E& e, const Action& targets) {
+            py::gil_scoped_release release;
+            return e.step(targets);
+          },
+          py::arg("targets"), "joint targets of both arms (14), reached under the caps")
+      .def(
+          "step_pad",
+          [](E& e, const std::array<double, recording::GamepadState::kCiColumns>& row) {
+            const auto pad = recording::GamepadState::fromCiRow(row);
+            py::gil_scoped_release release;
+            return e.step(pad);
+          },
+          py::arg("ci_row"), "one pad reading as a ci row (14 values)")
+      .def("expert_action", &E::expertAction, "the main job's scripted operator's next targets")
+      .def_property_readonly("action_low", &E::actionLow)
+      .def_property_readonly("action_high", &E::actionHigh)
+      .def_property_readonly("time", &E::time)
+      .def_property_readonly("placed", &E::placed);
+}
+
+}  // namespace raven_python

@@ -1,0 +1,93 @@
+#pragma once
+// The peg transfer as a learning environment (Gymnasium's reset/step convention): one step is
+// one manual-loop iteration of the controller a gamepad uses, the action its target (the arms'
+// joints, reached under the velocity caps) or a pad reading; the observation is the robot, the
+// rings and the grasp forces; the scripted operator of the main job is there as the expert.
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "scenario/arm_routine.hpp"
+#include "scenario/peg_layout.hpp"
+#include "scenario/scripted_session.hpp"
+
+namespace scenario {
+
+/// How the environment's episodes run.
+struct PegTransferEnvOptions {
+  /// Draw each episode's scene from its reset seed (scene_variation.hpp's ranges); else the
+  /// nominal scene every time.
+  bool randomize = false;
+  /// Simulated seconds after which an episode is truncated.
+  double time_limit = 240.0;
+  /// The expert's squeeze (ArmRoutine).
+  double squeeze = ArmRoutine::kDefaultSqueeze;
+  /// The scene; empty: the shipped peg_transfer.
+  std::filesystem::path launch_file;
+};
+
+/// What one step gives back.
+struct PegTransferStep {
+  Eigen::VectorXd observation;
+  /// Rings placed now minus rings placed before the step: +1 as a ring comes to rest threaded
+  /// on its target post, -1 if one leaves it.
+  double reward = 0.0;
+  bool terminated = false;  ///< all six rest on their target posts
+  bool truncated = false;   ///< the time limit passed first
+  int placed = 0;           ///< rings resting on their target posts
+  std::size_t refused = 0;  ///< commands the twin refused during the step
+};
+
+/// One episode at a time of the nominal or a randomised peg transfer on the in-process twin,
+/// on the simulated clock (deterministic: the same seed and actions give the same episode).
+class PegTransferEnv {
+ public:
+  /// Per arm (left first): measured joints (7), commanded targets (7), tool pose (x, y, z and
+  /// the quaternion w, x, y, z; measured_cp), grasp force and torque (6, measured_cf); then per
+  /// ring peg1..peg6 its centre (3). Layout: [0, 14) measured joints, [14, 28) targets,
+  /// [28, 42) tool poses, [42, 54) grasp wrenches, [54, 72) ring centres.
+  static constexpr int kObservationSize = 72;
+  /// Both arms' joint targets, left arm first, ArmJoints order.
+  static constexpr int kActionSize = 14;
+
+  explicit PegTransferEnv(PegTransferEnvOptions options = {});
+  ~PegTransferEnv();
+
+  /// Builds the episode's twin (from `seed` when randomising), enables and homes it, and returns
+  /// the first observation. Throws common::LoadError for bad scene files.
+  Eigen::VectorXd reset(std::uint64_t seed);
+  /// One manual-loop iteration towards `targets` (clamped to the joint limits, reached under the
+  /// caps). Needs reset().
+  PegTransferStep step(const Eigen::Matrix<double, kActionSize, 1>& targets);
+  /// One manual-loop iteration from a pad reading (the paper's mapping, as a live pad).
+  PegTransferStep step(const recording::GamepadState& pad);
+  /// What the main job's scripted operator would command next (call once per step: it keeps
+  /// its own progress); the targets held once it is done.
+  Eigen::Matrix<double, kActionSize, 1> expertAction();
+
+  /// The joint limits of an action.
+  Eigen::Matrix<double, kActionSize, 1> actionLow() const;
+  Eigen::Matrix<double, kActionSize, 1> actionHigh() const;
+  double time() const;
+  int placed() const { return placed_; }
+  twin::TwinPlatform& twin();
+
+ private:
+  PegTransferStep finishStep(std::size_t refused);
+  Eigen::VectorXd observe() const;
+  int countPlaced() const;
+  ScriptedSession& session();
+
+  PegTransferEnvOptions options_;
+  PegLayout layout_;
+  std::unique_ptr<ScriptedSession> session_;
+  std::optional<std::array<ArmRoutine, 2>> expert_;
+  std::array<const ambf_like::SoftBody*, 6> rings_{};
+  int placed_ = 0;
+};
+
+}  // namespace scenario

@@ -1,0 +1,138 @@
+#include "scenario/peg_transfer_env.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "scenario/peg_transfer.hpp"
+
+namespace scenario {
+
+namespace {
+
+using Action = Eigen::Matrix<double, PegTransferEnv::kActionSize, 1>;
+
+controller::ArmPair armPair(const Action& action) {
+  for (int i = 0; i < PegTransferEnv::kActionSize; ++i) {
+    if (!std::isfinite(action(i))) {
+      throw std::invalid_argument("action[" + std::to_string(i) + "] is " +
+                                  std::to_string(action(i)) + ": targets must be finite");
+    }
+  }
+  return {action.head<raven::kJointCount>(), action.tail<raven::kJointCount>()};
+}
+
+Action flat(const controller::ArmPair& pair) {
+  Action out;
+  out << pair[0], pair[1];
+  return out;
+}
+
+}  // namespace
+
+PegTransferEnv::PegTransferEnv(PegTransferEnvOptions options) : options_(std::move(options)) {}
+
+PegTransferEnv::~PegTransferEnv() = default;
+
+ScriptedSession& PegTransferEnv::session() {
+  if (!session_) throw std::logic_error("the environment needs reset() before step()");
+  return *session_;
+}
+
+twin::TwinPlatform& PegTransferEnv::twin() {
+  return session().twin();
+}
+
+Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
+  PegTransferOptions run;
+  run.seed = seed;
+  run.launch_file = options_.launch_file;
+  SceneVariation variation = options_.randomize ? SceneVariation::draw(seed) : SceneVariation{};
+  variation.seed = seed;
+  expert_.reset();
+  session_.reset();  // the old twin goes before the new one is built
+  session_ = std::make_unique<ScriptedSession>(pegTransferTwin(run, variation));
+  session_->makeReady(options_.time_limit);
+  expert_.emplace(pegTransferOperators(layout_, options_.squeeze));
+  const ambf_like::World& world = session_->twin().world();
+  for (std::size_t i = 0; i < rings_.size(); ++i) {
+    rings_[i] = &world.softBody(layout_.jobs[i].peg);
+  }
+  placed_ = countPlaced();
+  return observe();
+}
+
+PegTransferStep PegTransferEnv::step(const Action& targets) {
+  const controller::ArmPair next = armPair(targets);
+  return finishStep(session().controller().moveTo(next).refused);
+}
+
+PegTransferStep PegTransferEnv::step(const recording::GamepadState& pad) {
+  return finishStep(session().controller().manual(pad).refused);
+}
+
+Action PegTransferEnv::expertAction() {
+  controller::DualPlatformController& controller = session().controller();
+  const controller::ArmPair& current = controller.commanded();
+  const ambf_like::World& world = session().twin().world();
+  return flat({(*expert_)[0].next(current[0], world), (*expert_)[1].next(current[1], world)});
+}
+
+Action PegTransferEnv::actionLow() const {
+  const auto& limits = raven::builtinProfile("physical").limits;
+  return flat({limits.low, limits.low});
+}
+
+Action PegTransferEnv::actionHigh() const {
+  const auto& limits = raven::builtinProfile("physical").limits;
+  return flat({limits.high, limits.high});
+}
+
+double PegTransferEnv::time() const {
+  return session_ ? session_->twin().now() : 0.0;
+}
+
+PegTransferStep PegTransferEnv::finishStep(std::size_t refused) {
+  PegTransferStep out;
+  const int before = placed_;
+  placed_ = countPlaced();
+  out.observation = observe();
+  out.reward = placed_ - before;
+  out.placed = placed_;
+  out.terminated = placed_ == static_cast<int>(rings_.size());
+  out.truncated = !out.terminated && time() >= options_.time_limit;
+  out.refused = refused;
+  return out;
+}
+
+int PegTransferEnv::countPlaced() const {
+  int placed = 0;
+  for (std::size_t i = 0; i < rings_.size(); ++i) {
+    if (restsOn(*rings_[i], layout_.jobs[i].to, layout_.geometry)) ++placed;
+  }
+  return placed;
+}
+
+Eigen::VectorXd PegTransferEnv::observe() const {
+  Eigen::VectorXd o(kObservationSize);
+  const twin::TwinPlatform& twin = session_->twin();
+  const controller::ArmPair& targets = session_->controller().commanded();
+  for (raven::Arm arm : raven::kArms) {
+    const int a = raven::index(arm);
+    o.segment<7>(7 * a) = twin.measuredJs(arm).position;
+    o.segment<7>(14 + 7 * a) = targets[static_cast<std::size_t>(a)];
+    const Eigen::Isometry3d tool = twin.measuredCp(arm).pose;
+    const Eigen::Quaterniond q(tool.linear());
+    o.segment<3>(28 + 7 * a) = tool.translation();
+    o.segment<4>(31 + 7 * a) << q.w(), q.x(), q.y(), q.z();
+    const auto forces = twin.measuredCf(arm);
+    o.segment<3>(42 + 6 * a) = forces ? forces->force : Eigen::Vector3d::Zero();
+    o.segment<3>(45 + 6 * a) = forces ? forces->torque : Eigen::Vector3d::Zero();
+  }
+  for (std::size_t i = 0; i < rings_.size(); ++i) {
+    o.segment<3>(54 + 3 * static_cast<int>(i)) = rings_[i]->centerOfMass();
+  }
+  return o;
+}
+
+}  // namespace scenario
