@@ -57,15 +57,19 @@ class PegTransferEnv(_Env):
             raise ValueError(f"action_type is '{action_type}': expected 'joints' or 'pad'")
         self.core = PegTransferCore(randomize, time_limit, launch_file)
         self.action_type = action_type
-        self.observation_space = Box(-np.inf, np.inf, (PegTransferCore.observation_size,))
+        # float64 throughout (Gymnasium's Box defaults to float32, which the twin's values are not).
+        self.observation_space = Box(-np.inf, np.inf, (PegTransferCore.observation_size,),
+                                     dtype=np.float64)
         if action_type == "joints":
-            self.action_space = Box(self.core.action_low, self.core.action_high)
+            self.action_space = Box(self.core.action_low, self.core.action_high, dtype=np.float64)
         else:
-            self.action_space = Box(PAD_LOW, PAD_HIGH)
+            self.action_space = Box(np.array(PAD_LOW, np.float64), np.array(PAD_HIGH, np.float64),
+                                    dtype=np.float64)
         self._next_seed = 0
 
     def reset(self, *, seed=None, options=None):
-        """A new episode from `seed` (None: the previous seed + 1, from 0)."""
+        """A new episode from `seed` (None: the previous seed + 1, from 0). `options` is
+        accepted for Gymnasium's signature and not used: the scene is set at construction."""
         seed = self._next_seed if seed is None else int(seed)
         self._next_seed = seed + 1
         observation = self.core.reset(seed)
