@@ -23,17 +23,18 @@ struct LoadedWorld {
   ambf_like::MeshLibrary meshes;
   std::unique_ptr<ambf_like::World> world;
 
-  explicit LoadedWorld(ambf_like::LoadedScene loaded, ambf_like::WorldOptions options = {})
-      : scene(std::move(loaded)),
-        world(std::make_unique<ambf_like::World>(scene.spec, meshes, options)) {}
+  explicit LoadedWorld(ambf_like::LoadedScene loaded)
+      : scene(std::move(loaded)), world(std::make_unique<ambf_like::World>(scene.spec, meshes)) {}
 };
 
+/// The nodes straight into one numpy array (Bullet's nodes are not contiguous positions).
 py::array_t<double> nodes(const ambf_like::SoftBody& body) {
-  const auto positions = body.nodePositions();
-  py::array_t<double> out({static_cast<py::ssize_t>(positions.size()), py::ssize_t{3}});
+  const std::size_t count = body.nodeCount();
+  py::array_t<double> out({static_cast<py::ssize_t>(count), py::ssize_t{3}});
   auto view = out.mutable_unchecked<2>();
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    for (int k = 0; k < 3; ++k) view(static_cast<py::ssize_t>(i), k) = positions[i](k);
+  for (std::size_t i = 0; i < count; ++i) {
+    const ambf_like::Vec3 position = body.nodePosition(i);
+    for (int k = 0; k < 3; ++k) view(static_cast<py::ssize_t>(i), k) = position(k);
   }
   return out;
 }

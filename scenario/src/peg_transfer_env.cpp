@@ -30,7 +30,8 @@ Action flat(const controller::ArmPair& pair) {
 
 }  // namespace
 
-PegTransferEnv::PegTransferEnv(PegTransferEnvOptions options) : options_(std::move(options)) {}
+PegTransferEnv::PegTransferEnv(PegTransferEnvOptions options)
+    : options_(std::move(options)), limits_(raven::builtinProfile("physical").limits) {}
 
 PegTransferEnv::~PegTransferEnv() = default;
 
@@ -79,13 +80,11 @@ Action PegTransferEnv::expertAction() {
 }
 
 Action PegTransferEnv::actionLow() const {
-  const auto& limits = raven::builtinProfile("physical").limits;
-  return flat({limits.low, limits.low});
+  return flat({limits_.low, limits_.low});
 }
 
 Action PegTransferEnv::actionHigh() const {
-  const auto& limits = raven::builtinProfile("physical").limits;
-  return flat({limits.high, limits.high});
+  return flat({limits_.high, limits_.high});
 }
 
 double PegTransferEnv::time() const {

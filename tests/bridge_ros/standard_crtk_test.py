@@ -96,23 +96,18 @@ class CrtkArm:
 
         self.rospy = rospy
         self.changed = threading.Condition()
-        topic = lambda name, kind: Latest(rospy, f"{ns}/{name}", kind, self.changed)
-        self.operating_state = topic("operating_state", OperatingState)
-        self.measured_js = topic("measured_js", JointState)
-        self.setpoint_js = topic("setpoint_js", JointState)
-        self.measured_cp = topic("measured_cp", PoseStamped)
-        self.setpoint_cp = topic("setpoint_cp", PoseStamped)
-        self.measured_cv = topic("measured_cv", TwistStamped)
-        self.measured_cf = topic("measured_cf", WrenchStamped)
-        self.jaw_measured_js = topic("jaw/measured_js", JointState)
-        publisher = lambda name, kind: rospy.Publisher(f"{ns}/{name}", kind, queue_size=10,
-                                                       latch=(name == "state_command"))
-        self.state_command = publisher("state_command", StringStamped)
-        self.servo_jp = publisher("servo_jp", JointState)
-        self.servo_cp = publisher("servo_cp", PoseStamped)
-        self.move_jp = publisher("move_jp", JointState)
-        self.move_cp = publisher("move_cp", PoseStamped)
-        self.jaw_move_jp = publisher("jaw/move_jp", JointState)
+        # Attributes by topic name ("jaw/measured_js" as jaw_measured_js).
+        for name, kind in (("operating_state", OperatingState), ("measured_js", JointState),
+                           ("setpoint_js", JointState), ("measured_cp", PoseStamped),
+                           ("setpoint_cp", PoseStamped), ("measured_cv", TwistStamped),
+                           ("measured_cf", WrenchStamped), ("jaw/measured_js", JointState)):
+            setattr(self, name.replace("/", "_"), Latest(rospy, f"{ns}/{name}", kind, self.changed))
+        for name, kind in (("state_command", StringStamped), ("servo_jp", JointState),
+                           ("servo_cp", PoseStamped), ("move_jp", JointState),
+                           ("move_cp", PoseStamped), ("jaw/move_jp", JointState)):
+            setattr(self, name.replace("/", "_"),
+                    rospy.Publisher(f"{ns}/{name}", kind, queue_size=10,
+                                    latch=(name == "state_command")))
         self.ns = ns
 
     def wait(self, condition, what, timeout=20.0):

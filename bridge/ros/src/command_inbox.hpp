@@ -20,8 +20,10 @@ class CommandInbox {
   /// A message arrived on topic `id`: `apply` runs now (wall clock) or when a lock-step step
   /// names it, in the step's order.
   virtual void receive(std::uint8_t id, std::function<void()> apply) = 0;
-  /// Logs a refused command of topic `id` and publishes why.
+  /// A message of topic `id` that could not be read: logs and publishes why.
   virtual void refuse(std::uint8_t id, const std::string& why) = 0;
+  /// A command of topic `id` refused by what took it (which logged it): publishes why.
+  virtual void reportRefusal(std::uint8_t id, const std::string& why) = 0;
   /// The stamp of what is published now (simulated time in lock-step).
   virtual ::ros::Time stamp() const = 0;
 };

@@ -36,15 +36,6 @@ constexpr std::array<std::string_view, kCrtkCommandCount> kCrtkNames{
 
 }  // namespace
 
-const std::array<CrtkCommand, kCrtkCommandCount>& allCrtkCommands() {
-  static const auto all = [] {
-    std::array<CrtkCommand, kCrtkCommandCount> out{};
-    for (std::size_t i = 0; i < kCrtkCommandCount; ++i) out[i] = static_cast<CrtkCommand>(i);
-    return out;
-  }();
-  return all;
-}
-
 std::string_view relativeName(CrtkCommand command) {
   return kCrtkNames[static_cast<std::size_t>(command)];
 }
@@ -65,11 +56,6 @@ std::string_view topicName(CommandTopic topic) {
 
 CommandMessage messageType(CommandTopic topic) {
   return kTopics[static_cast<std::size_t>(topic)].message;
-}
-
-std::optional<CommandTopic> commandTopicFromId(std::uint8_t id) {
-  if (id >= kCommandTopicCount) return std::nullopt;
-  return kTopics[id].topic;
 }
 
 const std::array<CommandTopic, kCommandTopicCount>& allCommandTopics() {

@@ -15,10 +15,6 @@ namespace {
 /// A move has arrived when its setpoint is the goal (a planned move ends exactly on it).
 constexpr double kArrived = 1e-9;
 
-}  // namespace
-
-namespace {
-
 /// The options, or why their topics would be the robot's own (ROS 1 carries one type per topic,
 /// and a state command heard twice would be applied twice).
 const CrtkFaceOptions& checked(const CrtkFaceOptions& options) {
@@ -98,7 +94,7 @@ void CrtkFace::subscribe(Arm arm, CrtkCommand command,
           if (!command.error.empty()) {
             inbox_.refuse(id, command.error);
           } else if (const CommandResult result = command.action(); !result) {
-            inbox_.refuse(id, result.note);
+            inbox_.reportRefusal(id, result.note);  // what refused it logged it
           }
           publishOperatingStates(inbox_.stamp());  // a move's busy flag rises now
         });
@@ -109,68 +105,53 @@ void CrtkFace::subscribe(Arm arm, CrtkCommand command,
 void CrtkFace::subscribeCommands(Arm arm) {
   using sensor_msgs::JointState;
   using Pose = geometry_msgs::PoseStamped;
-  // A message read into a platform command: `make` turns the parsed value into the command.
-  auto platformCommand = [this, arm](const auto& parsed, auto make) {
-    if (!parsed.value) return ReadCommand{{}, parsed.error};
-    return ReadCommand{[this, arm, command = PlatformCommand(make(*parsed.value))] {
-                         return sendMotion(command, arm);
-                       },
-                       {}};
-  };
-  subscribe<crtk_msgs::StringStamped>(
-      arm, CrtkCommand::StateCommand, [this](const crtk_msgs::StringStamped& m) {
-        const auto parsed = stateCommandFrom(m);
-        if (!parsed.value) return ReadCommand{{}, parsed.error};
-        return ReadCommand{[this, c = *parsed.value] { return platform_.send(c); }, {}};
-      });
-  subscribe<JointState>(arm, CrtkCommand::ServoJp, [platformCommand, arm](const JointState& m) {
-    return platformCommand(armJointsFromCommand(m), [arm](auto q) { return ServoJp{arm, q}; });
+  using Command = CrtkCommand;
+  subscribe<crtk_msgs::StringStamped>(arm, Command::StateCommand, [this](const auto& m) {
+    return later(stateCommandFrom(m), [this](StateCommand c) { return platform_.send(c); });
   });
-  subscribe<JointState>(arm, CrtkCommand::ServoJr, [platformCommand, arm](const JointState& m) {
-    return platformCommand(armJointsFromCommand(m), [arm](auto q) { return ServoJr{arm, q}; });
+  subscribe<JointState>(arm, Command::ServoJp, [this, arm](const JointState& m) {
+    return later(armJointsFromCommand(m), [this, arm](const ArmJoints& q) {
+      return sendMotion(ServoJp{arm, q}, arm);
+    });
   });
-  subscribe<Pose>(arm, CrtkCommand::ServoCp, [platformCommand, arm](const Pose& m) {
-    return platformCommand(poseFromPose(m.pose), [arm](auto p) { return ServoCp{arm, p}; });
+  subscribe<JointState>(arm, Command::ServoJr, [this, arm](const JointState& m) {
+    return later(armJointsFromCommand(m), [this, arm](const ArmJoints& q) {
+      return sendMotion(ServoJr{arm, q}, arm);
+    });
   });
-  subscribe<Pose>(arm, CrtkCommand::ServoCr, [platformCommand, arm](const Pose& m) {
-    return platformCommand(poseFromPose(m.pose), [arm](auto p) { return ServoCr{arm, p}; });
+  subscribe<Pose>(arm, Command::ServoCp, [this, arm](const Pose& m) {
+    return later(poseFromPose(m.pose), [this, arm](const Eigen::Isometry3d& p) {
+      return sendMotion(ServoCp{arm, p}, arm);
+    });
   });
-  subscribe<JointState>(arm, CrtkCommand::JawServoJp, [platformCommand, arm](const JointState& m) {
-    return platformCommand(graspFromCommand(m), [arm](double o) { return ServoJawJp{arm, o}; });
+  subscribe<Pose>(arm, Command::ServoCr, [this, arm](const Pose& m) {
+    return later(poseFromPose(m.pose), [this, arm](const Eigen::Isometry3d& p) {
+      return sendMotion(ServoCr{arm, p}, arm);
+    });
   });
-  subscribe<JointState>(arm, CrtkCommand::JawServoJr, [platformCommand, arm](const JointState& m) {
-    return platformCommand(graspFromCommand(m), [arm](double o) { return ServoJawJr{arm, o}; });
+  subscribe<JointState>(arm, Command::JawServoJp, [this, arm](const JointState& m) {
+    return later(graspFromCommand(m), [this, arm](double o) {
+      return sendMotion(ServoJawJp{arm, o}, arm);
+    });
+  });
+  subscribe<JointState>(arm, Command::JawServoJr, [this, arm](const JointState& m) {
+    return later(graspFromCommand(m), [this, arm](double o) {
+      return sendMotion(ServoJawJr{arm, o}, arm);
+    });
   });
   // Moves are resolved when they run: move_cp and the jaw's move_jp start from the setpoint then.
-  subscribe<JointState>(arm, CrtkCommand::MoveJp, [this, arm](const JointState& m) {
-    const auto goal = armJointsFromCommand(m);
-    if (!goal.value) return ReadCommand{{}, goal.error};
-    return ReadCommand{[this, arm, q = *goal.value] { return startMove(arm, q); }, {}};
+  subscribe<JointState>(arm, Command::MoveJp, [this, arm](const JointState& m) {
+    return later(armJointsFromCommand(m),
+                 [this, arm](const ArmJoints& q) { return startMove(arm, q); });
   });
-  subscribe<Pose>(arm, CrtkCommand::MoveCp, [this, arm](const Pose& m) {
-    const auto goal = poseFromPose(m.pose);
-    if (!goal.value) return ReadCommand{{}, goal.error};
-    return ReadCommand{[this, arm, pose = *goal.value] {
-                         const ArmJoints from = platform_.setpointJs(arm).position;
-                         const double opening = from(raven::kJaw1) + from(raven::kJaw2);
-                         const auto solution = kinematics_[slot(arm)].inverse(pose, opening, from);
-                         if (!solution.ok) {
-                           return CommandResult::refused(
-                               "no inverse-kinematics solution near the current joints; nothing "
-                               "moved");
-                         }
-                         return startMove(arm, solution.joints);
-                       },
-                       {}};
+  subscribe<Pose>(arm, Command::MoveCp, [this, arm](const Pose& m) {
+    return later(poseFromPose(m.pose),
+                 [this, arm](const Eigen::Isometry3d& pose) { return moveToPose(arm, pose); });
   });
-  subscribe<JointState>(arm, CrtkCommand::JawMoveJp, [this, arm](const JointState& m) {
-    const auto opening = graspFromCommand(m);
-    if (!opening.value) return ReadCommand{{}, opening.error};
-    return ReadCommand{[this, arm, o = *opening.value] {
-                         return startMove(
-                             arm, raven::withJawOpening(platform_.setpointJs(arm).position, o));
-                       },
-                       {}};
+  subscribe<JointState>(arm, Command::JawMoveJp, [this, arm](const JointState& m) {
+    return later(graspFromCommand(m), [this, arm](double opening) {
+      return startMove(arm, raven::withJawOpening(platform_.setpointJs(arm).position, opening));
+    });
   });
 }
 
@@ -187,7 +168,7 @@ void CrtkFace::advertiseQueries(Arm arm) {
         return true;
       };
   const boost::function<bool(Ik::Request&, Ik::Response&)> inverse =
-      [this, arm, &kinematics](Ik::Request& request, Ik::Response& response) {
+      [this, arm](Ik::Request& request, Ik::Response& response) {
         const auto pose = poseFromPose(request.cp);
         // The reference joints choose among the solutions; none given: the arm's setpoint.
         const auto near = request.jp.empty()
@@ -196,9 +177,7 @@ void CrtkFace::advertiseQueries(Arm arm) {
         response.result = false;
         response.message = !pose.value ? "cp: " + pose.error : near.error;
         if (!pose.value || !near.value) return true;
-        const ArmJoints& from = *near.value;
-        const auto solution =
-            kinematics.inverse(*pose.value, from(raven::kJaw1) + from(raven::kJaw2), from);
+        const auto solution = inverseNear(arm, *pose.value, *near.value);
         response.result = solution.ok;
         response.message = solution.ok ? (solution.clamp.any() ? "clamped to the joint limits" : "")
                                        : "no inverse-kinematics solution near jp";
@@ -224,10 +203,25 @@ CommandResult CrtkFace::sendMotion(const PlatformCommand& command, Arm arm) {
 CommandResult CrtkFace::startMove(Arm arm, const ArmJoints& goal) {
   CommandResult result = platform_.send(MoveJp{arm, goal});
   if (result) {
-    const raven::JointLimits& limits = options_.profile.limits;
-    moving_to_[slot(arm)] = goal.cwiseMax(limits.low).cwiseMin(limits.high);
+    ArmJoints end = goal;  // the move ends on the goal saturated to the limits, as the robot's
+    kinematics_[slot(arm)].clamp(end);
+    moving_to_[slot(arm)] = end;
   }
   return result;
+}
+
+raven::IkSolution CrtkFace::inverseNear(Arm arm, const Eigen::Isometry3d& pose,
+                                        const ArmJoints& near) const {
+  return kinematics_[slot(arm)].inverse(pose, near(raven::kJaw1) + near(raven::kJaw2), near);
+}
+
+CommandResult CrtkFace::moveToPose(Arm arm, const Eigen::Isometry3d& pose) {
+  const auto solution = inverseNear(arm, pose, platform_.setpointJs(arm).position);
+  if (solution.ok) return startMove(arm, solution.joints);
+  const std::string why = "no inverse-kinematics solution near the current joints; nothing moved";
+  log_.warn(why, "refused move_cp " + std::string(raven::armName(arm)) + ": " + why,
+            platform_.now());
+  return CommandResult::refused(why);
 }
 
 OperatingStatus CrtkFace::armStatus(Arm arm) const {
@@ -262,24 +256,27 @@ void CrtkFace::publishState(::ros::Time stamp) {
 }
 
 void CrtkFace::publishArmState(Arm arm, ::ros::Time stamp) {
+  // Every cycle: build only what someone subscribes to.
   ArmPublishers& p = publishers_[slot(arm)];
   const std::string_view colour = armColour(arm);
+  const std::string base = std::string(colour) + "_base";
   auto wanted = [](const ::ros::Publisher& publisher) {
     return publisher && publisher.getNumSubscribers() > 0;
   };
   if (wanted(p.measured_js) || wanted(p.jaw_measured_js) || wanted(p.measured_cv)) {
     const JointSample measured = platform_.measuredJs(arm);
-    p.measured_js.publish(toJointState(measured, colour, stamp));
-    p.jaw_measured_js.publish(toJawState(measured, stamp));
-    const auto twist = kinematics_[slot(arm)].toolTwist(measured.position, measured.velocity);
-    p.measured_cv.publish(toTwistStamped(twist, stamp, std::string(colour) + "_base"));
+    if (wanted(p.measured_js)) p.measured_js.publish(toJointState(measured, colour, stamp));
+    if (wanted(p.jaw_measured_js)) p.jaw_measured_js.publish(toJawState(measured, stamp));
+    if (wanted(p.measured_cv)) {
+      const auto twist = kinematics_[slot(arm)].toolTwist(measured.position, measured.velocity);
+      p.measured_cv.publish(toTwistStamped(twist, stamp, base));
+    }
   }
   if (wanted(p.setpoint_js) || wanted(p.jaw_setpoint_js)) {
     const JointSample setpoint = platform_.setpointJs(arm);
-    p.setpoint_js.publish(toJointState(setpoint, colour, stamp));
-    p.jaw_setpoint_js.publish(toJawState(setpoint, stamp));
+    if (wanted(p.setpoint_js)) p.setpoint_js.publish(toJointState(setpoint, colour, stamp));
+    if (wanted(p.jaw_setpoint_js)) p.jaw_setpoint_js.publish(toJawState(setpoint, stamp));
   }
-  const std::string base = std::string(colour) + "_base";
   if (wanted(p.measured_cp)) {
     p.measured_cp.publish(toPoseStamped(platform_.measuredCp(arm).pose, stamp, base));
   }

@@ -14,6 +14,8 @@
 #include "bridge/raven_platform.hpp"
 #include "bridge/ros/command_topics.hpp"
 #include "bridge/ros/raven_ros_server.hpp"
+#include "bridge/ros/ros_conversions.hpp"
+#include "bridge/throttled_log.hpp"
 #include "command_inbox.hpp"
 #include "raven/arm_kinematics.hpp"
 
@@ -36,6 +38,13 @@ class CrtkFace {
     std::string error;
   };
 
+  /// `parsed`'s error, or `run(value)` for when the inbox says.
+  template <typename Value, typename Run>
+  static ReadCommand later(const Parsed<Value>& parsed, Run run) {
+    if (!parsed.value) return {{}, parsed.error};
+    return {[run, value = *parsed.value] { return run(value); }, {}};
+  }
+
   /// One arm's state publishers.
   struct ArmPublishers {
     ::ros::Publisher operating_state, measured_js, setpoint_js, measured_cp, setpoint_cp,
@@ -53,6 +62,13 @@ class CrtkFace {
   CommandResult sendMotion(const PlatformCommand& command, Arm arm);
   /// Sends a move to `goal` and waits on it: the arm is busy until its setpoint arrives.
   CommandResult startMove(Arm arm, const ArmJoints& goal);
+  /// move_cp: the pose's joints nearest the setpoint, then a move there; refused (and logged)
+  /// without a solution.
+  CommandResult moveToPose(Arm arm, const Eigen::Isometry3d& pose);
+  /// The arm's inverse kinematics, keeping the opening of `near` and choosing the solution
+  /// nearest it.
+  raven::IkSolution inverseNear(Arm arm, const Eigen::Isometry3d& pose,
+                                const ArmJoints& near) const;
   /// The robot's operating state as one arm sees it: busy while homing or while its own move runs.
   OperatingStatus armStatus(Arm arm) const;
   /// Publishes operating_state of each arm whose status differs from the last one published.
@@ -72,6 +88,7 @@ class CrtkFace {
   /// Where each arm's move (move_jp, move_cp, jaw/move_jp) ends, while it runs.
   std::array<std::optional<ArmJoints>, 2> moving_to_;
   std::array<std::optional<OperatingStatus>, 2> published_status_;
+  ThrottledLog log_;
 };
 
 }  // namespace bridge::ros1

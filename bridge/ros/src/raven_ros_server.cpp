@@ -93,6 +93,7 @@ class RavenRosServer::Impl final : public CommandInbox {
   void expect(std::uint8_t id, std::string topic) override;
   void receive(std::uint8_t id, std::function<void()> apply) override;
   void refuse(std::uint8_t id, const std::string& why) override;
+  void reportRefusal(std::uint8_t id, const std::string& why) override;
   ::ros::Time stamp() const override;
 
  private:
@@ -255,13 +256,17 @@ void RavenRosServer::Impl::apply(CommandTopic topic, const IncomingCommand& inco
   }
   for (const auto& command : incoming.commands) {
     const CommandResult result = platform_.send(command);
-    if (!result) refuse(lockStepId(topic), result.note);
+    if (!result) reportRefusal(lockStepId(topic), result.note);  // the platform logged it
   }
 }
 
 void RavenRosServer::Impl::refuse(std::uint8_t id, const std::string& why) {
   const std::string where = "refused a message on " + topic_names_[id];
   log_.warn(where, where + ": " + why, platform_.now());
+  reportRefusal(id, why);
+}
+
+void RavenRosServer::Impl::reportRefusal(std::uint8_t id, const std::string& why) {
   std_msgs::String message;
   message.data = topic_names_[id] + ": " + why;
   publishers_.refusals.publish(message);

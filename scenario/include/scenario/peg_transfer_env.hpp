@@ -83,6 +83,7 @@ class PegTransferEnv {
   ScriptedSession& session();
 
   PegTransferEnvOptions options_;
+  raven::JointLimits limits_;  ///< the controller's (the physical profile's), read once
   PegLayout layout_;
   std::unique_ptr<ScriptedSession> session_;
   std::optional<std::array<ArmRoutine, 2>> expert_;

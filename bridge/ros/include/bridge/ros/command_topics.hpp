@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -42,7 +41,6 @@ enum class CommandMessage { StringStamped, JointState, TransformStamped, RavenAu
 /// resolved in the robot's namespace.
 std::string_view topicName(CommandTopic topic);
 CommandMessage messageType(CommandTopic topic);
-std::optional<CommandTopic> commandTopicFromId(std::uint8_t id);
 const std::array<CommandTopic, kCommandTopicCount>& allCommandTopics();
 
 /// `arm`'s version of a per-arm topic given by its arm-1 name: forArm(Arm1ServoJr, Right) is
@@ -64,7 +62,6 @@ enum class CrtkCommand : std::uint8_t {
   JawMoveJp,
 };
 inline constexpr std::size_t kCrtkCommandCount = 10;
-const std::array<CrtkCommand, kCrtkCommandCount>& allCrtkCommands();
 /// "servo_jp", "jaw/move_jp", ...: relative to the arm's CRTK namespace.
 std::string_view relativeName(CrtkCommand command);
 
