@@ -16,6 +16,7 @@ packages=(
   python3-rospy python3-pykdl python3-matplotlib python3-numpy
   libglfw3-dev libgl-dev libgl1-mesa-dri libstb-dev xvfb xauth
   clang libfuzzer-14-dev
+  slurm-wlm parallel
 )
 
 missing=()

@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <filesystem>
@@ -65,13 +66,6 @@ void setUpLogging(const Settings& s) {
                               : spdlog::level::info);
 }
 
-/// A file name that keeps shards sharing one directory apart.
-std::string shardSuffix(const scenario::Shard& shard) {
-  return shard.count == 1
-             ? ""
-             : "-shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
-}
-
 void writeJson(const fs::path& path, const nlohmann::json& j) {
   std::ofstream file(path);
   file << j.dump(2) << '\n';
@@ -106,8 +100,7 @@ int runPegTransfers(const Settings& s) {
   const fs::path out(s.out_dir);
   fs::create_directories(out);
   const bool record = s.record == "yes" || (s.record == "auto" && seeds.size() == 1);
-  const fs::path jsonl_path =
-      s.jsonl.empty() ? out / ("runs" + shardSuffix(shard) + ".jsonl") : fs::path(s.jsonl);
+  const fs::path jsonl_path = s.jsonl.empty() ? shard.runsFile(out) : fs::path(s.jsonl);
   std::ofstream jsonl(jsonl_path);
   if (!jsonl) throw std::runtime_error("cannot write " + jsonl_path.string());
 
@@ -123,7 +116,7 @@ int runPegTransfers(const Settings& s) {
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);
   const bool single = seeds.size() == 1;
-  const fs::path summary_path = out / ("summary" + shardSuffix(shard) + ".json");
+  const fs::path summary_path = shard.summaryFile(out);
   // The totals of the runs finished so far: rewritten as each run ends, so a killed batch keeps
   // them.
   auto summaryOf = [&](const std::vector<scenario::PegTransferResult>& finished) {
@@ -178,8 +171,12 @@ int runPegTransfers(const Settings& s) {
   }
   bar.finish();
   if (stop_requested) {
-    spdlog::warn("stopped by a signal: {} of {} runs finished and are written", results.size(),
-                 seeds.size());
+    const auto finished =
+        std::count_if(results.begin(), results.end(), [](const auto& r) { return !r.stopped; });
+    spdlog::warn(
+        "stopped by a signal: {} of {} runs finished, {} cut short (\"stopped\": true); "
+        "all are written",
+        finished, seeds.size(), results.size() - static_cast<std::size_t>(finished));
   }
   if (results.empty()) return 130;
 

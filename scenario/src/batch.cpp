@@ -37,6 +37,22 @@ Shard Shard::parse(std::string_view text) {
   return shard;
 }
 
+std::string Shard::text() const {
+  return std::to_string(index) + "/" + std::to_string(count);
+}
+
+std::string Shard::fileSuffix() const {
+  return count == 1 ? "" : "-shard" + std::to_string(index) + "of" + std::to_string(count);
+}
+
+std::filesystem::path Shard::runsFile(const std::filesystem::path& dir) const {
+  return dir / ("runs" + fileSuffix() + ".jsonl");
+}
+
+std::filesystem::path Shard::summaryFile(const std::filesystem::path& dir) const {
+  return dir / ("summary" + fileSuffix() + ".json");
+}
+
 std::vector<std::uint64_t> seedsOf(std::uint64_t first_seed, std::size_t runs, const Shard& shard) {
   std::vector<std::uint64_t> seeds;
   for (std::size_t k = shard.index - 1; k < runs; k += shard.count) seeds.push_back(first_seed + k);

@@ -4,7 +4,9 @@
 // threads. Every run is independent and seeded, so any split gives the same results.
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -19,6 +21,16 @@ struct Shard {
 
   /// Parses "i/N" with 1 <= i <= N. Throws std::invalid_argument quoting the text otherwise.
   static Shard parse(std::string_view text);
+  /// "i/N".
+  std::string text() const;
+  /// The JSON-lines file this shard's runs go to in `dir`: runs-shard3of8.jsonl (runs.jsonl
+  /// for 1/1), so shards can share one folder.
+  std::filesystem::path runsFile(const std::filesystem::path& dir) const;
+  /// Its summary file in `dir`: summary-shard3of8.json (summary.json for 1/1).
+  std::filesystem::path summaryFile(const std::filesystem::path& dir) const;
+
+ private:
+  std::string fileSuffix() const;
 };
 
 /// The seeds of runs first_seed .. first_seed + runs - 1 that fall to `shard`.

@@ -8,7 +8,12 @@
 
 namespace scenario {
 
-/// Runs, runs with all six placed, pegs placed and lost, and the rates over all runs.
+/// Runs, runs with all six placed, pegs placed and lost, re-grasps, runs timed out, and the
+/// clocks summed with the rates over all runs, from each run's JSON row
+/// (PegTransferResult::json), so a merge of shards' JSON lines totals exactly as one process.
+nlohmann::json summarize(const std::vector<nlohmann::json>& rows);
+
+/// The same totals from the results themselves.
 nlohmann::json summarize(const std::vector<PegTransferResult>& results);
 
 }  // namespace scenario

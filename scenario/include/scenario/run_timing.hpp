@@ -23,9 +23,15 @@ struct RunTiming {
   void addTo(nlohmann::json& j) const {
     j["sim_time_s"] = sim_time;
     j["wall_time_s"] = wall_time;
+    j["loop_time_s"] = loop_seconds;
     j["real_time_factor"] = realTimeFactor();
     j["loop_frequency_hz"] = loopFrequency();
     j["steps"] = steps;
+  }
+  /// Reads back what addTo wrote (nlohmann::json::exception naming the field if one is missing).
+  static RunTiming fromJson(const nlohmann::json& j) {
+    return {j.at("sim_time_s").get<double>(), j.at("wall_time_s").get<double>(),
+            j.at("loop_time_s").get<double>(), j.at("steps").get<std::uint64_t>()};
   }
 };
 
