@@ -120,7 +120,10 @@ int runPegTransfers(const Settings& s) {
   // The totals of the runs finished so far: rewritten as each run ends, so a killed batch keeps
   // them.
   auto summaryOf = [&](const std::vector<scenario::PegTransferResult>& finished) {
-    nlohmann::json summary = scenario::summarize(finished);
+    std::vector<nlohmann::json> rows;  // each run's JSON once: the totals and the results
+    rows.reserve(finished.size());
+    for (const auto& r : finished) rows.push_back(r.json());
+    nlohmann::json summary = scenario::summarize(rows);
     summary["task"] = "peg_transfer";
     summary["shard"] = s.shard;
     summary["first_seed"] = s.seed;
@@ -128,8 +131,7 @@ int runPegTransfers(const Settings& s) {
     summary["grasp_assist"] = s.assist;
     summary["runs_asked"] = seeds.size();
     summary["stopped"] = stop_requested.load();
-    summary["results"] = nlohmann::json::array();
-    for (const auto& r : finished) summary["results"].push_back(r.json());
+    summary["results"] = std::move(rows);
     return summary;
   };
   const std::string which =
