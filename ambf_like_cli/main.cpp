@@ -13,6 +13,7 @@
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
 #include "viewer/snapshot_schedule.hpp"
+#include "viewer/video_recorder.hpp"
 #include "viewer/viewer.hpp"
 
 namespace {
@@ -37,6 +38,9 @@ struct Options {
   bool quiet = false;
   std::string snapshot;
   double snapshot_every = 0.0;
+  std::string video;  ///< FILE.mp4
+  int video_fps = 30;
+  std::string video_size = "960x540";
   bool collision_view = false;
   bool contacts = false;
 };
@@ -142,7 +146,13 @@ int main(int argc, char** argv) {
   app.add_flag("--gui", o.show_gui, "open a viewer window");
   app.add_option("--snapshot", o.snapshot,
                  "write a PNG of the scene at the end (with --snapshot-every: a numbered series); "
-                 "needs a display or xvfb-run");
+                 "headless: no display needed");
+  app.add_option("--video", o.video,
+                 "FILE.mp4: a video of the run, one frame every 1/fps simulated seconds "
+                 "(headless: no display needed)");
+  app.add_option("--video-fps", o.video_fps, "frames per simulated second (default 30)")
+      ->check(CLI::Range(1, 240));
+  app.add_option("--video-size", o.video_size, "WIDTHxHEIGHT, even (default 960x540)");
   app.add_option("--snapshot-every", o.snapshot_every, "simulated seconds between snapshots")
       ->check(CLI::PositiveNumber);
   app.add_flag("--collision-view", o.collision_view,
@@ -225,6 +235,20 @@ int main(int argc, char** argv) {
     }
     if (o.snapshot_every > 0.0) schedule.emplace(o.snapshot, o.snapshot_every);
   }
+  std::unique_ptr<viewer::VideoRecorder> video;
+  if (!o.video.empty()) {
+    try {
+      viewer::VideoOptions video_options;
+      video_options.file = o.video;
+      video_options.fps = o.video_fps;
+      video_options.setSize(o.video_size);
+      video_options.look = {o.collision_view, o.contacts};
+      video = std::make_unique<viewer::VideoRecorder>(*world, video_options, std::nullopt);
+    } catch (const std::exception& e) {
+      spdlog::error("video: {}", e.what());
+      return 1;
+    }
+  }
 
   std::signal(SIGINT, [](int) { g_stop = true; });
   std::signal(SIGTERM, [](int) { g_stop = true; });
@@ -241,6 +265,7 @@ int main(int argc, char** argv) {
   try {
     while (!done()) {
       loop.iterate();
+      if (video) video->capture(*world);
       if (view) {
         view->publish(*world);
         if (schedule) schedule->maybeTake(*view, *world);
@@ -253,6 +278,17 @@ int main(int argc, char** argv) {
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  if (video) {
+    try {
+      const auto v = video->finish();
+      spdlog::info("video: {} ({} frames, {:.2f} s at {} fps, {}; steps waited {:.2f} s for it)",
+                   v.file.string(), v.frames, v.duration_s, o.video_fps, v.codec,
+                   v.physics_wait_s);
+    } catch (const std::exception& e) {
+      spdlog::error("{}", e.what());
+      return 1;
+    }
+  }
   if (view && !o.snapshot.empty() && !schedule) {
     try {
       view->snapshot(*world, o.snapshot);

@@ -22,7 +22,7 @@ const char* kSection = "viewer";
 struct Watcher {
   std::unique_ptr<viewer::Viewer> view;
   std::uint64_t frames = 0;
-  void operator()(const ambf_like::World& world, scenario::WorldMoment moment) {
+  void operator()(const ambf_like::World& world, scenario::WorldMoment moment, std::uint64_t) {
     if (moment == scenario::WorldMoment::Start) {
       viewer::ViewerOptions options;
       options.title = "raven_bench";

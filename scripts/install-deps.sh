@@ -15,6 +15,7 @@ packages=(
   python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg python3-genpy
   python3-rospy python3-pykdl python3-matplotlib python3-numpy
   libglfw3-dev libgl-dev libgl1-mesa-dri libstb-dev xvfb xauth
+  libegl-dev libegl-mesa0 libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   clang libfuzzer-14-dev
   slurm-wlm parallel
 )

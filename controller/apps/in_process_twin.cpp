@@ -1,7 +1,10 @@
 #include "in_process_twin.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include "twin/calibration_profile.hpp"
 #include "twin/twin_platform.hpp"
+#include "viewer/video_recorder.hpp"
 
 namespace controller_app {
 
@@ -9,12 +12,44 @@ struct TwinTracking {
   twin::TrackingParams params;
 };
 
+namespace {
+
+/// The twin's video: opened at the first step (the world exists by then), closed with the twin.
+struct TwinVideo {
+  viewer::VideoOptions options;
+  std::unique_ptr<viewer::VideoRecorder> recorder;
+
+  void capture(const ambf_like::World& world) {
+    if (!recorder) recorder = std::make_unique<viewer::VideoRecorder>(world, options, std::nullopt);
+    recorder->capture(world);
+  }
+  ~TwinVideo() {
+    if (!recorder) return;
+    try {
+      const auto v = recorder->finish();
+      spdlog::info("video: {} ({} frames, {:.1f} s at {} fps, {})", v.file.string(), v.frames,
+                   v.duration_s, options.fps, v.codec);
+    } catch (const std::exception& e) {
+      spdlog::error("{}", e.what());
+    }
+  }
+};
+
+}  // namespace
+
 std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSettings& settings) {
   twin::TwinOptions options;
   if (!settings.launch_file.empty()) options.launch_file = settings.launch_file;
   options.clock = settings.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
   if (settings.stand_in) options.stand_in = twin::CableActuationParams::physicalStandIn();
   if (settings.calibration) options.tracking = settings.calibration->twin_tracking->params;
+  if (!settings.video.empty()) {
+    auto video = std::make_shared<TwinVideo>();
+    video->options.file = settings.video;
+    video->options.fps = settings.video_fps;
+    video->options.setSize(settings.video_size);
+    options.after_step = [video](const ambf_like::World& world) { video->capture(world); };
+  }
   return std::make_unique<twin::TwinPlatform>(options);
 }
 

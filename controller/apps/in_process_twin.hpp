@@ -25,6 +25,9 @@ struct InProcessTwinSettings {
   bool lock_step = false;                              ///< simulated clock
   bool stand_in = false;                               ///< the physical stand-in's actuation
   const ControllerCalibration* calibration = nullptr;  ///< from --calibration, or none
+  std::string video;                                   ///< FILE.mp4 of the twin; empty: none
+  int video_fps = 30;                                  ///< frames per simulated second
+  std::string video_size = "960x540";
 };
 
 /// The in-process twin; throws std::runtime_error in a build without the simulator.

@@ -19,7 +19,8 @@
 #include "scenario/batch_summary.hpp"
 #include "scenario/console_report.hpp"
 #include "scenario/handover_reach.hpp"
-#include "viewer/viewer.hpp"
+#include "scenario/run_watcher.hpp"
+#include "scenario/task_views.hpp"
 
 namespace {
 
@@ -52,6 +53,11 @@ struct Settings {
   bool quiet = false, verbose = false;
   bool gui = false;
   std::string snapshot;  ///< PREFIX: PREFIX_before.png and PREFIX_after.png
+  std::vector<std::string> views{"overview"};  ///< of the snapshots
+  std::string video;                           ///< FILE.mp4 (a batch: FILE_seed<N>.mp4)
+  int video_fps = 30;
+  std::string video_size = "960x540";
+  std::string video_view = "overview";
 };
 
 constexpr std::size_t kHandoverSamples = 100000;
@@ -72,23 +78,18 @@ void writeJson(const fs::path& path, const nlohmann::json& j) {
   if (!file) throw std::runtime_error("cannot write " + path.string());
 }
 
-/// The viewer window and the before/after snapshots of a single run.
-void watchWorld(std::unique_ptr<viewer::Viewer>& view, const Settings& s,
-                const ambf_like::World& world, scenario::WorldMoment moment) {
-  if (moment == scenario::WorldMoment::Start) {
-    viewer::ViewerOptions options;
-    options.window = s.gui;
-    options.title = "raven_peg_transfer";
-    view.reset();  // one viewer at a time
-    view = std::make_unique<viewer::Viewer>(world, options);
-  }
-  if (!s.snapshot.empty() && moment != scenario::WorldMoment::Iteration) {
-    const bool before = moment == scenario::WorldMoment::Start;
-    const fs::path file = s.snapshot + (before ? "_before.png" : "_after.png");
-    view->snapshot(world, file);
-    spdlog::info("snapshot: {}", file.string());
-  }
-  view->publish(world);
+/// The window, the snapshots and the videos the settings ask for.
+scenario::WatchOptions watchOptions(const Settings& s, bool batch) {
+  scenario::WatchOptions w;
+  w.window = s.gui;
+  w.snapshot_prefix = s.snapshot;
+  w.snapshot_views = s.views;
+  w.video = s.video;
+  w.video_per_seed = batch;
+  w.video_options.fps = s.video_fps;
+  w.video_options.setSize(s.video_size);
+  w.video_view = s.video_view;
+  return w;
 }
 
 int runPegTransfers(const Settings& s) {
@@ -148,15 +149,11 @@ int runPegTransfers(const Settings& s) {
   scenario::ProgressBar bar(stderr, single ? "transfers" : "runs");
   std::vector<scenario::PegTransferResult> results;
   if (record) options.rs_folder = out;  // peg_transfer_seed<N>_rs.csv for every run
+  scenario::RunWatcher watcher(watchOptions(s, !single));
+  if (s.gui || !s.snapshot.empty() || !s.video.empty()) options.observe = std::ref(watcher);
   if (single) {
     options.seed = seeds.front();
     options.progress = [&bar](const scenario::RunProgress& p) { bar.show(p); };
-    std::unique_ptr<viewer::Viewer> view;
-    if (s.gui || !s.snapshot.empty()) {
-      options.observe = [&view, &s](const ambf_like::World& world, scenario::WorldMoment moment) {
-        watchWorld(view, s, world, moment);
-      };
-    }
     results.push_back(scenario::runPegTransfer(options));
     jsonl << results.back().json().dump() << '\n' << std::flush;
   } else {
@@ -279,8 +276,22 @@ int main(int argc, char** argv) {
   app.add_option("-g,--show_gui", s.gui, "watch the run in a viewer window (AMBF's -g true)");
   app.add_flag("--gui", s.gui, "the same as -g true");
   app.add_option("--snapshot", s.snapshot,
-                 "PREFIX: write PREFIX_before.png and PREFIX_after.png of a single run (needs a "
-                 "display or xvfb-run)");
+                 "PREFIX: write PREFIX_before.png and PREFIX_after.png of a single run "
+                 "(headless: no display needed)");
+  const auto view_names = scenario::pegTransferViewNames();
+  app.add_option("--views", s.views,
+                 "the snapshots' views (several: PREFIX_<view>_before.png): overview, left-task, "
+                 "right-task, grasper-left, grasper-right")
+      ->check(CLI::IsMember(view_names))
+      ->delimiter(',');
+  app.add_option("--video", s.video,
+                 "FILE.mp4: a video of the run, one frame every 1/fps simulated seconds "
+                 "(a batch: FILE_seed<N>.mp4 per run; headless)");
+  app.add_option("--video-fps", s.video_fps, "frames per simulated second (default 30)")
+      ->check(CLI::Range(1, 240));
+  app.add_option("--video-size", s.video_size, "WIDTHxHEIGHT, even (default 960x540)");
+  app.add_option("--video-view", s.video_view, "the video's view (default overview)")
+      ->check(CLI::IsMember(view_names));
   app.add_flag("-q,--quiet", s.quiet, "warnings and errors only");
   app.add_flag("-v,--verbose", s.verbose, "log every phase of every transfer");
   CLI11_PARSE(app, argc, argv);
@@ -288,6 +299,10 @@ int main(int argc, char** argv) {
   try {
     if ((s.gui || !s.snapshot.empty()) && (s.runs > 1 || s.task != "peg")) {
       spdlog::error("--gui and --snapshot watch a single peg transfer (no --runs, no --task)");
+      return 2;
+    }
+    if (!s.video.empty() && s.task != "peg") {
+      spdlog::error("--video records the peg transfer (not --task {})", s.task);
       return 2;
     }
     return s.task == "rectangle" ? runRectangleTask(s) : runPegTransfers(s);

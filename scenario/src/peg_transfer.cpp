@@ -77,7 +77,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
 
   RunProgress progress{twin.now(), 0, layout.jobs.size()};
   auto show = [&](WorldMoment moment) {
-    if (options.observe) options.observe(world, moment);
+    if (options.observe) options.observe(world, moment, options.seed);
   };
   show(WorldMoment::Start);
   auto done = [&] { return routines[0].done() && routines[1].done(); };

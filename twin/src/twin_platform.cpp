@@ -59,7 +59,8 @@ TwinPlatform::TwinPlatform(const TwinOptions& options)
       readings_(readAll(*actuation_)),
       previous_position_{readings_[0].position, readings_[1].position},
       core_(loadProfile(options.profile), options.limits, measuredPositions()),
-      clock_(options.clock) {}
+      clock_(options.clock),
+      after_step_(options.after_step) {}
 
 ArmPair TwinPlatform::measuredPositions() const {
   return {readings_[0].position, readings_[1].position};
@@ -86,6 +87,7 @@ void TwinPlatform::runCycle() {
     actuation_->drive(arm, core_.setpoint(arm), core_.setpointVelocity(arm));
   }
   world_.step();
+  if (after_step_) after_step_(world_);
   readings_ = readAll(*actuation_);
   if (!world_.isFinite()) core_.fault("the simulation became non-finite");
 }

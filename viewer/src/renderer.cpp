@@ -179,4 +179,10 @@ std::vector<std::uint8_t> readPixels(int width, int height) {
   return rgb;
 }
 
+void readPixelsRgba(int width, int height, std::vector<std::uint8_t>& rgba) {
+  rgba.resize(static_cast<std::size_t>(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+}
+
 }  // namespace viewer::detail

@@ -21,6 +21,9 @@ void overlay(const std::string& text, int width, int height);
 
 /// The current framebuffer as RGB rows, top row first.
 std::vector<std::uint8_t> readPixels(int width, int height);
+/// The current framebuffer as RGBA rows as OpenGL keeps them, bottom row first (a video
+/// frame: the encoder's converter flips it for free).
+void readPixelsRgba(int width, int height, std::vector<std::uint8_t>& rgba);
 
 /// Throws std::runtime_error naming the file if it cannot be written.
 void writePng(const std::filesystem::path& file, const std::vector<std::uint8_t>& rgb, int width,

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 
+#include "headless_context.hpp"
 #include "renderer.hpp"
 #include "viewer/scene_geometry.hpp"
 
@@ -15,13 +16,14 @@ struct Viewer::Request {
   FrameState frame;
   std::filesystem::path file;
   ViewOptions view;
+  std::optional<View> camera;  ///< unset: the window's (or the initial) camera
   std::promise<void> done;
 };
 
 namespace {
 
-/// GLFW is one library-wide state (glfwTerminate closes every window): one viewer at a time.
-std::atomic<bool> g_viewer_alive{false};
+/// GLFW is one library-wide state (glfwTerminate closes every window): one window at a time.
+std::atomic<bool> g_window_alive{false};
 
 /// What the window's input callbacks change (render thread only).
 struct WindowState {
@@ -67,15 +69,15 @@ void installCallbacks(GLFWwindow* window) {
 
 Viewer::Viewer(const ambf_like::World& world, ViewerOptions options)
     : options_(std::move(options)) {
-  if (g_viewer_alive.exchange(true)) {
-    throw std::logic_error("another viewer is open: GLFW allows one viewer per process at a time");
+  if (options_.window && g_window_alive.exchange(true)) {
+    throw std::logic_error("another viewer window is open: GLFW allows one per process");
   }
   struct Release {  // gives the slot back if the constructor throws
-    bool armed = true;
+    bool armed;
     ~Release() {
-      if (armed) g_viewer_alive = false;
+      if (armed) g_window_alive = false;
     }
-  } release;
+  } release{options_.window};
   ambf_like::MeshLibrary meshes;
   geometry_ = std::make_unique<const SceneGeometry>(SceneGeometry::of(world, meshes));
   initial_camera_ = options_.camera.value_or(Camera::framing(geometry_->bounds));
@@ -97,7 +99,7 @@ Viewer::~Viewer() {
   stop_ = true;
   wake_.notify_all();
   if (thread_.joinable()) thread_.join();
-  g_viewer_alive = false;
+  if (options_.window) g_window_alive = false;
 }
 
 void Viewer::publish(const ambf_like::World& world) {
@@ -124,7 +126,17 @@ void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path
 void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path& file,
                       const ViewOptions& view) {
   auto request = std::make_unique<Request>(
-      Request{FrameState::of(world, view.contacts), file, view, std::promise<void>()});
+      Request{FrameState::of(world, view.contacts), file, view, std::nullopt, std::promise<void>()});
+  take(std::move(request));
+}
+
+void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path& file,
+                      const ViewOptions& view, const View& camera) {
+  take(std::make_unique<Request>(
+      Request{FrameState::of(world, view.contacts), file, view, camera, std::promise<void>()}));
+}
+
+void Viewer::take(std::unique_ptr<Request> request) {
   auto done = request->done.get_future();
   {
     std::lock_guard lock(mutex_);
@@ -135,12 +147,11 @@ void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path
   done.get();  // rethrows what the render thread failed with
 }
 
-void Viewer::serve(Request& request) {
+void Viewer::serve(Request& request, int width, int height, const Camera& current) {
   try {
-    int width = 0, height = 0;
-    glfwGetFramebufferSize(glfwGetCurrentContext(), &width, &height);
-    const auto& window = stateOf(glfwGetCurrentContext());
-    detail::draw(*geometry_, request.frame, window.camera, width, height, request.view);
+    const Camera camera =
+        request.camera ? request.camera->at(request.frame.body_poses) : current;
+    detail::draw(*geometry_, request.frame, camera, width, height, request.view);
     detail::writePng(request.file, detail::readPixels(width, height), width, height);
     request.done.set_value();
   } catch (...) {
@@ -153,8 +164,35 @@ void Viewer::run(std::promise<void>* started) {
   // instead of one worker per core, so drawing cannot take the physics thread's core. A value
   // the user set wins.
   setenv("LP_NUM_THREADS", "0", 0);
+  if (options_.window) {
+    runWindow(started);
+    return;
+  }
+  std::unique_ptr<detail::HeadlessContext> context;
+  try {
+    context = std::make_unique<detail::HeadlessContext>(options_.width, options_.height);
+  } catch (const NoDisplay& e) {
+    start_error_ = e.what();
+    started->set_value();
+    return;
+  }
+  started->set_value();
+  while (!stop_) {
+    std::unique_ptr<Request> request;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stop_ || request_; });
+      request = std::move(request_);
+    }
+    if (request) serve(*request, options_.width, options_.height, initial_camera_);
+  }
+}
+
+void Viewer::runWindow(std::promise<void>* started) {
   if (!glfwInit()) {
-    start_error_ = "no display for an OpenGL context (DISPLAY unset?): run under xvfb-run -a";
+    start_error_ =
+        "no display for a window (DISPLAY unset?): snapshots and videos need none, the window "
+        "does";
     started->set_value();
     return;
   }
@@ -196,17 +234,18 @@ void Viewer::renderLoop() {
     FrameState frame;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait_until(
-          lock, options_.window ? next_frame : Clock::now() + std::chrono::hours(1),
-          [&] { return stop_ || request_ || (options_.window && Clock::now() >= next_frame); });
+      wake_.wait_until(lock, next_frame,
+                       [&] { return stop_ || request_ || Clock::now() >= next_frame; });
       request = std::move(request_);
-      if (options_.window) frame = *latest_;
+      frame = *latest_;
     }
     if (request) {
-      serve(*request);
+      int width = 0, height = 0;
+      glfwGetFramebufferSize(window, &width, &height);
+      serve(*request, width, height, state.camera);
       continue;
     }
-    if (!options_.window || stop_) continue;
+    if (stop_) continue;
     next_frame += period;
     if (next_frame < Clock::now()) next_frame = Clock::now() + period;
     wants_frame_ = true;  // the physics thread hands the next one over

@@ -2,6 +2,7 @@
 // Where a scripted run is, for a progress display.
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 
 namespace ambf_like {
@@ -23,6 +24,8 @@ using ProgressCallback = std::function<void(const RunProgress&)>;
 
 /// When a run shows its world to an observer.
 enum class WorldMoment { Start, Iteration, End };
-using WorldObserver = std::function<void(const ambf_like::World&, WorldMoment)>;
+/// Shown a run's world at a moment; `seed` says which run of a batch it is.
+using WorldObserver =
+    std::function<void(const ambf_like::World&, WorldMoment, std::uint64_t seed)>;
 
 }  // namespace scenario

@@ -40,6 +40,8 @@ struct TwinOptions {
   /// Set: the robot's tracking response (a calibration) in front of either actuation.
   std::optional<TrackingParams> tracking;
   ServoLimits limits;
+  /// Called after every World step, on the thread that steps it (a video's capture).
+  std::function<void(const ambf_like::World&)> after_step;
 };
 
 /// A simulated Raven-II, one robot cycle per World step.
@@ -82,6 +84,7 @@ class TwinPlatform final : public RavenPlatform {
   ArmPair previous_position_;
   RavenCore core_;
   ClockKind clock_;
+  std::function<void(const ambf_like::World&)> after_step_;
   WallPacer pacer_;
   double requested_ = 0.0;  ///< platform time asked for so far
 };

@@ -1,7 +1,8 @@
 #pragma once
-// A window onto a running World (GLFW, OpenGL) and PNG snapshots of it. The viewer renders on its
-// own thread from copies the physics thread hands over at the render rate, so drawing never holds
-// up a physics step; a World without a viewer pays nothing.
+// A window onto a running World (GLFW, OpenGL) and PNG snapshots of it, or snapshots alone with no
+// display at all (EGL). The viewer renders on its own thread from copies the physics thread hands
+// over at the render rate, so drawing never holds up a physics step; a World without a viewer
+// pays nothing.
 
 #include <atomic>
 #include <chrono>
@@ -16,6 +17,7 @@
 
 #include "ambf_like/world.hpp"
 #include "viewer/camera.hpp"
+#include "viewer/view.hpp"
 
 namespace viewer {
 
@@ -27,7 +29,7 @@ struct ViewOptions {
 
 /// How the viewer runs.
 struct ViewerOptions {
-  bool window = true;  ///< false: no window, snapshots only (rendered in a hidden one)
+  bool window = true;  ///< false: no window, snapshots only (headless: EGL, no display needed)
   int width = 1280;
   int height = 800;
   double render_hz = 30.0;  ///< frames per second of the window
@@ -36,7 +38,7 @@ struct ViewerOptions {
   std::string title = "ambf_like";
 };
 
-/// Thrown when no OpenGL context can be made (no display: run under xvfb-run).
+/// Thrown when no OpenGL context can be made: no display for a window, or no EGL for headless.
 class NoDisplay : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -45,8 +47,8 @@ class NoDisplay : public std::runtime_error {
 struct SceneGeometry;
 struct FrameState;
 
-/// The window (or hidden context) and its render thread; one per process at a time (GLFW's state
-/// is global). Not copyable. Keys in the window:
+/// The window (or headless context) and its render thread; one window per process at a time
+/// (GLFW's state is global), headless viewers as many as wanted. Not copyable. Keys in the window:
 /// C collision view, K contacts, S snapshot to ./snapshot_<n>.png, Esc closes. Mouse: left drag
 /// orbits, right or middle drag pans, wheel zooms.
 class Viewer {
@@ -67,6 +69,9 @@ class Viewer {
   /// Renders with other view options (e.g. the collision view) without changing the window's.
   void snapshot(const ambf_like::World& world, const std::filesystem::path& file,
                 const ViewOptions& view);
+  /// Renders from a named camera (its body, if it follows one, as it is now).
+  void snapshot(const ambf_like::World& world, const std::filesystem::path& file,
+                const ViewOptions& view, const View& camera);
 
   /// The user closed the window.
   bool closed() const { return closed_; }
@@ -78,8 +83,10 @@ class Viewer {
  private:
   struct Request;
   void run(std::promise<void>* started);
+  void runWindow(std::promise<void>* started);
   void renderLoop();
-  void serve(Request& request);
+  void take(std::unique_ptr<Request> request);  ///< hands a snapshot over and waits for it
+  void serve(Request& request, int width, int height, const Camera& current);
 
   ViewerOptions options_;
   std::unique_ptr<const SceneGeometry> geometry_;
