@@ -62,7 +62,9 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& file, int width, int hei
     throw fail(fmt::format("{}x{} is not an even frame size", width, height));
   }
   if (fps <= 0) throw fail(fmt::format("frame rate {} is not positive", fps));
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  std::error_code no_folder;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), no_folder);
+  if (no_folder) throw fail("cannot make its folder: " + no_folder.message());
   int rc = avformat_alloc_output_context2(&av_->format, nullptr, nullptr, file.c_str());
   if (rc < 0 || !av_->format) throw fail("no container for this extension (use .mp4)", rc);
   const AVCodec* encoder = pickEncoder();
@@ -143,6 +145,9 @@ void VideoEncoder::drain() {
     const int rc = avcodec_receive_packet(av_->codec, av_->packet);
     if (rc == AVERROR(EAGAIN) || rc == AVERROR_EOF) return;
     if (rc < 0) throw std::runtime_error("video " + file_.string() + ": " + avError(rc));
+    // Each frame lasts one period; without it MP4's edit list would end at the last frame's start
+    // and a demuxer would drop that frame.
+    if (av_->packet->duration == 0) av_->packet->duration = 1;
     av_packet_rescale_ts(av_->packet, av_->codec->time_base, av_->stream->time_base);
     av_->packet->stream_index = av_->stream->index;
     const int written = av_interleaved_write_frame(av_->format, av_->packet);

@@ -1,0 +1,158 @@
+// The peg scene's named views, rendered headless (no X server, no Xvfb): each view draws the
+// scene; in the task views every ring covers enough pixels to count, and a ring on a target post
+// is told from a ring on a start post by where its colour lands.
+
+#include <gtest/gtest.h>
+
+#include <BulletSoftBody/btSoftBody.h>
+
+#include <memory>
+
+#include "ambf_like/scene_loader.hpp"
+#include "ambf_like/world.hpp"
+#include "scenario/peg_layout.hpp"
+#include "scenario/task_views.hpp"
+#include "test_files.hpp"
+#include "test_images.hpp"
+#include "viewer/viewer.hpp"
+
+namespace {
+
+using test_support::Image;
+using test_support::isBackground;
+using test_support::isPegRed;
+using test_support::shareNear;
+
+const std::filesystem::path kModels = RAVEN_MODELS_DIR;
+constexpr int kWidth = 640, kHeight = 400;
+/// A ring 20 mm across seen from 0.2 m covers about 1,500 pixels of a 640x400 task view; a
+/// third of that still counts as a ring a person can see.
+constexpr int kMinRingPixels = 500;
+/// Height of a resting ring's middle above the board's top (its 10 mm height, resting on it).
+constexpr double kRingMiddle = 0.005;
+constexpr double kBoardTop = -0.205;
+
+/// The shipped scene settled, with a headless viewer (null, with the reason, without EGL).
+struct PegScene {
+  ambf_like::MeshLibrary meshes;
+  std::unique_ptr<ambf_like::World> world;
+  std::unique_ptr<viewer::Viewer> view;
+  std::vector<viewer::View> views;
+  test_support::TempDir dir;
+  std::string why;
+
+  PegScene() {
+    const auto scene = ambf_like::loadLaunchFile(kModels / "peg_transfer/launch.yaml", {});
+    world = std::make_unique<ambf_like::World>(scene.spec, meshes);
+    world->step(200);
+    views = scenario::pegTransferViews(*world);
+    viewer::ViewerOptions options;
+    options.window = false;
+    options.width = kWidth;
+    options.height = kHeight;
+    try {
+      view = std::make_unique<viewer::Viewer>(*world, options);
+    } catch (const viewer::NoDisplay& e) {
+      why = e.what();
+    }
+  }
+
+  Image shoot(const std::string& name) {
+    const auto file = dir.path() / (name + ".png");
+    view->snapshot(*world, file, {}, viewer::findView(views, name));
+    return Image::read(file);
+  }
+};
+
+/// Ring-coloured pixels near a post (at a resting ring's middle height), as a share of a box
+/// about the ring's inner radius on screen.
+double ringShareAt(const Image& image, const viewer::Camera& camera, const Eigen::Vector2d& post) {
+  const Eigen::Vector3d middle(post.x(), post.y(), kBoardTop + kRingMiddle);
+  const auto centre = camera.toPixel(middle, image.width, image.height);
+  const auto rim = camera.toPixel(middle + Eigen::Vector3d(0.006, 0, 0), image.width, image.height);
+  if (!centre || !rim) return -1.0;
+  return shareNear(image, *centre, static_cast<int>((*rim - *centre).norm()), isPegRed);
+}
+
+TEST(TaskViews, EveryNamedViewIsRenderedHeadless) {
+  PegScene scene;
+  if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
+  ASSERT_EQ(scene.views.size(), scenario::pegTransferViewNames().size());
+  for (const std::string& name : scenario::pegTransferViewNames()) {
+    const Image image = scene.shoot(name);
+    ASSERT_EQ(image.width, kWidth) << name;
+    int drawn = 0;
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) drawn += !isBackground(image.at(x, y));
+    }
+    // The task views look down on the board; a grasper view has the jaws against the sky.
+    const bool grasper = name.starts_with("grasper");
+    EXPECT_GT(drawn, kWidth * kHeight / (grasper ? 20 : 5)) << name << ": mostly empty";
+  }
+  EXPECT_THROW(viewer::findView(scene.views, "ceiling"), std::invalid_argument);
+}
+
+TEST(TaskViews, TheOverviewShowsAllSixRings) {
+  PegScene scene;
+  if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
+  const Image image = scene.shoot("overview");
+  const viewer::Camera camera = viewer::findView(scene.views, "overview").camera;
+  for (const scenario::PegJob& job : scenario::PegLayout{}.jobs) {
+    EXPECT_GT(ringShareAt(image, camera, job.from), 0.25) << job.peg << " on its start post";
+  }
+}
+
+TEST(TaskViews, RingsOnTargetPostsAreToldFromRingsOnStartPosts) {
+  PegScene scene;
+  if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
+  const scenario::PegLayout layout;
+  for (raven::Arm arm : raven::kArms) {
+    const std::string view = std::string(raven::armName(arm)) + "-task";
+    const viewer::Camera camera = viewer::findView(scene.views, view).camera;
+    // Before: each ring on its start post, enough of it drawn to count; the target posts bare.
+    Image image = scene.shoot(view);
+    int ring_pixels = 0;
+    for (int y = 0; y < kHeight; ++y) {
+      for (int x = 0; x < kWidth; ++x) ring_pixels += isPegRed(image.at(x, y));
+    }
+    EXPECT_GT(ring_pixels, 3 * kMinRingPixels) << view;
+    for (const scenario::PegJob& job : layout.jobsOf(arm)) {
+      EXPECT_GT(ringShareAt(image, camera, job.from), 0.25) << view << " " << job.peg;
+      EXPECT_LT(ringShareAt(image, camera, job.to), 0.02) << view << " " << job.peg;
+    }
+    // After: the same rings moved onto their target posts, as a finished transfer leaves them.
+    for (const scenario::PegJob& job : layout.jobsOf(arm)) {
+      const Eigen::Vector2d shift = job.to - job.from;
+      scene.world->softBody(job.peg).bullet().translate(btVector3(shift.x(), shift.y(), 0.0));
+    }
+    image = scene.shoot(view);
+    for (const scenario::PegJob& job : layout.jobsOf(arm)) {
+      EXPECT_LT(ringShareAt(image, camera, job.from), 0.02) << view << " " << job.peg;
+      EXPECT_GT(ringShareAt(image, camera, job.to), 0.25) << view << " " << job.peg;
+    }
+  }
+}
+
+TEST(TaskViews, AGrasperViewFollowsItsJaws) {
+  PegScene scene;
+  if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
+  for (raven::Arm arm : raven::kArms) {
+    const auto& view =
+        viewer::findView(scene.views, "grasper-" + std::string(raven::armName(arm)));
+    ASSERT_TRUE(view.follow_body);
+    std::vector<Eigen::Isometry3d> poses;
+    for (std::size_t i = 0; i < scene.world->bodyCount(); ++i) {
+      poses.push_back(scene.world->body(i).pose());
+    }
+    const viewer::Camera camera = view.at(poses);
+    // The jaw's own origin lands in the middle of the picture.
+    const auto jaw = camera.toPixel(poses[*view.follow_body].translation(), kWidth, kHeight);
+    ASSERT_TRUE(jaw);
+    EXPECT_NEAR(jaw->x(), kWidth / 2.0, 1.0);
+    EXPECT_NEAR(jaw->y(), kHeight / 2.0, 1.0);
+    EXPECT_NE(scene.world->body(*view.follow_body).qualifiedName().find(raven::armName(arm)),
+              std::string::npos);
+  }
+}
+
+}  // namespace
