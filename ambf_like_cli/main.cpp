@@ -39,6 +39,7 @@ struct Options {
   std::string snapshot;
   double snapshot_every = 0.0;
   std::string video;  ///< FILE.mp4
+  std::string visual_skin;
   int video_fps = 30;
   std::string video_size = "960x540";
   bool collision_view = false;
@@ -153,6 +154,10 @@ int main(int argc, char** argv) {
   app.add_option("--video-fps", o.video_fps, "frames per simulated second (default 30)")
       ->check(CLI::Range(1, 240));
   app.add_option("--video-size", o.video_size, "WIDTHxHEIGHT, even (default 960x540)");
+  app.add_option("--visual-skin", o.visual_skin,
+                 "meshes drawn on bodies by name, e.g. raven_description/models/raven2/"
+                 "ambf_visuals.yaml (AMBF's Raven-II meshes on our links)")
+      ->check(CLI::ExistingFile);
   app.add_option("--snapshot-every", o.snapshot_every, "simulated seconds between snapshots")
       ->check(CLI::PositiveNumber);
   app.add_flag("--collision-view", o.collision_view,
@@ -226,6 +231,7 @@ int main(int argc, char** argv) {
     viewer::ViewerOptions view_options;
     view_options.window = o.show_gui;
     view_options.view = {o.collision_view, o.contacts};
+    view_options.visual_skin = o.visual_skin;
     view_options.title = "ambf_like " + (o.launch_file.empty() ? std::string() : o.launch_file);
     try {
       view = std::make_unique<viewer::Viewer>(*world, view_options);
@@ -243,6 +249,7 @@ int main(int argc, char** argv) {
       video_options.fps = o.video_fps;
       video_options.setSize(o.video_size);
       video_options.look = {o.collision_view, o.contacts};
+      video_options.visual_skin = o.visual_skin;
       video = std::make_unique<viewer::VideoRecorder>(*world, video_options, std::nullopt);
     } catch (const std::exception& e) {
       spdlog::error("video: {}", e.what());
@@ -282,8 +289,7 @@ int main(int argc, char** argv) {
     try {
       const auto v = video->finish();
       spdlog::info("video: {} ({} frames, {:.2f} s at {} fps, {}; steps waited {:.2f} s for it)",
-                   v.file.string(), v.frames, v.duration_s, o.video_fps, v.codec,
-                   v.physics_wait_s);
+                   v.file.string(), v.frames, v.duration_s, o.video_fps, v.codec, v.physics_wait_s);
     } catch (const std::exception& e) {
       spdlog::error("{}", e.what());
       return 1;

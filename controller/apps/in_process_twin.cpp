@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "raven/platform_profile.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/twin_platform.hpp"
 #include "viewer/video_recorder.hpp"
@@ -48,6 +49,7 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
     video->options.file = settings.video;
     video->options.fps = settings.video_fps;
     video->options.setSize(settings.video_size);
+    video->options.visual_skin = raven::modelDirectory() / "raven2" / "ambf_visuals.yaml";
     options.after_step = [video](const ambf_like::World& world) { video->capture(world); };
   }
   return std::make_unique<twin::TwinPlatform>(options);

@@ -2,9 +2,14 @@
 
 #include <spdlog/spdlog.h>
 
+#include "raven/platform_profile.hpp"
 #include "scenario/task_views.hpp"
 
 namespace scenario {
+
+std::filesystem::path ravenVisualSkin() {
+  return raven::modelDirectory() / "raven2" / "ambf_visuals.yaml";
+}
 
 std::filesystem::path RunWatcher::videoFileFor(std::uint64_t seed) const {
   if (!options_.video_per_seed) return options_.video;
@@ -14,8 +19,7 @@ std::filesystem::path RunWatcher::videoFileFor(std::uint64_t seed) const {
   return file;
 }
 
-void RunWatcher::operator()(const ambf_like::World& world, WorldMoment moment,
-                            std::uint64_t seed) {
+void RunWatcher::operator()(const ambf_like::World& world, WorldMoment moment, std::uint64_t seed) {
   const bool pictures = options_.window || !options_.snapshot_prefix.empty();
   if (moment == WorldMoment::Start) {
     if (pictures) {
@@ -23,6 +27,7 @@ void RunWatcher::operator()(const ambf_like::World& world, WorldMoment moment,
       view.window = options_.window;
       view.title = "raven_peg_transfer";
       view.camera = viewer::findView(pegTransferViews(world), "overview").camera;
+      view.visual_skin = options_.visual_skin;
       const std::lock_guard lock(mutex_);
       view_.reset();  // one window at a time
       view_ = std::make_unique<viewer::Viewer>(world, view);
@@ -30,6 +35,7 @@ void RunWatcher::operator()(const ambf_like::World& world, WorldMoment moment,
     if (!options_.video.empty()) {
       viewer::VideoOptions video = options_.video_options;
       video.file = videoFileFor(seed);
+      video.visual_skin = options_.visual_skin;
       auto recorder = std::make_unique<viewer::VideoRecorder>(
           world, video, viewer::findView(pegTransferViews(world), options_.video_view));
       const std::lock_guard lock(mutex_);

@@ -53,13 +53,12 @@ std::vector<std::string> pegTransferViewNames() {
   return {"overview", "left-task", "right-task", "grasper-left", "grasper-right"};
 }
 
-std::vector<viewer::View> pegTransferViews(const ambf_like::World& world,
-                                           const PegLayout& layout) {
+std::vector<viewer::View> pegTransferViews(const ambf_like::World& world, const PegLayout& layout) {
   viewer::Camera overview;
-  overview.target = Eigen::Vector3d(0.0, 0.079, kBoardTop + 0.03);
+  overview.target = Eigen::Vector3d(0.0, 0.079, kBoardTop + 0.08);
   overview.yaw = kFromFront;
-  overview.pitch = 0.75;
-  overview.distance = 0.70;
+  overview.pitch = 0.55;
+  overview.distance = 1.05;
   return {{"overview", overview, std::nullopt},
           {"left-task", taskCamera(layout, raven::Arm::Left), std::nullopt},
           {"right-task", taskCamera(layout, raven::Arm::Right), std::nullopt},

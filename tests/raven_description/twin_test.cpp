@@ -1,5 +1,6 @@
 // Our Raven-II twin: the committed model is what the generator writes, its body poses agree
-// with the kinematics, it tracks joint commands under gravity, and the peg-transfer scene rests.
+// with the kinematics (and so do AMBF's meshes placed on its links), it tracks joint commands
+// under gravity, and the peg-transfer scene rests.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -13,6 +14,7 @@
 #include "test_files.hpp"
 #include "twin/twin_arms.hpp"
 #include "twin_fixtures.hpp"
+#include "viewer/visual_skin.hpp"
 
 namespace {
 
@@ -53,10 +55,14 @@ std::string measured(double value) {
   return text;
 }
 
+/// AMBF's meshes on our links: written by raven_fit_visuals, not by the model generator.
+const std::filesystem::path kVisualSkin = "raven2/ambf_visuals.yaml";
+
 std::set<std::filesystem::path> filesUnder(const std::filesystem::path& dir) {
   std::set<std::filesystem::path> out;
   for (const auto& entry : std::filesystem::recursive_directory_iterator(dir)) {
-    if (entry.is_regular_file()) out.insert(std::filesystem::relative(entry.path(), dir));
+    const auto file = std::filesystem::relative(entry.path(), dir);
+    if (entry.is_regular_file() && file != kVisualSkin) out.insert(file);
   }
   return out;
 }
@@ -138,6 +144,58 @@ TEST(Twin, SettledPosesMatchTheKinematicsWithinATenthOfAMillimetre) {
     EXPECT_LT(worst_tool, 1e-4) << side;
   }
   EXPECT_TRUE(twin.world.isFinite());
+}
+
+TEST(Twin, AmbfsGrasperAndWristMeshesSitOnTheKinematicsInThreePoses) {
+  // The skin places AMBF's meshes through AMBF's own joint geometry (raven_fit_visuals): a
+  // grasper mesh's frame is on its jaw axis at its pivot, a wrist mesh's on the wrist axis where
+  // the shaft crosses it. Where those land against our forward kinematics is the check.
+  const auto skin = viewer::VisualSkin::load(kModels / kVisualSkin);
+  Twin twin(kModels / "raven2/launch.yaml");
+  ArmJoints reach = test_support::physicalProfile().home, tilted = reach;
+  reach << 0.35, 1.2, 0.47, 0.6, -0.5, 0.4, 0.2;
+  tilted << 0.9, 1.9, 0.33, -1.0, 0.7, 0.1, 0.5;
+  for (Arm arm : raven::kArms) {
+    const auto kin = raven::ArmKinematics::of(test_support::physicalProfile(), arm);
+    const std::string prefix = "/raven2/" + std::string(raven::armName(arm)) + "/";
+    double worst_pivot = 0.0, worst_wrist = 0.0;
+    for (const ArmJoints& q : {test_support::physicalProfile().home, reach, tilted}) {
+      twin.arms.command(arm, q);
+      twin.arms.command(raven::other(arm), test_support::physicalProfile().home);
+      settle(twin, arm, q);
+      const ArmJoints reached = twin.arms.measured(arm);
+      for (const char* jaw : {"jaw1_link", "jaw2_link"}) {
+        const Vector3d pivot = twin.world.body(prefix + jaw).pose() *
+                               skin.bodies.at(prefix + jaw).offset.translation();
+        worst_pivot = std::max(worst_pivot, (pivot - kin.toolPose(reached).translation()).norm());
+      }
+      const Vector3d wrist = twin.world.body(prefix + "wrist_link").pose() *
+                             skin.bodies.at(prefix + "wrist_link").offset.translation();
+      worst_wrist = std::max(worst_wrist, (wrist - kin.wristPoint(reached)).norm());
+    }
+    const std::string side(raven::armName(arm));
+    RecordProperty(side + "_grasper_mesh_pivot_to_tool_point_m", measured(worst_pivot));
+    RecordProperty(side + "_wrist_mesh_to_wrist_point_m", measured(worst_wrist));
+    EXPECT_LT(worst_pivot, 2e-3) << side;
+    EXPECT_LT(worst_wrist, 2e-3) << side;
+  }
+}
+
+TEST(Twin, CommittedVisualSkinIsWhatTheFitWrites) {
+  const auto shared = test_support::sharedDataDir();
+  if (shared.empty()) GTEST_SKIP() << "../shared/data is absent: AMBF's Raven model is not here";
+  test_support::TempDir dir;
+  const std::string command = std::string(RAVEN_FIT_VISUALS) + " --models " +
+                              (kModels / "raven2").string() + " --ambf-model " +
+                              (shared /
+                               "ambf/ambf_models/descriptions/multi-bodies/robots/"
+                               "blender-raven2.yaml")
+                                  .string() +
+                              " --out " + (dir.path() / "skin.yaml").string() + " > /dev/null";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_EQ(test_support::readFile(dir.path() / "skin.yaml"),
+            test_support::readFile(kModels / kVisualSkin))
+      << "stale: run build/twin/raven_fit_visuals from the repository root";
 }
 
 TEST(Twin, FollowsAJointStepAtTheVelocityCapsUnderGravity) {

@@ -2,6 +2,7 @@
 
 #include <BulletSoftBody/btSoftBody.h>
 #include <btBulletDynamicsCommon.h>
+#include <spdlog/spdlog.h>
 
 #include <functional>
 
@@ -47,6 +48,19 @@ TriangleMesh visualOf(const ambf_like::RigidBody& body, ambf_like::MeshLibrary& 
   return m;
 }
 
+/// A skin's mesh in the body frame.
+TriangleMesh skinOf(const VisualSkin::Piece& piece, const VisualSkin& skin,
+                    ambf_like::MeshLibrary& meshes) {
+  const auto mesh = meshes.load(skin.mesh_dir / piece.mesh, {skin.file, 0, piece.mesh.string()});
+  const Eigen::Isometry3f offset = piece.offset.cast<float>();
+  TriangleMesh m;
+  for (const auto& t : mesh->triangles) {
+    auto v = [&](int i) { return Eigen::Vector3f(offset * mesh->vertices[i].cast<float>()); };
+    m.add(v(t[0]), v(t[1]), v(t[2]));
+  }
+  return m;
+}
+
 void grow(Eigen::AlignedBox3d& box, const TriangleMesh& m, const Eigen::Isometry3d& pose) {
   Eigen::AlignedBox3f local;
   for (const auto& p : m.positions) local.extend(p);
@@ -76,7 +90,23 @@ void TriangleMesh::append(const TriangleMesh& other, const Eigen::Isometry3d& po
   }
 }
 
-SceneGeometry SceneGeometry::of(const ambf_like::World& world, ambf_like::MeshLibrary& meshes) {
+SceneGeometry SceneGeometry::of(const ambf_like::World& world,
+                                const std::filesystem::path& skin_file) {
+  ambf_like::MeshLibrary meshes;
+  if (skin_file.empty()) return of(world, meshes);
+  const VisualSkin skin = VisualSkin::load(skin_file);
+  if (const auto missing = skin.firstMissing(); !missing.empty()) {
+    spdlog::info(
+        "{}: {} is not there (set RAVEN_AMBF_MESHES to AMBF's raven_2 mesh folder): "
+        "drawing the bodies' own shapes",
+        skin_file.string(), missing.string());
+    return of(world, meshes);
+  }
+  return of(world, meshes, &skin);
+}
+
+SceneGeometry SceneGeometry::of(const ambf_like::World& world, ambf_like::MeshLibrary& meshes,
+                                const VisualSkin* skin) {
   SceneGeometry g;
   for (std::size_t i = 0; i < world.bodyCount(); ++i) {
     const auto& body = world.body(i);
@@ -84,7 +114,9 @@ SceneGeometry SceneGeometry::of(const ambf_like::World& world, ambf_like::MeshLi
     b.name = body.qualifiedName();
     b.colour = colourFor(b.name);
     b.collision.append(detail::tessellate(*body.bullet().getCollisionShape()), comInBody(body));
-    b.visual = visualOf(body, meshes);
+    const auto skinned = skin ? skin->bodies.find(b.name) : decltype(skin->bodies.end()){};
+    b.visual = skin && skinned != skin->bodies.end() ? skinOf(skinned->second, *skin, meshes)
+                                                     : visualOf(body, meshes);
     if (b.visual.positions.empty()) b.visual = b.collision;
     grow(g.bounds, b.visual, body.pose());
     g.bodies.push_back(std::move(b));

@@ -26,8 +26,7 @@ VideoRecorder::VideoRecorder(const ambf_like::World& world, VideoOptions options
     : options_(std::move(options)), start_time_(world.time()) {
   if (options_.fps <= 0) throw std::invalid_argument("video frame rate must be positive");
   if (options_.queue == 0) throw std::invalid_argument("video queue must hold a frame");
-  ambf_like::MeshLibrary meshes;
-  geometry_ = std::make_unique<const SceneGeometry>(SceneGeometry::of(world, meshes));
+  geometry_ = std::make_unique<const SceneGeometry>(SceneGeometry::of(world, options_.visual_skin));
   view_ = view.value_or(View{"overview", Camera::framing(geometry_->bounds), std::nullopt});
   std::promise<void> started;
   auto ready = started.get_future();
@@ -91,8 +90,8 @@ void VideoRecorder::run(std::promise<void>* started) {
   std::unique_ptr<detail::VideoEncoder> encoder;
   try {
     context = std::make_unique<detail::HeadlessContext>(options_.width, options_.height);
-    encoder = std::make_unique<detail::VideoEncoder>(options_.file, options_.width,
-                                                     options_.height, options_.fps);
+    encoder = std::make_unique<detail::VideoEncoder>(options_.file, options_.width, options_.height,
+                                                     options_.fps);
     codec_ = encoder->codecName();
   } catch (...) {
     started->set_exception(std::current_exception());
@@ -111,8 +110,8 @@ void VideoRecorder::run(std::promise<void>* started) {
         queue_.pop_front();
       }
       changed_.notify_all();
-      detail::draw(*geometry_, frame, view_.at(frame.body_poses), options_.width,
-                   options_.height, options_.look);
+      detail::draw(*geometry_, frame, view_.at(frame.body_poses), options_.width, options_.height,
+                   options_.look);
       detail::readPixelsRgba(options_.width, options_.height, pixels);
       encoder->write(pixels);
     }

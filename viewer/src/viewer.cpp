@@ -78,8 +78,7 @@ Viewer::Viewer(const ambf_like::World& world, ViewerOptions options)
       if (armed) g_window_alive = false;
     }
   } release{options_.window};
-  ambf_like::MeshLibrary meshes;
-  geometry_ = std::make_unique<const SceneGeometry>(SceneGeometry::of(world, meshes));
+  geometry_ = std::make_unique<const SceneGeometry>(SceneGeometry::of(world, options_.visual_skin));
   initial_camera_ = options_.camera.value_or(Camera::framing(geometry_->bounds));
   latest_ = std::make_unique<FrameState>(FrameState::of(world, true));
   last_steps_ = world.stepCount();
@@ -125,8 +124,8 @@ void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path
 
 void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path& file,
                       const ViewOptions& view) {
-  auto request = std::make_unique<Request>(
-      Request{FrameState::of(world, view.contacts), file, view, std::nullopt, std::promise<void>()});
+  auto request = std::make_unique<Request>(Request{FrameState::of(world, view.contacts), file, view,
+                                                   std::nullopt, std::promise<void>()});
   take(std::move(request));
 }
 
@@ -149,8 +148,7 @@ void Viewer::take(std::unique_ptr<Request> request) {
 
 void Viewer::serve(Request& request, int width, int height, const Camera& current) {
   try {
-    const Camera camera =
-        request.camera ? request.camera->at(request.frame.body_poses) : current;
+    const Camera camera = request.camera ? request.camera->at(request.frame.body_poses) : current;
     detail::draw(*geometry_, request.frame, camera, width, height, request.view);
     detail::writePng(request.file, detail::readPixels(width, height), width, height);
     request.done.set_value();

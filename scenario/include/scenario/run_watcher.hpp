@@ -15,6 +15,9 @@
 
 namespace scenario {
 
+/// Our Raven-II's skin of AMBF's meshes: raven_description/models/raven2/ambf_visuals.yaml.
+std::filesystem::path ravenVisualSkin();
+
 /// Which pictures to make.
 struct WatchOptions {
   bool window = false;          ///< a viewer window (one run only)
@@ -26,6 +29,8 @@ struct WatchOptions {
   bool video_per_seed = false;
   viewer::VideoOptions video_options;  ///< its file is set per run
   std::string video_view = "overview";
+  /// AMBF's Raven-II meshes on our links (drawn when AMBF's mesh files are found).
+  std::filesystem::path visual_skin = ravenVisualSkin();
 };
 
 /// Watches one run or the runs of a batch (thread-safe: each run has its own world).

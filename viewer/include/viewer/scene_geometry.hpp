@@ -10,6 +10,7 @@
 
 #include "ambf_like/mesh.hpp"
 #include "ambf_like/world.hpp"
+#include "viewer/visual_skin.hpp"
 
 namespace viewer {
 
@@ -44,8 +45,13 @@ struct SceneGeometry {
   std::vector<SoftGeometry> soft_bodies;
   Eigen::AlignedBox3d bounds;  ///< of everything at build time, planes left out
 
-  /// Throws ambf_like::LoadError if a visual mesh cannot be read.
-  static SceneGeometry of(const ambf_like::World& world, ambf_like::MeshLibrary& meshes);
+  /// Throws ambf_like::LoadError if a visual mesh cannot be read. A skin's meshes replace the
+  /// visuals of the bodies it names.
+  static SceneGeometry of(const ambf_like::World& world, ambf_like::MeshLibrary& meshes,
+                          const VisualSkin* skin = nullptr);
+  /// As above, with the skin file's meshes if they are all there (else the bodies' own visuals,
+  /// saying so once in the log); an empty path: no skin.
+  static SceneGeometry of(const ambf_like::World& world, const std::filesystem::path& skin_file);
 };
 
 /// One instant of the World, as drawn.

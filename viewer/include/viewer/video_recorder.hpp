@@ -27,6 +27,7 @@ struct VideoOptions {
   int fps = 30;                ///< frames per simulated second
   int width = 960, height = 540;
   ViewOptions look;
+  std::filesystem::path visual_skin;  ///< meshes drawn on some bodies (VisualSkin); empty: none
   /// Frames copied ahead of the encoder; when they are all waiting, a step waits (the video
   /// keeps every frame rather than drop one).
   std::size_t queue = 16;

@@ -34,7 +34,8 @@ struct ViewerOptions {
   int height = 800;
   double render_hz = 30.0;  ///< frames per second of the window
   ViewOptions view;
-  std::optional<Camera> camera;  ///< unset: framed on the scene's bounds
+  std::optional<Camera> camera;       ///< unset: framed on the scene's bounds
+  std::filesystem::path visual_skin;  ///< meshes drawn on some bodies (VisualSkin); empty: none
   std::string title = "ambf_like";
 };
 
