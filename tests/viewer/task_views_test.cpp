@@ -87,7 +87,7 @@ TEST(TaskViews, EveryNamedViewIsRenderedHeadless) {
     }
     // The task views look down on the board; a grasper view has the jaws against the sky.
     const bool grasper = name.starts_with("grasper");
-    EXPECT_GT(drawn, kWidth * kHeight / (grasper ? 20 : 5)) << name << ": mostly empty";
+    EXPECT_GT(drawn, kWidth * kHeight / (grasper ? 20 : 10)) << name << ": mostly empty";
   }
   EXPECT_THROW(viewer::findView(scene.views, "ceiling"), std::invalid_argument);
 }
