@@ -31,6 +31,8 @@ void measureRosEdge(const BenchSettings& settings, Report& report);
 void measureMemory(const BenchSettings& settings, Report& report);
 /// The peg scene's loop frequency with the viewer window open against headless (needs a display).
 void measureViewer(const BenchSettings& settings, Report& report);
+/// The main job's real-time factor with and without a video.
+void measureVideo(const BenchSettings& settings, Report& report);
 /// raven_sim from Python: a 1 ms step per call against C++, and N environments on threads.
 void measurePython(const BenchSettings& settings, Report& report);
 /// The Google Benchmark micro-benchmarks (IK, interpolation, a physics step).

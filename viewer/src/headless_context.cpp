@@ -13,9 +13,10 @@ namespace viewer::detail {
 namespace {
 
 std::string eglError(const char* what) {
-  return fmt::format("headless rendering: {} failed (EGL error 0x{:x}); Mesa's EGL (libegl-mesa0) "
-                     "is needed",
-                     what, eglGetError());
+  return fmt::format(
+      "headless rendering: {} failed (EGL error 0x{:x}); Mesa's EGL (libegl-mesa0) "
+      "is needed",
+      what, eglGetError());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <functional>
 
 #include "tessellation.hpp"
+#include "vertex_clustering.hpp"
 
 namespace viewer {
 
@@ -48,14 +49,19 @@ TriangleMesh visualOf(const ambf_like::RigidBody& body, ambf_like::MeshLibrary& 
   return m;
 }
 
-/// A skin's mesh in the body frame.
+/// Cells along each side of a skin mesh's bounds: a 0.3 m link keeps 1 cm detail, a 15 mm jaw
+/// half a millimetre (AMBF's 190,771 Raven triangles become 23,000; docs/viewer.md).
+constexpr int kSkinCells = 32;
+
+/// A skin's mesh in the body frame, its vertices clustered for drawing.
 TriangleMesh skinOf(const VisualSkin::Piece& piece, const VisualSkin& skin,
                     ambf_like::MeshLibrary& meshes) {
-  const auto mesh = meshes.load(skin.mesh_dir / piece.mesh, {skin.file, 0, piece.mesh.string()});
+  const auto full = meshes.load(skin.mesh_dir / piece.mesh, {skin.file, 0, piece.mesh.string()});
+  const ambf_like::Mesh mesh = detail::clusterVertices(*full, kSkinCells);
   const Eigen::Isometry3f offset = piece.offset.cast<float>();
   TriangleMesh m;
-  for (const auto& t : mesh->triangles) {
-    auto v = [&](int i) { return Eigen::Vector3f(offset * mesh->vertices[i].cast<float>()); };
+  for (const auto& t : mesh.triangles) {
+    auto v = [&](int i) { return Eigen::Vector3f(offset * mesh.vertices[i].cast<float>()); };
     m.add(v(t[0]), v(t[1]), v(t[2]));
   }
   return m;

@@ -1,6 +1,7 @@
 #pragma once
-// Frames read back from OpenGL into a video file through Debian's FFmpeg libraries: H.264 (libx264) in the
-// container the file's extension names (.mp4, .mkv, .avi), MPEG-4 Part 2 if libx264 is missing.
+// Frames read back from OpenGL into a video file through Debian's FFmpeg libraries: H.264 (libx264)
+// in the container the file's extension names (.mp4, .mkv, .avi), MPEG-4 Part 2 if libx264 is
+// missing.
 
 #include <cstdint>
 #include <filesystem>
@@ -30,7 +31,7 @@ class VideoEncoder {
   std::int64_t framesWritten() const { return frames_; }
 
  private:
-  struct Av;  // the FFmpeg contexts
+  struct Av;     // the FFmpeg contexts
   void drain();  ///< writes every packet the encoder has ready
 
   std::filesystem::path file_;
