@@ -58,6 +58,7 @@ struct Settings {
   int video_fps = 30;
   std::string video_size = "960x540";
   std::string video_view = "overview";
+  std::string video_first_frame;
 };
 
 constexpr std::size_t kHandoverSamples = 100000;
@@ -89,6 +90,7 @@ scenario::WatchOptions watchOptions(const Settings& s, bool batch) {
   w.video_options.fps = s.video_fps;
   w.video_options.setSize(s.video_size);
   w.video_view = s.video_view;
+  w.video_options.first_frame = s.video_first_frame;
   return w;
 }
 
@@ -292,6 +294,8 @@ int main(int argc, char** argv) {
   app.add_option("--video-size", s.video_size, "WIDTHxHEIGHT, even (default 960x540)");
   app.add_option("--video-view", s.video_view, "the video's view (default overview)")
       ->check(CLI::IsMember(view_names));
+  app.add_option("--video-first-frame", s.video_first_frame,
+                 "FILE.png: the video's first frame as a picture too (a single run)");
   app.add_flag("-q,--quiet", s.quiet, "warnings and errors only");
   app.add_flag("-v,--verbose", s.verbose, "log every phase of every transfer");
   CLI11_PARSE(app, argc, argv);

@@ -114,6 +114,10 @@ void VideoRecorder::run(std::promise<void>* started) {
                    options_.look);
       detail::readPixelsRgba(options_.width, options_.height, pixels);
       encoder->write(pixels);
+      if (encoder->framesWritten() == 1 && !options_.first_frame.empty()) {
+        detail::writePng(options_.first_frame, detail::readPixels(options_.width, options_.height),
+                         options_.width, options_.height);
+      }
     }
     encoder->close();
   } catch (...) {

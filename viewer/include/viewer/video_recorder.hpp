@@ -28,6 +28,7 @@ struct VideoOptions {
   int width = 960, height = 540;
   ViewOptions look;
   std::filesystem::path visual_skin;  ///< meshes drawn on some bodies (VisualSkin); empty: none
+  std::filesystem::path first_frame;  ///< the first frame as a PNG too (a clip's poster); empty: no
   /// Frames copied ahead of the encoder; when they are all waiting, a step waits (the video
   /// keeps every frame rather than drop one).
   std::size_t queue = 16;
