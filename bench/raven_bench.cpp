@@ -53,9 +53,8 @@ int main(int argc, char** argv) {
       {"loop", bench::measureLoopFrequency},    {"ambf", bench::measureAmbfScenes},
       {"controller", bench::measureController}, {"replay", bench::measureReplay},
       {"ros", bench::measureRosEdge},           {"viewer", bench::measureViewer},
-      {"video", bench::measureVideo},
-      {"memory", bench::measureMemory},         {"micro", bench::measureMicro},
-      {"python", bench::measurePython}};
+      {"video", bench::measureVideo},           {"memory", bench::measureMemory},
+      {"micro", bench::measureMicro},           {"python", bench::measurePython}};
   std::vector<std::string> names;
   for (const auto& section : sections) names.push_back(section.first);
 

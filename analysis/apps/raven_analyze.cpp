@@ -70,6 +70,10 @@ int main(int argc, char** argv) {
       return 1;
     }
     analysis::writeReportData(set, settings, out);
+    if (const auto pictures = analysis::writePictures(inputs, out)) {
+      std::printf("\n%zu snapshot(s) and video(s) of the runs in %s\n", pictures,
+                  (out / "pictures").c_str());
+    }
     if (figures) {
       if (const auto why = analysis::drawFigures(out); !why.empty()) {
         std::fprintf(stderr, "raven_analyze: no figures: %s\n", why.c_str());

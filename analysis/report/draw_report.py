@@ -208,6 +208,24 @@ def table(rows, columns):
     return f"<table><tr>{head}</tr>{body}</table>"
 
 
+def pictures(out):
+    """The runs' snapshots and videos raven_analyze copied beside the report (pictures.json)."""
+    listed = out / "pictures.json"
+    if not listed.exists():
+        return ""
+    parts = []
+    for item in json.loads(listed.read_text()):
+        src = html.escape(item["file"])
+        if item["kind"] == "image":
+            parts.append(f'<figure><img src="{src}" alt="{src}">'
+                         f'<figcaption>{src}</figcaption></figure>')
+        else:
+            poster = f' poster="{html.escape(item["poster"])}"' if "poster" in item else ""
+            parts.append(f'<figure><video controls src="{src}"{poster}></video>'
+                         f'<figcaption>{src}</figcaption></figure>')
+    return "<h2>Pictures of the runs</h2>" + "".join(parts)
+
+
 def page(out, metrics, figures):
     fmt = lambda v: "n/a" if v is None else f"{v:.4f}"  # noqa: E731
     summary = [dict(r, mean_abs=fmt(r["mean_abs"]),
@@ -223,7 +241,7 @@ def page(out, metrics, figures):
     text = f"""<!doctype html>
 <html><head><meta charset="utf-8"><title>Raven-II disparity report</title>
 <style>body{{font-family:sans-serif;margin:2em}} table{{border-collapse:collapse;margin:1em 0}}
-td,th{{border:1px solid #ccc;padding:3px 8px;font-size:13px}} img{{max-width:100%}}</style></head>
+td,th{{border:1px solid #ccc;padding:3px 8px;font-size:13px}} img,video{{max-width:100%}}</style></head>
 <body><h1>Raven-II disparity report</h1>
 <p>Trials aligned by {html.escape(metrics["inputs"]["alignment"])}. Metrics: metrics.json,
 metrics.csv, correlations.csv; figure data: trajectories.csv, scatter.csv, lowess.csv.</p>
@@ -233,6 +251,7 @@ metrics.csv, correlations.csv; figure data: trajectories.csv, scatter.csv, lowes
 {table(summary, ["symbol", "comparison", "quantity", "group", "unit", "mean_abs",
                  "mean_abs_first_row_removed"])}
 <h2>Figures</h2>{images}
+{pictures(out)}
 </body></html>
 """
     (out / "index.html").write_text(text)

@@ -85,9 +85,8 @@ Platforms makePlatforms(const Settings& s,
     p.clients.push_back(std::make_unique<bridge::ros1::RavenRosClient>(o));
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
-    p.twin =
-        controller_app::makeInProcessTwin({s.twin_launch, s.lock_step, s.stand_in, calibration,
-                                           s.video, s.video_fps, s.video_size});
+    p.twin = controller_app::makeInProcessTwin(
+        {s.twin_launch, s.lock_step, s.stand_in, calibration, s.video, s.video_fps, s.video_size});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;

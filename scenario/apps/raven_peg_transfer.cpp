@@ -52,7 +52,7 @@ struct Settings {
   double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
   bool quiet = false, verbose = false;
   bool gui = false;
-  std::string snapshot;  ///< PREFIX: PREFIX_before.png and PREFIX_after.png
+  std::string snapshot;                        ///< PREFIX: PREFIX_before.png and PREFIX_after.png
   std::vector<std::string> views{"overview"};  ///< of the snapshots
   std::string video;                           ///< FILE.mp4 (a batch: FILE_seed<N>.mp4)
   int video_fps = 30;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -363,9 +364,9 @@ TEST(RavenAnalyze, ReportsTheTwinAsAThirdPlatformWithFigures) {
   test_support::TempDir dir;
   const std::string replay = fmt::format(
       "{} --lock-step --paper-deadzone --no-gamepad --no-keyboard --replay-ci {} --record "
-      "twin_2arm --out {} > {} 2>&1",
+      "twin_2arm --out {} --video {} --video-size 320x240 > {} 2>&1",
       RAVEN_CONTROLLER, (paper / "2arm_ci.csv").string(), dir.path().string(),
-      (dir.path() / "controller.log").string());
+      (dir.path() / "twin_2arm.mp4").string(), (dir.path() / "controller.log").string());
   ASSERT_EQ(std::system(replay.c_str()), 0)
       << test_support::readFile(dir.path() / "controller.log");
   const auto report = dir.path() / "report";
@@ -406,6 +407,32 @@ TEST(RavenAnalyze, ReportsTheTwinAsAThirdPlatformWithFigures) {
   const auto page = test_support::readFile(report / "index.html");
   EXPECT_NE(page.find("twin vs physical"), std::string::npos);
   EXPECT_NE(page.find("fig8_twin_vs_physical_joint_position.png"), std::string::npos);
+  // The replay's video (recorded headless by raven_controller) is on the page beside the figures.
+  EXPECT_GT(std::filesystem::file_size(report / "pictures/twin_2arm.mp4"), 1000u);
+  EXPECT_NE(page.find(R"(<video controls src="pictures/twin_2arm.mp4")"), std::string::npos);
+}
+
+TEST(RavenAnalyze, ListsTheRunsSnapshotsAndVideosWithTheirFirstFrames) {
+  test_support::TempDir dir;
+  const auto runs = dir.path() / "runs";
+  std::filesystem::create_directories(runs);
+  for (const char* file : {"peg_overview_after.png", "run.mp4", "run.png", "peg_rs.csv"}) {
+    std::ofstream(runs / file) << "bytes of " << file;
+  }
+  const auto report = dir.path() / "report";
+  EXPECT_EQ(analysis::writePictures({runs / "peg_rs.csv"}, report), 2u);
+  const auto listed = nlohmann::json::parse(test_support::readFile(report / "pictures.json"));
+  ASSERT_EQ(listed.size(), 2u);
+  EXPECT_EQ(listed[0]["file"], "pictures/peg_overview_after.png");
+  EXPECT_EQ(listed[0]["kind"], "image");
+  EXPECT_EQ(listed[1]["file"], "pictures/run.mp4");
+  EXPECT_EQ(listed[1]["kind"], "video");
+  EXPECT_EQ(listed[1]["poster"], "pictures/run.png");
+  EXPECT_EQ(test_support::readFile(report / "pictures/run.png"), "bytes of run.png");
+  // Nothing to show: nothing written.
+  EXPECT_EQ(analysis::writePictures({dir.path() / "report/pictures.json"}, dir.path() / "none"),
+            0u);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "none"));
 }
 
 }  // namespace

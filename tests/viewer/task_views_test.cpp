@@ -2,16 +2,16 @@
 // scene; in the task views every ring covers enough pixels to count, and a ring on a target post
 // is told from a ring on a start post by where its colour lands.
 
-#include <gtest/gtest.h>
+#include "scenario/task_views.hpp"
 
 #include <BulletSoftBody/btSoftBody.h>
+#include <gtest/gtest.h>
 
 #include <memory>
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
 #include "scenario/peg_layout.hpp"
-#include "scenario/task_views.hpp"
 #include "test_files.hpp"
 #include "test_images.hpp"
 #include "viewer/viewer.hpp"
@@ -137,8 +137,7 @@ TEST(TaskViews, AGrasperViewFollowsItsJaws) {
   PegScene scene;
   if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
   for (raven::Arm arm : raven::kArms) {
-    const auto& view =
-        viewer::findView(scene.views, "grasper-" + std::string(raven::armName(arm)));
+    const auto& view = viewer::findView(scene.views, "grasper-" + std::string(raven::armName(arm)));
     ASSERT_TRUE(view.follow_body);
     std::vector<Eigen::Isometry3d> poses;
     for (std::size_t i = 0; i < scene.world->bodyCount(); ++i) {

@@ -75,8 +75,8 @@ struct DecodedVideo {
 /// Why this machine cannot render headless, or empty if it can.
 std::string headlessUnavailable() {
   ambf_like::MeshLibrary meshes;
-  const auto scene = ambf_like::loadLaunchFile(
-      std::filesystem::path(RAVEN_MODELS_DIR) / "raven2/launch.yaml", {});
+  const auto scene =
+      ambf_like::loadLaunchFile(std::filesystem::path(RAVEN_MODELS_DIR) / "raven2/launch.yaml", {});
   ambf_like::World world(scene.spec, meshes);
   viewer::ViewerOptions options;
   options.window = false;
@@ -136,8 +136,8 @@ TEST(Video, ABadFileOrSizeIsRefusedByName) {
   options.setSize("640x360");
   EXPECT_EQ(options.width, 640);
   ambf_like::MeshLibrary meshes;
-  const auto scene = ambf_like::loadLaunchFile(
-      std::filesystem::path(RAVEN_MODELS_DIR) / "raven2/launch.yaml", {});
+  const auto scene =
+      ambf_like::loadLaunchFile(std::filesystem::path(RAVEN_MODELS_DIR) / "raven2/launch.yaml", {});
   ambf_like::World world(scene.spec, meshes);
   options.file = "/proc/no_such_dir/run.mp4";
   try {

@@ -2,9 +2,10 @@
 // where the camera puts them, a collision view that differs from the visual one, numbered
 // snapshot series. Without Mesa's EGL every rendering test skips, saying so.
 
-#include <gtest/gtest.h>
+#include "viewer/viewer.hpp"
 
 #include <BulletSoftBody/btSoftBody.h>
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <memory>
@@ -15,7 +16,6 @@
 #include "test_images.hpp"
 #include "viewer/scene_geometry.hpp"
 #include "viewer/snapshot_schedule.hpp"
-#include "viewer/viewer.hpp"
 
 namespace {
 
@@ -165,8 +165,7 @@ TEST(Viewer, SnapshotsNeedNoDisplayAndAWindowSaysWhatItLacks) {
     viewer::Viewer view(world, options);
     ADD_FAILURE() << "a window without DISPLAY";
   } catch (const viewer::NoDisplay& e) {
-    EXPECT_NE(std::string(e.what()).find("no display for a window"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("no display for a window"), std::string::npos) << e.what();
   }
   if (!saved.empty()) setenv("DISPLAY", saved.c_str(), 1);
 }

@@ -147,16 +147,16 @@ struct Fitted {
 std::vector<Fitted> fitArm(Chain& our, Chain& ambf, const std::string& side) {
   const std::string s = side == "left" ? "_L" : "_R";
   std::map<std::string, Transform> at;
-  for (const auto& [ours, theirs] : std::vector<std::pair<std::string, std::string>>{
-           {"link1", "link1" + s},
-           {"link2", "link2" + s},
-           {"shaft", "instrument_shaft" + s},
-           {"wrist_link", "wrist" + s}}) {
+  for (const auto& [ours, theirs] :
+       std::vector<std::pair<std::string, std::string>>{{"link1", "link1" + s},
+                                                        {"link2", "link2" + s},
+                                                        {"shaft", "instrument_shaft" + s},
+                                                        {"wrist_link", "wrist" + s}}) {
     at[ours] = fitByAxes(our, ours, ambf, theirs);
   }
   // The carriage slides on link 2: link 2's turn, the shaft's place on the axis.
-  Transform carriage = our.relative("carriage", "link2") * at["link2"] *
-                       ambf.relative("link2" + s, "link3" + s);
+  Transform carriage =
+      our.relative("carriage", "link2") * at["link2"] * ambf.relative("link2" + s, "link3" + s);
   carriage.translation() = (our.relative("carriage", "shaft") * at["shaft"] *
                             ambf.relative("link3" + s, "instrument_shaft" + s).inverse())
                                .translation();
@@ -164,17 +164,17 @@ std::vector<Fitted> fitArm(Chain& our, Chain& ambf, const std::string& side) {
   // The jaws hang off the wrist through AMBF's joints, turned to point along our jaws.
   for (const auto& [ours, theirs] : std::vector<std::pair<std::string, std::string>>{
            {"jaw1_link", "grasper1" + s}, {"jaw2_link", "grasper2" + s}}) {
-    const Transform through = our.relative(ours, "wrist_link") * at["wrist_link"] *
-                              ambf.relative("wrist" + s, theirs);
+    const Transform through =
+        our.relative(ours, "wrist_link") * at["wrist_link"] * ambf.relative("wrist" + s, theirs);
     const Line axis = ambf.in(theirs);
     const Vec3 their_tip = across(axis, ambf.vertices(theirs));
     const Vec3 our_tip = through.linear().transpose() * across(our.in(ours), our.vertices(ours));
-    const double turn = std::atan2(their_tip.cross(our_tip).dot(axis.direction),
-                                   their_tip.dot(our_tip));
+    const double turn =
+        std::atan2(their_tip.cross(our_tip).dot(axis.direction), their_tip.dot(our_tip));
     Transform spin = Transform::Identity();
     spin.linear() = Eigen::AngleAxisd(turn, axis.direction).toRotationMatrix();
-    at[ours] = through * Eigen::Translation3d(axis.point) * spin *
-               Eigen::Translation3d(-axis.point);
+    at[ours] =
+        through * Eigen::Translation3d(axis.point) * spin * Eigen::Translation3d(-axis.point);
   }
   std::vector<Fitted> out;
   for (const char* ours :
@@ -209,8 +209,9 @@ int main(int argc, char** argv) {
   CLI::App app{"raven_fit_visuals: AMBF's Raven-II meshes placed on our Raven-II's links"};
   app.add_option("--ambf-model", ambf_model, "AMBF's blender-raven2.yaml")
       ->check(CLI::ExistingFile);
-  app.add_option("--models", models, "our raven2 model folder (reads raven2_*.yaml, writes "
-                                     "ambf_visuals.yaml)")
+  app.add_option("--models", models,
+                 "our raven2 model folder (reads raven2_*.yaml, writes "
+                 "ambf_visuals.yaml)")
       ->check(CLI::ExistingDirectory);
   app.add_option("--out", out_name, "write here instead of MODELS/ambf_visuals.yaml");
   CLI11_PARSE(app, argc, argv);
@@ -218,9 +219,8 @@ int main(int argc, char** argv) {
     Chain ambf = Chain::load(ambf_model);
     const auto mesh_dir = std::filesystem::path(ambf_model).parent_path() /
                           "../../../meshes/blender_afmb/raven_2/low_res";
-    const auto out_file =
-        out_name.empty() ? std::filesystem::path(models) / "ambf_visuals.yaml"
-                         : std::filesystem::path(out_name);
+    const auto out_file = out_name.empty() ? std::filesystem::path(models) / "ambf_visuals.yaml"
+                                           : std::filesystem::path(out_name);
     std::ofstream out(out_file);
     out << "# AMBF's Raven-II meshes (blender-raven2.yaml's low-resolution STL files) on our "
            "links: each\n"

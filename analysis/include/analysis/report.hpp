@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "analysis/trial_set.hpp"
 
@@ -20,6 +21,13 @@ struct ReportSettings {
 /// cannot write.
 void writeReportData(const TrialSet& set, const ReportSettings& settings,
                      const std::filesystem::path& dir);
+
+/// Pictures of the runs beside the recordings: the PNG snapshots and videos (.mp4, .mkv, .webm)
+/// in the input folders (or the folders of input files), copied into `dir`/pictures and listed
+/// in pictures.json; a PNG with a video's stem is that video's first frame (its poster).
+/// Returns how many are listed. Throws std::runtime_error naming a file it cannot copy.
+std::size_t writePictures(const std::vector<std::filesystem::path>& inputs,
+                          const std::filesystem::path& dir);
 
 /// Runs the drawing script on `dir` (PNG figures and index.html). Returns an empty string on
 /// success, otherwise why the figures are missing (the data files stay).

@@ -25,7 +25,6 @@ using ProgressCallback = std::function<void(const RunProgress&)>;
 /// When a run shows its world to an observer.
 enum class WorldMoment { Start, Iteration, End };
 /// Shown a run's world at a moment; `seed` says which run of a batch it is.
-using WorldObserver =
-    std::function<void(const ambf_like::World&, WorldMoment, std::uint64_t seed)>;
+using WorldObserver = std::function<void(const ambf_like::World&, WorldMoment, std::uint64_t seed)>;
 
 }  // namespace scenario
