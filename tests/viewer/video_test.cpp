@@ -125,6 +125,16 @@ TEST(Video, OfTheMainJobDecodesToItsFramesSizeAndSimulatedDuration) {
   EXPECT_GT(simulated, 60.0) << "the whole main job";
 }
 
+TEST(Video, EachRunOfABatchHasItsOwnFile) {
+  scenario::WatchOptions watch;
+  watch.video = "videos/peg.mp4";
+  EXPECT_EQ(scenario::RunWatcher(watch).videoFileFor(7), "videos/peg.mp4");
+  watch.video_per_seed = true;
+  const scenario::RunWatcher batch(watch);
+  EXPECT_EQ(batch.videoFileFor(7), "videos/peg_seed7.mp4");
+  EXPECT_EQ(batch.videoFileFor(12), "videos/peg_seed12.mp4");
+}
+
 TEST(Video, ABadFileOrSizeIsRefusedByName) {
   if (const auto why = headlessUnavailable(); !why.empty()) {
     GTEST_SKIP() << "no headless OpenGL: " << why;
