@@ -7,6 +7,8 @@
 #include <BulletSoftBody/btSoftBody.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "ambf_like/scene_loader.hpp"
@@ -25,7 +27,7 @@ using test_support::shareNear;
 
 const std::filesystem::path kModels = RAVEN_MODELS_DIR;
 constexpr int kWidth = 640, kHeight = 400;
-/// A ring 20 mm across seen from 0.2 m covers about 1,500 pixels of a 640x400 task view; a
+/// A ring 20 mm across seen from 0.2 m covers about 2,000 pixels of a 640x400 task view; a
 /// third of that still counts as a ring a person can see.
 constexpr int kMinRingPixels = 500;
 /// Height of a resting ring's middle above the board's top (its 10 mm height, resting on it).
@@ -64,14 +66,33 @@ struct PegScene {
   }
 };
 
-/// Ring-coloured pixels near a post (at a resting ring's middle height), as a share of a box
-/// about the ring's inner radius on screen.
-double ringShareAt(const Image& image, const viewer::Camera& camera, const Eigen::Vector2d& post) {
+/// The square on screen about a post at a resting ring's middle height, as wide as the ring.
+struct PostBox {
+  Eigen::Vector2d centre;
+  int half = 0;
+};
+
+PostBox boxAt(const Image& image, const viewer::Camera& camera, const Eigen::Vector2d& post) {
   const Eigen::Vector3d middle(post.x(), post.y(), kBoardTop + kRingMiddle);
   const auto centre = camera.toPixel(middle, image.width, image.height);
-  const auto rim = camera.toPixel(middle + Eigen::Vector3d(0.006, 0, 0), image.width, image.height);
-  if (!centre || !rim) return -1.0;
-  return shareNear(image, *centre, static_cast<int>((*rim - *centre).norm()), isPegRed);
+  const auto rim = camera.toPixel(middle + Eigen::Vector3d(0.010, 0, 0), image.width, image.height);
+  if (!centre || !rim) return {};
+  return {*centre, static_cast<int>((*rim - *centre).norm())};
+}
+
+/// Ring-coloured pixels in the box about a post.
+int ringPixelsAt(const Image& image, const viewer::Camera& camera, const Eigen::Vector2d& post) {
+  const PostBox box = boxAt(image, camera, post);
+  const int side = 2 * box.half + 1;
+  return static_cast<int>(
+      std::lround(shareNear(image, box.centre, box.half, isPegRed) * side * side));
+}
+
+/// The same as a share of the box.
+double ringShareAt(const Image& image, const viewer::Camera& camera, const Eigen::Vector2d& post) {
+  const PostBox box = boxAt(image, camera, post);
+  const int side = 2 * box.half + 1;
+  return static_cast<double>(ringPixelsAt(image, camera, post)) / (side * side);
 }
 
 TEST(TaskViews, EveryNamedViewIsRenderedHeadless) {
@@ -98,7 +119,7 @@ TEST(TaskViews, TheOverviewShowsAllSixRings) {
   const Image image = scene.shoot("overview");
   const viewer::Camera camera = viewer::findView(scene.views, "overview").camera;
   for (const scenario::PegJob& job : scenario::PegLayout{}.jobs) {
-    EXPECT_GT(ringShareAt(image, camera, job.from), 0.25) << job.peg << " on its start post";
+    EXPECT_GT(ringShareAt(image, camera, job.from), 0.15) << job.peg << " on its start post";
   }
 }
 
@@ -106,6 +127,7 @@ TEST(TaskViews, RingsOnTargetPostsAreToldFromRingsOnStartPosts) {
   PegScene scene;
   if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
   const scenario::PegLayout layout;
+  int fewest = kWidth * kHeight;  // ring pixels of the least visible ring, before and after
   for (raven::Arm arm : raven::kArms) {
     const std::string view = std::string(raven::armName(arm)) + "-task";
     const viewer::Camera camera = viewer::findView(scene.views, view).camera;
@@ -117,8 +139,9 @@ TEST(TaskViews, RingsOnTargetPostsAreToldFromRingsOnStartPosts) {
     }
     EXPECT_GT(ring_pixels, 3 * kMinRingPixels) << view;
     for (const scenario::PegJob& job : layout.jobsOf(arm)) {
-      EXPECT_GT(ringShareAt(image, camera, job.from), 0.25) << view << " " << job.peg;
-      EXPECT_LT(ringShareAt(image, camera, job.to), 0.02) << view << " " << job.peg;
+      fewest = std::min(fewest, ringPixelsAt(image, camera, job.from));
+      EXPECT_GT(ringPixelsAt(image, camera, job.from), kMinRingPixels) << view << " " << job.peg;
+      EXPECT_LT(ringShareAt(image, camera, job.to), 0.01) << view << " " << job.peg;
     }
     // After: the same rings moved onto their target posts, as a finished transfer leaves them.
     for (const scenario::PegJob& job : layout.jobsOf(arm)) {
@@ -127,10 +150,12 @@ TEST(TaskViews, RingsOnTargetPostsAreToldFromRingsOnStartPosts) {
     }
     image = scene.shoot(view);
     for (const scenario::PegJob& job : layout.jobsOf(arm)) {
-      EXPECT_LT(ringShareAt(image, camera, job.from), 0.02) << view << " " << job.peg;
-      EXPECT_GT(ringShareAt(image, camera, job.to), 0.25) << view << " " << job.peg;
+      EXPECT_LT(ringShareAt(image, camera, job.from), 0.01) << view << " " << job.peg;
+      fewest = std::min(fewest, ringPixelsAt(image, camera, job.to));
+      EXPECT_GT(ringPixelsAt(image, camera, job.to), kMinRingPixels) << view << " " << job.peg;
     }
   }
+  RecordProperty("fewest_ring_pixels", fewest);
 }
 
 TEST(TaskViews, AGrasperViewFollowsItsJaws) {
