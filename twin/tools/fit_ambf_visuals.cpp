@@ -190,6 +190,11 @@ std::vector<Fitted> fitArm(Chain& our, Chain& ambf, const std::string& side) {
   return out;
 }
 
+/// Where AMBF's Raven meshes are, from raven_description/models/raven2: ../shared beside the
+/// repository, where the project keeps AMBF's files (the same wherever the fit ran).
+constexpr const char* kMeshPath =
+    "../../../../shared/data/ambf/ambf_models/meshes/blender_afmb/raven_2/low_res";
+
 std::string yamlPose(const Transform& t) {
   const Vec3 ypr = t.rotation().eulerAngles(2, 1, 0);
   const Vec3& p = t.translation();
@@ -217,8 +222,6 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     Chain ambf = Chain::load(ambf_model);
-    const auto mesh_dir = std::filesystem::path(ambf_model).parent_path() /
-                          "../../../meshes/blender_afmb/raven_2/low_res";
     const auto out_file = out_name.empty() ? std::filesystem::path(models) / "ambf_visuals.yaml"
                                            : std::filesystem::path(out_name);
     std::ofstream out(out_file);
@@ -231,11 +234,7 @@ int main(int argc, char** argv) {
            "# in $RAVEN_AMBF_MESHES, else in `mesh path` (relative to this file), and draws the "
            "collision\n"
            "# shapes when they are absent.\n"
-        << "mesh path: "
-        << std::filesystem::relative(std::filesystem::weakly_canonical(mesh_dir),
-                                     std::filesystem::weakly_canonical(models))
-               .string()
-        << "\nbodies:\n";
+        << "mesh path: " << kMeshPath << "\nbodies:\n";
     for (const std::string side : {"left", "right"}) {
       Chain our = Chain::load(std::filesystem::path(models) / ("raven2_" + side + ".yaml"));
       for (const Fitted& f : fitArm(our, ambf, side)) {
