@@ -287,9 +287,7 @@ int main(int argc, char** argv) {
 
   if (video) {
     try {
-      const auto v = video->finish();
-      spdlog::info("video: {} ({} frames, {:.2f} s at {} fps, {}; steps waited {:.2f} s for it)",
-                   v.file.string(), v.frames, v.duration_s, o.video_fps, v.codec, v.physics_wait_s);
+      spdlog::info("video: {}", video->finish().describe());
     } catch (const std::exception& e) {
       spdlog::error("{}", e.what());
       return 1;

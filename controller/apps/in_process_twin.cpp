@@ -27,9 +27,7 @@ struct TwinVideo {
   ~TwinVideo() {
     if (!recorder) return;
     try {
-      const auto v = recorder->finish();
-      spdlog::info("video: {} ({} frames, {:.1f} s at {} fps, {})", v.file.string(), v.frames,
-                   v.duration_s, options.fps, v.codec);
+      spdlog::info("video: {}", recorder->finish().describe());
     } catch (const std::exception& e) {
       spdlog::error("{}", e.what());
     }

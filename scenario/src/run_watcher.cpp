@@ -55,9 +55,7 @@ void RunWatcher::operator()(const ambf_like::World& world, WorldMoment moment, s
   recorder->capture(world);
   if (moment != WorldMoment::End) return;
   const viewer::VideoSummary summary = recorder->finish();
-  spdlog::info("video: {} ({} frames, {:.1f} s at {} fps, {}; steps waited {:.2f} s for it)",
-               summary.file.string(), summary.frames, summary.duration_s,
-               options_.video_options.fps, summary.codec, summary.physics_wait_s);
+  spdlog::info("video: {}", summary.describe());
   const std::lock_guard lock(mutex_);
   videos_.push_back(summary);
   recording_.erase(&world);
@@ -72,19 +70,12 @@ void RunWatcher::snap(const ambf_like::World& world, const char* when) {
             : fmt::format("{}_{}_{}.png", options_.snapshot_prefix, name, when);
     view_->snapshot(world, file, view_->options().view, viewer::findView(views, name));
     spdlog::info("snapshot: {} ({})", file, name);
-    const std::lock_guard lock(mutex_);
-    snapshots_.emplace_back(file);
   }
 }
 
 std::vector<viewer::VideoSummary> RunWatcher::videos() const {
   const std::lock_guard lock(mutex_);
   return videos_;
-}
-
-std::vector<std::filesystem::path> RunWatcher::snapshots() const {
-  const std::lock_guard lock(mutex_);
-  return snapshots_;
 }
 
 }  // namespace scenario

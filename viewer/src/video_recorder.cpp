@@ -1,5 +1,7 @@
 #include "viewer/video_recorder.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cstdio>
 
@@ -8,6 +10,11 @@
 #include "video_encoder.hpp"
 
 namespace viewer {
+
+std::string VideoSummary::describe() const {
+  return fmt::format("{} ({} frames, {:.2f} s at {} fps, {}; steps waited {:.2f} s for it)",
+                     file.string(), frames, duration_s, fps, codec, physics_wait_s);
+}
 
 void VideoOptions::setSize(const std::string& text) {
   int w = 0, h = 0;
@@ -80,7 +87,7 @@ VideoSummary VideoRecorder::finish() {
   }
   finished_ = true;
   return VideoSummary{options_.file, captured_, static_cast<double>(captured_) / options_.fps,
-                      codec_, physics_wait_s_};
+                      options_.fps,  codec_,    physics_wait_s_};
 }
 
 void VideoRecorder::run(std::promise<void>* started) {

@@ -124,9 +124,8 @@ void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path
 
 void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path& file,
                       const ViewOptions& view) {
-  auto request = std::make_unique<Request>(Request{FrameState::of(world, view.contacts), file, view,
-                                                   std::nullopt, std::promise<void>()});
-  take(std::move(request));
+  take(std::make_unique<Request>(Request{FrameState::of(world, view.contacts), file, view,
+                                         std::nullopt, std::promise<void>()}));
 }
 
 void Viewer::snapshot(const ambf_like::World& world, const std::filesystem::path& file,
@@ -164,8 +163,12 @@ void Viewer::run(std::promise<void>* started) {
   setenv("LP_NUM_THREADS", "0", 0);
   if (options_.window) {
     runWindow(started);
-    return;
+  } else {
+    runHeadless(started);
   }
+}
+
+void Viewer::runHeadless(std::promise<void>* started) {
   std::unique_ptr<detail::HeadlessContext> context;
   try {
     context = std::make_unique<detail::HeadlessContext>(options_.width, options_.height);

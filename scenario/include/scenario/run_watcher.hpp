@@ -42,8 +42,6 @@ class RunWatcher {
   void operator()(const ambf_like::World& world, WorldMoment moment, std::uint64_t seed);
   /// The videos finished so far.
   std::vector<viewer::VideoSummary> videos() const;
-  /// The snapshots written so far.
-  std::vector<std::filesystem::path> snapshots() const;
   /// The file a run's video goes to.
   std::filesystem::path videoFileFor(std::uint64_t seed) const;
 
@@ -55,7 +53,6 @@ class RunWatcher {
   std::unique_ptr<viewer::Viewer> view_;  ///< the window, or headless for snapshots
   std::map<const ambf_like::World*, std::unique_ptr<viewer::VideoRecorder>> recording_;
   std::vector<viewer::VideoSummary> videos_;
-  std::vector<std::filesystem::path> snapshots_;
 };
 
 }  // namespace scenario

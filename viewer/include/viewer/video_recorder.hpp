@@ -42,8 +42,12 @@ struct VideoSummary {
   std::filesystem::path file;
   std::int64_t frames = 0;
   double duration_s = 0.0;  ///< frames / fps
+  int fps = 0;
   std::string codec;
   double physics_wait_s = 0.0;  ///< wall time steps spent waiting for the encoder
+
+  /// "run.mp4 (2169 frames, 72.30 s at 30 fps, libx264; steps waited 18.01 s for it)".
+  std::string describe() const;
 };
 
 /// Records one World; not copyable. Many may run at once (one per run of a batch).

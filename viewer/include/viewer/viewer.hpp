@@ -84,7 +84,8 @@ class Viewer {
  private:
   struct Request;
   void run(std::promise<void>* started);
-  void runWindow(std::promise<void>* started);
+  void runWindow(std::promise<void>* started);    ///< GLFW: the window and its frames
+  void runHeadless(std::promise<void>* started);  ///< EGL: snapshots only
   void renderLoop();
   void take(std::unique_ptr<Request> request);  ///< hands a snapshot over and waits for it
   void serve(Request& request, int width, int height, const Camera& current);
