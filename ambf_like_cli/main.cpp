@@ -38,10 +38,8 @@ struct Options {
   bool quiet = false;
   std::string snapshot;
   double snapshot_every = 0.0;
-  std::string video;  ///< FILE.mp4
+  common::VideoFlags video;
   std::string visual_skin;
-  int video_fps = 30;
-  std::string video_size = "960x540";
   bool collision_view = false;
   bool contacts = false;
 };
@@ -148,12 +146,7 @@ int main(int argc, char** argv) {
   app.add_option("--snapshot", o.snapshot,
                  "write a PNG of the scene at the end (with --snapshot-every: a numbered series); "
                  "headless: no display needed");
-  app.add_option("--video", o.video,
-                 "FILE.mp4: a video of the run, one frame every 1/fps simulated seconds "
-                 "(headless: no display needed)");
-  app.add_option("--video-fps", o.video_fps, "frames per simulated second (default 30)")
-      ->check(CLI::Range(1, 240));
-  app.add_option("--video-size", o.video_size, "WIDTHxHEIGHT, even (default 960x540)");
+  common::addVideoFlags(app, o.video, "the run");
   app.add_option("--visual-skin", o.visual_skin,
                  "meshes drawn on bodies by name, e.g. raven_description/models/raven2/"
                  "ambf_visuals.yaml (AMBF's Raven-II meshes on our links)")
@@ -242,12 +235,9 @@ int main(int argc, char** argv) {
     if (o.snapshot_every > 0.0) schedule.emplace(o.snapshot, o.snapshot_every);
   }
   std::unique_ptr<viewer::VideoRecorder> video;
-  if (!o.video.empty()) {
+  if (!o.video.file.empty()) {
     try {
-      viewer::VideoOptions video_options;
-      video_options.file = o.video;
-      video_options.fps = o.video_fps;
-      video_options.setSize(o.video_size);
+      viewer::VideoOptions video_options = viewer::VideoOptions::of(o.video);
       video_options.look = {o.collision_view, o.contacts};
       video_options.visual_skin = o.visual_skin;
       video = std::make_unique<viewer::VideoRecorder>(*world, video_options, std::nullopt);

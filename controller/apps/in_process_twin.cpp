@@ -42,12 +42,10 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
   options.clock = settings.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
   if (settings.stand_in) options.stand_in = twin::CableActuationParams::physicalStandIn();
   if (settings.calibration) options.tracking = settings.calibration->twin_tracking->params;
-  if (!settings.video.empty()) {
+  if (!settings.video.file.empty()) {
     auto video = std::make_shared<TwinVideo>();
-    video->options.file = settings.video;
-    video->options.fps = settings.video_fps;
-    video->options.setSize(settings.video_size);
-    video->options.visual_skin = raven::modelDirectory() / "raven2" / "ambf_visuals.yaml";
+    video->options = viewer::VideoOptions::of(settings.video);
+    video->options.visual_skin = raven::ravenVisualSkin();
     options.after_step = [video](const ambf_like::World& world) { video->capture(world); };
   }
   return std::make_unique<twin::TwinPlatform>(options);

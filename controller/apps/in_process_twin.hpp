@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bridge/raven_platform.hpp"
+#include "common/video_flags.hpp"
 
 namespace controller_app {
 
@@ -25,9 +26,7 @@ struct InProcessTwinSettings {
   bool lock_step = false;                              ///< simulated clock
   bool stand_in = false;                               ///< the physical stand-in's actuation
   const ControllerCalibration* calibration = nullptr;  ///< from --calibration, or none
-  std::string video;                                   ///< FILE.mp4 of the twin; empty: none
-  int video_fps = 30;                                  ///< frames per simulated second
-  std::string video_size = "960x540";
+  common::VideoFlags video;                            ///< of the twin; no file: none
 };
 
 /// The in-process twin; throws std::runtime_error in a build without the simulator.

@@ -36,9 +36,7 @@ struct Settings {
   bool stand_in = false;
   std::string calibration_file;
   std::string twin_launch;
-  std::string video;  ///< FILE.mp4 of the in-process twin
-  int video_fps = 30;
-  std::string video_size = "960x540";
+  common::VideoFlags video;  ///< of the in-process twin
   bool lock_step = false;
   bool no_arm_swap = false;
   std::string start_mode;
@@ -67,7 +65,7 @@ Platforms makePlatforms(const Settings& s,
   Platforms p;
   const bool want_physical = s.platform != "twin";
   const bool want_twin = s.platform != "physical";
-  if (!s.video.empty() && (!want_twin || s.twin_over_ros)) {
+  if (!s.video.file.empty() && (!want_twin || s.twin_over_ros)) {
     throw std::runtime_error(
         "--video records the in-process twin (not --platform physical, not --twin-over-ros)");
   }
@@ -86,7 +84,7 @@ Platforms makePlatforms(const Settings& s,
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
     p.twin = controller_app::makeInProcessTwin(
-        {s.twin_launch, s.lock_step, s.stand_in, calibration, s.video, s.video_fps, s.video_size});
+        {s.twin_launch, s.lock_step, s.stand_in, calibration, s.video});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -250,12 +248,7 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--twin-launch", s.twin_launch, "launch file of the twin's scene")
       ->check(CLI::ExistingFile);
-  app.add_option("--video", s.video,
-                 "FILE.mp4: a video of the in-process twin, one frame every 1/fps seconds of "
-                 "platform time (headless)");
-  app.add_option("--video-fps", s.video_fps, "frames per simulated second (default 30)")
-      ->check(CLI::Range(1, 240));
-  app.add_option("--video-size", s.video_size, "WIDTHxHEIGHT, even (default 960x540)");
+  common::addVideoFlags(app, s.video, "the in-process twin");
   app.add_flag("--lock-step", s.lock_step,
                "simulated clock: replays run as fast as the CPU allows (twin only)");
   app.add_option("--mode", s.start_mode, "start in o1..o5")

@@ -54,9 +54,7 @@ struct Settings {
   bool gui = false;
   std::string snapshot;                        ///< PREFIX: PREFIX_before.png and PREFIX_after.png
   std::vector<std::string> views{"overview"};  ///< of the snapshots
-  std::string video;                           ///< FILE.mp4 (a batch: FILE_seed<N>.mp4)
-  int video_fps = 30;
-  std::string video_size = "960x540";
+  common::VideoFlags video;                    ///< a batch: FILE_seed<N>.mp4
   std::string video_view = "overview";
   std::string video_first_frame;
 };
@@ -85,10 +83,9 @@ scenario::WatchOptions watchOptions(const Settings& s, bool batch) {
   w.window = s.gui;
   w.snapshot_prefix = s.snapshot;
   w.snapshot_views = s.views;
-  w.video = s.video;
+  w.video = s.video.file;
   w.video_per_seed = batch;
-  w.video_options.fps = s.video_fps;
-  w.video_options.setSize(s.video_size);
+  w.video_options = viewer::VideoOptions::of(s.video);
   w.video_view = s.video_view;
   w.video_options.first_frame = s.video_first_frame;
   return w;
@@ -152,7 +149,7 @@ int runPegTransfers(const Settings& s) {
   std::vector<scenario::PegTransferResult> results;
   if (record) options.rs_folder = out;  // peg_transfer_seed<N>_rs.csv for every run
   scenario::RunWatcher watcher(watchOptions(s, !single));
-  if (s.gui || !s.snapshot.empty() || !s.video.empty()) options.observe = std::ref(watcher);
+  if (s.gui || !s.snapshot.empty() || !s.video.file.empty()) options.observe = std::ref(watcher);
   if (single) {
     options.seed = seeds.front();
     options.progress = [&bar](const scenario::RunProgress& p) { bar.show(p); };
@@ -286,12 +283,7 @@ int main(int argc, char** argv) {
                  "right-task, grasper-left, grasper-right")
       ->check(CLI::IsMember(view_names))
       ->delimiter(',');
-  app.add_option("--video", s.video,
-                 "FILE.mp4: a video of the run, one frame every 1/fps simulated seconds "
-                 "(a batch: FILE_seed<N>.mp4 per run; headless)");
-  app.add_option("--video-fps", s.video_fps, "frames per simulated second (default 30)")
-      ->check(CLI::Range(1, 240));
-  app.add_option("--video-size", s.video_size, "WIDTHxHEIGHT, even (default 960x540)");
+  common::addVideoFlags(app, s.video, "each run (a batch: FILE_seed<N>.mp4 per run)");
   app.add_option("--video-view", s.video_view, "the video's view (default overview)")
       ->check(CLI::IsMember(view_names));
   app.add_option("--video-first-frame", s.video_first_frame,
@@ -305,7 +297,7 @@ int main(int argc, char** argv) {
       spdlog::error("--gui and --snapshot watch a single peg transfer (no --runs, no --task)");
       return 2;
     }
-    if (!s.video.empty() && s.task != "peg") {
+    if (!s.video.file.empty() && s.task != "peg") {
       spdlog::error("--video records the peg transfer (not --task {})", s.task);
       return 2;
     }

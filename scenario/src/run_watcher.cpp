@@ -2,14 +2,9 @@
 
 #include <spdlog/spdlog.h>
 
-#include "raven/platform_profile.hpp"
 #include "scenario/task_views.hpp"
 
 namespace scenario {
-
-std::filesystem::path ravenVisualSkin() {
-  return raven::modelDirectory() / "raven2" / "ambf_visuals.yaml";
-}
 
 std::filesystem::path RunWatcher::videoFileFor(std::uint64_t seed) const {
   if (!options_.video_per_seed) return options_.video;
@@ -22,11 +17,12 @@ std::filesystem::path RunWatcher::videoFileFor(std::uint64_t seed) const {
 void RunWatcher::operator()(const ambf_like::World& world, WorldMoment moment, std::uint64_t seed) {
   const bool pictures = options_.window || !options_.snapshot_prefix.empty();
   if (moment == WorldMoment::Start) {
+    const auto views = pegTransferViews(world);
     if (pictures) {
       viewer::ViewerOptions view;
       view.window = options_.window;
       view.title = "raven_peg_transfer";
-      view.camera = viewer::findView(pegTransferViews(world), "overview").camera;
+      view.camera = viewer::findView(views, "overview").camera;
       view.visual_skin = options_.visual_skin;
       const std::lock_guard lock(mutex_);
       view_.reset();  // one window at a time
@@ -37,7 +33,7 @@ void RunWatcher::operator()(const ambf_like::World& world, WorldMoment moment, s
       video.file = videoFileFor(seed);
       video.visual_skin = options_.visual_skin;
       auto recorder = std::make_unique<viewer::VideoRecorder>(
-          world, video, viewer::findView(pegTransferViews(world), options_.video_view));
+          world, video, viewer::findView(views, options_.video_view));
       const std::lock_guard lock(mutex_);
       recording_[&world] = std::move(recorder);
     }

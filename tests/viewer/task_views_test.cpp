@@ -13,6 +13,7 @@
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "headless_peg_scene.hpp"
 #include "scenario/peg_layout.hpp"
 #include "test_files.hpp"
 #include "test_images.hpp"
@@ -25,8 +26,8 @@ using test_support::isBackground;
 using test_support::isPegRed;
 using test_support::shareNear;
 
-const std::filesystem::path kModels = RAVEN_MODELS_DIR;
-constexpr int kWidth = 640, kHeight = 400;
+constexpr int kWidth = test_support::HeadlessPegScene::kWidth;
+constexpr int kHeight = test_support::HeadlessPegScene::kHeight;
 /// A ring 20 mm across seen from 0.2 m covers about 2,000 pixels of a 640x400 task view; a
 /// third of that still counts as a ring a person can see.
 constexpr int kMinRingPixels = 500;
@@ -34,30 +35,9 @@ constexpr int kMinRingPixels = 500;
 constexpr double kRingMiddle = 0.005;
 constexpr double kBoardTop = -0.205;
 
-/// The shipped scene settled, with a headless viewer (null, with the reason, without EGL).
-struct PegScene {
-  ambf_like::MeshLibrary meshes;
-  std::unique_ptr<ambf_like::World> world;
-  std::unique_ptr<viewer::Viewer> view;
-  std::vector<viewer::View> views;
-  test_support::TempDir dir;
-  std::string why;
-
-  PegScene() {
-    const auto scene = ambf_like::loadLaunchFile(kModels / "peg_transfer/launch.yaml", {});
-    world = std::make_unique<ambf_like::World>(scene.spec, meshes);
-    world->step(200);
-    views = scenario::pegTransferViews(*world);
-    viewer::ViewerOptions options;
-    options.window = false;
-    options.width = kWidth;
-    options.height = kHeight;
-    try {
-      view = std::make_unique<viewer::Viewer>(*world, options);
-    } catch (const viewer::NoDisplay& e) {
-      why = e.what();
-    }
-  }
+/// The shipped scene settled, its named views and a headless viewer.
+struct PegScene : test_support::HeadlessPegScene {
+  std::vector<viewer::View> views = scenario::pegTransferViews(*world);
 
   Image shoot(const std::string& name) {
     const auto file = dir.path() / (name + ".png");

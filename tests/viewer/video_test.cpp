@@ -11,6 +11,7 @@ extern "C" {
 
 #include <memory>
 
+#include "headless_peg_scene.hpp"
 #include "scenario/peg_transfer.hpp"
 #include "scenario/run_watcher.hpp"
 #include "test_files.hpp"
@@ -74,18 +75,7 @@ struct DecodedVideo {
 
 /// Why this machine cannot render headless, or empty if it can.
 std::string headlessUnavailable() {
-  ambf_like::MeshLibrary meshes;
-  const auto scene =
-      ambf_like::loadLaunchFile(std::filesystem::path(RAVEN_MODELS_DIR) / "raven2/launch.yaml", {});
-  ambf_like::World world(scene.spec, meshes);
-  viewer::ViewerOptions options;
-  options.window = false;
-  try {
-    viewer::Viewer probe(world, options);
-    return "";
-  } catch (const viewer::NoDisplay& e) {
-    return e.what();
-  }
+  return test_support::HeadlessPegScene().why;
 }
 
 TEST(Video, OfTheMainJobDecodesToItsFramesSizeAndSimulatedDuration) {

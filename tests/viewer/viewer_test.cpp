@@ -8,48 +8,29 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "headless_peg_scene.hpp"
 #include "test_files.hpp"
 #include "test_images.hpp"
 #include "viewer/scene_geometry.hpp"
 #include "viewer/snapshot_schedule.hpp"
+#include "viewer/visual_skin.hpp"
 
 namespace {
 
 const std::filesystem::path kModels = RAVEN_MODELS_DIR;
-constexpr int kWidth = 640, kHeight = 400;
 using test_support::Image;
 using test_support::isBackground;
 using test_support::isCollisionOrange;
 using test_support::isPegRed;
 using test_support::shareNear;
 
-/// The peg-transfer scene after its pegs settled, with a headless viewer; null without EGL.
-struct Scene {
-  ambf_like::MeshLibrary meshes;
-  std::unique_ptr<ambf_like::World> world;
-  std::unique_ptr<viewer::Viewer> view;
-  test_support::TempDir dir;
-  std::string why;  ///< without a viewer: what EGL said
-
-  Scene() {
-    const auto scene = ambf_like::loadLaunchFile(kModels / "peg_transfer/launch.yaml", {});
-    world = std::make_unique<ambf_like::World>(scene.spec, meshes);
-    world->step(200);
-    viewer::ViewerOptions options;
-    options.window = false;
-    options.width = kWidth;
-    options.height = kHeight;
-    try {
-      view = std::make_unique<viewer::Viewer>(*world, options);
-    } catch (const viewer::NoDisplay& e) {
-      why = e.what();
-    }
-  }
-};
+using Scene = test_support::HeadlessPegScene;
+constexpr int kWidth = Scene::kWidth, kHeight = Scene::kHeight;
 
 #define SKIP_WITHOUT_DISPLAY(scene) \
   if (!(scene).view) GTEST_SKIP() << "no headless OpenGL: " << (scene).why
@@ -183,6 +164,33 @@ TEST(Viewer, SnapshotSeriesAreNumberedBySimulatedTime) {
   EXPECT_EQ(taken, 3);
   for (int n = 0; n < 3; ++n) EXPECT_TRUE(std::filesystem::exists(schedule.fileFor(n))) << n;
   EXPECT_EQ(schedule.fileFor(2).filename(), "run_0002.png");
+}
+
+TEST(VisualSkin, ReadsItsBodiesAndRefusesBadInputByFileLineAndKey) {
+  test_support::TempDir dir;
+  const auto good = dir.path() / "skin.yaml";
+  std::ofstream(good) << "mesh path: meshes\nbodies:\n"
+                         "  /raven2/left/link1: {mesh: link1_L.STL, offset: {position: {x: 0.1, "
+                         "y: 0, z: 0}, orientation: {r: 0, p: 0, y: 1.5}}}\n";
+  const auto skin = viewer::VisualSkin::load(good);
+  ASSERT_NE(skin.find("/raven2/left/link1"), nullptr);
+  EXPECT_EQ(skin.find("/raven2/left/link2"), nullptr);
+  EXPECT_NEAR(skin.find("/raven2/left/link1")->offset.translation().x(), 0.1, 1e-12);
+  EXPECT_EQ(skin.firstMissing(), skin.mesh_dir / "link1_L.STL");
+  for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"mesh path: m\nbodies:\n  a: {mesh: a.STL, colour: red}\n", "skin.yaml:3"},
+           {"mesh path: m\nbodies:\n  a: {mesh: a.STL, offset: {position: {x: .nan}}}\n",
+            "position/x"},
+           {"bodies:\n  a: {mesh: a.STL}\n", "mesh path"},
+           {"mesh path: m\nbodies: [\n", "skin.yaml"}}) {
+    std::ofstream(good) << text;
+    try {
+      viewer::VisualSkin::load(good);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const common::LoadError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(SceneGeometry, TessellatesEveryBodyOfTheRaven) {

@@ -13,6 +13,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -144,30 +145,36 @@ struct Fitted {
   Transform offset;
 };
 
+/// Our bodies and AMBF's (without its _L / _R), in the order the skin file lists them.
+constexpr std::array<std::pair<const char*, const char*>, 7> kBodies{{{"link1", "link1"},
+                                                                      {"link2", "link2"},
+                                                                      {"carriage", "link3"},
+                                                                      {"shaft", "instrument_shaft"},
+                                                                      {"wrist_link", "wrist"},
+                                                                      {"jaw1_link", "grasper1"},
+                                                                      {"jaw2_link", "grasper2"}}};
+
 std::vector<Fitted> fitArm(Chain& our, Chain& ambf, const std::string& side) {
   const std::string s = side == "left" ? "_L" : "_R";
+  std::map<std::string, std::string> theirs;
+  for (const auto& [ours, name] : kBodies) theirs[ours] = name + s;
   std::map<std::string, Transform> at;
-  for (const auto& [ours, theirs] :
-       std::vector<std::pair<std::string, std::string>>{{"link1", "link1" + s},
-                                                        {"link2", "link2" + s},
-                                                        {"shaft", "instrument_shaft" + s},
-                                                        {"wrist_link", "wrist" + s}}) {
-    at[ours] = fitByAxes(our, ours, ambf, theirs);
+  for (const char* ours : {"link1", "link2", "shaft", "wrist_link"}) {
+    at[ours] = fitByAxes(our, ours, ambf, theirs[ours]);
   }
   // The carriage slides on link 2: link 2's turn, the shaft's place on the axis.
-  Transform carriage =
-      our.relative("carriage", "link2") * at["link2"] * ambf.relative("link2" + s, "link3" + s);
+  Transform carriage = our.relative("carriage", "link2") * at["link2"] *
+                       ambf.relative(theirs["link2"], theirs["carriage"]);
   carriage.translation() = (our.relative("carriage", "shaft") * at["shaft"] *
-                            ambf.relative("link3" + s, "instrument_shaft" + s).inverse())
+                            ambf.relative(theirs["carriage"], theirs["shaft"]).inverse())
                                .translation();
   at["carriage"] = carriage;
   // The jaws hang off the wrist through AMBF's joints, turned to point along our jaws.
-  for (const auto& [ours, theirs] : std::vector<std::pair<std::string, std::string>>{
-           {"jaw1_link", "grasper1" + s}, {"jaw2_link", "grasper2" + s}}) {
-    const Transform through =
-        our.relative(ours, "wrist_link") * at["wrist_link"] * ambf.relative("wrist" + s, theirs);
-    const Line axis = ambf.in(theirs);
-    const Vec3 their_tip = across(axis, ambf.vertices(theirs));
+  for (const char* ours : {"jaw1_link", "jaw2_link"}) {
+    const Transform through = our.relative(ours, "wrist_link") * at["wrist_link"] *
+                              ambf.relative(theirs["wrist_link"], theirs[ours]);
+    const Line axis = ambf.in(theirs[ours]);
+    const Vec3 their_tip = across(axis, ambf.vertices(theirs[ours]));
     const Vec3 our_tip = through.linear().transpose() * across(our.in(ours), our.vertices(ours));
     const double turn =
         std::atan2(their_tip.cross(our_tip).dot(axis.direction), their_tip.dot(our_tip));
@@ -177,15 +184,8 @@ std::vector<Fitted> fitArm(Chain& our, Chain& ambf, const std::string& side) {
         through * Eigen::Translation3d(axis.point) * spin * Eigen::Translation3d(-axis.point);
   }
   std::vector<Fitted> out;
-  for (const char* ours :
-       {"link1", "link2", "carriage", "shaft", "wrist_link", "jaw1_link", "jaw2_link"}) {
-    std::string mesh = ours == std::string("carriage")     ? "link3"
-                       : ours == std::string("shaft")      ? "instrument_shaft"
-                       : ours == std::string("wrist_link") ? "wrist"
-                       : ours == std::string("jaw1_link")  ? "grasper1"
-                       : ours == std::string("jaw2_link")  ? "grasper2"
-                                                           : std::string(ours);
-    out.push_back({"/raven2/" + side + "/" + ours, mesh + s + ".STL", at[ours]});
+  for (const auto& [ours, name] : kBodies) {
+    out.push_back({"/raven2/" + side + "/" + ours, theirs[ours] + ".STL", at[ours]});
   }
   return out;
 }

@@ -120,9 +120,8 @@ SceneGeometry SceneGeometry::of(const ambf_like::World& world, ambf_like::MeshLi
     b.name = body.qualifiedName();
     b.colour = colourFor(b.name);
     b.collision.append(detail::tessellate(*body.bullet().getCollisionShape()), comInBody(body));
-    const auto skinned = skin ? skin->bodies.find(b.name) : decltype(skin->bodies.end()){};
-    b.visual = skin && skinned != skin->bodies.end() ? skinOf(skinned->second, *skin, meshes)
-                                                     : visualOf(body, meshes);
+    const VisualSkin::Piece* piece = skin ? skin->find(b.name) : nullptr;
+    b.visual = piece ? skinOf(*piece, *skin, meshes) : visualOf(body, meshes);
     if (b.visual.positions.empty()) b.visual = b.collision;
     grow(g.bounds, b.visual, body.pose());
     g.bodies.push_back(std::move(b));

@@ -28,6 +28,14 @@ void VideoOptions::setSize(const std::string& text) {
   height = h;
 }
 
+VideoOptions VideoOptions::of(const common::VideoFlags& flags) {
+  VideoOptions options;
+  options.file = flags.file;
+  options.fps = flags.fps;
+  options.setSize(flags.size);
+  return options;
+}
+
 VideoRecorder::VideoRecorder(const ambf_like::World& world, VideoOptions options,
                              std::optional<View> view)
     : options_(std::move(options)), start_time_(world.time()) {

@@ -54,4 +54,9 @@ std::filesystem::path profileDirectory();
 /// Where this project's models live (raven2/, peg_transfer/).
 std::filesystem::path modelDirectory();
 
+/// AMBF's Raven-II meshes placed on our links (the viewer's skin): raven2/ambf_visuals.yaml.
+inline std::filesystem::path ravenVisualSkin() {
+  return modelDirectory() / "raven2" / "ambf_visuals.yaml";
+}
+
 }  // namespace raven

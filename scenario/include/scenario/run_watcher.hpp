@@ -9,14 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "raven/platform_profile.hpp"
 #include "scenario/run_progress.hpp"
 #include "viewer/video_recorder.hpp"
 #include "viewer/viewer.hpp"
 
 namespace scenario {
-
-/// Our Raven-II's skin of AMBF's meshes: raven_description/models/raven2/ambf_visuals.yaml.
-std::filesystem::path ravenVisualSkin();
 
 /// Which pictures to make.
 struct WatchOptions {
@@ -30,7 +28,7 @@ struct WatchOptions {
   viewer::VideoOptions video_options;  ///< its file is set per run
   std::string video_view = "overview";
   /// AMBF's Raven-II meshes on our links (drawn when AMBF's mesh files are found).
-  std::filesystem::path visual_skin = ravenVisualSkin();
+  std::filesystem::path visual_skin = raven::ravenVisualSkin();
 };
 
 /// Watches one run or the runs of a batch (thread-safe: each run has its own world).

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "ambf_like/world.hpp"
+#include "common/video_flags.hpp"
 #include "viewer/scene_geometry.hpp"
 #include "viewer/view.hpp"
 #include "viewer/viewer.hpp"
@@ -35,6 +36,8 @@ struct VideoOptions {
 
   /// Sets width and height from "WxH" (even, 16..7680); throws std::invalid_argument.
   void setSize(const std::string& text);
+  /// The file, rate and size the command line asked for; throws std::invalid_argument.
+  static VideoOptions of(const common::VideoFlags& flags);
 };
 
 /// What a finished video holds.

@@ -20,8 +20,10 @@ struct VisualSkin {
   std::filesystem::path file;
   std::filesystem::path mesh_dir;  ///< $RAVEN_AMBF_MESHES, else the file's `mesh path`
 
-  /// Reads a skin file. Throws std::runtime_error naming the file, line and key of bad input.
+  /// Reads a skin file. Throws common::LoadError naming the file, line and key of bad input.
   static VisualSkin load(const std::filesystem::path& file);
+  /// The piece drawn on `body` (a qualified name), or null.
+  const Piece* find(const std::string& body) const;
   /// The first mesh file that is not there, or empty when all are.
   std::filesystem::path firstMissing() const;
 };
