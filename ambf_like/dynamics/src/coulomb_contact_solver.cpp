@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "ambf_like/bullet_conversions.hpp"
+#include "ambf_like/dynamics/soft_body_upkeep.hpp"
 
 namespace ambf_like::detail {
 
@@ -50,7 +51,9 @@ void CoulombContactSolver::predictMotion(btScalar solver_dt) {
       registered.start_velocity[static_cast<std::size_t>(i)] = body->m_nodes[i].m_v;
     }
   }
+  rebuildReadableFaceTrees(m_softBodySet);
   btDefaultSoftBodySolver::predictMotion(solver_dt);
+  emptyUnreadFaceTrees(m_softBodySet);
 }
 
 void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
@@ -71,8 +74,7 @@ void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
 void CoulombContactSolver::updateSoftBodies() {
   for (int i = 0; i < m_softBodySet.size(); ++i) {
     btSoftBody& body = *m_softBodySet[i];
-    const bool aerodynamic = body.m_cfg.kLF > 0.0 || body.m_cfg.kDG > 0.0;
-    if (body.isActive() && (aerodynamic || !coulomb_.contains(&body))) body.integrateMotion();
+    if (body.isActive() && normalsAreRead(body)) body.integrateMotion();
   }
 }
 

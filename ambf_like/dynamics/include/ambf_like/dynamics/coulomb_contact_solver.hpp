@@ -66,11 +66,12 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   void useCoulombContacts(btSoftBody& body, int substeps,
                           const std::optional<SoftMaterial>& material);
   void forget(const btSoftBody& body);
+  /// Bullet's prediction, keeping only the face trees something reads (soft_body_upkeep.hpp).
   void predictMotion(btScalar solver_dt) override;
   void solveConstraints(btScalar solver_dt) override;
-  /// Bullet's end of step for each body (btSoftBody::integrateMotion), except for the registered
-  /// bodies without aerodynamic forces: it only recomputes the nodes' and faces' normals, which
-  /// nothing else reads (5 % of the peg scene's step).
+  /// Bullet's end of step (btSoftBody::integrateMotion) for the bodies whose normals the step
+  /// reads (normalsAreRead): it only recomputes the nodes' and faces' normals (5 % of the peg
+  /// scene's step, 11 % of AMBF's cloth's).
   void updateSoftBodies() override;
   /// The Coulomb contacts' impulses of the last step.
   const std::vector<NodeContactImpulse>& lastImpulses() const { return impulses_; }
