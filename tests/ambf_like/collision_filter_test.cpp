@@ -1,6 +1,13 @@
 // Collision groups and `ignore inter-collision` decide which bodies meet.
 
+#include "ambf_like/dynamics/collision_filter.hpp"
+
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletSoftBody/btSoftBody.h>
+#include <BulletSoftBody/btSoftBodyHelpers.h>
 #include <gtest/gtest.h>
+
+#include <memory>
 
 #include "test_files.hpp"
 
@@ -58,6 +65,40 @@ TEST(CollisionFilter, IgnoreInterCollisionStillCollidesWithOtherModels) {
   auto sim = test_support::simulate({slab, box});
   sim->world->step(1000);
   EXPECT_NEAR(sim->world->body("box").pose().translation().z(), 0.1, 2e-3);
+}
+
+/// The filter's answer for a pair of collision objects, as the broadphase asks it.
+bool filterLetsMeet(btCollisionObject& a, btCollisionObject& b) {
+  const btVector3 low(-1, -1, -1), high(1, 1, 1);
+  btBroadphaseProxy pa(low, high, &a, btBroadphaseProxy::DefaultFilter,
+                       btBroadphaseProxy::AllFilter);
+  btBroadphaseProxy pb(low, high, &b, btBroadphaseProxy::DefaultFilter,
+                       btBroadphaseProxy::AllFilter);
+  const ambf_like::detail::CollisionFilter filter;
+  return filter.needBroadphaseCollision(&pa, &pb) && filter.needBroadphaseCollision(&pb, &pa);
+}
+
+TEST(CollisionFilter, ASoftBodyMeetsOnlyWhatItsCollisionModesMakeSomethingOf) {
+  using Collision = btSoftBody::fCollision;
+  btSoftBodyWorldInfo info;
+  auto patch = [&info](int modes) {
+    std::unique_ptr<btSoftBody> soft(
+        btSoftBodyHelpers::CreatePatch(info, btVector3(0, 0, 0), btVector3(1, 0, 0),
+                                       btVector3(0, 1, 0), btVector3(1, 1, 0), 3, 3, 0, false));
+    soft->m_cfg.collisions = modes;
+    return soft;
+  };
+  btBoxShape box(btVector3(0.1, 0.1, 0.1));
+  btCollisionObject rigid;
+  rigid.setCollisionShape(&box);
+  const auto soft_only = patch(Collision::VF_SS);  // AMBF's cloth: flags 16
+  const auto rigid_too = patch(Collision::SDF_RS | Collision::VF_SS);
+  const auto rigid_only = patch(Collision::SDF_RS);
+  EXPECT_FALSE(filterLetsMeet(*soft_only, rigid));
+  EXPECT_TRUE(filterLetsMeet(*rigid_too, rigid));
+  EXPECT_TRUE(filterLetsMeet(*soft_only, *rigid_too));  // VF_SS in common
+  EXPECT_FALSE(filterLetsMeet(*soft_only, *rigid_only));
+  EXPECT_FALSE(filterLetsMeet(*rigid_only, *rigid_only));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "ambf_like/dynamics/collision_filter.hpp"
 
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletSoftBody/btSoftBody.h>
 
 #include <algorithm>
 
@@ -24,6 +25,24 @@ bool meetsSoftness(const btCollisionObject* object, const CollisionTag& tag, boo
   return is_stand_in == other_soft;
 }
 
+/// Whether Bullet's collision handlers of a soft body with `modes` (btSoftBody::fCollision bits)
+/// can make anything of a pair with `other`: against a rigid object they switch on the soft
+/// body's rigid-soft modes, against another soft body on the soft-soft modes both have. A pair
+/// that makes nothing still costs its narrow phase (a GImpact mesh walks its triangles for it).
+bool softModesMeet(int modes, const btCollisionObject* other) {
+  using Collision = btSoftBody::fCollision;
+  if (const btSoftBody* soft = btSoftBody::upcast(other)) {
+    return (modes & soft->m_cfg.collisions & Collision::SVSmask) != 0;
+  }
+  return (modes & (Collision::RVSmask | Collision::RVDFmask)) != 0;
+}
+
+/// Whether `a` is a soft body whose modes make nothing of a pair with `b`.
+bool softPairIsVoid(const btCollisionObject* a, const btCollisionObject* b) {
+  const btSoftBody* soft = btSoftBody::upcast(a);
+  return soft != nullptr && !softModesMeet(soft->m_cfg.collisions, b);
+}
+
 bool shareGroup(const std::vector<int>& a, const std::vector<int>& b) {
   auto i = a.begin();
   auto j = b.begin();
@@ -40,6 +59,9 @@ bool CollisionFilter::needBroadphaseCollision(btBroadphaseProxy* a, btBroadphase
   // Bullet's own group/mask test (keeps static-static pairs out).
   if ((a->m_collisionFilterGroup & b->m_collisionFilterMask) == 0 ||
       (b->m_collisionFilterGroup & a->m_collisionFilterMask) == 0) {
+    return false;
+  }
+  if (softPairIsVoid(objectOf(a), objectOf(b)) || softPairIsVoid(objectOf(b), objectOf(a))) {
     return false;
   }
   const CollisionTag* ta = tagOf(a);

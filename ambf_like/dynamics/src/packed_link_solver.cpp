@@ -15,10 +15,13 @@ bool PackedLinkSolver::handles(const btSoftBody& body) {
 
 void PackedLinkSolver::pack(const btSoftBody& body) {
   const btSoftBody::Node* first = &body.m_nodes[0];
-  nodes_.resize(static_cast<std::size_t>(body.m_nodes.size()));
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+  const auto count = static_cast<std::size_t>(body.m_nodes.size());
+  positions_.resize(count);
+  inverse_masses_.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
     const btSoftBody::Node& n = first[i];
-    nodes_[i] = {n.m_x.x(), n.m_x.y(), n.m_x.z(), n.m_im};
+    positions_[i] = Position{n.m_x.x(), n.m_x.y(), n.m_x.z(), 0.0};
+    inverse_masses_[i] = n.m_im;
   }
   // Packed afresh every step: masses, stiffness, rest lengths and the links' order may all have
   // been changed since (one streaming pass, a small fraction of one iteration's cost).
@@ -33,25 +36,21 @@ void PackedLinkSolver::pack(const btSoftBody& body) {
 }
 
 void PackedLinkSolver::solveLinksOnce() {
-  // btSoftBody::PSolve_Links with kst = 1, written out per coordinate in Bullet's order of
-  // operations (this file is built without floating-point contraction).
+  // btSoftBody::PSolve_Links with kst = 1 in Bullet's order of operations (this file is built
+  // without floating-point contraction): lane by lane the same IEEE operations, so the same bits.
+  // The fourth lane is 0 and stays 0.
   for (const Link& l : links_) {
-    Node& a = nodes_[static_cast<std::size_t>(l.a)];
-    Node& b = nodes_[static_cast<std::size_t>(l.b)];
-    const double dx = b.x - a.x;
-    const double dy = b.y - a.y;
-    const double dz = b.z - a.z;
-    const double len = dx * dx + dy * dy + dz * dz;
+    const auto ia = static_cast<std::size_t>(l.a);
+    const auto ib = static_cast<std::size_t>(l.b);
+    const Position a = positions_[ia];
+    const Position b = positions_[ib];
+    const Position d = b - a;
+    const Position d2 = d * d;
+    const double len = d2[0] + d2[1] + d2[2];
     if (l.c1 + len > SIMD_EPSILON) {
       const double k = (l.c1 - len) / (l.c0 * (l.c1 + len));
-      const double ka = k * a.inverse_mass;
-      a.x -= dx * ka;
-      a.y -= dy * ka;
-      a.z -= dz * ka;
-      const double kb = k * b.inverse_mass;
-      b.x += dx * kb;
-      b.y += dy * kb;
-      b.z += dz * kb;
+      positions_[ia] = a - d * (k * inverse_masses_[ia]);
+      positions_[ib] = b + d * (k * inverse_masses_[ib]);
     }
   }
 }
@@ -66,9 +65,9 @@ void PackedLinkSolver::solve(btSoftBody& body) {
   }
   // Bullet's end of the position solve: velocities from the moves, damped by kDP.
   const btScalar vc = body.m_sst.isdt * (1 - body.m_cfg.kDP);
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+  for (std::size_t i = 0; i < positions_.size(); ++i) {
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(i)];
-    n.m_x.setValue(nodes_[i].x, nodes_[i].y, nodes_[i].z);
+    n.m_x.setValue(positions_[i][0], positions_[i][1], positions_[i][2]);
     n.m_v = (n.m_x - n.m_q) * vc;
     n.m_f = btVector3(0, 0, 0);
   }

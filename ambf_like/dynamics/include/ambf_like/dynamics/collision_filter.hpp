@@ -23,9 +23,10 @@ struct CollisionTag {
 };
 
 /// Two objects collide unless both are rigid bodies of a model that ignores inter-collision,
-/// or both have groups and share none; a body with a soft stand-in meets soft bodies only
-/// through it, and the stand-in meets nothing else. Pairs joined by a joint are excluded by
-/// Bullet itself.
+/// or both have groups and share none, or one is a soft body whose collision modes make nothing
+/// of the other (no rigid-soft mode against a rigid object, no soft-soft mode in common with a
+/// soft one); a body with a soft stand-in meets soft bodies only through it, and the stand-in
+/// meets nothing else. Pairs joined by a joint are excluded by Bullet itself.
 class CollisionFilter : public btOverlapFilterCallback {
  public:
   bool needBroadphaseCollision(btBroadphaseProxy* a, btBroadphaseProxy* b) const override;
