@@ -30,28 +30,32 @@ Eigen::Matrix<double, 3, 4> shapeGradients(const Eigen::Matrix3d& rest_inverse) 
 
 }  // namespace
 
-void followRotation(const Eigen::Matrix3d& f, Rotation& rotation) {
+Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Rotation& rotation) {
   // Each iteration turns the rotation about the axis that brings its columns towards F's, by
   // the quaternion (1, turn / 2) normalised: exact to second order in the turn, and the
   // iterations converge on the rest. A turn below 1e-4 rad moves a force by about 1e-4 of the
   // stress (to first order in the turn times the strain).
+  //
+  // With U = R^T F, the torque sum_i r_i x f_i is R (U21 - U12, U02 - U20, U10 - U01) and the
+  // alignment sum_i r_i . f_i is tr U: the test and the turn are read off the U the caller needs
+  // anyway, and the turn, in R's own frame, multiplies the quaternion from the right.
   constexpr int kMostIterations = 4;
   constexpr double kConverged = 1e-4;  // rad
-  Eigen::Matrix3d& r = rotation.matrix;
+  Eigen::Matrix3d unrotated = rotation.matrix.transpose() * f;
   for (int i = 0; i < kMostIterations; ++i) {
-    const Eigen::Vector3d torque =
-        r.col(0).cross(f.col(0)) + r.col(1).cross(f.col(1)) + r.col(2).cross(f.col(2));
-    const double alignment =
-        std::abs(r.col(0).dot(f.col(0)) + r.col(1).dot(f.col(1)) + r.col(2).dot(f.col(2)));
+    const Eigen::Vector3d torque(unrotated(2, 1) - unrotated(1, 2),
+                                 unrotated(0, 2) - unrotated(2, 0),
+                                 unrotated(1, 0) - unrotated(0, 1));
     // The turn is torque / alignment; compared before dividing (most calls end here).
-    const double scale = alignment + 1e-9;
+    const double scale = std::abs(unrotated.trace()) + 1e-9;
     if (!(torque.squaredNorm() > kConverged * kConverged * scale * scale)) break;
     const Eigen::Vector3d half_turn = torque * (0.5 / scale);
-    rotation.quaternion =
-        Eigen::Quaterniond(1.0, half_turn.x(), half_turn.y(), half_turn.z()) * rotation.quaternion;
+    rotation.quaternion *= Eigen::Quaterniond(1.0, half_turn.x(), half_turn.y(), half_turn.z());
     rotation.quaternion.normalize();
-    r = rotation.quaternion.toRotationMatrix();
+    rotation.matrix = rotation.quaternion.toRotationMatrix();
+    unrotated = rotation.matrix.transpose() * f;
   }
+  return unrotated;
 }
 
 CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& material)
@@ -81,9 +85,8 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
   const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
   for (auto& tet : tets_) {
     const Eigen::Matrix3d f = edges(positions, tet.node) * tet.rest_inverse;
-    followRotation(f, tet.rotation);
+    const Eigen::Matrix3d unrotated = followRotation(f, tet.rotation);
     const Eigen::Matrix3d& r = tet.rotation.matrix;
-    const Eigen::Matrix3d unrotated = r.transpose() * f;
     const Eigen::Matrix3d strain = 0.5 * (unrotated + unrotated.transpose()) - identity;
     const Eigen::Matrix3d stress = 2.0 * mu_ * strain + lambda_ * strain.trace() * identity;
     // Each node's force: minus the rest volume times the first Piola stress times its shape

@@ -159,6 +159,7 @@ void ImplicitElasticBody::factor(double h) {
   }
   factored_step_ = h;
   responses_.clear();
+  blocks_.nodes.clear();
   stuck_.nodes.clear();
 }
 
@@ -255,16 +256,27 @@ void ImplicitElasticBody::solveContacts(const Eigen::VectorXd& free_velocity,
     if (found == nodes.end()) nodes.push_back(contacts[c].node);
   }
   const std::size_t slots = nodes.size();
-  // w[j * slots + i]: node j's velocity per impulse on node i.
-  std::vector<Eigen::Matrix3d> w(slots * slots);
-  for (std::size_t i = 0; i < slots; ++i) {
-    const Response& response = responseTo(nodes[i]);
-    for (std::size_t j = 0; j < slots; ++j) w[j * slots + i] = response.middleRows<3>(3 * nodes[j]);
+  if (nodes != blocks_.nodes) {
+    blocks_.w.resize(slots * slots);
+    for (std::size_t i = 0; i < slots; ++i) {
+      const Response& response = responseTo(nodes[i]);
+      for (std::size_t j = 0; j < slots; ++j) {
+        blocks_.w[j * slots + i] = response.middleRows<3>(3 * nodes[j]);
+      }
+    }
+    blocks_.w_inverse.resize(slots);
+    for (std::size_t i = 0; i < slots; ++i) {
+      blocks_.w_inverse[i] = blocks_.w[i * slots + i].inverse();
+    }
+    blocks_.nodes = std::move(nodes);
   }
-  std::vector<Eigen::Matrix3d> w_inverse(slots);
-  for (std::size_t i = 0; i < slots; ++i) w_inverse[i] = w[i * slots + i].inverse();
+  const std::vector<Eigen::Matrix3d>& w = blocks_.w;
+  const std::vector<Eigen::Matrix3d>& w_inverse = blocks_.w_inverse;
+  const std::vector<int>& contact_nodes = blocks_.nodes;
   std::vector<Eigen::Vector3d> velocity(slots);
-  for (std::size_t j = 0; j < slots; ++j) velocity[j] = free_velocity.segment<3>(3 * nodes[j]);
+  for (std::size_t j = 0; j < slots; ++j) {
+    velocity[j] = free_velocity.segment<3>(3 * contact_nodes[j]);
+  }
   solveAsStuck(contacts, slot_of, w, slots, velocity, stuck_);
   for (std::size_t j = 0; j < slots; ++j) {
     for (std::size_t c = 0; c < contacts.size(); ++c) {

@@ -55,7 +55,7 @@ class CorotatedTets {
 };
 
 /// Updates `rotation` towards the rotation of `f`'s polar decomposition (at most 4 iterations,
-/// none once within 1e-4 rad).
-void followRotation(const Eigen::Matrix3d& f, Rotation& rotation);
+/// none once within 1e-4 rad); returns R^T f for the rotation it ends with.
+Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Rotation& rotation);
 
 }  // namespace ambf_like::detail

@@ -24,6 +24,15 @@ struct ElasticContact {
   Eigen::Vector3d impulse{0, 0, 0};  ///< on the node (N s): in, the last step's; out, this one's
 };
 
+/// The contact nodes of the last step (in order) and their blocks of the inverse:
+/// w[j * slots + i] is node j's velocity per impulse on node i, w_inverse[i] inverts w[i, i]. The
+/// same nodes in contact (a steady grasp) reuse them.
+struct ContactBlocks {
+  std::vector<int> nodes;
+  std::vector<Eigen::Matrix3d> w;
+  std::vector<Eigen::Matrix3d> w_inverse;
+};
+
 /// The contact nodes last solved as stuck together (in order), and their system factored.
 struct StuckSystem {
   std::vector<int> nodes;
@@ -72,6 +81,7 @@ class ImplicitElasticBody {
   double factored_step_ = 0.0;
   NodeBlockCholesky system_;
   std::unordered_map<int, Response> responses_;  ///< by node, for the factored step
+  ContactBlocks blocks_;                         ///< of the last step's contact nodes
   StuckSystem stuck_;
 };
 
