@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <optional>
 
 #include "ambf_like/bullet_conversions.hpp"
 
@@ -28,28 +29,48 @@ Eigen::Matrix<double, 3, 4> shapeGradients(const Eigen::Matrix3d& rest_inverse) 
   return g;
 }
 
+/// (tr S I - S)^-1 torque, S = sym(unrotated), by its adjugate; none unless that matrix is
+/// positive definite (its leading minors positive).
+std::optional<Eigen::Vector3d> newtonTurn(const Eigen::Matrix3d& unrotated,
+                                          const Eigen::Vector3d& torque) {
+  const Eigen::Matrix3d s = 0.5 * (unrotated + unrotated.transpose());
+  const Eigen::Matrix3d m = s.trace() * Eigen::Matrix3d::Identity() - s;
+  const double c00 = m(1, 1) * m(2, 2) - m(1, 2) * m(1, 2);
+  const double c01 = m(0, 2) * m(1, 2) - m(0, 1) * m(2, 2);
+  const double c02 = m(0, 1) * m(1, 2) - m(0, 2) * m(1, 1);
+  const double c11 = m(0, 0) * m(2, 2) - m(0, 2) * m(0, 2);
+  const double c12 = m(0, 1) * m(0, 2) - m(0, 0) * m(1, 2);
+  const double c22 = m(0, 0) * m(1, 1) - m(0, 1) * m(0, 1);
+  const double det = m(0, 0) * c00 + m(0, 1) * c01 + m(0, 2) * c02;
+  if (!(m(0, 0) > 0.0 && c22 > 0.0 && det > 0.0)) return std::nullopt;
+  Eigen::Matrix3d adjugate;
+  adjugate << c00, c01, c02, c01, c11, c12, c02, c12, c22;
+  return adjugate * torque / det;
+}
+
 }  // namespace
 
 Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Rotation& rotation) {
-  // Each iteration turns the rotation about the axis that brings its columns towards F's, by
-  // the quaternion (1, turn / 2) normalised: exact to second order in the turn, and the
-  // iterations converge on the rest. A turn below 1e-4 rad moves a force by about 1e-4 of the
-  // stress (to first order in the turn times the strain).
-  //
-  // With U = R^T F, the torque sum_i r_i x f_i is R (U21 - U12, U02 - U20, U10 - U01) and the
-  // alignment sum_i r_i . f_i is tr U: the test and the turn are read off the U the caller needs
-  // anyway, and the turn, in R's own frame, multiplies the quaternion from the right.
+  // With U = R^T F, R is F's polar rotation when U is symmetric: when the torque
+  // sum_i r_i x f_i = R t, t = (U21 - U12, U02 - U20, U10 - U01), vanishes. Turning R by a small
+  // d in its own frame changes t by -(tr S I - S) d, S = sym(U), so each iteration turns R by
+  // Newton's d = (tr S I - S)^-1 t (the quaternion (1, d / 2) normalised, multiplied from the
+  // right), which converges quadratically while S is positive definite. Mueller et al.'s
+  // (2016) turn t / tr U is the fallback for an element too crushed for that: it is safe at
+  // any stretch but takes only part of the turn (a third of what is left stays, at S = I).
+  // The test: |t| / |tr U| below 1e-4, about two thirds of the angle left; that moves a force
+  // by about 1e-4 of the stress (to first order in the turn times the strain).
   constexpr int kMostIterations = 4;
-  constexpr double kConverged = 1e-4;  // rad
+  constexpr double kConverged = 1e-4;
   Eigen::Matrix3d unrotated = rotation.matrix.transpose() * f;
   for (int i = 0; i < kMostIterations; ++i) {
     const Eigen::Vector3d torque(unrotated(2, 1) - unrotated(1, 2),
                                  unrotated(0, 2) - unrotated(2, 0),
                                  unrotated(1, 0) - unrotated(0, 1));
-    // The turn is torque / alignment; compared before dividing (most calls end here).
+    // Compared before dividing (most calls end here).
     const double scale = std::abs(unrotated.trace()) + 1e-9;
     if (!(torque.squaredNorm() > kConverged * kConverged * scale * scale)) break;
-    const Eigen::Vector3d half_turn = torque * (0.5 / scale);
+    const Eigen::Vector3d half_turn = 0.5 * newtonTurn(unrotated, torque).value_or(torque / scale);
     rotation.quaternion *= Eigen::Quaterniond(1.0, half_turn.x(), half_turn.y(), half_turn.z());
     rotation.quaternion.normalize();
     rotation.matrix = rotation.quaternion.toRotationMatrix();
@@ -78,6 +99,14 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
     tet.rest_inverse = rest.inverse();
     tet.force_gradients = -tet.volume * tet.rest_inverse.transpose();
     tets_.push_back(tet);
+  }
+}
+
+void CorotatedTets::turnRotations(const Eigen::Quaterniond& turn) {
+  const Eigen::Matrix3d turn_matrix = turn.toRotationMatrix();
+  for (auto& tet : tets_) {
+    tet.rotation.quaternion = turn * tet.rotation.quaternion;
+    tet.rotation.matrix = turn_matrix * tet.rotation.matrix;
   }
 }
 

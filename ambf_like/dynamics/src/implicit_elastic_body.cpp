@@ -30,6 +30,10 @@ void turnContact(ElasticContact& contact, const Eigen::Matrix3d& turn) {
 constexpr double kImpulseTolerance = 1e-8;
 constexpr int kMostContactSweeps = 100;
 
+/// Half the angle (rad) of the body's turn in a step above which the tetrahedra's rotations are
+/// turned with it before they are followed: a tenth of what each of them is followed to.
+constexpr double kTurnWorthFollowing = 0.5e-5;
+
 /// The velocity that keeps `contact`'s node stuck to its surface, just reaching it.
 Eigen::Vector3d stuckVelocity(const ElasticContact& contact) {
   const Eigen::Vector3d& n = contact.normal;
@@ -203,7 +207,12 @@ void ImplicitElasticBody::step(btSoftBody& body, double h,
     position.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_x);
     velocity.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_v);
   }
+  const Eigen::Quaterniond body_before = body_rotation_.quaternion;
   followBodyRotation(position);
+  const Eigen::Quaterniond body_turn = body_rotation_.quaternion * body_before.conjugate();
+  if (body_turn.vec().squaredNorm() > kTurnWorthFollowing * kTurnWorthFollowing) {
+    tets_.turnRotations(body_turn);
+  }
   Eigen::VectorXd load = Eigen::VectorXd::Zero(3 * count);
   tets_.addForces(position, load);
   for (int i = 0; i < count; ++i) {

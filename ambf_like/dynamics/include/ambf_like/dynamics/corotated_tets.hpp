@@ -34,6 +34,9 @@ class CorotatedTets {
   /// The tetrahedra of `body` (rest shape: the nodes where they are now).
   CorotatedTets(const btSoftBody& body, const SoftMaterial& material);
 
+  /// Turns every tetrahedron's followed rotation by `turn` (the body's own turn since the last
+  /// forces): a start for the iteration that leaves it only the tetrahedron's own turn to follow.
+  void turnRotations(const Eigen::Quaterniond& turn);
   /// Adds each node's elastic force (N) at `positions` (3 per node) to `forces`.
   void addForces(const Eigen::VectorXd& positions, Eigen::VectorXd& forces);
   /// The stiffness matrix at rest (3 rows per node), as triplets.
