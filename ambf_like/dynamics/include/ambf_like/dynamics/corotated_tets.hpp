@@ -25,10 +25,11 @@ struct Rotation {
 /// any size costs nothing. A uniaxial stretch s with free sides answers with the nominal stress
 /// E (s - 1) exactly, at any strain.
 ///
-/// Each tetrahedron's rotation is found by Mueller, Bender, Chentanez and Macklin's (2016)
-/// iteration, warm started from the last one, to within 1e-4 rad (at most 4 iterations a step).
-/// One iteration per step, as that paper does, let the rotations lag a ring that turned fast and
-/// blew 3 of 20 randomised peg scenes apart (seeds 6, 11 and 20 of the batch test).
+/// Each tetrahedron's rotation is followed from step to step (followRotation: Newton's turn on
+/// the torque of Mueller, Bender, Chentanez and Macklin's (2016) iteration), started from the last
+/// one turned by the body's own turn (turnRotations), to within 1e-4 rad (at most 4 iterations a
+/// step). One of that paper's iterations per step let the rotations lag a ring that turned fast
+/// and blew 3 of 20 randomised peg scenes apart (seeds 6, 11 and 20 of the batch test).
 class CorotatedTets {
  public:
   /// The tetrahedra of `body` (rest shape: the nodes where they are now).
