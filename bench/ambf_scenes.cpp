@@ -6,6 +6,7 @@
 #include <exception>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ambf_like/scene_loader.hpp"
@@ -83,16 +84,15 @@ ambf_like::SceneSpec load(const std::filesystem::path& root, const AmbfScene& sc
 /// AMBF as here.
 ambf_like::SceneSpec ravenWithCloth(const std::filesystem::path& root) {
   auto spec = load(root, scenes().front());
-  {
-    ambf_like::MeshLibrary meshes;
-    const ambf_like::World raven(spec, meshes);
-    const ambf_like::Vec3 jaws = 0.5 * (raven.body("grasper1_L").pose().translation() +
-                                        raven.body("grasper2_L").pose().translation());
-    ambf_like::appendModelFiles(spec, {root / "multi-bodies/sb/cloth.yaml", kAmbfFloor});
-    ambf_like::SoftBodySpec& cloth = spec.models[spec.models.size() - 2].soft_bodies.at(0);
-    cloth.scale = 0.1;
-    cloth.location.translation() = jaws + ambf_like::Vec3(0, 0, 0.03);
-  }
+  ambf_like::MeshLibrary meshes;
+  const ambf_like::World raven(spec, meshes);
+  const ambf_like::Vec3 jaws = 0.5 * (raven.body("grasper1_L").pose().translation() +
+                                      raven.body("grasper2_L").pose().translation());
+  const std::size_t cloth_model = spec.models.size();
+  ambf_like::appendModelFiles(spec, {root / "multi-bodies/sb/cloth.yaml", kAmbfFloor});
+  ambf_like::SoftBodySpec& cloth = spec.models[cloth_model].soft_bodies.at(0);
+  cloth.scale = 0.1;
+  cloth.location.translation() = jaws + ambf_like::Vec3(0, 0, 0.03);
   return spec;
 }
 
@@ -113,6 +113,12 @@ double rate(const Run& run) {
   return stepsPerSecond(world, kSteps, [](int) {});
 }
 
+/// `run` once more, stepped with `options`: its name followed by `how`.
+Run variant(const Run& run, const std::string& how, const ambf_like::WorldOptions& options,
+            std::optional<double> bound, std::string note) {
+  return {run.name + ", " + how, run.spec, options, bound, std::move(note)};
+}
+
 /// The rows: AMBF's scenes stepped as AMBF steps them (no soft body ever sleeps there), then
 /// this simulator's own defaults and fast path beside them.
 std::vector<Run> runs(const std::filesystem::path& root) {
@@ -126,22 +132,23 @@ std::vector<Run> runs(const std::filesystem::path& root) {
                                "not this run)",
                                scene.ambf_steps_per_second)});
   }
-  const std::string raven_with_cloth =
-      "the Raven with the cloth (scaled 0.1) hanging at its left grasper";
-  all.push_back({raven_with_cloth, ravenWithCloth(root), as_ambf, kAmbfRavenWithCloth,
+  all.push_back({"the Raven with the cloth (scaled 0.1) hanging at its left grasper",
+                 ravenWithCloth(root), as_ambf, kAmbfRavenWithCloth,
                  "composed from AMBF's files as docs/ambf-scenes.md says (no file describes it), "
                  "no soft-body sleep; the bound is issue 26's AMBF figure"});
+  const Run raven = all.front();
+  const Run cloth = all[scenes().size() - 1];  // the last of AMBF's scenes
+  const Run raven_with_cloth = all.back();
+  const std::string sleep_on = "soft-body sleep on (our default)";
   const ambf_like::WorldOptions defaults;
-  all.push_back({scenes()[3].name + ", soft-body sleep on (our default)", all[3].spec, defaults,
-                 std::nullopt, "the cloth sleeps once it stops moving; AMBF has no such thing"});
-  all.push_back({raven_with_cloth + ", soft-body sleep on (our default)", all[4].spec, defaults,
-                 std::nullopt, "the same"});
+  all.push_back(variant(cloth, sleep_on, defaults, std::nullopt,
+                        "the cloth sleeps once it stops moving; AMBF has no such thing"));
+  all.push_back(variant(raven_with_cloth, sleep_on, defaults, std::nullopt, "the same"));
   ambf_like::WorldOptions reduced;
   reduced.articulation = ambf_like::Articulation::Reduced;
-  all.push_back({scenes()[0].name + ", articulation: reduced", all[0].spec, reduced,
-                 2.0 * scenes()[0].ambf_steps_per_second,
-                 "each arm one articulation (0_link, welded between the two static bases, stays "
-                 "a rigid body); the bound is 2x AMBF's"});
+  all.push_back(variant(raven, "articulation: reduced", reduced, 2.0 * *raven.bound,
+                        "each arm one articulation (0_link, welded between the two static "
+                        "bases, stays a rigid body); the bound is 2x AMBF's"));
   return all;
 }
 
