@@ -2,22 +2,17 @@
 // A soft body's tetrahedra as a corotated linear-elastic solid: its forces and its stiffness.
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 #include <array>
 #include <vector>
 
+#include "ambf_like/dynamics/lane_matrix.hpp"
+#include "ambf_like/dynamics/polar_rotation.hpp"
 #include "ambf_like/soft_body_spec.hpp"
 
 class btSoftBody;
 
 namespace ambf_like::detail {
-
-/// A rotation followed from step to step: as a unit quaternion, and as the matrix it makes.
-struct Rotation {
-  Eigen::Quaterniond quaternion = Eigen::Quaterniond::Identity();
-  Eigen::Matrix3d matrix = Eigen::Matrix3d::Identity();
-};
 
 /// The corotated linear-elastic solid (Mueller et al. 2002; energy per rest volume
 /// psi = mu |eps|^2 + lambda/2 tr(eps)^2 with eps = sym(R^T F) - I, R the rotation of F): small
@@ -30,6 +25,10 @@ struct Rotation {
 /// one turned by the body's own turn (turnRotations), to within 1e-4 rad (at most 4 iterations a
 /// step). One of that paper's iterations per step let the rotations lag a ring that turned fast
 /// and blew 3 of 20 randomised peg scenes apart (seeds 6, 11 and 20 of the batch test).
+///
+/// The tetrahedra are stored and worked on four at a time, lane by lane (TetPack): the same
+/// arithmetic per tetrahedron as one at a time, rotations followed too, in a quarter of the
+/// instructions.
 class CorotatedTets {
  public:
   /// The tetrahedra of `body` (rest shape: the nodes where they are now).
@@ -44,22 +43,30 @@ class CorotatedTets {
   std::vector<Eigen::Triplet<double>> restStiffness() const;
 
  private:
-  /// One tetrahedron: its nodes, inverse rest edge matrix, rest volume and current rotation.
-  struct Tetrahedron {
+  static constexpr int kLanes = 4;
+
+  /// One tetrahedron's rest shape: its nodes (positively oriented), inverse rest edge matrix
+  /// and rest volume.
+  struct RestTetrahedron {
     std::array<int, 4> node;
     Eigen::Matrix3d rest_inverse;
-    Eigen::Matrix3d force_gradients;  ///< minus the volume times nodes 1-3's gradients
     double volume = 0.0;
-    Rotation rotation;
+  };
+  /// Up to four tetrahedra stored lane by lane, with what their forces need each step: the
+  /// constants of the rest shape and each one's followed rotation. A pack's unused lanes repeat
+  /// its first tetrahedron with no force.
+  struct TetPack {
+    int used = 0;
+    std::array<std::array<int, 4>, kLanes> node;
+    Matrix9<Lanes> rest_inverse;
+    Matrix9<Lanes> force_gradients;  ///< minus the volume times nodes 1-3's gradients
+    FollowedRotation<Lanes> rotation;
   };
 
   double mu_;
   double lambda_;
-  std::vector<Tetrahedron> tets_;
+  std::vector<RestTetrahedron> rest_;
+  std::vector<TetPack> packs_;
 };
-
-/// Updates `rotation` towards the rotation of `f`'s polar decomposition (at most 4 iterations,
-/// none once within 1e-4 rad); returns R^T f for the rotation it ends with.
-Eigen::Matrix3d followRotation(const Eigen::Matrix3d& f, Rotation& rotation);
 
 }  // namespace ambf_like::detail
