@@ -102,8 +102,10 @@ void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
 
 void CoulombContactSolver::prepareWithBullet(btSoftBody& body) {
   // Bullet prepares links and anchors and runs any velocity iterations; the position
-  // iterations and the contacts are left to the substeps.
+  // iterations and the contacts are left to the substeps. What it prepares of a link is read
+  // by its velocity iterations only: without those, anchors or clusters it does nothing used.
   auto& cfg = body.m_cfg;
+  if (cfg.viterations <= 0 && body.m_anchors.size() == 0 && body.m_clusters.size() == 0) return;
   const int iterations = cfg.piterations;
   const int drift_iterations = cfg.diterations;
   cfg.piterations = 0;

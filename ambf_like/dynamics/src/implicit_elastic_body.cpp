@@ -130,18 +130,19 @@ ImplicitElasticBody::ImplicitElasticBody(const btSoftBody& body, const SoftMater
     : tets_(body, material) {
   const int count = body.m_nodes.size();
   mass_.resize(3 * count);
-  rest_.resize(3 * count);
-  double total = 0.0;
-  rest_centre_.setZero();
+  Eigen::Matrix3Xd rest(3, count);
+  Eigen::RowVectorXd node_mass(count);
   for (int i = 0; i < count; ++i) {
     const btSoftBody::Node& node = body.m_nodes[i];
-    const double mass = node.m_im > 0.0 ? 1.0 / node.m_im : 0.0;
-    mass_.segment<3>(3 * i).setConstant(mass);
-    rest_.segment<3>(3 * i) = toEigen(node.m_x);
-    rest_centre_ += mass * rest_.segment<3>(3 * i);
-    total += mass;
+    node_mass(i) = node.m_im > 0.0 ? 1.0 / node.m_im : 0.0;
+    mass_.segment<3>(3 * i).setConstant(node_mass(i));
+    rest.col(i) = toEigen(node.m_x);
   }
-  if (total > 0.0) rest_centre_ /= total;
+  const double total = node_mass.sum();
+  if (total > 0.0) {
+    const Eigen::Vector3d rest_centre = rest * node_mass.transpose() / total;
+    weighted_rest_ = (rest.colwise() - rest_centre) * node_mass.asDiagonal();
+  }
 }
 
 void ImplicitElasticBody::factor(double h) {
@@ -180,20 +181,10 @@ const ImplicitElasticBody::Response& ImplicitElasticBody::responseTo(int node) {
 }
 
 void ImplicitElasticBody::followBodyRotation(const Eigen::VectorXd& positions) {
-  const auto count = positions.size() / 3;
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-  double total = 0.0;
-  for (Eigen::Index i = 0; i < count; ++i) {
-    centre += mass_(3 * i) * positions.segment<3>(3 * i);
-    total += mass_(3 * i);
-  }
-  if (!(total > 0.0)) return;
-  centre /= total;
-  Eigen::Matrix3d spread = Eigen::Matrix3d::Zero();
-  for (Eigen::Index i = 0; i < count; ++i) {
-    spread += mass_(3 * i) * (positions.segment<3>(3 * i) - centre) *
-              (rest_.segment<3>(3 * i) - rest_centre_).transpose();
-  }
+  if (weighted_rest_.size() == 0) return;  // no node moves
+  // sum_i m_i (x_i - c)(r_i - r_c)^T, and sum_i m_i (r_i - r_c) = 0 takes c out of it.
+  const Eigen::Map<const Eigen::Matrix3Xd> x(positions.data(), 3, weighted_rest_.cols());
+  const Eigen::Matrix3d spread = x * weighted_rest_.transpose();
   followRotation(spread, body_rotation_);
 }
 

@@ -7,6 +7,28 @@
 
 namespace ambf_like::detail {
 
+namespace {
+
+/// `m`'s columns as four lanes each, the fourth 0.
+std::array<Lanes, 3> columnsOf(const Eigen::Matrix3d& m) {
+  std::array<Lanes, 3> columns;
+  for (int c = 0; c < 3; ++c) columns[c] = Lanes{m(0, c), m(1, c), m(2, c), 0.0};
+  return columns;
+}
+
+/// The block `m` times the vector `v` (lanes 0-2).
+Lanes times(const std::array<Lanes, 3>& m, const Lanes& v) {
+  return m[0] * v[0] + m[1] * v[1] + m[2] * v[2];
+}
+
+/// Lane by lane sums of a block's columns times a vector: lane i of `sums[c]` summed over lanes
+/// is column c's dot product with it.
+void addColumnProducts(const std::array<Lanes, 3>& m, const Lanes& v, std::array<Lanes, 3>& sums) {
+  for (int c = 0; c < 3; ++c) sums[c] += m[c] * v;
+}
+
+}  // namespace
+
 bool NodeBlockCholesky::compute(const Eigen::SparseMatrix<double>& matrix) {
   const auto nodes = static_cast<int>(matrix.rows() / 3);
   // The nodes' graph, and its fill-reducing order.
@@ -55,36 +77,44 @@ bool NodeBlockCholesky::compute(const Eigen::SparseMatrix<double>& matrix) {
   for (int k = 0; k < nodes; ++k) {
     for (const auto& [row, block] : columns[k]) {
       if (row == k) {
-        diagonal_inverse_[k] = block.inverse();
+        diagonal_inverse_[k] = columnsOf(block.inverse());
       } else {
         row_.push_back(row);
-        below_.push_back(block);
+        below_.push_back(columnsOf(block));
       }
     }
     first_.push_back(static_cast<int>(row_.size()));
   }
-  ordered_.resize(matrix.rows());
+  ordered_.resize(static_cast<std::size_t>(nodes));
   return true;
 }
 
 void NodeBlockCholesky::solveInPlace(Eigen::Ref<Eigen::VectorXd> x) {
   const int nodes = static_cast<int>(order_.size());
-  Eigen::Map<Eigen::Matrix3Xd> y(ordered_.data(), 3, nodes);
-  for (int k = 0; k < nodes; ++k) y.col(k) = x.segment<3>(3 * order_[k]);
+  std::vector<Lanes>& y = ordered_;
+  for (int k = 0; k < nodes; ++k) {
+    const auto at = x.segment<3>(3 * order_[k]);
+    y[k] = Lanes{at[0], at[1], at[2], 0.0};
+  }
   // L z = b, column by column; then L^T y = z, from the last node back.
   for (int k = 0; k < nodes; ++k) {
-    const Eigen::Vector3d z = diagonal_inverse_[k] * y.col(k);
-    y.col(k) = z;
-    for (int b = first_[k]; b < first_[k + 1]; ++b) y.col(row_[b]).noalias() -= below_[b] * z;
+    const Lanes z = times(diagonal_inverse_[k], y[k]);
+    y[k] = z;
+    for (int b = first_[k]; b < first_[k + 1]; ++b) y[row_[b]] -= times(below_[b], z);
   }
   for (int k = nodes - 1; k >= 0; --k) {
-    Eigen::Vector3d rest = y.col(k);
-    for (int b = first_[k]; b < first_[k + 1]; ++b) {
-      rest.noalias() -= below_[b].transpose() * y.col(row_[b]);
-    }
-    y.col(k) = diagonal_inverse_[k].transpose() * rest;
+    // rest = y_k - sum_b below_b^T y_row(b), then y_k = D_k^-T rest.
+    std::array<Lanes, 3> sums{};
+    for (int b = first_[k]; b < first_[k + 1]; ++b) addColumnProducts(below_[b], y[row_[b]], sums);
+    Lanes rest = y[k];
+    for (int c = 0; c < 3; ++c) rest[c] -= sums[c][0] + sums[c][1] + sums[c][2];
+    std::array<Lanes, 3> back{};
+    addColumnProducts(diagonal_inverse_[k], rest, back);
+    y[k] = Lanes{back[0][0] + back[0][1] + back[0][2], back[1][0] + back[1][1] + back[1][2],
+                 back[2][0] + back[2][1] + back[2][2], 0.0};
   }
-  for (int k = 0; k < nodes; ++k) x.segment<3>(3 * order_[k]) = y.col(k);
+  for (int k = 0; k < nodes; ++k)
+    x.segment<3>(3 * order_[k]) = Eigen::Vector3d(y[k][0], y[k][1], y[k][2]);
 }
 
 }  // namespace ambf_like::detail

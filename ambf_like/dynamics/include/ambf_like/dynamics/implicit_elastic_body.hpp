@@ -75,8 +75,9 @@ class ImplicitElasticBody {
 
   CorotatedTets tets_;
   Eigen::VectorXd mass_;  ///< per coordinate; 0 for a node that stays put
-  Eigen::VectorXd rest_;  ///< rest positions
-  Eigen::Vector3d rest_centre_;
+  /// Each node's rest offset from the rest centre of mass times its mass (3 x nodes; empty when
+  /// no node has mass).
+  Eigen::Matrix3Xd weighted_rest_;
   Rotation body_rotation_;
   double factored_step_ = 0.0;
   NodeBlockCholesky system_;
