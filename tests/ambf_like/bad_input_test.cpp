@@ -449,6 +449,20 @@ TEST(BadInput, XmlNestedDeeperThanAnyRealFileIsRefusedBeforeItsRecursiveParser) 
       "i.yaml", "bodies: [BODY b]\nBODY b: {name: b, mass: 1, mesh: " + bad_index.string() + "}\n");
   EXPECT_THAT(loadErrorOf([&] { test_support::simulate({index_model}); }),
               AllOf(HasSubstr("index.dae: line 4"), HasSubstr("whole numbers")));
+  // An array whose count attribute is named otherwise ("xcount", or garbage bytes before it):
+  // assimp read the accessor's values from an empty array (found by fuzz_mesh).
+  for (const std::string count : {"xcount",
+                                  "\xFB\xFF\xFF\xFF"
+                                  "count"}) {
+    const auto miscounted =
+        dir.write("array.dae", "<?xml version=\"1.0\"?>\n<COLLADA>\n<float_array id=\"a\" " +
+                                   count + "=\"3\">0 0 0</float_array>\n</COLLADA>\n");
+    const auto array_model = dir.write(
+        "a.yaml",
+        "bodies: [BODY b]\nBODY b: {name: b, mass: 1, mesh: " + miscounted.string() + "}\n");
+    EXPECT_THAT(loadErrorOf([&] { test_support::simulate({array_model}); }),
+                AllOf(HasSubstr("array.dae: line 3"), HasSubstr("count")));
+  }
   // Comments, CDATA and quoted '>' are not elements.
   EXPECT_EQ(common::xmlNestedBeyond("<a><!-- <b><c> --><![CDATA[<d><e>]]><f x=\"<g>\"/></a>", 1),
             std::nullopt);

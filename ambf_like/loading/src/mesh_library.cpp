@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <assimp/Importer.hpp>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <optional>
@@ -117,8 +118,9 @@ std::optional<std::size_t> malformedColladaIndexList(const std::string& text) {
   return std::nullopt;
 }
 
-/// The line of the first COLLADA <float_array> or <int_array> whose `count` is not the number of
-/// values it holds (assimp 5.2 reads an accessor's values past an array declared shorter).
+/// The line of the first COLLADA <float_array> or <int_array> whose `count` is missing or is not
+/// the number of values it holds (assimp 5.2 reads an accessor's values past an array declared
+/// shorter).
 std::optional<std::size_t> miscountedColladaArray(const std::string& text) {
   for (const char* tag : {"<float_array", "<int_array"}) {
     for (auto open = text.find(tag); open != std::string::npos; open = text.find(tag, open + 1)) {
@@ -126,7 +128,13 @@ std::optional<std::size_t> miscountedColladaArray(const std::string& text) {
       const auto end = text.find('<', body);
       if (body == std::string::npos || end == std::string::npos) break;
       const std::string head = text.substr(open, body - open);
-      const auto count_at = head.find("count=\"");
+      // The attribute named `count` exactly: one named "xcount" leaves assimp none, and it
+      // then reads the accessor's values from an empty array (found by fuzz_mesh).
+      auto count_at = head.find("count=\"");
+      while (count_at != std::string::npos &&
+             !std::isspace(static_cast<unsigned char>(head[count_at - 1]))) {
+        count_at = head.find("count=\"", count_at + 1);
+      }
       const std::string declared =
           count_at == std::string::npos
               ? std::string()
