@@ -53,8 +53,8 @@ Eigen::VectorXd textbookForces(const std::vector<std::array<int, 4>>& tets,
 }
 
 TEST(CorotatedForces, FourAtATimeTheyAreEachTetrahedronsTextbookForces) {
-  // Two cubes of 2 mm side by side cut into 6 tetrahedra each (12, and 7 with one cube's last
-  // one dropped: packs of four with lanes to spare), turned 1 rad and strained unevenly.
+  // Two cubes of 2 mm side by side cut into 6 tetrahedra each (12; and 7, the first cube and one
+  // of the second: packs of four with lanes to spare), turned 1 rad and strained unevenly.
   for (const int count : {12, 7}) {
     std::mt19937 random(7);
     std::uniform_real_distribution<double> jitter(-1e-4, 1e-4);

@@ -49,15 +49,12 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
     tet.rest_inverse = rest.inverse();
     rest_.push_back(tet);
   }
-  for (std::size_t first = 0; first < rest_.size(); first += kLanes) {
+  for (std::size_t first = 0; first < rest_.size(); first += kLaneCount) {
     TetPack pack;
-    pack.used = static_cast<int>(std::min<std::size_t>(kLanes, rest_.size() - first));
-    for (int lane = 0; lane < kLanes; ++lane) {
-      const bool used = lane < pack.used;
-      const RestTetrahedron& tet = rest_[first + (used ? lane : 0)];
-      const Eigen::Matrix3d force_gradients =
-          used ? Eigen::Matrix3d(-tet.volume * tet.rest_inverse.transpose())
-               : Eigen::Matrix3d::Zero();
+    pack.used = static_cast<int>(std::min<std::size_t>(kLaneCount, rest_.size() - first));
+    for (int lane = 0; lane < kLaneCount; ++lane) {
+      const RestTetrahedron& tet = rest_[first + (lane < pack.used ? lane : 0)];
+      const Eigen::Matrix3d force_gradients = -tet.volume * tet.rest_inverse.transpose();
       pack.node[lane] = tet.node;
       for (int e = 0; e < 9; ++e) {
         pack.rest_inverse[e][lane] = tet.rest_inverse(e % 3, e / 3);
@@ -87,7 +84,7 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
   for (auto& pack : packs_) {
     // The edge matrices [x1 - x0, x2 - x0, x3 - x0], lane by lane.
     Matrix9<Lanes> edges;
-    for (int lane = 0; lane < kLanes; ++lane) {
+    for (int lane = 0; lane < kLaneCount; ++lane) {
       const std::array<int, 4>& node = pack.node[lane];
       const double* x0 = x + 3 * node[0];
       for (int k = 0; k < 3; ++k) {

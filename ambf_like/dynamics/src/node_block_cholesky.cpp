@@ -21,6 +21,13 @@ Lanes times(const std::array<Lanes, 3>& m, const Lanes& v) {
   return m[0] * v[0] + m[1] * v[1] + m[2] * v[2];
 }
 
+/// The sums of each of three lane sets' lanes, as one vector.
+Lanes laneSums(const std::array<Lanes, 3>& sets) {
+  Lanes out{};
+  for (int c = 0; c < 3; ++c) out[c] = sets[c][0] + sets[c][1] + sets[c][2] + sets[c][3];
+  return out;
+}
+
 /// Lane by lane sums of a block's columns times a vector: lane i of `sums[c]` summed over lanes
 /// is column c's dot product with it.
 void addColumnProducts(const std::array<Lanes, 3>& m, const Lanes& v, std::array<Lanes, 3>& sums) {
@@ -106,12 +113,10 @@ void NodeBlockCholesky::solveInPlace(Eigen::Ref<Eigen::VectorXd> x) {
     // rest = y_k - sum_b below_b^T y_row(b), then y_k = D_k^-T rest.
     std::array<Lanes, 3> sums{};
     for (int b = first_[k]; b < first_[k + 1]; ++b) addColumnProducts(below_[b], y[row_[b]], sums);
-    Lanes rest = y[k];
-    for (int c = 0; c < 3; ++c) rest[c] -= sums[c][0] + sums[c][1] + sums[c][2];
+    const Lanes rest = y[k] - laneSums(sums);
     std::array<Lanes, 3> back{};
     addColumnProducts(diagonal_inverse_[k], rest, back);
-    y[k] = Lanes{back[0][0] + back[0][1] + back[0][2], back[1][0] + back[1][1] + back[1][2],
-                 back[2][0] + back[2][1] + back[2][2], 0.0};
+    y[k] = laneSums(back);
   }
   for (int k = 0; k < nodes; ++k)
     x.segment<3>(3 * order_[k]) = Eigen::Vector3d(y[k][0], y[k][1], y[k][2]);

@@ -43,8 +43,6 @@ class CorotatedTets {
   std::vector<Eigen::Triplet<double>> restStiffness() const;
 
  private:
-  static constexpr int kLanes = 4;
-
   /// One tetrahedron's rest shape: its nodes (positively oriented), inverse rest edge matrix
   /// and rest volume.
   struct RestTetrahedron {
@@ -54,10 +52,10 @@ class CorotatedTets {
   };
   /// Up to four tetrahedra stored lane by lane, with what their forces need each step: the
   /// constants of the rest shape and each one's followed rotation. A pack's unused lanes repeat
-  /// its first tetrahedron with no force.
+  /// its first tetrahedron, and their forces are not added.
   struct TetPack {
     int used = 0;
-    std::array<std::array<int, 4>, kLanes> node;
+    std::array<std::array<int, 4>, kLaneCount> node;
     Matrix9<Lanes> rest_inverse;
     Matrix9<Lanes> force_gradients;  ///< minus the volume times nodes 1-3's gradients
     FollowedRotation<Lanes> rotation;

@@ -9,6 +9,8 @@ namespace ambf_like::detail {
 
 /// Four numbers side by side, one per tetrahedron of a pack: one instruction works on all.
 using Lanes = double __attribute__((vector_size(32)));
+/// How many numbers Lanes holds.
+inline constexpr int kLaneCount = 4;
 /// Which lanes a comparison of Lanes held in (all bits set) or not (zero).
 using LaneMask = decltype(Lanes{} < Lanes{});
 
@@ -46,7 +48,7 @@ inline bool any(bool held) {
   return held;
 }
 inline bool any(LaneMask held) {
-  for (int lane = 0; lane < 4; ++lane) {
+  for (int lane = 0; lane < kLaneCount; ++lane) {
     if (held[lane] != 0) return true;
   }
   return false;
@@ -58,7 +60,7 @@ inline double squareRoot(double x) {
 }
 inline Lanes squareRoot(Lanes x) {
   Lanes root;
-  for (int lane = 0; lane < 4; ++lane) root[lane] = std::sqrt(x[lane]);
+  for (int lane = 0; lane < kLaneCount; ++lane) root[lane] = std::sqrt(x[lane]);
   return root;
 }
 
