@@ -82,6 +82,8 @@ class PegTransferEnv(_Env):
         else:
             result = self.core.step_pad(action)
         info = {"placed": result.placed, "refused": result.refused, "time": self.core.time}
+        if result.failure:  # the world's guard stopped it: truncated, the last good observation
+            info["failure"] = result.failure
         return result.observation, result.reward, result.terminated, result.truncated, info
 
     def expert_action(self):

@@ -22,7 +22,8 @@ void bindPegTransferEnv(py::module_& m) {
       .def_readonly("terminated", &scenario::PegTransferStep::terminated)
       .def_readonly("truncated", &scenario::PegTransferStep::truncated)
       .def_readonly("placed", &scenario::PegTransferStep::placed)
-      .def_readonly("refused", &scenario::PegTransferStep::refused);
+      .def_readonly("refused", &scenario::PegTransferStep::refused)
+      .def_readonly("failure", &scenario::PegTransferStep::failure);
 
   py::class_<E>(m, "PegTransferCore", "the peg transfer, one manual-loop iteration per step")
       .def(py::init([](bool randomize, double time_limit,

@@ -4,6 +4,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include "ambf_like/step_guard.hpp"
 #include "bindings.hpp"
 #include "common/load_error.hpp"
 #include "recording/recording_io.hpp"
@@ -12,6 +13,8 @@ PYBIND11_MODULE(_raven_sim, m) {
   m.doc() = "The Raven-II twin, its simulator and the paper's recordings, in process.";
   pybind11::register_exception<common::LoadError>(m, "LoadError", PyExc_ValueError);
   pybind11::register_exception<recording::RecordingError>(m, "RecordingError", PyExc_ValueError);
+  pybind11::register_exception<ambf_like::SimulationDiverged>(m, "SimulationDiverged",
+                                                              PyExc_RuntimeError);
   raven_python::bindWorld(m);
   raven_python::bindTwin(m);
   raven_python::bindRecordings(m);

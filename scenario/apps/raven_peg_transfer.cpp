@@ -201,7 +201,10 @@ int runPegTransfers(const Settings& s) {
                                recording::cfPathFor(first.rs_file).string())
                  : "",
              summary_path.string(), jsonl_path.string());
-  return stop_requested ? 130 : 0;
+  if (stop_requested) return 130;
+  // A run the world's guard stopped fails the command (the others are written all the same).
+  return std::any_of(results.begin(), results.end(), [](const auto& r) { return r.failed(); }) ? 3
+                                                                                               : 0;
 }
 
 int runRectangleTask(const Settings& s) {

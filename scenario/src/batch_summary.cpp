@@ -3,7 +3,7 @@
 namespace scenario {
 
 nlohmann::json summarize(const std::vector<nlohmann::json>& rows) {
-  std::size_t complete = 0, placed = 0, lost = 0, timed_out = 0, regrasps = 0;
+  std::size_t complete = 0, placed = 0, lost = 0, timed_out = 0, failed = 0, regrasps = 0;
   RunTiming total;
   for (const nlohmann::json& row : rows) {
     complete += row.at("all_placed").get<bool>() ? 1 : 0;
@@ -11,6 +11,7 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& rows) {
     lost += row.at("lost").get<std::size_t>();
     regrasps += row.at("regrasps").get<std::size_t>();
     timed_out += row.at("timed_out").get<bool>() ? 1 : 0;
+    failed += row.contains("failure") && !row.at("failure").is_null() ? 1 : 0;
     const RunTiming timing = RunTiming::fromJson(row);
     total.sim_time += timing.sim_time;
     total.wall_time += timing.wall_time;
@@ -20,7 +21,7 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& rows) {
   nlohmann::json j{{"runs", rows.size()},   {"runs_all_placed", complete},
                    {"pegs_placed", placed}, {"pegs", rows.size() * 6},
                    {"pegs_lost", lost},     {"runs_timed_out", timed_out},
-                   {"regrasps", regrasps}};
+                   {"runs_failed", failed}, {"regrasps", regrasps}};
   total.addTo(j);  // sums, with the rates of the whole set
   return j;
 }

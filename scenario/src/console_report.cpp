@@ -53,6 +53,7 @@ void ProgressBar::finish() {
 }
 
 std::string pegTable(const PegTransferResult& result) {
+  if (result.failed()) return fmt::format("the run failed: {}\n", result.failure);
   std::string out =
       fmt::format("{:<5} {:<5} {:<12} {:<12} {:<7} {:>9} {:>8} {:>11} {:<6} {:>9} {:>13}  {}\n",
                   "peg", "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)", "regrasps",
@@ -84,18 +85,23 @@ std::string batchTable(const std::vector<PegTransferResult>& results) {
       fmt::format("{:>6} {:>7} {:>5} {:>8} {:>9} {:>8} {:>6} {:>8}\n", "seed", "placed", "lost",
                   "regrasps", "sim (s)", "wall (s)", "RTF", "loop Hz");
   for (const PegTransferResult& r : results) {
+    if (r.failed()) {
+      out += fmt::format("{:>6} failed: {}\n", r.variation.seed, r.failure);
+      continue;
+    }
     out += fmt::format("{:>6} {:>5}/6 {:>5} {:>8} {:>9.1f} {:>8.1f} {:>6.2f} {:>8.0f}\n",
                        r.variation.seed, r.placed(), r.lost(), r.regrasps(), r.timing.sim_time,
                        r.timing.wall_time, r.timing.realTimeFactor(), r.timing.loopFrequency());
   }
   const nlohmann::json total = summarize(results);
   out += fmt::format(
-      "{} of {} runs placed all six pegs; {} of {} pegs placed, {} lost, {} re-grasps; {:.2f}x "
-      "real time and a {:.0f} Hz dynamic loop over all runs\n",
+      "{} of {} runs placed all six pegs ({} failed); {} of {} pegs placed, {} lost, {} "
+      "re-grasps; {:.2f}x real time and a {:.0f} Hz dynamic loop over all runs\n",
       total["runs_all_placed"].get<std::size_t>(), results.size(),
-      total["pegs_placed"].get<std::size_t>(), total["pegs"].get<std::size_t>(),
-      total["pegs_lost"].get<std::size_t>(), total["regrasps"].get<std::size_t>(),
-      total["real_time_factor"].get<double>(), total["loop_frequency_hz"].get<double>());
+      total["runs_failed"].get<std::size_t>(), total["pegs_placed"].get<std::size_t>(),
+      total["pegs"].get<std::size_t>(), total["pegs_lost"].get<std::size_t>(),
+      total["regrasps"].get<std::size_t>(), total["real_time_factor"].get<double>(),
+      total["loop_frequency_hz"].get<double>());
   return out;
 }
 

@@ -81,48 +81,60 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   };
   show(WorldMoment::Start);
   auto done = [&] { return routines[0].done() && routines[1].done(); };
-  while (!done() && twin.now() < options.time_limit && !options.stopRequested()) {
-    const controller::ArmPair current = controller.commanded();
-    const controller::ArmPair next{routines[0].next(current[0], world),
-                                   routines[1].next(current[1], world)};
-    result.refused += controller.moveTo(next).refused;
-    if (assist) {
-      for (raven::Arm arm : raven::kArms)
-        assist->update(arm, routines[raven::index(arm)].opening());
-    }
-    if (rs) {
-      const auto state = *twin.ravenState();
-      rs->write(state);
-      cf->write(state.time,
-                {twin.measuredCf(raven::Arm::Left), twin.measuredCf(raven::Arm::Right)});
-    }
-    for (const ArmRoutine& routine : routines) {
-      const auto forces = twin.measuredCf(routine.arm());
-      if (routine.phase() == Phase::Carry && forces && routine.carrying(world)) {
-        squeeze.record(routine.jobs()[routine.finished()].peg, *forces);
+  try {
+    while (!done() && twin.now() < options.time_limit && !options.stopRequested()) {
+      const controller::ArmPair current = controller.commanded();
+      const controller::ArmPair next{routines[0].next(current[0], world),
+                                     routines[1].next(current[1], world)};
+      result.refused += controller.moveTo(next).refused;
+      if (assist) {
+        for (raven::Arm arm : raven::kArms)
+          assist->update(arm, routines[raven::index(arm)].opening());
       }
+      if (rs) {
+        const auto state = *twin.ravenState();
+        rs->write(state);
+        cf->write(state.time,
+                  {twin.measuredCf(raven::Arm::Left), twin.measuredCf(raven::Arm::Right)});
+      }
+      for (const ArmRoutine& routine : routines) {
+        const auto forces = twin.measuredCf(routine.arm());
+        if (routine.phase() == Phase::Carry && forces && routine.carrying(world)) {
+          squeeze.record(routine.jobs()[routine.finished()].peg, *forces);
+        }
+      }
+      watch.observe();
+      ++result.iterations;
+      progress.sim_time = twin.now();
+      progress.done = routines[0].finished() + routines[1].finished();
+      progress.carrying = static_cast<std::size_t>(
+          std::count_if(routines.begin(), routines.end(), [](const ArmRoutine& r) {
+            return r.phase() == Phase::Lift || r.phase() == Phase::Carry ||
+                   r.phase() == Phase::Lower;
+          }));
+      if (options.progress) options.progress(progress);
+      show(WorldMoment::Iteration);
     }
-    watch.observe();
-    ++result.iterations;
-    progress.sim_time = twin.now();
-    progress.done = routines[0].finished() + routines[1].finished();
-    progress.carrying = static_cast<std::size_t>(
-        std::count_if(routines.begin(), routines.end(), [](const ArmRoutine& r) {
-          return r.phase() == Phase::Lift || r.phase() == Phase::Carry || r.phase() == Phase::Lower;
-        }));
-    if (options.progress) options.progress(progress);
-    show(WorldMoment::Iteration);
-  }
-  result.stopped = !done() && options.stopRequested();
-  result.timed_out = !done() && !result.stopped;
-  const double settle_end = twin.now() + (result.stopped ? 0.0 : options.settle_time);
-  while (twin.now() < settle_end) {
-    controller.idle();
-    watch.observe();
-    show(WorldMoment::Iteration);
+    result.stopped = !done() && options.stopRequested();
+    result.timed_out = !done() && !result.stopped;
+    const double settle_end = twin.now() + (result.stopped ? 0.0 : options.settle_time);
+    while (twin.now() < settle_end) {
+      controller.idle();
+      watch.observe();
+      show(WorldMoment::Iteration);
+    }
+  } catch (const ambf_like::SimulationDiverged& e) {
+    // The run stops here; its rings' numbers are not results (PegTransferResult::failure).
+    result.failure = e.what();
   }
   show(WorldMoment::End);
 
+  result.timing = session.timing();
+  if (rs) {
+    result.rs_file = rs->path();
+    result.rs_rows = rs->rows();
+  }
+  if (!result.failure.empty()) return result;
   result.pegs = watch.finish();
   for (PegOutcome& outcome : result.pegs) outcome.carried_squeeze = squeeze.median(outcome.peg);
   for (const ArmRoutine& routine : routines) {
@@ -133,11 +145,6 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
     }
   }
   result.grasps = assist ? assist->grasps() : 0;
-  result.timing = session.timing();
-  if (rs) {
-    result.rs_file = rs->path();
-    result.rs_rows = rs->rows();
-  }
   return result;
 }
 

@@ -60,19 +60,41 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
     rings_[i] = &world.softBody(layout_.jobs[i].peg);
   }
   placed_ = countPlaced();
-  return observe();
+  failure_.clear();
+  last_observation_ = observe();
+  return last_observation_;
 }
 
 PegTransferStep PegTransferEnv::step(const Action& targets) {
   const controller::ArmPair next = armPair(targets);
-  return finishStep(session().controller().moveTo(next).refused);
+  return guardedStep([&] { return session().controller().moveTo(next).refused; });
 }
 
 PegTransferStep PegTransferEnv::step(const recording::GamepadState& pad) {
-  return finishStep(session().controller().manual(pad).refused);
+  return guardedStep([&] { return session().controller().manual(pad).refused; });
+}
+
+PegTransferStep PegTransferEnv::guardedStep(const std::function<std::size_t()>& run) {
+  session();  // reset() first
+  if (!failure_.empty()) {
+    throw std::logic_error("the episode ended when its world failed (" + failure_ +
+                           "): reset() before step()");
+  }
+  try {
+    return finishStep(run());
+  } catch (const ambf_like::SimulationDiverged& e) {
+    failure_ = e.what();
+    PegTransferStep out;
+    out.observation = last_observation_;
+    out.placed = placed_;
+    out.truncated = true;
+    out.failure = failure_;
+    return out;
+  }
 }
 
 Action PegTransferEnv::expertAction() {
+  if (!failure_.empty()) throw std::logic_error("the episode ended when its world failed");
   controller::DualPlatformController& controller = session().controller();
   const controller::ArmPair& current = controller.commanded();
   const ambf_like::World& world = session().twin().world();
@@ -96,6 +118,7 @@ PegTransferStep PegTransferEnv::finishStep(std::size_t refused) {
   const int before = placed_;
   placed_ = countPlaced();
   out.observation = observe();
+  last_observation_ = out.observation;
   out.reward = placed_ - before;
   out.placed = placed_;
   out.terminated = placed_ == static_cast<int>(rings_.size());

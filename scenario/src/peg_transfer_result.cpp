@@ -27,6 +27,7 @@ std::size_t PegTransferResult::regrasps() const {
 nlohmann::json PegTransferResult::json() const {
   nlohmann::json pegs_json = nlohmann::json::array();
   for (const PegOutcome& p : pegs) {
+    if (failed()) break;
     pegs_json.push_back(
         {{"peg", p.peg},
          {"arm", raven::armName(p.arm)},
@@ -55,6 +56,7 @@ nlohmann::json PegTransferResult::json() const {
                    {"stopped", stopped},
                    {"all_placed", allPlaced()},
                    {"timed_out", timed_out},
+                   {"failure", failed() ? nlohmann::json(failure) : nlohmann::json(nullptr)},
                    {"iterations", iterations},
                    {"assisted_grasps", grasps},
                    {"refused_commands", refused},

@@ -9,10 +9,12 @@
 #include <cmath>
 #include <sstream>
 
+#include "soft_cantilever.hpp"
 #include "test_files.hpp"
 
 namespace {
 
+using test_support::boxVtk;
 using test_support::loadErrorOf;
 using test_support::TempDir;
 using testing::AllOf;
@@ -21,40 +23,6 @@ using testing::HasSubstr;
 constexpr double kModulus = 1.0e6;  // Pa
 constexpr double kPoisson = 0.45;
 constexpr double kDensity = 1100.0;  // kg/m^3
-
-/// A box of `nx` x `ny` x `nz` cells of `cell` (m), from the origin up, each cell cut into six
-/// tetrahedra around its diagonal (all cells the same way, so neighbours share faces).
-std::string boxVtk(int nx, int ny, int nz, double cell) {
-  auto index = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
-  std::ostringstream s;
-  const int points = (nx + 1) * (ny + 1) * (nz + 1);
-  const int cells = nx * ny * nz * 6;
-  s << "# vtk DataFile Version 2.0\nbox\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS " << points
-    << " double\n";
-  for (int k = 0; k <= nz; ++k) {
-    for (int j = 0; j <= ny; ++j) {
-      for (int i = 0; i <= nx; ++i) s << i * cell << ' ' << j * cell << ' ' << k * cell << '\n';
-    }
-  }
-  s << "CELLS " << cells << ' ' << cells * 5 << '\n';
-  const int around[6][2] = {{1, 3}, {1, 5}, {2, 3}, {2, 6}, {4, 5}, {4, 6}};
-  for (int k = 0; k < nz; ++k) {
-    for (int j = 0; j < ny; ++j) {
-      for (int i = 0; i < nx; ++i) {
-        auto corner = [&](int bits) {
-          return index(i + (bits & 1), j + ((bits >> 1) & 1), k + ((bits >> 2) & 1));
-        };
-        for (const auto& t : around) {
-          s << "4 " << corner(0) << ' ' << corner(t[0]) << ' ' << corner(t[1]) << ' ' << corner(7)
-            << '\n';
-        }
-      }
-    }
-  }
-  s << "CELL_TYPES " << cells << '\n';
-  for (int c = 0; c < cells; ++c) s << "10\n";
-  return s.str();
-}
 
 std::string materialBlock() {
   std::ostringstream s;
@@ -205,40 +173,18 @@ TEST(SoftMaterial, TheForceDoesNotDependOnTheStepSubstepsOrIterations) {
 namespace {
 
 /// Tip deflection (m, downwards) of a cantilever of the material, `length` x `width` x `width`,
-/// clamped at x = 0 (its end face's nodes fixed), `cells` cells through its thickness, under
-/// its own weight once settled.
+/// `cells` cells through its thickness, under its own weight after 400 steps of 1 ms.
 double cantileverSag(double length, double width, int cells) {
-  const double cell = width / cells;
-  const int along = static_cast<int>(std::lround(length / cell));
-  TempDir dir;
-  dir.write("beam.vtk", boxVtk(along, cells, cells, cell));
-  std::ostringstream fixed;  // the points of the face x = 0, by their index in the file
-  for (int k = 0; k <= cells; ++k) {
-    for (int j = 0; j <= cells; ++j) {
-      fixed << (k || j ? ", " : "") << (k * (cells + 1) + j) * (along + 1);
-    }
-  }
-  std::ostringstream adf;
-  adf << "soft bodies: [BODY beam]\nBODY beam:\n  name: beam\n  mesh: beam.vtk\n  material: "
-      << materialBlock() << "\n  location: {position: {x: 0, y: 0, z: 0.5}}\n"
-      << "  collision margin: 0.0001\n  config: {kDP: 0.02, fixed nodes: [" << fixed.str()
-      << "]}\n";
-  ambf_like::WorldOptions options;
-  options.soft_body_sleep = false;
-  auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, options);
-  auto& beam = sim->world->softBody("beam");
-  const auto rest = beam.nodePositions();
-  sim->world->step(400);
-  EXPECT_TRUE(beam.isFinite());
-  double drop = 0.0;  // the tip face's mean
-  int count = 0;
-  for (std::size_t i = 0; i < rest.size(); ++i) {
-    if (rest[i].x() > length - 1e-9) {
-      drop += rest[i].z() - beam.nodePosition(i).z();
-      ++count;
-    }
-  }
-  return drop / count;
+  test_support::CantileverSpec spec;
+  spec.length = length;
+  spec.width = width;
+  spec.cells = cells;
+  spec.youngs_modulus = kModulus;
+  spec.poisson = kPoisson;
+  spec.density = kDensity;
+  const auto sag = test_support::settleCantilever(spec);
+  EXPECT_TRUE(sag.finite);
+  return sag.tip_sag;
 }
 
 TEST(SoftMaterial, ACantileverSagsTowardsEulerBernoulliAsItsMeshIsRefined) {

@@ -2,6 +2,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <stdexcept>
 
 namespace test_support {
@@ -51,6 +52,38 @@ std::unique_ptr<Simulation> simulate(const std::vector<std::filesystem::path>& m
   sim->scene = ambf_like::loadModelFiles(model_files);
   sim->world = std::make_unique<ambf_like::World>(sim->scene.spec, sim->meshes, options);
   return sim;
+}
+
+std::string boxVtk(int nx, int ny, int nz, double cell) {
+  auto index = [&](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
+  std::ostringstream s;
+  const int points = (nx + 1) * (ny + 1) * (nz + 1);
+  const int cells = nx * ny * nz * 6;
+  s << "# vtk DataFile Version 2.0\nbox\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS " << points
+    << " double\n";
+  for (int k = 0; k <= nz; ++k) {
+    for (int j = 0; j <= ny; ++j) {
+      for (int i = 0; i <= nx; ++i) s << i * cell << ' ' << j * cell << ' ' << k * cell << '\n';
+    }
+  }
+  s << "CELLS " << cells << ' ' << cells * 5 << '\n';
+  const int around[6][2] = {{1, 3}, {1, 5}, {2, 3}, {2, 6}, {4, 5}, {4, 6}};
+  for (int k = 0; k < nz; ++k) {
+    for (int j = 0; j < ny; ++j) {
+      for (int i = 0; i < nx; ++i) {
+        auto corner = [&](int bits) {
+          return index(i + (bits & 1), j + ((bits >> 1) & 1), k + ((bits >> 2) & 1));
+        };
+        for (const auto& t : around) {
+          s << "4 " << corner(0) << ' ' << corner(t[0]) << ' ' << corner(t[1]) << ' ' << corner(7)
+            << '\n';
+        }
+      }
+    }
+  }
+  s << "CELL_TYPES " << cells << '\n';
+  for (int c = 0; c < cells; ++c) s << "10\n";
+  return s.str();
 }
 
 }  // namespace test_support

@@ -31,6 +31,11 @@ std::string groundPlaneBody();
 /// caller appends its location and config lines.
 std::string softBallBody(double margin);
 
+/// A VTK volume mesh: a box of `nx` x `ny` x `nz` cells of `cell` (m), from the origin up, each
+/// cell cut into six tetrahedra around its diagonal (all cells the same way, so neighbours share
+/// faces).
+std::string boxVtk(int nx, int ny, int nz, double cell);
+
 /// A loaded scene and the World built from it, kept together.
 struct Simulation {
   ambf_like::LoadedScene scene;

@@ -89,7 +89,6 @@ void TwinPlatform::runCycle() {
   world_.step();
   if (after_step_) after_step_(world_);
   readings_ = readAll(*actuation_);
-  if (!world_.isFinite()) core_.fault("the simulation became non-finite");
 }
 
 JointSample TwinPlatform::measuredJs(Arm arm) const {

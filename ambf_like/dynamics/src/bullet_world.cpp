@@ -88,6 +88,10 @@ const std::vector<NodeContactImpulse>& BulletWorld::coulombImpulses() const {
   return impl_->soft_solver.lastImpulses();
 }
 
+ElasticSolveStats BulletWorld::elasticStats(const btSoftBody& body) const {
+  return impl_->soft_solver.elasticStats(body);
+}
+
 btMultiBodyDynamicsWorld& BulletWorld::articulations() {
   if (!impl_->soft_multibody) throw std::logic_error("this Bullet world has no articulations");
   return *impl_->soft_multibody;

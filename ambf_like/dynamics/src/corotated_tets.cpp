@@ -56,6 +56,7 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
       const RestTetrahedron& tet = rest_[first + (lane < pack.used ? lane : 0)];
       const Eigen::Matrix3d force_gradients = -tet.volume * tet.rest_inverse.transpose();
       pack.node[lane] = tet.node;
+      pack.volume[lane] = tet.volume;
       for (int e = 0; e < 9; ++e) {
         pack.rest_inverse[e][lane] = tet.rest_inverse(e % 3, e / 3);
         pack.force_gradients[e][lane] = force_gradients(e % 3, e / 3);
@@ -79,8 +80,9 @@ void CorotatedTets::turnRotations(const Eigen::Quaterniond& turn) {
   }
 }
 
-void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd& forces) {
+double CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd& forces) {
   const double* x = positions.data();
+  double energy = 0.0;
   for (auto& pack : packs_) {
     // The edge matrices [x1 - x0, x2 - x0, x3 - x0], lane by lane.
     Matrix9<Lanes> edges;
@@ -106,7 +108,11 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
     // function's gradient; node 0's gradient is minus the others' sum, so is its force.
     const Matrix9<Lanes> nodal =
         product(product(pack.rotation.matrix, stress), pack.force_gradients);
+    // psi V = (mu eps : eps + lambda / 2 tr(eps)^2) V = (eps : stress) V / 2.
+    const Lanes density = 0.5 * (e00 * stress[0] + e11 * stress[4] + e22 * stress[8]) +
+                          (e01 * stress[1] + e02 * stress[2] + e12 * stress[5]);
     for (int lane = 0; lane < pack.used; ++lane) {
+      energy += density[lane] * pack.volume[lane];
       const std::array<int, 4>& node = pack.node[lane];
       double* f0 = forces.data() + 3 * node[0];
       for (int k = 0; k < 3; ++k) {
@@ -118,6 +124,7 @@ void CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd&
       }
     }
   }
+  return energy;
 }
 
 std::vector<Eigen::Triplet<double>> CorotatedTets::restStiffness() const {

@@ -30,13 +30,20 @@ void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps,
                                               const std::optional<SoftMaterial>& material) {
   auto& sequence = body.m_cfg.m_psequence;
   for (int i = sequence.size() - 1; i >= 0; --i) {
+    // A body with a material solves its links' work and its anchors (as pins) in its step.
     const bool replaced = sequence[i] == btSoftBody::ePSolver::RContacts ||
-                          (material && sequence[i] == btSoftBody::ePSolver::Linear);
+                          (material && (sequence[i] == btSoftBody::ePSolver::Linear ||
+                                        sequence[i] == btSoftBody::ePSolver::Anchors));
     if (replaced) sequence.removeAtIndex(i);
   }
   Registered& registered = coulomb_[&body];
   registered.substeps = substeps;
   if (material) registered.elasticity = std::make_unique<ImplicitElasticBody>(body, *material);
+}
+
+ElasticSolveStats CoulombContactSolver::elasticStats(const btSoftBody& body) const {
+  const auto it = coulomb_.find(&body);
+  return it == coulomb_.end() ? ElasticSolveStats{} : it->second.stats;
 }
 
 void CoulombContactSolver::forget(const btSoftBody& body) {
@@ -81,6 +88,7 @@ void CoulombContactSolver::updateSoftBodies() {
 void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
   prepareWithBullet(body);
   const btScalar h = body.m_sst.sdt;
+  step_size_ = h;
   const int substeps = registered.substeps;
   const btScalar hs = h / substeps;
   rewindPrediction(body, registered, substeps);
@@ -183,7 +191,28 @@ void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& register
     contacts.push_back(c);
     source.push_back(index);
   }
-  registered.elasticity->step(body, hs, acceleration_, contacts);
+  const std::size_t first_pin = contacts.size();
+  for (int a = 0; a < body.m_anchors.size(); ++a) {
+    const btSoftBody::Anchor& anchor = body.m_anchors[a];
+    contacts.push_back(pinOf(body, anchor, hs, elapsed));
+    if (const auto last = registered.last_pin_impulse.find({contacts.back().node, anchor.m_body});
+        last != registered.last_pin_impulse.end()) {
+      contacts.back().impulse = last->second;
+    }
+  }
+  const ElasticStepReport report = registered.elasticity->step(body, hs, acceleration_, contacts);
+  ElasticSolveStats& stats = registered.stats;
+  ++stats.steps;
+  stats.iterations += static_cast<std::uint64_t>(report.iterations);
+  stats.halvings += static_cast<std::uint64_t>(report.halvings);
+  stats.energy_gaining += report.energy_kept ? 0 : 1;
+  registered.last_pin_impulse.clear();
+  for (int a = 0; a < body.m_anchors.size(); ++a) {
+    const ElasticContact& pin = contacts[first_pin + static_cast<std::size_t>(a)];
+    registered.last_pin_impulse[{pin.node, body.m_anchors[a].m_body}] = pin.impulse;
+    pin_impulses_[static_cast<std::size_t>(a)] += toBt(pin.impulse);
+  }
+  contacts.resize(first_pin);
   runBulletSolvers(body);
   registered.last_impulse.clear();
   for (std::size_t k = 0; k < contacts.size(); ++k) {
@@ -195,6 +224,23 @@ void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& register
     state.impulse += impulse;
     state.normal_impulse += rc.m_cti.m_normal * rc.m_cti.m_normal.dot(impulse);
   }
+}
+
+ElasticContact CoulombContactSolver::pinOf(const btSoftBody& body, const btSoftBody::Anchor& anchor,
+                                           btScalar hs, btScalar elapsed) const {
+  // The rigid body has been moved to the step's end: its point `h - elapsed` earlier is where
+  // the pin is `elapsed` into the step.
+  const btVector3 arm = anchor.m_body->getWorldTransform().getBasis() * anchor.m_local;
+  const btVector3 point_velocity = anchor.m_body->getVelocityInLocalPoint(arm);
+  const btVector3 point = anchor.m_body->getWorldTransform().getOrigin() + arm -
+                          point_velocity * (step_size_ - elapsed);
+  ElasticContact pin;
+  pin.node = static_cast<int>(anchor.m_node - &body.m_nodes[0]);
+  pin.pinned = true;
+  pin.normal = Eigen::Vector3d::UnitZ();
+  pin.surface_velocity = toEigen((point - anchor.m_node->m_x) / hs);
+  pin.least_normal_velocity = pin.surface_velocity.z();
+  return pin;
 }
 
 void CoulombContactSolver::runBulletSolvers(btSoftBody& body) {
@@ -219,6 +265,7 @@ void CoulombContactSolver::finishStep(btSoftBody& body) {
 
 void CoulombContactSolver::startContacts(btSoftBody& body, bool elastic) {
   contacts_.assign(static_cast<std::size_t>(body.m_rcontacts.size()), Accumulated{});
+  pin_impulses_.assign(static_cast<std::size_t>(body.m_anchors.size()), btVector3(0, 0, 0));
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
     btSoftBody::RContact& contact = body.m_rcontacts[i];
     if (elastic) contact.m_cti.m_offset += kCoulombContactBand;
@@ -273,6 +320,15 @@ void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
 }
 
 void CoulombContactSolver::applyToRigidBodies(const btSoftBody& body) {
+  if (coulomb_.at(&body).elasticity) {
+    for (int a = 0; a < body.m_anchors.size(); ++a) {
+      const btSoftBody::Anchor& anchor = body.m_anchors[a];
+      btRigidBody* rigid = movingRigidBody(anchor.m_body);
+      if (rigid == nullptr) continue;
+      rigid->applyImpulse(-pin_impulses_[static_cast<std::size_t>(a)],
+                          anchor.m_node->m_x - rigid->getWorldTransform().getOrigin());
+    }
+  }
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
     const btSoftBody::RContact& contact = body.m_rcontacts[i];
     const Accumulated& state = contacts_[static_cast<std::size_t>(i)];

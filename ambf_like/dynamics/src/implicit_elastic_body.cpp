@@ -23,106 +23,24 @@ void turnContact(ElasticContact& contact, const Eigen::Matrix3d& turn) {
   contact.impulse = turn * contact.impulse;
 }
 
-/// Projected Gauss-Seidel stops when no impulse changed by more than this (N s: 10 micronewtons
-/// over a 1 ms step, a thousandth of a peg ring's weight; 1e-9 moved no force the tests read by
-/// more than 1e-5 relative and took 1.6 times the sweeps over the main job), or after
-/// kMostContactSweeps sweeps.
-constexpr double kImpulseTolerance = 1e-8;
-constexpr int kMostContactSweeps = 100;
-
 /// Half the angle (rad) of the body's turn in a step above which the tetrahedra's rotations are
 /// turned with it before they are followed: a tenth of what each of them is followed to.
 constexpr double kTurnWorthFollowing = 0.5e-5;
 
-/// The velocity that keeps `contact`'s node stuck to its surface, just reaching it.
-Eigen::Vector3d stuckVelocity(const ElasticContact& contact) {
-  const Eigen::Vector3d& n = contact.normal;
-  const Eigen::Vector3d& u = contact.surface_velocity;
-  return u - n * n.dot(u) + n * contact.least_normal_velocity;
-}
-
-/// The impulse that best keeps `contact` on its surface and inside its friction cone, given
-/// the velocity `others` its node would have without it and `w`, its velocity per impulse.
-Eigen::Vector3d contactImpulse(const ElasticContact& contact, const Eigen::Matrix3d& w,
-                               const Eigen::Matrix3d& w_inverse, const Eigen::Vector3d& others) {
-  const Eigen::Vector3d& n = contact.normal;
-  const double shortfall = contact.least_normal_velocity - n.dot(others);
-  if (shortfall <= 0.0) return Eigen::Vector3d::Zero();  // it leaves or rests unpressed
-  // Stuck: it moves with the surface along it and just reaches it.
-  const Eigen::Vector3d stuck = w_inverse * (stuckVelocity(contact) - others);
-  const double normal = n.dot(stuck);
-  const Eigen::Vector3d tangential = stuck - n * normal;
-  const double slip_push = tangential.norm();
-  if (normal > 0.0 && slip_push <= contact.friction * normal) return stuck;
-  // Sliding: the friction impulse, mu times the normal one, against the slip.
-  Eigen::Vector3d direction = n;
-  if (slip_push > 0.0) direction += contact.friction * tangential / slip_push;
-  double reach = n.dot(w * direction);
-  if (!(reach > 0.0)) {
-    direction = n;
-    reach = n.dot(w * n);
-  }
-  return direction * std::max(0.0, shortfall / reach);
-}
-
-/// Replaces the impulses of the contacts that pressed in the last step by those that keep all of
-/// them stuck, solved at once from their blocks of `w` (velocity per impulse, `slots` nodes),
-/// when that is feasible: at a steady grasp it is the answer, and Gauss-Seidel then only
-/// confirms it. Skipped when two of them share a node. `factored` keeps the last system solved:
-/// the same nodes pressing give the same matrix (in the rest frame), so a steady grasp factors it
-/// once.
-void solveAsStuck(std::vector<ElasticContact>& contacts, const std::vector<std::size_t>& slot_of,
-                  const std::vector<Eigen::Matrix3d>& w, std::size_t slots,
-                  const std::vector<Eigen::Vector3d>& free_velocity, StuckSystem& factored) {
-  std::vector<std::size_t> pressing;
-  std::vector<bool> taken(slots, false);
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    if (!(contacts[c].normal.dot(contacts[c].impulse) > 0.0)) continue;
-    if (taken[slot_of[c]]) return;
-    taken[slot_of[c]] = true;
-    pressing.push_back(c);
-  }
-  if (pressing.empty()) return;
-  const auto size = static_cast<Eigen::Index>(3 * pressing.size());
-  std::vector<int> nodes;
-  for (const std::size_t c : pressing) nodes.push_back(contacts[c].node);
-  if (nodes != factored.nodes) {
-    Eigen::MatrixXd response(size, size);
-    for (std::size_t r = 0; r < pressing.size(); ++r) {
-      for (std::size_t k = 0; k < pressing.size(); ++k) {
-        response.block<3, 3>(static_cast<Eigen::Index>(3 * r), static_cast<Eigen::Index>(3 * k)) =
-            w[slot_of[pressing[r]] * slots + slot_of[pressing[k]]];
-      }
-    }
-    factored.nodes = std::move(nodes);
-    factored.factor.compute(response);
-  }
-  if (factored.factor.info() != Eigen::Success) return;
-  Eigen::VectorXd wanted(size);
-  for (std::size_t r = 0; r < pressing.size(); ++r) {
-    // The other contacts' impulses are zero: they did not press.
-    wanted.segment<3>(static_cast<Eigen::Index>(3 * r)) =
-        stuckVelocity(contacts[pressing[r]]) - free_velocity[slot_of[pressing[r]]];
-  }
-  const Eigen::VectorXd impulse = factored.factor.solve(wanted);
-  // Taken only if every one of them presses and stays inside its cone: then it is the answer
-  // for them. Otherwise (a resting body's supports can pull against each other when all are held
-  // stuck) Gauss-Seidel starts from the last step's impulses.
-  for (std::size_t r = 0; r < pressing.size(); ++r) {
-    const ElasticContact& contact = contacts[pressing[r]];
-    const Eigen::Vector3d p = impulse.segment<3>(static_cast<Eigen::Index>(3 * r));
-    const double normal = contact.normal.dot(p);
-    if (!(normal > 0.0) || (p - contact.normal * normal).norm() > contact.friction * normal) {
-      return;
-    }
-  }
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    if (!taken[slot_of[c]]) contacts[c].impulse.setZero();
-  }
-  for (std::size_t r = 0; r < pressing.size(); ++r) {
-    contacts[pressing[r]].impulse = impulse.segment<3>(static_cast<Eigen::Index>(3 * r));
-  }
-}
+/// The energy a step may gain beyond the work put in, as a share of the energies it moves
+/// (kinetic and elastic, before and after): the elastic energy is read with rotations followed
+/// to 1e-4 rad, an error of the order of 1e-8 of it.
+constexpr double kEnergyTolerance = 1e-6;
+/// Iterations of one step, at most; the iteration also stops when a whole iteration moves no
+/// node by more than kStillShare of the mean rest edge.
+constexpr int kMostIterations = 40;
+constexpr double kStillShare = 1e-5;
+/// Halvings of one iteration's step, at most, and Armijo's share of the promised decrease.
+constexpr int kMostHalvings = 12;
+constexpr double kArmijoShare = 1e-4;
+/// The relative rounding of the incremental potential, within which a cut-back step is taken as
+/// not increasing it.
+constexpr double kRounding = 1e-12;
 
 }  // namespace
 
@@ -143,6 +61,14 @@ ImplicitElasticBody::ImplicitElasticBody(const btSoftBody& body, const SoftMater
     const Eigen::Vector3d rest_centre = rest * node_mass.transpose() / total;
     weighted_rest_ = (rest.colwise() - rest_centre) * node_mass.asDiagonal();
   }
+  double edges = 0.0;
+  for (int t = 0; t < body.m_tetras.size(); ++t) {
+    const btSoftBody::Tetra& tet = body.m_tetras[t];
+    for (int a = 0; a < 4; ++a) {
+      for (int b = a + 1; b < 4; ++b) edges += (tet.m_n[a]->m_x - tet.m_n[b]->m_x).length();
+    }
+  }
+  if (body.m_tetras.size() > 0) mean_edge_ = edges / (6.0 * body.m_tetras.size());
 }
 
 void ImplicitElasticBody::factor(double h) {
@@ -164,15 +90,14 @@ void ImplicitElasticBody::factor(double h) {
   }
   factored_step_ = h;
   responses_.clear();
-  blocks_.nodes.clear();
-  stuck_.nodes.clear();
+  contact_solver_.forget();
 }
 
-const ImplicitElasticBody::Response& ImplicitElasticBody::responseTo(int node) {
+const NodeResponse& ImplicitElasticBody::responseTo(int node) {
   auto it = responses_.find(node);
   if (it != responses_.end()) return it->second;
   const auto size = mass_.size();
-  Response response = Response::Zero(size, 3);
+  NodeResponse response = NodeResponse::Zero(size, 3);
   for (int k = 0; k < 3; ++k) {
     response(3 * node + k, k) = 1.0;
     system_.solveInPlace(response.col(k));
@@ -188,40 +113,32 @@ void ImplicitElasticBody::followBodyRotation(const Eigen::VectorXd& positions) {
   followRotation(spread, body_rotation_);
 }
 
-void ImplicitElasticBody::step(btSoftBody& body, double h,
-                               const std::vector<btVector3>& acceleration,
-                               std::vector<ElasticContact>& contacts) {
-  if (h != factored_step_) factor(h);
-  const int count = body.m_nodes.size();
-  Eigen::VectorXd position(3 * count), velocity(3 * count);
-  for (int i = 0; i < count; ++i) {
-    position.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_x);
-    velocity.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_v);
-  }
+void ImplicitElasticBody::evaluate(const Eigen::VectorXd& positions, Elastic& out) {
   const Eigen::Quaterniond body_before = body_rotation_.quaternion;
-  followBodyRotation(position);
+  followBodyRotation(positions);
   const Eigen::Quaterniond body_turn = body_rotation_.quaternion * body_before.conjugate();
   if (body_turn.vec().squaredNorm() > kTurnWorthFollowing * kTurnWorthFollowing) {
     tets_.turnRotations(body_turn);
   }
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(3 * count);
-  tets_.addForces(position, load);
-  for (int i = 0; i < count; ++i) {
-    const double mass = mass_(3 * i);
-    load.segment<3>(3 * i) =
-        mass > 0.0
-            ? Eigen::Vector3d(mass * velocity.segment<3>(3 * i) +
-                              h * (load.segment<3>(3 * i) +
-                                   mass * toEigen(acceleration[static_cast<std::size_t>(i)])))
-            : Eigen::Vector3d::Zero();
-  }
+  out.positions = positions;
+  out.forces.setZero(positions.size());
+  out.energy = tets_.addForces(positions, out.forces);
+}
+
+Eigen::VectorXd ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity,
+                                               const Eigen::VectorXd& residual,
+                                               std::vector<ElasticContact>& contacts) {
   // Solved, contacts too, in the rest frame, where the matrix was factored.
   const Eigen::Matrix3d& turn = body_rotation_.matrix;
-  turnEach(load, turn.transpose());
-  Eigen::VectorXd& next = load;
+  Eigen::VectorXd next = residual;
+  turnEach(next, turn.transpose());
   system_.solveInPlace(next);
+  Eigen::VectorXd start = velocity;
+  turnEach(start, turn.transpose());
+  next += start;
   for (auto& c : contacts) turnContact(c, turn.transpose());
-  solveContacts(next, contacts);
+  contact_solver_.solve(next, contacts,
+                        [this](int node) -> const NodeResponse& { return responseTo(node); });
   std::unordered_map<int, Eigen::Vector3d> pushed;
   for (const auto& c : contacts) {
     pushed.try_emplace(c.node, Eigen::Vector3d::Zero()).first->second += c.impulse;
@@ -229,76 +146,95 @@ void ImplicitElasticBody::step(btSoftBody& body, double h,
   for (const auto& [node, impulse] : pushed) next.noalias() += responseTo(node) * impulse;
   for (auto& c : contacts) turnContact(c, turn);
   turnEach(next, turn);
-  position += h * next;
+  return next;
+}
+
+ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
+                                            const std::vector<btVector3>& acceleration,
+                                            std::vector<ElasticContact>& contacts) {
+  if (h != factored_step_) factor(h);
+  const int count = body.m_nodes.size();
+  Eigen::VectorXd start(3 * count), start_velocity(3 * count), weight(3 * count);
+  for (int i = 0; i < count; ++i) {
+    start.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_x);
+    start_velocity.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_v);
+    weight.segment<3>(3 * i) = mass_(3 * i) * toEigen(acceleration[static_cast<std::size_t>(i)]);
+  }
+  // The last step ended where this one starts unless something moved the nodes since.
+  if (last_.positions.size() != start.size() || last_.positions != start) evaluate(start, last_);
+  const Eigen::ArrayXd moves = (mass_.array() > 0.0).cast<double>();
+  const auto kinetic = [&](const Eigen::VectorXd& v) { return 0.5 * v.dot(mass_.cwiseProduct(v)); };
+  const auto contactWork = [&](const Eigen::VectorXd& v) {
+    double work = 0.0;
+    for (const auto& c : contacts) work += c.impulse.dot(v.segment<3>(3 * c.node));
+    return work;
+  };
+  // The incremental potential with the contacts' impulses as fixed forces.
+  const auto potential = [&](const Eigen::VectorXd& v, const Elastic& at) {
+    const Eigen::VectorXd change = v - start_velocity;
+    return kinetic(change) - h * weight.dot(v) + at.energy - contactWork(v);
+  };
+  const double start_elastic = last_.energy;
+  const double energy_before =
+      kinetic(start_velocity) + start_elastic - weight.dot(start);  // gravity's potential
+  ElasticStepReport report;
+  Eigen::VectorXd velocity = Eigen::VectorXd::Zero(3 * count);
+  const Elastic& at = last_;  // where the iteration stands (trial_ the points it tries)
+  // Whether the iterate `v`, with `trial_`'s forces, gains no energy beyond the work put in.
+  const auto keepsEnergy = [&](const Eigen::VectorXd& v) {
+    const double energy_after = kinetic(v) + trial_.energy - weight.dot(trial_.positions);
+    report.energy_gain = energy_after - energy_before - contactWork(v);
+    const double scale = kinetic(start_velocity) + kinetic(v) + start_elastic + trial_.energy;
+    report.energy_kept = report.energy_gain <= kEnergyTolerance * scale;
+    return report.energy_kept;
+  };
+  for (;;) {
+    const Eigen::VectorXd residual =
+        (mass_.cwiseProduct(start_velocity - velocity) + h * (at.forces + weight))
+            .cwiseProduct(moves.matrix());
+    const Eigen::VectorXd direction = solveFrom(velocity, residual, contacts) - velocity;
+    ++report.iterations;
+    evaluate(start + h * (velocity + direction), trial_);
+    double share = 1.0;
+    if (!keepsEnergy(velocity + direction)) {
+      // Cut back until Phi falls by a share of what the solve promised (A d = residual +
+      // impulses, so the promise is d^T A d), read to within its rounding.
+      const double promised = direction.dot(residual) + contactWork(direction);
+      const double from = potential(velocity, at);
+      const double rounding = kRounding * (std::abs(from) + kinetic(start_velocity));
+      for (int halving = 0; halving < kMostHalvings; ++halving) {
+        if (potential(velocity + share * direction, trial_) <=
+            from - kArmijoShare * share * promised + rounding) {
+          break;
+        }
+        share *= 0.5;
+        ++report.halvings;
+        evaluate(start + h * (velocity + share * direction), trial_);
+      }
+      keepsEnergy(velocity + share * direction);
+    }
+    velocity += share * direction;
+    std::swap(last_, trial_);
+    const double moved = share * h * direction.lpNorm<Eigen::Infinity>();
+    if (report.energy_kept || report.iterations == kMostIterations ||
+        moved <= kStillShare * mean_edge_) {
+      break;
+    }
+  }
   // A node that began inside a surface was moved out: that is not motion it keeps.
   for (const auto& c : contacts) {
-    if (c.start_depth <= 0.0) continue;
-    auto v = next.segment<3>(3 * c.node);
+    if (c.pinned || c.start_depth <= 0.0) continue;
+    auto v = velocity.segment<3>(3 * c.node);
     const double outward = c.normal.dot(v - c.surface_velocity);
     v -= c.normal * std::clamp(c.start_depth / h, 0.0, std::max(0.0, outward));
   }
   for (int i = 0; i < count; ++i) {
     btSoftBody::Node& node = body.m_nodes[i];
     node.m_q = node.m_x;
-    node.m_x = toBt(position.segment<3>(3 * i));
-    node.m_v = toBt(next.segment<3>(3 * i));
+    node.m_x = toBt(last_.positions.segment<3>(3 * i));
+    node.m_v = toBt(velocity.segment<3>(3 * i));
   }
-}
-
-void ImplicitElasticBody::solveContacts(const Eigen::VectorXd& free_velocity,
-                                        std::vector<ElasticContact>& contacts) {
-  if (contacts.empty()) return;
-  std::vector<int> nodes;
-  std::vector<std::size_t> slot_of(contacts.size());
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    const auto found = std::find(nodes.begin(), nodes.end(), contacts[c].node);
-    slot_of[c] = static_cast<std::size_t>(found - nodes.begin());
-    if (found == nodes.end()) nodes.push_back(contacts[c].node);
-  }
-  const std::size_t slots = nodes.size();
-  if (nodes != blocks_.nodes) {
-    blocks_.w.resize(slots * slots);
-    for (std::size_t i = 0; i < slots; ++i) {
-      const Response& response = responseTo(nodes[i]);
-      for (std::size_t j = 0; j < slots; ++j) {
-        blocks_.w[j * slots + i] = response.middleRows<3>(3 * nodes[j]);
-      }
-    }
-    blocks_.w_inverse.resize(slots);
-    for (std::size_t i = 0; i < slots; ++i) {
-      blocks_.w_inverse[i] = blocks_.w[i * slots + i].inverse();
-    }
-    blocks_.nodes = std::move(nodes);
-  }
-  const std::vector<Eigen::Matrix3d>& w = blocks_.w;
-  const std::vector<Eigen::Matrix3d>& w_inverse = blocks_.w_inverse;
-  const std::vector<int>& contact_nodes = blocks_.nodes;
-  std::vector<Eigen::Vector3d> velocity(slots);
-  for (std::size_t j = 0; j < slots; ++j) {
-    velocity[j] = free_velocity.segment<3>(3 * contact_nodes[j]);
-  }
-  solveAsStuck(contacts, slot_of, w, slots, velocity, stuck_);
-  for (std::size_t j = 0; j < slots; ++j) {
-    for (std::size_t c = 0; c < contacts.size(); ++c) {
-      velocity[j] += w[j * slots + slot_of[c]] * contacts[c].impulse;
-    }
-  }
-  for (int sweep = 0; sweep < kMostContactSweeps; ++sweep) {
-    double largest_change = 0.0;
-    for (std::size_t c = 0; c < contacts.size(); ++c) {
-      ElasticContact& contact = contacts[c];
-      const std::size_t i = slot_of[c];
-      const Eigen::Matrix3d& own = w[i * slots + i];
-      const Eigen::Vector3d others = velocity[i] - own * contact.impulse;
-      const Eigen::Vector3d change =
-          contactImpulse(contact, own, w_inverse[i], others) - contact.impulse;
-      if (change.isZero(0.0)) continue;
-      for (std::size_t j = 0; j < slots; ++j) velocity[j] += w[j * slots + i] * change;
-      contact.impulse += change;
-      largest_change = std::max(largest_change, change.norm());
-    }
-    if (largest_change <= kImpulseTolerance) break;
-  }
+  return report;
 }
 
 }  // namespace ambf_like::detail

@@ -88,6 +88,9 @@ struct World::Impl {
   std::vector<std::unique_ptr<ProximitySensor>> sensors;
   std::vector<std::unique_ptr<ConstraintActuator>> actuators;
   std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
+  std::optional<StepGuard> guard;                  ///< set once every model is built
+  std::vector<const RigidBody*> guarded_bodies;
+  std::vector<const SoftBody*> guarded_soft_bodies;
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
   std::vector<std::string> warnings;
@@ -333,6 +336,16 @@ World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
       for (auto& a : impl->articulations) a->afterFreeMotion();
     });
   }
+  std::vector<Eigen::Vector3d> scene_points;
+  for (const auto& body : impl_->bodies) {
+    scene_points.push_back(body->centerOfMassPose().translation());
+    impl_->guarded_bodies.push_back(body.get());
+  }
+  for (const auto& soft : impl_->soft_bodies) {
+    for (const Vec3& node : soft->nodePositions()) scene_points.push_back(node);
+    impl_->guarded_soft_bodies.push_back(soft.get());
+  }
+  impl_->guard.emplace(scene_points, options.step_size, impl_->settings.gravity.norm());
   if (options.soft_body_sleep.value_or(scene.world.soft_body_sleep.enabled) &&
       !impl_->soft_bodies.empty()) {
     impl_->sleeper.emplace(scene.world.soft_body_sleep, impl_->world, impl_->soft_bodies.size());
@@ -361,6 +374,7 @@ void World::step() {
   }
   ++impl_->steps;
   impl_->time = static_cast<double>(impl_->steps) * h;
+  impl_->guard->check(impl_->guarded_bodies, impl_->guarded_soft_bodies, impl_->steps, impl_->time);
 }
 
 void World::step(std::uint64_t count) {
@@ -520,6 +534,14 @@ std::vector<SoftContactForce> World::softContactForces() const {
 
 std::vector<SoftContactForce> World::softContactForces(std::string_view rigid_body) const {
   return impl_->softContactForcesOn(body(rigid_body).bullet().getUserPointer());
+}
+
+ElasticSolveStats World::elasticSolveStats(const SoftBody& body) const {
+  return impl_->bullet.elasticStats(body.bullet());
+}
+
+const StepGuard& World::guard() const {
+  return *impl_->guard;
 }
 
 bool World::isFinite() const {

@@ -348,7 +348,12 @@ void RavenRosServer::Impl::runStep(const StepMessage& step) {
     queue.pop_front();
     apply();
   }
-  for (std::uint32_t c = 0; c < step.cycles && ::ros::ok(); ++c) runCycle();
+  try {
+    for (std::uint32_t c = 0; c < step.cycles && ::ros::ok(); ++c) runCycle();
+  } catch (const std::exception& e) {  // the platform failed (a twin's world blew up): say so
+    answerStep(step, std::string("the platform failed: ") + e.what());
+    throw;
+  }
   if (step.cycles == 0) publishState();
   answerStep(step, {});
 }

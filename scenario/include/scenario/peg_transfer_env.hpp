@@ -8,8 +8,10 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "scenario/arm_routine.hpp"
 #include "scenario/peg_layout.hpp"
@@ -37,7 +39,11 @@ struct PegTransferStep {
   /// on its target post, -1 if one leaves it.
   double reward = 0.0;
   bool terminated = false;  ///< all six rest on their target posts
-  bool truncated = false;   ///< the time limit passed first
+  bool truncated = false;   ///< the time limit passed first, or the world failed
+  /// Why the world failed in this step (its guard: ambf_like::SimulationDiverged), or empty.
+  /// Then the episode is truncated, the observation is the last good one and the reward 0;
+  /// step() refuses to go on until reset().
+  std::string failure;
   int placed = 0;           ///< rings resting on their target posts
   std::size_t refused = 0;  ///< commands the twin refused during the step
 };
@@ -77,6 +83,9 @@ class PegTransferEnv {
   twin::TwinPlatform& twin();
 
  private:
+  /// Runs one step's commands (`run` returns how many the twin refused) and observes; a world
+  /// that fails in them truncates the episode.
+  PegTransferStep guardedStep(const std::function<std::size_t()>& run);
   PegTransferStep finishStep(std::size_t refused);
   Eigen::VectorXd observe() const;
   int countPlaced() const;
@@ -89,6 +98,8 @@ class PegTransferEnv {
   std::optional<std::array<ArmRoutine, 2>> expert_;
   std::array<const ambf_like::SoftBody*, 6> rings_{};
   int placed_ = 0;
+  Eigen::VectorXd last_observation_;
+  std::string failure_;  ///< why the episode's world failed, or empty
 };
 
 }  // namespace scenario

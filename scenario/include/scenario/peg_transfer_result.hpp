@@ -45,6 +45,9 @@ struct PegTransferResult {
   std::array<PegOutcome, 6> pegs;
   bool timed_out = false;  ///< the simulated time limit ended it
   bool stopped = false;    ///< asked to stop (PegTransferOptions::stop) before it was done
+  /// Why the run failed (the world's guard: ambf_like::SimulationDiverged), or empty. A failed
+  /// run's pegs have no outcome: nothing it measured after the world blew up is a result.
+  std::string failure;
   RunTiming timing;
   std::size_t iterations = 0;  ///< manual-loop iterations
   std::size_t grasps = 0;      ///< grasps the assist made
@@ -55,7 +58,8 @@ struct PegTransferResult {
   std::size_t placed() const;
   std::size_t lost() const;
   std::size_t regrasps() const;
-  bool allPlaced() const { return placed() == pegs.size(); }
+  bool allPlaced() const { return failure.empty() && placed() == pegs.size(); }
+  bool failed() const { return !failure.empty(); }
   /// One JSON object (a JSON-lines row).
   nlohmann::json json() const;
 };

@@ -9,12 +9,14 @@
 #include <vector>
 
 #include "ambf_like/constraint_actuator.hpp"
+#include "ambf_like/elastic_solve_stats.hpp"
 #include "ambf_like/joint.hpp"
 #include "ambf_like/mesh.hpp"
 #include "ambf_like/proximity_sensor.hpp"
 #include "ambf_like/rigid_body.hpp"
 #include "ambf_like/scene_spec.hpp"
 #include "ambf_like/soft_body.hpp"
+#include "ambf_like/step_guard.hpp"
 
 namespace ambf_like {
 
@@ -69,7 +71,9 @@ class World {
   World(const World&) = delete;
   World& operator=(const World&) = delete;
 
-  /// Advances one fixed internal step: joint controllers, then Bullet.
+  /// Advances one fixed internal step: joint controllers, then Bullet, then the guard: throws
+  /// SimulationDiverged (naming the body, node, step and time) when a body or node is not
+  /// finite, has left the world's bounds or moves faster than the scene allows (StepGuard).
   void step();
   void step(std::uint64_t count);
 
@@ -118,6 +122,10 @@ class World {
   std::vector<SoftContactForce> softContactForces(std::string_view rigid_body) const;
   /// False as soon as any pose, velocity or soft-body node is NaN or infinite.
   bool isFinite() const;
+  /// The bounds and speed every step is held to.
+  const StepGuard& guard() const;
+  /// What the implicit solve of a soft body with a material took so far (zeros without one).
+  ElasticSolveStats elasticSolveStats(const SoftBody& body) const;
   /// Joint trees simulated in reduced coordinates, one per branch from a static body (see
   /// Articulation).
   std::size_t articulationCount() const;

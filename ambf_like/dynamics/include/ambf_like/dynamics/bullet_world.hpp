@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "ambf_like/elastic_solve_stats.hpp"
 #include "ambf_like/soft_body_spec.hpp"
 
 class btCollisionDispatcher;
@@ -40,6 +41,8 @@ class BulletWorld {
   void removeSoftBody(btSoftBody& body);
   /// The impulses of the last step's Coulomb contacts.
   const std::vector<NodeContactImpulse>& coulombImpulses() const;
+  /// What the implicit steps of `body` (with a material) took so far.
+  ElasticSolveStats elasticStats(const btSoftBody& body) const;
   /// The world articulations go into; only when built with articulations.
   btMultiBodyDynamicsWorld& articulations();
   /// Called in every step once the articulations' free motion is in their velocities.

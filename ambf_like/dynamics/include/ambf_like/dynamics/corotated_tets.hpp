@@ -37,8 +37,9 @@ class CorotatedTets {
   /// Turns every tetrahedron's followed rotation by `turn` (the body's own turn since the last
   /// forces): a start for the iteration that leaves it only the tetrahedron's own turn to follow.
   void turnRotations(const Eigen::Quaterniond& turn);
-  /// Adds each node's elastic force (N) at `positions` (3 per node) to `forces`.
-  void addForces(const Eigen::VectorXd& positions, Eigen::VectorXd& forces);
+  /// Adds each node's elastic force (N) at `positions` (3 per node) to `forces`; returns the
+  /// elastic energy stored at `positions` (J), of which the forces are minus the gradient.
+  double addForces(const Eigen::VectorXd& positions, Eigen::VectorXd& forces);
   /// The stiffness matrix at rest (3 rows per node), as triplets.
   std::vector<Eigen::Triplet<double>> restStiffness() const;
 
@@ -56,6 +57,7 @@ class CorotatedTets {
   struct TetPack {
     int used = 0;
     std::array<std::array<int, 4>, kLaneCount> node;
+    std::array<double, kLaneCount> volume;  ///< at rest
     Matrix9<Lanes> rest_inverse;
     Matrix9<Lanes> force_gradients;  ///< minus the volume times nodes 1-3's gradients
     FollowedRotation<Lanes> rotation;

@@ -12,6 +12,7 @@
 
 #include "ambf_like/dynamics/implicit_elastic_body.hpp"
 #include "ambf_like/dynamics/packed_link_solver.hpp"
+#include "ambf_like/elastic_solve_stats.hpp"
 
 class btCollisionObject;
 
@@ -48,7 +49,8 @@ struct NodeContactImpulse {
 /// to the rigid bodies: a grasp is held, and felt, by its squeeze and nothing else.
 ///
 /// A body with a material has no links in its solve: each substep is one implicit step of its
-/// tetrahedra (ImplicitElasticBody), which solves its Coulomb contacts with the same matrix.
+/// tetrahedra (ImplicitElasticBody), which solves its Coulomb contacts and its anchors (as pins)
+/// with the same matrix.
 ///
 /// Why substeps: a position-based body presses back on what squeezes it with about
 /// m x dx / h^2, so with n substeps n^2 times harder, at the cost of n passes over its
@@ -75,6 +77,8 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   void updateSoftBodies() override;
   /// The Coulomb contacts' impulses of the last step.
   const std::vector<NodeContactImpulse>& lastImpulses() const { return impulses_; }
+  /// Its implicit steps so far; zeros for a body without a material.
+  ElasticSolveStats elasticStats(const btSoftBody& body) const;
 
  private:
   /// A registered body: its substeps, its elasticity if it has a material (with its contacts'
@@ -83,7 +87,10 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
     int substeps = 1;
     std::unique_ptr<ImplicitElasticBody> elasticity;
     std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_impulse;
+    /// Its pins' (anchors') last impulses, by node and rigid body.
+    std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_pin_impulse;
     std::vector<btVector3> start_velocity;
+    ElasticSolveStats stats;
   };
   /// One node-rigid contact over a step.
   struct Accumulated {
@@ -103,6 +110,10 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   void substep(btSoftBody& body, btScalar hs, btScalar elapsed);
   /// One implicit substep of a body with a material, its contacts solved with it.
   void elasticSubstep(btSoftBody& body, Registered& registered, btScalar hs, btScalar elapsed);
+  /// An anchor of a body with a material as a pin of its step: the node ends the substep
+  /// `elapsed` into the step (of `hs`) on the anchor's point of its rigid body.
+  ElasticContact pinOf(const btSoftBody& body, const btSoftBody::Anchor& anchor, btScalar hs,
+                       btScalar elapsed) const;
   /// Bullet's position solvers left in the body's sequence (anchors, soft contacts), once.
   static void runBulletSolvers(btSoftBody& body);
   /// Damping, the step's start back in m_q, forces cleared.
@@ -118,7 +129,9 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   void applyToRigidBodies(const btSoftBody& body);
 
   std::unordered_map<const btSoftBody*, Registered> coulomb_;
-  std::vector<Accumulated> contacts_;  ///< of the body being solved, by m_rcontacts index
+  std::vector<Accumulated> contacts_;    ///< of the body being solved, by m_rcontacts index
+  std::vector<btVector3> pin_impulses_;  ///< on its nodes over the step, by m_anchors index
+  btScalar step_size_ = 0;               ///< of the step being solved
   std::vector<btVector3> acceleration_, pose_pull_, step_start_;  ///< scratch, per node
   std::vector<NodeContactImpulse> impulses_;
   PackedLinkSolver packed_links_;  ///< the other bodies' steps that are links alone

@@ -1,55 +1,44 @@
 #pragma once
-// A soft body with a material, stepped by linearly implicit Euler with Coulomb contacts.
+// A soft body with a material, stepped by backward Euler with Coulomb contacts and pins.
 
 #include <BulletSoftBody/btSoftBody.h>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <unordered_map>
 #include <vector>
 
 #include "ambf_like/dynamics/corotated_tets.hpp"
+#include "ambf_like/dynamics/elastic_contacts.hpp"
 #include "ambf_like/dynamics/node_block_cholesky.hpp"
 
 namespace ambf_like::detail {
 
-/// One node of an elastic body pressed against a rigid surface over a step.
-struct ElasticContact {
-  int node = 0;
-  Eigen::Vector3d normal;            ///< the surface's, pointing to the node
-  Eigen::Vector3d surface_velocity;  ///< of the surface at the node
-  double least_normal_velocity = 0;  ///< what normal . v must reach to end the step on it
-  double start_depth = 0;            ///< how far inside the surface the node began the step
-  double friction = 0;               ///< Coulomb's mu
-  Eigen::Vector3d impulse{0, 0, 0};  ///< on the node (N s): in, the last step's; out, this one's
+/// How one step of an elastic body went: what its solve took and what energy it left.
+struct ElasticStepReport {
+  int iterations = 0;       ///< solves of the system (1: the linearly implicit step was kept)
+  int halvings = 0;         ///< of the line search, over all iterations
+  double energy_gain = 0;   ///< J: the step's mechanical energy change less the work put in
+  bool energy_kept = true;  ///< the step gained no energy beyond its tolerance
 };
 
-/// The contact nodes of the last step (in order) and their blocks of the inverse:
-/// w[j * slots + i] is node j's velocity per impulse on node i, w_inverse[i] inverts w[i, i]. The
-/// same nodes in contact (a steady grasp) reuse them.
-struct ContactBlocks {
-  std::vector<int> nodes;
-  std::vector<Eigen::Matrix3d> w;
-  std::vector<Eigen::Matrix3d> w_inverse;
-};
-
-/// The contact nodes last solved as stuck together (in order), and their system factored.
-struct StuckSystem {
-  std::vector<int> nodes;
-  Eigen::LLT<Eigen::MatrixXd> factor;
-};
-
-/// Steps a soft body's nodes as a corotated solid of its material by linearly implicit (one
-/// Newton step of backward) Euler: (M + h^2 K) v' = M v + h (f(x) + f_ext) + contact impulses.
-/// K is the stiffness at rest turned by the body's overall rotation, so the matrix is factored
-/// once per step size and every step costs one solve, whatever the material's stiffness: no
-/// step is too long for it. At rest (v' = v = 0) the contacts carry exactly f(x) + f_ext, the
-/// material's answer to the deformation, whatever the step.
+/// Steps a soft body's nodes as a corotated solid of its material by backward Euler: the end
+/// of step minimises the incremental potential
+///   Phi(v) = 1/2 |v - v0|_M^2 - h f_ext . v + Psi(x0 + h v)
+/// subject to its contacts and pins. Its quasi-Newton iteration takes the matrix
+/// A = M + h^2 K, K the stiffness at rest turned by the body's overall rotation, factored once
+/// per step size (every iteration costs one solve, whatever the material's stiffness), and
+/// solves the contacts and pins with that same matrix in each iteration (each node's velocity
+/// answers an impulse on any contact node through the inverse's 3x3 blocks).
 ///
-/// The contacts are solved with that same matrix: each node's velocity answers an impulse on
-/// any contact node through the inverse's 3x3 blocks, and a projected Gauss-Seidel finds the
-/// impulses that leave every contact node on its surface and within its friction cone (sliding
-/// against mu times its normal impulse, or stuck), warm started from the last step's.
+/// Its first iteration from v = 0 is linearly implicit Euler, (M + h^2 K) v' = M v0 +
+/// h (f(x0) + f_ext) + contact impulses. That step is kept when it gains no mechanical energy
+/// beyond the work of its contacts and pins (the balance backward Euler itself keeps: it
+/// loses 1/2 |v' - v0|_M^2 and more); otherwise the iteration goes on, each step along the
+/// solve's direction cut back (halved) until Phi, with the impulses as fixed forces, falls by a
+/// share of what the solve promised (Armijo), until the balance holds or the step stops
+/// moving. A body bent or crushed far from the matrix's linearisation therefore takes more
+/// iterations instead of gaining energy. At rest (v' = v0 = 0) the contacts carry exactly
+/// f(x) + f_ext, the material's answer to the deformation, whatever the step.
 class ImplicitElasticBody {
  public:
   /// `body`'s nodes as they are now are its rest shape; nodes of no mass stay where they are.
@@ -57,33 +46,42 @@ class ImplicitElasticBody {
 
   /// One step of `h` from the nodes' positions (m_x) and velocities (m_v): their new velocities
   /// in m_v and positions in m_x (the start kept in m_q). `acceleration` per node is the
-  /// external forces' (gravity); `contacts` get their impulses.
-  void step(btSoftBody& body, double h, const std::vector<btVector3>& acceleration,
-            std::vector<ElasticContact>& contacts);
+  /// external forces' (gravity); `contacts` (contacts and pins) get their impulses.
+  ElasticStepReport step(btSoftBody& body, double h, const std::vector<btVector3>& acceleration,
+                         std::vector<ElasticContact>& contacts);
 
  private:
-  /// The velocity the nodes answer unit impulses on one node with (3 columns, rest frame).
-  using Response = Eigen::Matrix<double, Eigen::Dynamic, 3>;
+  /// The elastic forces and energy at a set of positions.
+  struct Elastic {
+    Eigen::VectorXd positions;
+    Eigen::VectorXd forces;
+    double energy = 0.0;
+  };
 
   void factor(double h);
-  const Response& responseTo(int node);
+  const NodeResponse& responseTo(int node);
   /// Follows the body's overall rotation (the polar rotation of its mass-weighted spread).
   void followBodyRotation(const Eigen::VectorXd& positions);
-  /// The impulses that keep `contacts` on their surfaces, from the nodes' free velocities (all in
-  /// the rest frame).
-  void solveContacts(const Eigen::VectorXd& free_velocity, std::vector<ElasticContact>& contacts);
+  /// The forces and energy at `positions`, the body's rotation followed there.
+  void evaluate(const Eigen::VectorXd& positions, Elastic& out);
+  /// The velocities after one solve from `velocity` with the forces of `at`: the free ones, then
+  /// the contacts' and pins' impulses added (solved in the rest frame).
+  Eigen::VectorXd solveFrom(const Eigen::VectorXd& velocity, const Eigen::VectorXd& residual,
+                            std::vector<ElasticContact>& contacts);
 
   CorotatedTets tets_;
   Eigen::VectorXd mass_;  ///< per coordinate; 0 for a node that stays put
   /// Each node's rest offset from the rest centre of mass times its mass (3 x nodes; empty when
   /// no node has mass).
   Eigen::Matrix3Xd weighted_rest_;
+  double mean_edge_ = 0.0;  ///< of the rest tetrahedra (m)
   Rotation body_rotation_;
   double factored_step_ = 0.0;
   NodeBlockCholesky system_;
-  std::unordered_map<int, Response> responses_;  ///< by node, for the factored step
-  ContactBlocks blocks_;                         ///< of the last step's contact nodes
-  StuckSystem stuck_;
+  std::unordered_map<int, NodeResponse> responses_;  ///< by node, for the factored step
+  ElasticContactSolver contact_solver_;
+  Elastic last_;  ///< at the end of the last step: the next one starts from it if nothing moved
+  Elastic trial_;
 };
 
 }  // namespace ambf_like::detail

@@ -1,0 +1,62 @@
+#pragma once
+// The check after every step that a world has not blown up: finite, inside its bounds, not faster
+// than its scene allows.
+
+#include <Eigen/Geometry>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "ambf_like/rigid_body.hpp"
+#include "ambf_like/soft_body.hpp"
+
+namespace ambf_like {
+
+/// A step that left the physical: which body (and node of a soft body), at which step and
+/// simulated time, and what was wrong. World::step throws it; the world is then unusable.
+class SimulationDiverged : public std::runtime_error {
+ public:
+  SimulationDiverged(std::string body, int node, std::uint64_t step, double time,
+                     const std::string& problem);
+
+  const std::string& body() const { return body_; }  ///< qualified name
+  int node() const { return node_; }                 ///< -1 for a rigid body
+  std::uint64_t step() const { return step_; }       ///< the step that ended so (1 = the first)
+  double time() const { return time_; }              ///< simulated, at that step's end (s)
+
+ private:
+  std::string body_;
+  int node_;
+  std::uint64_t step_;
+  double time_;
+};
+
+/// What a step is held to, from the scene as it was built. Its size L is the diagonal of the box
+/// around every body's centre of mass and every soft-body node, at least 1 m. Every moving body
+/// and node must stay inside that box grown by 10 L on each side, and move no faster than a
+/// tenth of L per step or than a fall across the grown box under the scene's gravity
+/// (sqrt(2 g D), D its diagonal), whichever is more: 100 m/s for the peg scene at 1 ms, where
+/// its fastest real motion is under 1 m/s.
+class StepGuard {
+ public:
+  StepGuard(const std::vector<Eigen::Vector3d>& scene_points, double step, double gravity);
+
+  /// Throws SimulationDiverged naming the first body or node that is not finite, out of the
+  /// bounds or too fast.
+  void check(const std::vector<const RigidBody*>& bodies,
+             const std::vector<const SoftBody*>& soft_bodies, std::uint64_t step,
+             double time) const;
+
+  const Eigen::AlignedBox3d& bounds() const { return bounds_; }
+  double speedLimit() const { return speed_limit_; }  ///< m/s
+
+ private:
+  /// Empty when `position` and `velocity` are fine, else what is wrong with them.
+  std::string problemOf(const Vec3& position, const Vec3& velocity) const;
+
+  Eigen::AlignedBox3d bounds_;
+  double speed_limit_ = 0;
+};
+
+}  // namespace ambf_like

@@ -1,0 +1,94 @@
+#include "ambf_like/step_guard.hpp"
+
+#include <BulletSoftBody/btSoftBody.h>
+#include <spdlog/fmt/fmt.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ambf_like/bullet_conversions.hpp"
+
+namespace ambf_like {
+
+namespace {
+
+/// The least scene size (m): a lone body's scene is taken as a metre across.
+constexpr double kLeastSceneSize = 1.0;
+/// How far beyond the scene's box a body may go, in scene sizes.
+constexpr double kBoundsMargin = 10.0;
+/// The most of the scene's size a body may cross in one step.
+constexpr double kMostSceneShareAStep = 0.1;
+
+std::string describe(const std::string& body, int node) {
+  return node < 0 ? fmt::format("rigid body '{}'", body)
+                  : fmt::format("soft body '{}' node {}", body, node);
+}
+
+}  // namespace
+
+SimulationDiverged::SimulationDiverged(std::string body, int node, std::uint64_t step, double time,
+                                       const std::string& problem)
+    : std::runtime_error(fmt::format("the simulation diverged at step {} (t = {:.4f} s): {} {}",
+                                     step, time, describe(body, node), problem)),
+      body_(std::move(body)),
+      node_(node),
+      step_(step),
+      time_(time) {}
+
+StepGuard::StepGuard(const std::vector<Eigen::Vector3d>& scene_points, double step,
+                     double gravity) {
+  Eigen::AlignedBox3d scene(Eigen::Vector3d::Zero());
+  if (!scene_points.empty()) scene = Eigen::AlignedBox3d(scene_points.front());
+  for (const auto& p : scene_points) {
+    if (p.allFinite()) scene.extend(p);
+  }
+  const double size = std::max(kLeastSceneSize, scene.diagonal().norm());
+  const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kBoundsMargin * size);
+  bounds_ = Eigen::AlignedBox3d(scene.min() - margin, scene.max() + margin);
+  const double fall = std::sqrt(2.0 * std::abs(gravity) * bounds_.diagonal().norm());
+  speed_limit_ = std::max(kMostSceneShareAStep * size / step, fall);
+}
+
+std::string StepGuard::problemOf(const Vec3& position, const Vec3& velocity) const {
+  if (!position.allFinite() || !velocity.allFinite()) {
+    return fmt::format("is not finite (position {} {} {}, velocity {} {} {})", position.x(),
+                       position.y(), position.z(), velocity.x(), velocity.y(), velocity.z());
+  }
+  if (!bounds_.contains(position)) {
+    return fmt::format(
+        "left the world's bounds: at ({:.4g}, {:.4g}, {:.4g}) m, outside ({:.4g}..{:.4g}, "
+        "{:.4g}..{:.4g}, {:.4g}..{:.4g}) m",
+        position.x(), position.y(), position.z(), bounds_.min().x(), bounds_.max().x(),
+        bounds_.min().y(), bounds_.max().y(), bounds_.min().z(), bounds_.max().z());
+  }
+  if (velocity.norm() > speed_limit_) {
+    return fmt::format("moves at {:.4g} m/s, faster than the scene allows ({:.4g} m/s)",
+                       velocity.norm(), speed_limit_);
+  }
+  return {};
+}
+
+void StepGuard::check(const std::vector<const RigidBody*>& bodies,
+                      const std::vector<const SoftBody*>& soft_bodies, std::uint64_t step,
+                      double time) const {
+  for (const RigidBody* body : bodies) {
+    if (body->isStatic()) continue;
+    std::string problem = problemOf(body->centerOfMassPose().translation(), body->linearVelocity());
+    if (problem.empty() && !body->angularVelocity().allFinite()) {
+      problem = "turns at a speed that is not finite";
+    }
+    if (!problem.empty()) throw SimulationDiverged(body->qualifiedName(), -1, step, time, problem);
+  }
+  for (const SoftBody* soft : soft_bodies) {
+    if (soft->isAsleep()) continue;  // it has not moved since it was checked awake
+    const btSoftBody& b = soft->bullet();
+    for (int i = 0; i < b.m_nodes.size(); ++i) {
+      const btSoftBody::Node& node = b.m_nodes[i];
+      if (node.m_im <= 0.0) continue;  // fixed
+      const std::string problem = problemOf(toEigen(node.m_x), toEigen(node.m_v));
+      if (!problem.empty()) throw SimulationDiverged(soft->qualifiedName(), i, step, time, problem);
+    }
+  }
+}
+
+}  // namespace ambf_like
