@@ -125,7 +125,7 @@ void printSummary(const nlohmann::json& s) {
                 f["window_max"].get<double>());
   }
   std::printf("\n  state             : %s\n",
-              s["finite"].get<bool>() ? "finite (no NaN)" : "NOT FINITE: the simulation blew up");
+              s["finite"].get<bool>() ? "finite (no NaN)" : "BLEW UP: stopped at the step that did");
   if (!s["failure"].is_null()) {
     std::printf("                      %s\n", s["failure"].get<std::string>().c_str());
   }

@@ -2,6 +2,7 @@
 // its scene allows) stops at that step with an error naming the body, the node, the step and the
 // simulated time, and the limits come from the scene's size and step (StepGuard).
 
+#include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletSoftBody/btSoftBody.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -35,32 +36,53 @@ TEST(StepGuard, ItsLimitsComeFromTheScenesSizeAndStep) {
   auto sim = test_support::simulate({dir.write(
       "scene.yaml", "bodies: [BODY base, BODY box]\n" + box("base", 0, 0) + box("box", 0.1, 3))});
   const auto& guard = sim->world->guard();
-  EXPECT_NEAR(guard.bounds().min().z(), -30.0, 1e-9);
+  // A tenth of 3 m per 1 ms step: 300 m/s, more than a fall across the scene and its margins
+  // (sqrt(2 g 63 m) = 35 m/s).
+  EXPECT_NEAR(guard.speedLimit(), 300.0, 1e-9);
   EXPECT_NEAR(guard.bounds().max().z(), 33.0, 1e-9);
   EXPECT_NEAR(guard.bounds().max().x(), 30.0, 1e-9);
-  // A tenth of 3 m per 1 ms step: 300 m/s, more than a fall across the bounds (48 m/s).
-  EXPECT_NEAR(guard.speedLimit(), 300.0, 1e-9);
+  EXPECT_NEAR(guard.bounds().min().x(), -30.0, 1e-9);
+  // Downwards, as far as a fall goes before it reaches 300 m/s: v^2 / 2 g.
+  EXPECT_NEAR(guard.bounds().min().z(), -30.0 - 300.0 * 300.0 / (2 * 9.81), 1e-6);
   ambf_like::WorldOptions slow;
-  slow.step_size = 0.05;  // 6 m/s a step would allow: a fall across the bounds sets the limit
-  auto coarse = test_support::simulate({dir.write("again.yaml", lonelyBox(3.0))}, slow);
-  const double diagonal = coarse->world->guard().bounds().diagonal().norm();
-  EXPECT_NEAR(coarse->world->guard().speedLimit(), std::sqrt(2 * 9.81 * diagonal), 1e-9);
+  slow.step_size = 0.05;  // 6 m/s a step would allow: the fall across the scene sets the limit
+  auto coarse = test_support::simulate(
+      {dir.write("again.yaml", "bodies: [BODY base, BODY box]\n" + box("base", 0, 0) +
+                                   box("box", 0.1, 3))},
+      slow);
+  EXPECT_NEAR(coarse->world->guard().speedLimit(), std::sqrt(2 * 9.81 * 63), 1e-9);
 }
 
-TEST(StepGuard, ABodyFallingOutOfTheBoundsStopsTheRunWhenItLeaves) {
+TEST(StepGuard, ABodyFallingOffTheSceneIsStoppedWhenItIsFasterThanTheSceneAllows) {
   test_support::TempDir dir;
   auto sim = test_support::simulate({dir.write("box.yaml", lonelyBox(0.0))});
-  // A lone body: a 1 m scene, bounds 10 m below it, reached after sqrt(2 * 10 / g) = 1.43 s.
+  // A lone body: a 1 m scene, 100 m/s at 1 ms, reached falling after 100 / g = 10.2 s (AMBF
+  // lets a body fall as long as it likes: the bounds below reach that far).
   try {
-    sim->world->step(3000);
-    FAIL() << "the box fell for 3 s and nothing stopped it";
+    sim->world->step(12000);
+    FAIL() << "the box fell for 12 s and nothing stopped it";
   } catch (const ambf_like::SimulationDiverged& e) {
     EXPECT_EQ(e.body(), sim->world->body("box").qualifiedName());
     EXPECT_EQ(e.node(), -1);
-    EXPECT_NEAR(e.time(), std::sqrt(2 * 10 / 9.81), 0.01);
+    EXPECT_NEAR(e.time(), 100 / 9.81, 0.002);
     EXPECT_EQ(e.step(), sim->world->stepCount());
+    EXPECT_THAT(e.what(), AllOf(HasSubstr("rigid body '" + e.body() + "' moves at 100"),
+                                HasSubstr("faster than the scene allows (100 m/s)")));
+  }
+}
+
+TEST(StepGuard, ABodyFlungSidewaysIsStoppedWhenItLeavesTheBounds) {
+  test_support::TempDir dir;
+  auto sim = test_support::simulate({dir.write("box.yaml", lonelyBox(0.0))});
+  // 60 m/s sideways, under the 100 m/s limit: it leaves the bounds 10 m away after 1/6 s.
+  sim->world->body("box").bullet().setLinearVelocity(btVector3(60, 0, 0));
+  try {
+    sim->world->step(1000);
+    FAIL() << "the box flew 60 m and nothing stopped it";
+  } catch (const ambf_like::SimulationDiverged& e) {
+    EXPECT_NEAR(e.time(), 10.0 / 60.0, 0.002);
     EXPECT_THAT(e.what(), AllOf(HasSubstr("rigid body '" + e.body() + "'"),
-                                HasSubstr("left the world's bounds"), HasSubstr("at step 14")));
+                                HasSubstr("left the world's bounds: at (10.0")));
   }
 }
 

@@ -36,17 +36,26 @@ SimulationDiverged::SimulationDiverged(std::string body, int node, std::uint64_t
       time_(time) {}
 
 StepGuard::StepGuard(const std::vector<Eigen::Vector3d>& scene_points, double step,
-                     double gravity) {
+                     const Eigen::Vector3d& gravity) {
   Eigen::AlignedBox3d scene(Eigen::Vector3d::Zero());
   if (!scene_points.empty()) scene = Eigen::AlignedBox3d(scene_points.front());
   for (const auto& p : scene_points) {
     if (p.allFinite()) scene.extend(p);
   }
   const double size = std::max(kLeastSceneSize, scene.diagonal().norm());
+  const double g = gravity.norm();
+  // A fall across the scene and its margins above and below it.
+  const double fall_across = std::sqrt(2.0 * g * (1.0 + 2.0 * kBoundsMargin) * size);
+  speed_limit_ = std::max(kMostSceneShareAStep * size / step, fall_across);
   const Eigen::Vector3d margin = Eigen::Vector3d::Constant(kBoundsMargin * size);
   bounds_ = Eigen::AlignedBox3d(scene.min() - margin, scene.max() + margin);
-  const double fall = std::sqrt(2.0 * std::abs(gravity) * bounds_.diagonal().norm());
-  speed_limit_ = std::max(kMostSceneShareAStep * size / step, fall);
+  if (g > 0.0) {
+    // Downwards the bounds reach as far as a fall takes a body before it is too fast: a body
+    // that falls off the scene is stopped by the speed limit, not by the bounds.
+    const Eigen::Vector3d fall = gravity / g * (speed_limit_ * speed_limit_ / (2.0 * g));
+    bounds_.extend(bounds_.min() + fall.cwiseMin(0.0));
+    bounds_.extend(bounds_.max() + fall.cwiseMax(0.0));
+  }
 }
 
 std::string StepGuard::problemOf(const Vec3& position, const Vec3& velocity) const {
@@ -62,7 +71,7 @@ std::string StepGuard::problemOf(const Vec3& position, const Vec3& velocity) con
         bounds_.min().y(), bounds_.max().y(), bounds_.min().z(), bounds_.max().z());
   }
   if (velocity.norm() > speed_limit_) {
-    return fmt::format("moves at {:.4g} m/s, faster than the scene allows ({:.4g} m/s)",
+    return fmt::format("moves at {:.6g} m/s, faster than the scene allows ({:.4g} m/s)",
                        velocity.norm(), speed_limit_);
   }
   return {};

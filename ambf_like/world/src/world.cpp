@@ -345,7 +345,7 @@ World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
     for (const Vec3& node : soft->nodePositions()) scene_points.push_back(node);
     impl_->guarded_soft_bodies.push_back(soft.get());
   }
-  impl_->guard.emplace(scene_points, options.step_size, impl_->settings.gravity.norm());
+  impl_->guard.emplace(scene_points, options.step_size, impl_->settings.gravity);
   if (options.soft_body_sleep.value_or(scene.world.soft_body_sleep.enabled) &&
       !impl_->soft_bodies.empty()) {
     impl_->sleeper.emplace(scene.world.soft_body_sleep, impl_->world, impl_->soft_bodies.size());

@@ -34,13 +34,17 @@ class SimulationDiverged : public std::runtime_error {
 
 /// What a step is held to, from the scene as it was built. Its size L is the diagonal of the box
 /// around every body's centre of mass and every soft-body node, at least 1 m. Every moving body
-/// and node must stay inside that box grown by 10 L on each side, and move no faster than a
-/// tenth of L per step or than a fall across the grown box under the scene's gravity
-/// (sqrt(2 g D), D its diagonal), whichever is more: 100 m/s for the peg scene at 1 ms, where
-/// its fastest real motion is under 1 m/s.
+/// and node must move no faster than a tenth of L per step or than a fall across the scene and
+/// 10 L above and below it, whichever is more (the peg scene at 1 ms: 100 m/s, where its
+/// fastest real motion is under 1 m/s), and stay inside the bounds: the scene's box grown by
+/// 10 L on each side, and downwards (along gravity) by as far as a body falls before it reaches
+/// that speed (510 m at 100 m/s), so that a body falling off a scene with no floor (as AMBF
+/// lets it) is stopped by the speed it reaches, after v / g (10 s), and one flung sideways or up
+/// by the bounds.
 class StepGuard {
  public:
-  StepGuard(const std::vector<Eigen::Vector3d>& scene_points, double step, double gravity);
+  StepGuard(const std::vector<Eigen::Vector3d>& scene_points, double step,
+            const Eigen::Vector3d& gravity);
 
   /// Throws SimulationDiverged naming the first body or node that is not finite, out of the
   /// bounds or too fast.

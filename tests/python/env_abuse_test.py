@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+"""An exploring policy in PegTransferEnv never flings a ring or blows the world up (issue 45):
+random joint targets about the current ones with the jaws anywhere in their range, then the
+expert with its jaws clamped shut to their stop, on randomised scenes of several seeds. Every
+ring must stay finite and near the board, and no step may end in the world's guard.
+
+Usage: env_abuse_test.py; PYTHONPATH must hold build/python.
+"""
+
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+import raven_sim
+
+JAWS = (5, 6, 12, 13)  # jaw1 and jaw2 of the left arm, then of the right (ArmJoints order)
+RINGS = slice(54, 72)  # the six ring centres of the observation
+
+
+class ExploringPolicy(unittest.TestCase):
+    def check_rings(self, observation, start, seed, phase):
+        rings = observation[RINGS].reshape(6, 3)
+        self.assertTrue(np.isfinite(rings).all(), f"seed {seed}, {phase}: {rings}")
+        moved = np.linalg.norm(rings[:, :2] - start[:, :2], axis=1)
+        # The arms reach about 0.15 m from where a ring starts: a ring found farther was flung.
+        self.assertLess(moved.max(), 0.3, f"seed {seed}, {phase}: rings moved {moved} m")
+        rise = rings[:, 2] - start[:, 2]
+        self.assertGreater(rise.min(), -0.05, f"seed {seed}, {phase}: a ring fell through")
+        self.assertLess(rise.max(), 0.3, f"seed {seed}, {phase}: a ring flew up {rise.max()} m")
+
+    def step(self, env, action, seed, phase):
+        observation, _, _, truncated, info = env.step(
+            np.clip(action, env.action_space.low, env.action_space.high))
+        self.assertNotIn("failure", info, f"seed {seed}, {phase}")
+        self.assertFalse(truncated, f"seed {seed}, {phase}")
+        return observation
+
+    def test_random_targets_then_closed_jaws_keep_every_ring_bounded(self):
+        for seed in (1, 2, 3):
+            env = raven_sim.PegTransferEnv(randomize=True, time_limit=1e4)
+            observation, _ = env.reset(seed=seed)
+            start = observation[RINGS].reshape(6, 3).copy()
+            rng = np.random.default_rng(seed)
+            low, high = env.action_space.low, env.action_space.high
+            for _ in range(100):  # explore about the current joints, jaws anywhere
+                action = observation[0:14] + rng.uniform(-0.02, 0.02, 14) * (high - low)
+                for jaw in JAWS:
+                    action[jaw] = rng.uniform(low[jaw], high[jaw])
+                observation = self.step(env, action, seed, "exploring")
+                self.check_rings(observation, start, seed, "exploring")
+            for _ in range(100):  # the expert, its jaws clamped shut to their stop
+                action = np.asarray(env.expert_action())
+                for first in (5, 12):  # keep jaw1 - jaw2 (the grasper's angle), close the opening
+                    spread = action[first] - action[first + 1]
+                    shut = low[first] + low[first + 1]
+                    action[first], action[first + 1] = (shut + spread) / 2, (shut - spread) / 2
+                observation = self.step(env, action, seed, "jaws shut")
+                self.check_rings(observation, start, seed, "jaws shut")
+
+
+# A 0.1 kg arm on a hinge, to be driven far harder than anything in a scene of a metre allows.
+HINGED_ARM = """bodies: [BODY base, BODY arm]
+joints: [JOINT base-arm]
+BODY base: {name: base, mass: 0, collision shape: BOX, collision geometry: {x: 0.1, y: 0.1, z: 0.1}}
+BODY arm:
+  name: arm
+  mass: 0.1
+  collision shape: BOX
+  collision geometry: {x: 0.4, y: 0.02, z: 0.02}
+  collision offset: {position: {x: 0.2, y: 0, z: 0}}
+  inertial offset: {position: {x: 0.2, y: 0, z: 0}}
+  location: {position: {x: 0, y: 0, z: 1}}
+JOINT base-arm:
+  name: base-arm
+  parent: BODY base
+  child: BODY arm
+  parent pivot: {x: 0, y: 0, z: 1}
+  parent axis: {x: 0, y: 0, z: 1}
+  child axis: {x: 0, y: 0, z: 1}
+  type: revolute
+"""
+
+
+class WorldGuard(unittest.TestCase):
+    def test_a_world_driven_past_what_its_scene_allows_raises_naming_body_step_and_time(self):
+        with tempfile.TemporaryDirectory() as folder:
+            model = os.path.join(folder, "arm.yaml")
+            with open(model, "w") as f:
+                f.write(HINGED_ARM)
+            world = raven_sim.World.from_models([model])
+        world.joint("base-arm").command_effort(1e4)  # 10 kN m on a 0.1 kg arm
+        with self.assertRaises(raven_sim.SimulationDiverged) as caught:
+            world.step(1000)
+        message = str(caught.exception)
+        self.assertRegex(message, r"the simulation diverged at step \d+ \(t = [0-9.]+ s\): "
+                                  r"rigid body '[^']*arm' moves at [0-9.e+]+ m/s, faster than "
+                                  r"the scene allows \([0-9.]+ m/s\)")
+        self.assertIsInstance(caught.exception, RuntimeError)
+
+
+if __name__ == "__main__":
+    unittest.main()
