@@ -124,8 +124,9 @@ void printSummary(const nlohmann::json& s) {
     std::printf(" (1 s windows: %.0f .. %.0f Hz)", f["window_min"].get<double>(),
                 f["window_max"].get<double>());
   }
-  std::printf("\n  state             : %s\n",
-              s["finite"].get<bool>() ? "finite (no NaN)" : "BLEW UP: stopped at the step that did");
+  std::printf("\n  state             : %s\n", s["finite"].get<bool>()
+                                                  ? "finite (no NaN)"
+                                                  : "BLEW UP: stopped at the step that did");
   if (!s["failure"].is_null()) {
     std::printf("                      %s\n", s["failure"].get<std::string>().c_str());
   }

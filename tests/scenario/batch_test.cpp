@@ -10,6 +10,7 @@
 
 #include "raven/platform_profile.hpp"
 #include "scenario/batch_summary.hpp"
+#include "scenario/console_report.hpp"
 #include "scenario/handover_reach.hpp"
 
 namespace {
@@ -75,6 +76,26 @@ TEST(BatchSummary, CountsRunsPegsAndRates) {
   EXPECT_EQ(j["pegs_lost"], 1);
   EXPECT_DOUBLE_EQ(j["real_time_factor"].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(j["loop_frequency_hz"].get<double>(), 2000.0);
+}
+
+TEST(BatchSummary, ARunWhoseWorldBlewUpIsCountedFailedAndPrintsNoPegNumbers) {
+  std::vector<scenario::PegTransferResult> results(2);
+  for (auto& p : results[0].pegs) p.placed = true;
+  results[1].failure = "the simulation diverged at step 5 (t = 0.0050 s): soft body 'peg3' node 2";
+  results[1].pegs[2].min_volume_ratio = 1e32;  // what a blown-up ring would show
+  results[1].variation.seed = 7;
+  const auto row = results[1].json();
+  EXPECT_EQ(row["failure"], results[1].failure);
+  EXPECT_TRUE(row["pegs"].empty()) << "no peg numbers from a world that blew up";
+  EXPECT_FALSE(row["all_placed"]);
+  EXPECT_TRUE(results[0].json()["failure"].is_null());
+  EXPECT_EQ(scenario::pegTable(results[1]), "the run failed: " + results[1].failure + "\n");
+  const std::string table = scenario::batchTable(results);
+  EXPECT_NE(table.find("     7 failed: the simulation diverged"), std::string::npos) << table;
+  EXPECT_EQ(table.find("1e+32"), std::string::npos) << table;
+  const auto j = scenario::summarize(results);
+  EXPECT_EQ(j["runs_failed"], 1);
+  EXPECT_EQ(j["runs_all_placed"], 1);
 }
 
 }  // namespace
