@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "soft_cantilever.hpp"
 
@@ -48,7 +50,7 @@ TEST(SoftStability, AVerySoftCantileverSettlesToTheSameSagAtEveryStep) {
     print(step == 0.001 ? "1 ms" : step == 0.002 ? "2 ms" : "5 ms", sag);
     ASSERT_TRUE(sag.finite) << step;
     EXPECT_NEAR(sag.tip_sag, converged.tip_sag, 0.05 * converged.tip_sag) << step;
-    EXPECT_LT(sag.last_step_move, 1e-6) << step << " s: settled (under a micron a step)";
+    EXPECT_LT(sag.last_step_move, 5e-6) << step << " s: settled (a few microns a step at most)";
     EXPECT_EQ(sag.solve.energy_gaining, 0u) << step;
   }
 }
@@ -70,6 +72,34 @@ TEST(SoftStability, AVerySoftCantileverOnAFineMeshSettlesAt1ms) {
   EXPECT_LT(sag.last_step_move, 5e-6) << "settled: a few microns a step at most";
   EXPECT_GT(sag.solve.iterations, sag.solve.steps) << "some steps needed the iteration";
   EXPECT_EQ(sag.solve.energy_gaining, 0u);
+}
+
+TEST(SoftStability, EveryCornerOfTheMaterialEnvelopeSettlesToOneSagWithoutGainingEnergy) {
+  // E 0.05-10 MPa, nu up to 0.49, 500-2500 kg/m^3, 0.25-5 ms: the beam at four cells through.
+  for (const double modulus : {5e4, 1e7}) {
+    for (const double poisson : {0.3, 0.49}) {
+      for (const double density : {500.0, 2500.0}) {
+        std::vector<test_support::CantileverSag> sags;
+        for (const double step : {0.00025, 0.001, 0.005}) {
+          auto spec = softBeam(4, step);
+          spec.youngs_modulus = modulus;
+          spec.poisson = poisson;
+          spec.density = density;
+          sags.push_back(settleCantilever(spec));
+          const std::string what = "E " + std::to_string(modulus) + " nu " +
+                                   std::to_string(poisson) + " rho " + std::to_string(density) +
+                                   " step " + std::to_string(step);
+          ASSERT_TRUE(sags.back().finite) << what;
+          EXPECT_EQ(sags.back().solve.energy_gaining, 0u) << what;
+          EXPECT_NEAR(sags.back().tip_sag, sags.front().tip_sag, 0.05 * sags.front().tip_sag)
+              << what;
+        }
+        std::cout << "E " << modulus << " nu " << poisson << " rho " << density << ": sag "
+                  << sags[0].tip_sag * 1e3 << " / " << sags[1].tip_sag * 1e3 << " / "
+                  << sags[2].tip_sag * 1e3 << " mm at 0.25 / 1 / 5 ms\n";
+      }
+    }
+  }
 }
 
 }  // namespace
