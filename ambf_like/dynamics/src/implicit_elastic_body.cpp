@@ -57,6 +57,7 @@ ImplicitElasticBody::ImplicitElasticBody(const btSoftBody& body, const SoftMater
     mass_.segment<3>(3 * i).setConstant(node_mass(i));
     rest.col(i) = toEigen(node.m_x);
   }
+  moves_ = (mass_.array() > 0.0).cast<double>().matrix();
   const double total = node_mass.sum();
   if (total > 0.0) {
     const Eigen::Vector3d rest_centre = rest * node_mass.transpose() / total;
@@ -114,40 +115,40 @@ void ImplicitElasticBody::followBodyRotation(const Eigen::VectorXd& positions) {
   followRotation(spread, body_rotation_);
 }
 
-void ImplicitElasticBody::evaluate(const Eigen::VectorXd& positions, Elastic& out) {
+void ImplicitElasticBody::evaluate(Elastic& at) {
   const Eigen::Quaterniond body_before = body_rotation_.quaternion;
-  followBodyRotation(positions);
+  followBodyRotation(at.positions);
   const Eigen::Quaterniond body_turn = body_rotation_.quaternion * body_before.conjugate();
   if (body_turn.vec().squaredNorm() > kTurnWorthFollowing * kTurnWorthFollowing) {
     tets_.turnRotations(body_turn);
   }
-  out.positions = positions;
-  out.forces.setZero(positions.size());
-  out.energy = tets_.addForces(positions, out.forces);
+  at.forces.setZero(at.positions.size());
+  at.energy = tets_.addForces(at.positions, at.forces);
 }
 
-Eigen::VectorXd ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity,
-                                               const Eigen::VectorXd& residual,
-                                               std::vector<ElasticContact>& contacts) {
-  // Solved, contacts too, in the rest frame, where the matrix was factored.
+void ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity,
+                                    const Eigen::VectorXd& residual,
+                                    std::vector<ElasticContact>& contacts,
+                                    Eigen::VectorXd& direction) {
+  // Solved, contacts too, in the rest frame, where the matrix was factored: the free velocity
+  // v + A^-1 r, then the impulses that keep the contacts and pins.
   const Eigen::Matrix3d& turn = body_rotation_.matrix;
-  Eigen::VectorXd next = residual;
-  turnEach(next, turn.transpose());
-  system_.solveInPlace(next);
-  Eigen::VectorXd start = velocity;
-  turnEach(start, turn.transpose());
-  next += start;
+  direction = residual;
+  turnEach(direction, turn.transpose());
+  system_.solveInPlace(direction);
+  free_velocity_ = velocity;
+  turnEach(free_velocity_, turn.transpose());
+  free_velocity_ += direction;
   for (auto& c : contacts) turnContact(c, turn.transpose());
-  contact_solver_.solve(next, contacts,
+  contact_solver_.solve(free_velocity_, contacts,
                         [this](int node) -> const NodeResponse& { return responseTo(node); });
-  std::unordered_map<int, Eigen::Vector3d> pushed;
+  pushed_.clear();
   for (const auto& c : contacts) {
-    pushed.try_emplace(c.node, Eigen::Vector3d::Zero()).first->second += c.impulse;
+    pushed_.try_emplace(c.node, Eigen::Vector3d::Zero()).first->second += c.impulse;
   }
-  for (const auto& [node, impulse] : pushed) next.noalias() += responseTo(node) * impulse;
+  for (const auto& [node, impulse] : pushed_) direction.noalias() += responseTo(node) * impulse;
   for (auto& c : contacts) turnContact(c, turn);
-  turnEach(next, turn);
-  return next;
+  turnEach(direction, turn);
 }
 
 ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
@@ -155,15 +156,22 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
                                             std::vector<ElasticContact>& contacts) {
   if (h != factored_step_) factor(h);
   const int count = body.m_nodes.size();
-  Eigen::VectorXd start(3 * count), start_velocity(3 * count), weight(3 * count);
+  Eigen::VectorXd& start = start_;
+  Eigen::VectorXd& start_velocity = start_velocity_;
+  Eigen::VectorXd& weight = weight_;
+  start.resize(3 * count);
+  start_velocity.resize(3 * count);
+  weight.resize(3 * count);
   for (int i = 0; i < count; ++i) {
     start.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_x);
     start_velocity.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_v);
     weight.segment<3>(3 * i) = mass_(3 * i) * toEigen(acceleration[static_cast<std::size_t>(i)]);
   }
   // The last step ended where this one starts unless something moved the nodes since.
-  if (last_.positions.size() != start.size() || last_.positions != start) evaluate(start, last_);
-  const Eigen::ArrayXd moves = (mass_.array() > 0.0).cast<double>();
+  if (last_.positions.size() != start.size() || last_.positions != start) {
+    last_.positions = start;
+    evaluate(last_);
+  }
   const auto kinetic = [&](const Eigen::VectorXd& v) { return 0.5 * v.dot(mass_.cwiseProduct(v)); };
   const auto contactWork = [&](const Eigen::VectorXd& v) {
     double work = 0.0;
@@ -172,40 +180,47 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
   };
   // The incremental potential with the contacts' impulses as fixed forces.
   const auto potential = [&](const Eigen::VectorXd& v, const Elastic& at) {
-    const Eigen::VectorXd change = v - start_velocity;
-    return kinetic(change) - h * weight.dot(v) + at.energy - contactWork(v);
+    return kinetic(v - start_velocity) - h * weight.dot(v) + at.energy - contactWork(v);
   };
+  const double start_kinetic = kinetic(start_velocity);
   const double start_elastic = last_.energy;
-  const double energy_before =
-      kinetic(start_velocity) + start_elastic - weight.dot(start);  // gravity's potential
+  const double energy_before = start_kinetic + start_elastic - weight.dot(start);  // gravity's
   ElasticStepReport report;
-  Eigen::VectorXd velocity = Eigen::VectorXd::Zero(3 * count);
+  Eigen::VectorXd& velocity = velocity_;
+  Eigen::VectorXd& direction = direction_;
+  velocity.setZero(3 * count);
   const Elastic& at = last_;  // where the iteration stands (trial_ the points it tries)
   // Whether the iterate `v`, with `trial_`'s forces, gains no energy beyond the work put in.
   const auto keepsEnergy = [&](const Eigen::VectorXd& v) {
     const double energy_after = kinetic(v) + trial_.energy - weight.dot(trial_.positions);
     report.energy_gain = energy_after - energy_before - contactWork(v);
-    const double scale = kinetic(start_velocity) + kinetic(v) + start_elastic + trial_.energy;
-    // What the iteration resolves: the work of the forces over the distance it calls still.
-    const double resolved = kStillShare * mean_edge_ *
-                            (trial_.forces + weight).cwiseProduct(moves.matrix()).lpNorm<1>();
-    report.energy_kept = report.energy_gain <= kEnergyTolerance * scale + resolved;
+    const double scale = start_kinetic + kinetic(v) + start_elastic + trial_.energy;
+    report.energy_kept = report.energy_gain <= kEnergyTolerance * scale;
+    if (!report.energy_kept) {
+      // What the iteration resolves: the work of the forces over the distance it calls still.
+      const double resolved =
+          kStillShare * mean_edge_ * (trial_.forces + weight).cwiseProduct(moves_).lpNorm<1>();
+      report.energy_kept = report.energy_gain <= kEnergyTolerance * scale + resolved;
+    }
     return report.energy_kept;
   };
+  const auto tryStep = [&](double share) {
+    trial_.positions = start + h * (velocity + share * direction);
+    evaluate(trial_);
+  };
   for (;;) {
-    const Eigen::VectorXd residual =
-        (mass_.cwiseProduct(start_velocity - velocity) + h * (at.forces + weight))
-            .cwiseProduct(moves.matrix());
-    const Eigen::VectorXd direction = solveFrom(velocity, residual, contacts) - velocity;
+    residual_ = (mass_.cwiseProduct(start_velocity - velocity) + h * (at.forces + weight))
+                    .cwiseProduct(moves_);
+    solveFrom(velocity, residual_, contacts, direction);
     ++report.iterations;
-    evaluate(start + h * (velocity + direction), trial_);
+    tryStep(1.0);
     double share = 1.0;
     if (!keepsEnergy(velocity + direction)) {
       // Cut back until Phi falls by a share of what the solve promised (A d = residual +
       // impulses, so the promise is d^T A d), read to within its rounding.
-      const double promised = direction.dot(residual) + contactWork(direction);
+      const double promised = direction.dot(residual_) + contactWork(direction);
       const double from = potential(velocity, at);
-      const double rounding = kRounding * (std::abs(from) + kinetic(start_velocity));
+      const double rounding = kRounding * (std::abs(from) + start_kinetic);
       for (int halving = 0; halving < kMostHalvings; ++halving) {
         if (potential(velocity + share * direction, trial_) <=
             from - kArmijoShare * share * promised + rounding) {
@@ -213,7 +228,7 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
         }
         share *= 0.5;
         ++report.halvings;
-        evaluate(start + h * (velocity + share * direction), trial_);
+        tryStep(share);
       }
       keepsEnergy(velocity + share * direction);
     }

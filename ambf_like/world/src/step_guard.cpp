@@ -77,16 +77,24 @@ std::string StepGuard::problemOf(const Vec3& position, const Vec3& velocity) con
   return {};
 }
 
+bool StepGuard::fine(const Vec3& position, const Vec3& velocity) const {
+  // Written so that a NaN fails every comparison: nothing here is true of it.
+  const bool inside = (position.array() >= bounds_.min().array()).all() &&
+                      (position.array() <= bounds_.max().array()).all();
+  return inside && velocity.squaredNorm() <= speed_limit_ * speed_limit_;
+}
+
 void StepGuard::check(const std::vector<const RigidBody*>& bodies,
                       const std::vector<const SoftBody*>& soft_bodies, std::uint64_t step,
                       double time) const {
   for (const RigidBody* body : bodies) {
     if (body->isStatic()) continue;
-    std::string problem = problemOf(body->centerOfMassPose().translation(), body->linearVelocity());
-    if (problem.empty() && !body->angularVelocity().allFinite()) {
-      problem = "turns at a speed that is not finite";
-    }
-    if (!problem.empty()) throw SimulationDiverged(body->qualifiedName(), -1, step, time, problem);
+    const Vec3 position = body->centerOfMassPose().translation();
+    const Vec3 velocity = body->linearVelocity();
+    if (fine(position, velocity) && body->angularVelocity().allFinite()) continue;
+    std::string problem = problemOf(position, velocity);
+    if (problem.empty()) problem = "turns at a speed that is not finite";
+    throw SimulationDiverged(body->qualifiedName(), -1, step, time, problem);
   }
   for (const SoftBody* soft : soft_bodies) {
     if (soft->isAsleep()) continue;  // it has not moved since it was checked awake
@@ -94,8 +102,9 @@ void StepGuard::check(const std::vector<const RigidBody*>& bodies,
     for (int i = 0; i < b.m_nodes.size(); ++i) {
       const btSoftBody::Node& node = b.m_nodes[i];
       if (node.m_im <= 0.0) continue;  // fixed
-      const std::string problem = problemOf(toEigen(node.m_x), toEigen(node.m_v));
-      if (!problem.empty()) throw SimulationDiverged(soft->qualifiedName(), i, step, time, problem);
+      const Vec3 position = toEigen(node.m_x), velocity = toEigen(node.m_v);
+      if (fine(position, velocity)) continue;
+      throw SimulationDiverged(soft->qualifiedName(), i, step, time, problemOf(position, velocity));
     }
   }
 }

@@ -56,7 +56,9 @@ class StepGuard {
   double speedLimit() const { return speed_limit_; }  ///< m/s
 
  private:
-  /// Empty when `position` and `velocity` are fine, else what is wrong with them.
+  /// Whether `position` and `velocity` are finite, inside the bounds and within the speed.
+  bool fine(const Vec3& position, const Vec3& velocity) const;
+  /// What is wrong with `position` and `velocity` (empty when nothing is).
   std::string problemOf(const Vec3& position, const Vec3& velocity) const;
 
   Eigen::AlignedBox3d bounds_;

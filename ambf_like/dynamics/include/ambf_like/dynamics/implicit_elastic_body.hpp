@@ -62,15 +62,17 @@ class ImplicitElasticBody {
   const NodeResponse& responseTo(int node);
   /// Follows the body's overall rotation (the polar rotation of its mass-weighted spread).
   void followBodyRotation(const Eigen::VectorXd& positions);
-  /// The forces and energy at `positions`, the body's rotation followed there.
-  void evaluate(const Eigen::VectorXd& positions, Elastic& out);
-  /// The velocities after one solve from `velocity` with the forces of `at`: the free ones, then
-  /// the contacts' and pins' impulses added (solved in the rest frame).
-  Eigen::VectorXd solveFrom(const Eigen::VectorXd& velocity, const Eigen::VectorXd& residual,
-                            std::vector<ElasticContact>& contacts);
+  /// The forces and energy at `at.positions`, the body's rotation followed there.
+  void evaluate(Elastic& at);
+  /// The change of velocity one solve from `velocity` makes, with `residual` the forces' and
+  /// inertia's imbalance there (solved in the rest frame): A^-1 residual, then the contacts' and
+  /// pins' impulses on the velocity it reaches.
+  void solveFrom(const Eigen::VectorXd& velocity, const Eigen::VectorXd& residual,
+                 std::vector<ElasticContact>& contacts, Eigen::VectorXd& direction);
 
   CorotatedTets tets_;
-  Eigen::VectorXd mass_;  ///< per coordinate; 0 for a node that stays put
+  Eigen::VectorXd mass_;   ///< per coordinate; 0 for a node that stays put
+  Eigen::VectorXd moves_;  ///< per coordinate: 1, or 0 for a node that stays put
   /// Each node's rest offset from the rest centre of mass times its mass (3 x nodes; empty when
   /// no node has mass).
   Eigen::Matrix3Xd weighted_rest_;
@@ -82,6 +84,10 @@ class ImplicitElasticBody {
   ElasticContactSolver contact_solver_;
   Elastic last_;  ///< at the end of the last step: the next one starts from it if nothing moved
   Elastic trial_;
+  /// A step's working vectors (3 entries per node), kept to spare their allocations.
+  Eigen::VectorXd start_, start_velocity_, weight_, velocity_, direction_, residual_,
+      free_velocity_;
+  std::unordered_map<int, Eigen::Vector3d> pushed_;  ///< impulses by node, in a solve
 };
 
 }  // namespace ambf_like::detail
