@@ -56,7 +56,7 @@ CorotatedTets::CorotatedTets(const btSoftBody& body, const SoftMaterial& materia
       const RestTetrahedron& tet = rest_[first + (lane < pack.used ? lane : 0)];
       const Eigen::Matrix3d force_gradients = -tet.volume * tet.rest_inverse.transpose();
       pack.node[lane] = tet.node;
-      pack.volume[lane] = tet.volume;
+      pack.volume[lane] = lane < pack.used ? tet.volume : 0.0;
       for (int e = 0; e < 9; ++e) {
         pack.rest_inverse[e][lane] = tet.rest_inverse(e % 3, e / 3);
         pack.force_gradients[e][lane] = force_gradients(e % 3, e / 3);
@@ -82,7 +82,7 @@ void CorotatedTets::turnRotations(const Eigen::Quaterniond& turn) {
 
 double CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorXd& forces) {
   const double* x = positions.data();
-  double energy = 0.0;
+  Lanes energy{};
   for (auto& pack : packs_) {
     // The edge matrices [x1 - x0, x2 - x0, x3 - x0], lane by lane.
     Matrix9<Lanes> edges;
@@ -111,8 +111,8 @@ double CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorX
     // psi V = (mu eps : eps + lambda / 2 tr(eps)^2) V = (eps : stress) V / 2.
     const Lanes density = 0.5 * (e00 * stress[0] + e11 * stress[4] + e22 * stress[8]) +
                           (e01 * stress[1] + e02 * stress[2] + e12 * stress[5]);
+    energy += density * pack.volume;
     for (int lane = 0; lane < pack.used; ++lane) {
-      energy += density[lane] * pack.volume[lane];
       const std::array<int, 4>& node = pack.node[lane];
       double* f0 = forces.data() + 3 * node[0];
       for (int k = 0; k < 3; ++k) {
@@ -124,7 +124,9 @@ double CorotatedTets::addForces(const Eigen::VectorXd& positions, Eigen::VectorX
       }
     }
   }
-  return energy;
+  double total = 0.0;
+  for (int lane = 0; lane < kLaneCount; ++lane) total += energy[lane];
+  return total;
 }
 
 std::vector<Eigen::Triplet<double>> CorotatedTets::restStiffness() const {

@@ -126,7 +126,7 @@ void ImplicitElasticBody::evaluate(Elastic& at) {
   at.energy = tets_.addForces(at.positions, at.forces);
 }
 
-void ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity,
+void ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity, bool from_rest,
                                     const Eigen::VectorXd& residual,
                                     std::vector<ElasticContact>& contacts,
                                     Eigen::VectorXd& direction) {
@@ -136,9 +136,12 @@ void ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity,
   direction = residual;
   turnEach(direction, turn.transpose());
   system_.solveInPlace(direction);
-  free_velocity_ = velocity;
-  turnEach(free_velocity_, turn.transpose());
-  free_velocity_ += direction;
+  free_velocity_ = direction;
+  if (!from_rest) {
+    Eigen::Map<Eigen::Matrix3Xd>(free_velocity_.data(), 3, free_velocity_.size() / 3).noalias() +=
+        turn.transpose() *
+        Eigen::Map<const Eigen::Matrix3Xd>(velocity.data(), 3, velocity.size() / 3);
+  }
   for (auto& c : contacts) turnContact(c, turn.transpose());
   contact_solver_.solve(free_velocity_, contacts,
                         [this](int node) -> const NodeResponse& { return responseTo(node); });
@@ -211,7 +214,7 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
   for (;;) {
     residual_ = (mass_.cwiseProduct(start_velocity - velocity) + h * (at.forces + weight))
                     .cwiseProduct(moves_);
-    solveFrom(velocity, residual_, contacts, direction);
+    solveFrom(velocity, report.iterations == 0, residual_, contacts, direction);
     ++report.iterations;
     tryStep(1.0);
     double share = 1.0;

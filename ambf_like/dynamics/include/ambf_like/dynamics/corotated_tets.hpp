@@ -57,7 +57,7 @@ class CorotatedTets {
   struct TetPack {
     int used = 0;
     std::array<std::array<int, 4>, kLaneCount> node;
-    std::array<double, kLaneCount> volume;  ///< at rest
+    Lanes volume;  ///< at rest; 0 in the unused lanes
     Matrix9<Lanes> rest_inverse;
     Matrix9<Lanes> force_gradients;  ///< minus the volume times nodes 1-3's gradients
     FollowedRotation<Lanes> rotation;

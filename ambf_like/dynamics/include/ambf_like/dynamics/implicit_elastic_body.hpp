@@ -64,10 +64,10 @@ class ImplicitElasticBody {
   void followBodyRotation(const Eigen::VectorXd& positions);
   /// The forces and energy at `at.positions`, the body's rotation followed there.
   void evaluate(Elastic& at);
-  /// The change of velocity one solve from `velocity` makes, with `residual` the forces' and
-  /// inertia's imbalance there (solved in the rest frame): A^-1 residual, then the contacts' and
-  /// pins' impulses on the velocity it reaches.
-  void solveFrom(const Eigen::VectorXd& velocity, const Eigen::VectorXd& residual,
+  /// The change of velocity one solve from `velocity` (zero when `from_rest`) makes, with
+  /// `residual` the forces' and inertia's imbalance there (solved in the rest frame): A^-1
+  /// residual, then the contacts' and pins' impulses on the velocity it reaches.
+  void solveFrom(const Eigen::VectorXd& velocity, bool from_rest, const Eigen::VectorXd& residual,
                  std::vector<ElasticContact>& contacts, Eigen::VectorXd& direction);
 
   CorotatedTets tets_;
