@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
-"""An exploring policy in PegTransferEnv never flings a ring or blows the world up (issue 45):
-random joint targets about the current ones with the jaws anywhere in their range, then the
-expert with its jaws clamped shut to their stop, on randomised scenes of several seeds. Every
-ring must stay finite and near the board, and no step may end in the world's guard.
+"""An abusive policy in PegTransferEnv never flings a ring or blows the world up (issue 45): on
+randomised scenes of three seeds the expert grasps until a ring is lifted, then its jaws are
+clamped shut to their stop, crushing the ring, while the arms wander about the expert's targets.
+Every ring must stay finite and near the board, and no step may end in the world's guard. With
+the linearly implicit step alone, seed 2 flung its ring 22 km.
 
 Usage: env_abuse_test.py; PYTHONPATH must hold build/python.
 """
@@ -15,49 +16,54 @@ import numpy as np
 
 import raven_sim
 
-JAWS = (5, 6, 12, 13)  # jaw1 and jaw2 of the left arm, then of the right (ArmJoints order)
 RINGS = slice(54, 72)  # the six ring centres of the observation
 
 
-class ExploringPolicy(unittest.TestCase):
-    def check_rings(self, observation, start, seed, phase):
+def jaws_shut(action, low):
+    """`action` with each arm's jaws at their stop, the grasper's angle (jaw1 - jaw2) kept."""
+    for first in (5, 12):  # jaw1 of the left arm, then of the right (ArmJoints order)
+        spread = action[first] - action[first + 1]
+        shut = low[first] + low[first + 1]
+        action[first], action[first + 1] = (shut + spread) / 2, (shut - spread) / 2
+    return action
+
+
+class AbusivePolicy(unittest.TestCase):
+    def check_rings(self, observation, start, seed):
         rings = observation[RINGS].reshape(6, 3)
-        self.assertTrue(np.isfinite(rings).all(), f"seed {seed}, {phase}: {rings}")
+        self.assertTrue(np.isfinite(rings).all(), f"seed {seed}: {rings}")
         moved = np.linalg.norm(rings[:, :2] - start[:, :2], axis=1)
         # The arms reach about 0.15 m from where a ring starts: a ring found farther was flung.
-        self.assertLess(moved.max(), 0.3, f"seed {seed}, {phase}: rings moved {moved} m")
+        self.assertLess(moved.max(), 0.3, f"seed {seed}: rings moved {moved} m")
         rise = rings[:, 2] - start[:, 2]
-        self.assertGreater(rise.min(), -0.05, f"seed {seed}, {phase}: a ring fell through")
-        self.assertLess(rise.max(), 0.3, f"seed {seed}, {phase}: a ring flew up {rise.max()} m")
+        self.assertGreater(rise.min(), -0.05, f"seed {seed}: a ring fell through")
+        self.assertLess(rise.max(), 0.3, f"seed {seed}: a ring flew up {rise.max()} m")
 
-    def step(self, env, action, seed, phase):
+    def step(self, env, action, seed):
         observation, _, _, truncated, info = env.step(
             np.clip(action, env.action_space.low, env.action_space.high))
-        self.assertNotIn("failure", info, f"seed {seed}, {phase}")
-        self.assertFalse(truncated, f"seed {seed}, {phase}")
+        self.assertNotIn("failure", info, f"seed {seed}")
+        self.assertFalse(truncated, f"seed {seed}")
         return observation
 
-    def test_random_targets_then_closed_jaws_keep_every_ring_bounded(self):
+    def test_jaws_shut_on_a_lifted_ring_while_the_arms_wander_keep_every_ring_bounded(self):
         for seed in (1, 2, 3):
             env = raven_sim.PegTransferEnv(randomize=True, time_limit=1e4)
             observation, _ = env.reset(seed=seed)
             start = observation[RINGS].reshape(6, 3).copy()
-            rng = np.random.default_rng(seed)
             low, high = env.action_space.low, env.action_space.high
-            for _ in range(100):  # explore about the current joints, jaws anywhere
-                action = observation[0:14] + rng.uniform(-0.02, 0.02, 14) * (high - low)
-                for jaw in JAWS:
-                    action[jaw] = rng.uniform(low[jaw], high[jaw])
-                observation = self.step(env, action, seed, "exploring")
-                self.check_rings(observation, start, seed, "exploring")
-            for _ in range(100):  # the expert, its jaws clamped shut to their stop
-                action = np.asarray(env.expert_action())
-                for first in (5, 12):  # keep jaw1 - jaw2 (the grasper's angle), close the opening
-                    spread = action[first] - action[first + 1]
-                    shut = low[first] + low[first + 1]
-                    action[first], action[first + 1] = (shut + spread) / 2, (shut - spread) / 2
-                observation = self.step(env, action, seed, "jaws shut")
-                self.check_rings(observation, start, seed, "jaws shut")
+            for _ in range(400):  # the expert, until some ring is lifted 1 cm
+                observation = self.step(env, np.asarray(env.expert_action()), seed)
+                if (observation[RINGS].reshape(6, 3)[:, 2] - start[:, 2]).max() > 0.01:
+                    break
+            else:
+                self.fail(f"seed {seed}: the expert lifted no ring")
+            rng = np.random.default_rng(seed)
+            for _ in range(100):  # crushed: jaws at their stop, joints wandering about the expert's
+                action = jaws_shut(np.asarray(env.expert_action()), low)
+                action += rng.uniform(-0.01, 0.01, 14) * (high - low)
+                observation = self.step(env, action, seed)
+                self.check_rings(observation, start, seed)
 
 
 # A 0.1 kg arm on a hinge, to be driven far harder than anything in a scene of a metre allows.
