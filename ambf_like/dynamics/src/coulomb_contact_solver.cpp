@@ -237,9 +237,7 @@ ElasticContact CoulombContactSolver::pinOf(const btSoftBody& body, const btSoftB
   ElasticContact pin;
   pin.node = static_cast<int>(anchor.m_node - &body.m_nodes[0]);
   pin.pinned = true;
-  pin.normal = Eigen::Vector3d::UnitZ();
   pin.surface_velocity = toEigen((point - anchor.m_node->m_x) / hs);
-  pin.least_normal_velocity = pin.surface_velocity.z();
   return pin;
 }
 

@@ -14,8 +14,9 @@ namespace {
 constexpr double kImpulseTolerance = 1e-8;
 constexpr int kMostContactSweeps = 100;
 
-/// The velocity that keeps `contact`'s node stuck to its surface (or pin), just reaching it.
+/// The velocity that keeps `contact`'s node stuck to its surface, just reaching it, or on its pin.
 Eigen::Vector3d stuckVelocity(const ElasticContact& contact) {
+  if (contact.pinned) return contact.surface_velocity;
   const Eigen::Vector3d& n = contact.normal;
   const Eigen::Vector3d& u = contact.surface_velocity;
   return u - n * n.dot(u) + n * contact.least_normal_velocity;

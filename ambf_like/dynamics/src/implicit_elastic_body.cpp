@@ -196,14 +196,14 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
   // Whether the iterate `v`, with `trial_`'s forces, gains no energy beyond the work put in.
   const auto keepsEnergy = [&](const Eigen::VectorXd& v) {
     const double energy_after = kinetic(v) + trial_.energy - weight.dot(trial_.positions);
-    report.energy_gain = energy_after - energy_before - contactWork(v);
+    const double gain = energy_after - energy_before - contactWork(v);  // beyond the work put in
     const double scale = start_kinetic + kinetic(v) + start_elastic + trial_.energy;
-    report.energy_kept = report.energy_gain <= kEnergyTolerance * scale;
+    report.energy_kept = gain <= kEnergyTolerance * scale;
     if (!report.energy_kept) {
       // What the iteration resolves: the work of the forces over the distance it calls still.
       const double resolved =
           kStillShare * mean_edge_ * (trial_.forces + weight).cwiseProduct(moves_).lpNorm<1>();
-      report.energy_kept = report.energy_gain <= kEnergyTolerance * scale + resolved;
+      report.energy_kept = gain <= kEnergyTolerance * scale + resolved;
     }
     return report.energy_kept;
   };

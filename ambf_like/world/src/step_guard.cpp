@@ -84,10 +84,10 @@ bool StepGuard::fine(const Vec3& position, const Vec3& velocity) const {
   return inside && velocity.squaredNorm() <= speed_limit_ * speed_limit_;
 }
 
-void StepGuard::check(const std::vector<const RigidBody*>& bodies,
-                      const std::vector<const SoftBody*>& soft_bodies, std::uint64_t step,
+void StepGuard::check(const std::vector<std::unique_ptr<RigidBody>>& bodies,
+                      const std::vector<std::unique_ptr<SoftBody>>& soft_bodies, std::uint64_t step,
                       double time) const {
-  for (const RigidBody* body : bodies) {
+  for (const auto& body : bodies) {
     if (body->isStatic()) continue;
     const Vec3 position = body->centerOfMassPose().translation();
     const Vec3 velocity = body->linearVelocity();
@@ -96,7 +96,7 @@ void StepGuard::check(const std::vector<const RigidBody*>& bodies,
     if (problem.empty()) problem = "turns at a speed that is not finite";
     throw SimulationDiverged(body->qualifiedName(), -1, step, time, problem);
   }
-  for (const SoftBody* soft : soft_bodies) {
+  for (const auto& soft : soft_bodies) {
     if (soft->isAsleep()) continue;  // it has not moved since it was checked awake
     const btSoftBody& b = soft->bullet();
     for (int i = 0; i < b.m_nodes.size(); ++i) {

@@ -89,8 +89,6 @@ struct World::Impl {
   std::vector<std::unique_ptr<ConstraintActuator>> actuators;
   std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
   std::optional<StepGuard> guard;                  ///< set once every model is built
-  std::vector<const RigidBody*> guarded_bodies;
-  std::vector<const SoftBody*> guarded_soft_bodies;
   std::size_t collision_vertices = 0;
   std::size_t collision_primitives = 0;
   std::vector<std::string> warnings;
@@ -339,11 +337,9 @@ World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
   std::vector<Eigen::Vector3d> scene_points;
   for (const auto& body : impl_->bodies) {
     scene_points.push_back(body->centerOfMassPose().translation());
-    impl_->guarded_bodies.push_back(body.get());
   }
   for (const auto& soft : impl_->soft_bodies) {
     for (const Vec3& node : soft->nodePositions()) scene_points.push_back(node);
-    impl_->guarded_soft_bodies.push_back(soft.get());
   }
   impl_->guard.emplace(scene_points, options.step_size, impl_->settings.gravity);
   if (options.soft_body_sleep.value_or(scene.world.soft_body_sleep.enabled) &&
@@ -374,7 +370,7 @@ void World::step() {
   }
   ++impl_->steps;
   impl_->time = static_cast<double>(impl_->steps) * h;
-  impl_->guard->check(impl_->guarded_bodies, impl_->guarded_soft_bodies, impl_->steps, impl_->time);
+  impl_->guard->check(impl_->bodies, impl_->soft_bodies, impl_->steps, impl_->time);
 }
 
 void World::step(std::uint64_t count) {

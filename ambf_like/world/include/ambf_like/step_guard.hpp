@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,8 +49,8 @@ class StepGuard {
 
   /// Throws SimulationDiverged naming the first body or node that is not finite, out of the
   /// bounds or too fast.
-  void check(const std::vector<const RigidBody*>& bodies,
-             const std::vector<const SoftBody*>& soft_bodies, std::uint64_t step,
+  void check(const std::vector<std::unique_ptr<RigidBody>>& bodies,
+             const std::vector<std::unique_ptr<SoftBody>>& soft_bodies, std::uint64_t step,
              double time) const;
 
   const Eigen::AlignedBox3d& bounds() const { return bounds_; }

@@ -12,13 +12,13 @@ namespace ambf_like::detail {
 /// point of a rigid body (a grasp assist's anchor).
 struct ElasticContact {
   int node = 0;
-  Eigen::Vector3d normal;            ///< the surface's, pointing to the node
-  Eigen::Vector3d surface_velocity;  ///< of the surface at the node
-  double least_normal_velocity = 0;  ///< what normal . v must reach to end the step on it
-  double start_depth = 0;            ///< how far inside the surface the node began the step
-  double friction = 0;               ///< Coulomb's mu
-  /// A pin: the node ends the step moving at exactly surface_velocity - normal (normal .
-  /// surface_velocity) + normal least_normal_velocity, pushed or pulled, in no cone.
+  Eigen::Vector3d normal{0, 0, 0};            ///< the surface's, pointing to the node
+  Eigen::Vector3d surface_velocity{0, 0, 0};  ///< of the surface (or pin) at the node
+  double least_normal_velocity = 0;           ///< what normal . v must reach to end the step on it
+  double start_depth = 0;  ///< how far inside the surface the node began the step
+  double friction = 0;     ///< Coulomb's mu
+  /// A pin: the node ends the step moving at exactly surface_velocity, pushed or pulled, in no
+  /// cone (normal, least_normal_velocity, start_depth and friction play no part).
   bool pinned = false;
   Eigen::Vector3d impulse{0, 0, 0};  ///< on the node (N s): in, the last step's; out, this one's
 };

@@ -17,7 +17,6 @@ namespace ambf_like::detail {
 struct ElasticStepReport {
   int iterations = 0;       ///< solves of the system (1: the linearly implicit step was kept)
   int halvings = 0;         ///< of the line search, over all iterations
-  double energy_gain = 0;   ///< J: the step's mechanical energy change less the work put in
   bool energy_kept = true;  ///< the step gained no energy beyond its tolerance
 };
 
