@@ -1,238 +1,344 @@
-// raven_calibrate: fits the twin's tracking response (command latency, and per drive a natural
-// frequency and damping ratio) to physical replays of one recording's inputs, reports the twin's
-// j_P and j_V before and after per joint, scores the fit on trials it was not fitted on
-// (leave-one-out), and writes a calibration profile for --calibration.
+// raven_calibrate: fits the twin's actuation (the mechanics behind each motor) to physical
+// recordings with a leave-one-out report (`fit`), scores a calibration by end-to-end replays of
+// the recordings' inputs against the robot's own spread (`score`), and proposes the next
+// excitation motion to record on the robot (`propose`).
 
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
-#include <future>
 #include <thread>
 
-#include "analysis/metrics.hpp"
+#include "calibration/actuation_fit.hpp"
 #include "calibration/calibration_file.hpp"
+#include "calibration/excitation.hpp"
+#include "calibration/replay_score.hpp"
 #include "calibration/replay_timing.hpp"
-#include "calibration/tracking_fit.hpp"
 #include "raven/control_cycle.hpp"
 #include "recording/recording_io.hpp"
 
 namespace {
 
-using calibration::Figures;
+using analysis::ActuatorSignal;
 
-/// Command-line settings.
-struct Settings {
+/// How the recordings' inputs were replayed (the controller's settings).
+struct ReplayFlags {
   std::filesystem::path ci;
-  std::vector<std::filesystem::path> physical;
-  std::filesystem::path out = "calibration.yaml";
-  bool stand_in = false;
   bool paper_deadzone = false;
   std::string mapping = "m2";
   double rate = 500.0;
   int man_steps = 10;
-  int max_evaluations = 200;
+
+  void add(CLI::App& app, bool ci_required) {
+    auto* option =
+        app.add_option("--ci", ci, "the recorded controller inputs (ci file) the trials replayed")
+            ->check(CLI::ExistingFile);
+    if (ci_required) option->required();
+    app.add_flag("--paper-deadzone", paper_deadzone,
+                 "replay with the released controller's deadzone test (the paper's recordings)");
+    app.add_option("--mapping", mapping, "initial mapping of the replay: m2, m1-left, m1-right")
+        ->check(CLI::IsMember({"m2", "m1-left", "m1-right"}));
+    app.add_option("--rate", rate, "command steps per second of the replay")
+        ->check(CLI::Range(1.0, raven::kControlRate));
+    app.add_option("--man-steps", man_steps, "least steps per manual iteration")
+        ->check(CLI::Range(1, 100));
+  }
+  calibration::ReplaySetup setup(double iteration_overhead) const {
+    calibration::ReplaySetup s;
+    if (!ci.empty()) s.inputs = recording::readCi(ci);
+    s.controller.rate = rate;
+    s.controller.caps.min_steps = man_steps;
+    s.controller.scheme = controller::mappingSchemeNamed(mapping);
+    s.controller.mapping.deadzone_reads_y_twice = paper_deadzone;
+    s.controller.iteration_overhead = iteration_overhead;
+    return s;
+  }
+};
+
+/// The physical recordings named (files or directories: every *physical*.csv in them).
+std::vector<recording::RsRecording> loadPhysical(const std::vector<std::filesystem::path>& inputs) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& input : inputs) {
+    if (!std::filesystem::is_directory(input)) {
+      files.push_back(input);
+      continue;
+    }
+    for (const auto& e : std::filesystem::directory_iterator(input)) {
+      const auto name = e.path().filename().string();
+      if (e.path().extension() == ".csv" && name.find("physical") != std::string::npos)
+        files.push_back(e.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<recording::RsRecording> out;
+  for (const auto& f : files)
+    out.push_back(recording::readRs(f, recording::NonFiniteJoints::Refuse));
+  if (out.size() < 2) {
+    throw std::runtime_error(fmt::format(
+        "{} physical recording(s) found: the robot's spread needs two or more", out.size()));
+  }
+  return out;
+}
+
+std::vector<analysis::ActuatorTrace> tracesOf(const std::vector<recording::RsRecording>& rs) {
+  std::vector<analysis::ActuatorTrace> t;
+  for (const auto& r : rs) t.push_back(analysis::actuatorTrace(r));
+  return t;
+}
+
+void printActuators(const char* title, const analysis::ActuatorFidelity& f) {
+  std::printf("\n%s: mean |twin - physical| over the robot's own spread (median over joints)\n",
+              title);
+  std::printf("  %-8s %7s |", "signal", "median");
+  for (raven::Arm arm : raven::kArms) {
+    for (auto name : raven::kJointNames)
+      std::printf(" %c.%-6.6s", raven::armName(arm)[0], std::string(name).c_str());
+  }
+  std::printf("\n");
+  for (std::size_t k = 0; k < analysis::kActuatorSignals.size(); ++k) {
+    std::printf("  %-8s %6.2fx |", analysis::columnName(analysis::kActuatorSignals[k]),
+                f.median_ratio[k]);
+    for (std::size_t a = 0; a < 2; ++a) {
+      for (int j = 0; j < raven::kJointCount; ++j)
+        std::printf(" %8.2f", f.twin[k][a](j) / f.spread[k][a](j));
+    }
+    std::printf("\n");
+  }
+}
+
+void printFigures(const calibration::ReplayScore& s) {
+  std::printf(
+      "\njoint figures, twin vs its own trial (mean |difference|) against T_PP (physical vs "
+      "physical)\n");
+  const char* names[4] = {"revolute j_P (rad)", "insertion j_P (mm)", "revolute j_V (rad/s)",
+                          "insertion j_V (mm/s)"};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto t = s.twin[k].values();
+    const auto r = s.robot[k].values();
+    for (std::size_t i = 0; i < 4; ++i) {
+      std::printf("  %-22s %-17s twin %9.4f   T_PP %9.4f   %s\n", names[i],
+                  k == 0 ? "as recorded" : "first row removed", t[i], r[i],
+                  t[i] <= r[i] ? "within" : "OUTSIDE");
+    }
+  }
+  std::printf("  %d of 8 joint figures within the robot's own repeatability\n", s.figuresWithin());
+}
+
+void printMechanics(const twin::CalibrationProfile& p) {
+  std::printf("\nfitted mechanics (+- standard deviation)\n");
+  for (raven::Arm arm : raven::kArms) {
+    const auto a = static_cast<std::size_t>(raven::index(arm));
+    twin::MotorMechanics m = p.mechanics[a], u = p.uncertainty[a];
+    for (int v = 0; v < calibration::kMechanicsValues; ++v) {
+      const char* names[4] = {"inertia", "coulomb", "viscous", "gravity_error"};
+      std::printf("  %-6s %-14s", std::string(raven::armName(arm)).c_str(), names[v]);
+      for (int j = 0; j < raven::kJointCount; ++j) {
+        std::printf(" %9.3g+-%-8.2g", calibration::mechanicsValue(m, v, j),
+                    calibration::mechanicsValue(u, v, j));
+      }
+      std::printf("\n");
+    }
+  }
+}
+
+/// One leave-one-out fold's result.
+struct Fold {
+  std::size_t held_out = 0;
+  calibration::ActuationFitResult fit;
+  analysis::ActuatorFidelity held_out_score;
+};
+
+struct FitSettings {
+  std::vector<std::filesystem::path> physical;
+  ReplayFlags replay;
+  std::filesystem::path out = "raven2_calibration.yaml";
+  int evaluations = 40;
   int threads = 2;
   bool leave_one_out = true;
 };
 
-calibration::ReplaySetup replaySetup(const Settings& s) {
-  calibration::ReplaySetup setup;
-  setup.inputs = recording::readCi(s.ci);
-  setup.controller.rate = s.rate;
-  setup.controller.caps.min_steps = s.man_steps;
-  setup.controller.scheme = controller::mappingSchemeNamed(s.mapping);
-  setup.controller.mapping.deadzone_reads_y_twice = s.paper_deadzone;
-  if (s.stand_in) setup.twin.stand_in = twin::CableActuationParams::physicalStandIn();
-  return setup;
-}
-
-/// The physical trials named on the command line (files or directories; only the physical
-/// platform's recordings are used, everything else is reported and left out).
-std::vector<analysis::Trial> loadPhysical(const std::vector<std::filesystem::path>& inputs) {
-  const auto set =
-      analysis::loadTrials(inputs, analysis::readProfiles(analysis::defaultProfilesFile()));
-  for (const auto& issue : set.issues) {
-    spdlog::warn("{}: {}{}", issue.path.string(), issue.reason,
-                 issue.excluded ? " (left out)" : "");
-  }
-  std::vector<analysis::Trial> trials;
-  for (const auto& platform : set.platforms) {
-    if (platform.profile.role == analysis::Role::Physical) {
-      trials.insert(trials.end(), platform.trials.begin(), platform.trials.end());
-    } else {
-      for (const auto& t : platform.trials) {
-        spdlog::warn("{}: a {} recording, not physical: left out", t.path.string(),
-                     platform.profile.name);
-      }
-    }
-  }
-  return trials;
-}
-
-void printFigures(const char* label, const Figures& f) {
-  std::printf("  %-34s %10.4f %10.3f %10.4f %10.3f\n", label, f.revolute_position,
-              f.insertion_position, f.revolute_velocity, f.insertion_velocity);
-}
-
-void printFigureHeader() {
-  std::printf("  %-34s %10s %10s %10s %10s\n", "", "rev j_P", "ins j_P", "rev j_V", "ins j_V");
-  std::printf("  %-34s %10s %10s %10s %10s\n", "", "rad", "mm", "rad/s", "mm/s");
-}
-
-void printJoints(const calibration::JointFigures& before, const calibration::JointFigures& after,
-                 const calibration::JointFigures& robot) {
-  std::printf(
-      "\nper joint, mean |difference| against the physical trials (T_PP: the robot's own)\n");
-  std::printf("  %-16s %-6s %10s %10s %10s   %10s %10s %10s\n", "joint", "unit", "j_P before",
-              "after", "T_PP", "j_V before", "after", "T_PP");
-  const auto& joints = analysis::recordedJoints();
-  for (std::size_t i = 0; i < joints.size(); ++i) {
-    const bool mm = joints[i].unit == "m";
-    std::printf("  %-16s %-6s %10.4f %10.4f %10.4f   %10.4f %10.4f %10.4f\n",
-                joints[i].name.c_str(), mm ? "mm" : "rad", before.position[i], after.position[i],
-                robot.position[i], before.velocity[i], after.velocity[i], robot.velocity[i]);
-  }
-}
-
-/// One fit job: fit on `train`, score on `test` (may be empty).
-struct Fold {
-  std::string name;
-  analysis::PlatformTrials train, test;
-  calibration::FitResult fit;
-  Figures held_out{}, held_out_before{};
-};
-
-int run(const Settings& s) {
+int runFit(const FitSettings& s) {
   const auto started = std::chrono::steady_clock::now();
-  calibration::ReplaySetup setup = replaySetup(s);
-  const auto physical_list = loadPhysical(s.physical);
-  if (physical_list.empty()) throw std::runtime_error("no physical trial to fit on");
-  const auto physical = calibration::physicalTrials(physical_list);
-  std::printf("raven_calibrate: %zu input rows (%s), %zu physical trial(s)%s\n",
-              setup.inputs.size(), s.ci.c_str(), physical_list.size(),
-              s.stand_in ? ", physical stand-in" : "");
+  const auto physical = loadPhysical(s.physical);
+  const auto traces = tracesOf(physical);
+  std::printf("raven_calibrate fit: %zu physical trial(s)\n", physical.size());
+  const twin::ArmsMechanics start = calibration::startingMechanics();
+  std::vector<analysis::ActuatorTrace> replays;
+  for (const auto& t : traces) replays.push_back(calibration::replaySetpoints(t, start));
+  printActuators(
+      "setpoint replays with the starting values (raven2_sim's friction, catalogue inertias)",
+      analysis::actuatorFidelity(replays, traces));
 
-  // The recording controller's timing first: the twin's rows are then as far apart as the
-  // robot's, so its velocities can be compared.
-  const auto shipped = calibration::replayOnTwin(setup, std::nullopt);
-  setup.controller.iteration_overhead =
-      calibration::measureIterationOverhead(shipped, physical_list);
-  std::printf("iteration overhead of the recording controller (median, measured): %.2f ms\n",
-              1e3 * setup.controller.iteration_overhead);
-  const auto before = calibration::replayOnTwin(setup, std::nullopt);
-  const Figures before_all = calibration::twinVsPhysical(before, physical);
-  const Figures robot =
-      physical_list.size() >= 2 ? calibration::robotRepeatability(physical) : before_all;
-  auto scaleFor = [&](const analysis::PlatformTrials& train) {
-    return train.trials.size() >= 2 ? calibration::robotRepeatability(train)
-                                    : calibration::twinVsPhysical(before, train);
-  };
-
+  // Folds: each trial held out (fitted on the others), then every trial.
   std::vector<Fold> folds;
-  if (s.leave_one_out && physical_list.size() >= 2) {
-    for (std::size_t k = 0; k < physical_list.size(); ++k) {
-      Fold f;
-      f.name = "without " + physical_list[k].path.filename().string();
-      std::vector<analysis::Trial> train;
-      for (std::size_t i = 0; i < physical_list.size(); ++i) {
-        if (i != k) train.push_back(physical_list[i]);
-      }
-      f.train = calibration::physicalTrials(train);
-      f.test = calibration::physicalTrials({physical_list[k]});
-      folds.push_back(std::move(f));
-    }
+  if (s.leave_one_out && traces.size() >= 3) {
+    for (std::size_t k = 0; k < traces.size(); ++k) folds.push_back({k, {}, {}});
   }
-  folds.push_back({"all trials", physical, {}, {}, {}, {}});
-
-  calibration::FitOptions fit_options;
-  fit_options.max_evaluations = s.max_evaluations;
+  folds.push_back({traces.size(), {}, {}});
+  calibration::ActuationFitOptions options;
+  options.evaluations_per_joint = s.evaluations;
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t i = next++; i < folds.size(); i = next++) {
       Fold& f = folds[i];
-      f.fit = calibration::fitTracking(
-          setup, f.train, scaleFor(f.train), fit_options, [&](int n, double score) {
-            if (n % 25 == 0) {
-              std::fprintf(stderr, "  %s: %d replays, score %.4f\n", f.name.c_str(), n, score);
-            }
-          });
-      if (!f.test.trials.empty()) {
-        f.held_out =
-            calibration::twinVsPhysical(calibration::replayOnTwin(setup, f.fit.tracking), f.test);
-        f.held_out_before = calibration::twinVsPhysical(before, f.test);
+      std::vector<analysis::ActuatorTrace> train;
+      for (std::size_t k = 0; k < traces.size(); ++k) {
+        if (k != f.held_out) train.push_back(traces[k]);
       }
-      std::fprintf(stderr, "  %s: score %.4f after %d replays (%s)\n", f.name.c_str(), f.fit.score,
-                   f.fit.evaluations, f.fit.stop_reason.c_str());
+      f.fit = calibration::fitActuation(train, start, options);
+      if (f.held_out < traces.size()) {
+        const auto& test = traces[f.held_out];
+        f.held_out_score = analysis::actuatorFidelity(
+            {calibration::replaySetpoints(test, f.fit.mechanics)}, {test}, train);
+      }
+      std::fprintf(stderr, "  fit %s: %d replays, score %.3f\n",
+                   f.held_out < traces.size() ? ("without " + traces[f.held_out].name).c_str()
+                                              : "on every trial",
+                   f.fit.evaluations, f.fit.score.total());
     }
   };
   std::vector<std::thread> pool;
   for (int t = 0; t < std::max(1, s.threads); ++t) pool.emplace_back(worker);
   for (auto& t : pool) t.join();
 
-  const Fold& final_fit = folds.back();
-  const auto after = calibration::replayOnTwin(setup, final_fit.fit.tracking);
-  const Figures after_all = calibration::twinVsPhysical(after, physical);
-
-  std::printf("\nsummary figures, mean |difference| (rows aligned by index, no offsets removed)\n");
-  printFigureHeader();
-  if (physical_list.size() >= 2) printFigures("T_PP physical vs physical", robot);
-  printFigures("T_PS twin as shipped vs physical", calibration::twinVsPhysical(shipped, physical));
-  printFigures("T_PS + recording's timing", before_all);
-  printFigures("T_PS + fitted response (after)", after_all);
-  if (folds.size() > 1) {
-    std::printf("\nleave-one-out: fitted without one trial, scored on it alone\n");
-    printFigureHeader();
-    Figures mean{};
-    for (std::size_t i = 0; i + 1 < folds.size(); ++i) {
-      const auto& f = folds[i];
-      printFigures(("before, " + f.test.trials[0].path.filename().string()).c_str(),
-                   f.held_out_before);
-      printFigures(("after,  " + f.test.trials[0].path.filename().string()).c_str(), f.held_out);
-      const auto v = f.held_out.values();
-      const double n = static_cast<double>(folds.size() - 1);
-      mean.revolute_position += v[0] / n;
-      mean.insertion_position += v[1] / n;
-      mean.revolute_velocity += v[2] / n;
-      mean.insertion_velocity += v[3] / n;
-    }
-    printFigures("held-out mean", mean);
-    std::printf("  leave-one-out score (held-out figures over T_PP, mean of four): %.3f\n",
-                calibration::fidelityScore(mean, robot));
+  for (const Fold& f : folds) {
+    if (f.held_out >= traces.size()) continue;
+    printActuators(
+        ("held out " + traces[f.held_out].name + " (fitted on the others, over their spread)")
+            .c_str(),
+        f.held_out_score);
   }
-  printJoints(calibration::jointsTwinVsPhysical(before, physical),
-              calibration::jointsTwinVsPhysical(after, physical),
-              physical_list.size() >= 2 ? calibration::jointsRepeatability(physical)
-                                        : calibration::jointsTwinVsPhysical(before, physical));
 
-  std::printf("\nfitted response (all trials): latency %.2f cycles\n",
-              final_fit.fit.tracking.latency_cycles);
-  const auto& parameters = calibration::trackingParameters();
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    std::printf("  %-28s %10.4f  (bounds %g..%g)\n", parameters[i].name.c_str(),
-                final_fit.fit.values[i], parameters[i].lower, parameters[i].upper);
-  }
+  twin::CalibrationProfile profile;
+  profile.mechanics = folds.back().fit.mechanics;
+  calibration::MechanicsInformation information = calibration::MechanicsInformation::none();
+  for (const auto& t : traces) information += calibration::informationOf(profile.mechanics, t);
+  profile.uncertainty = information.standardDeviations();
+  replays.clear();
+  for (const auto& t : traces)
+    replays.push_back(calibration::replaySetpoints(t, profile.mechanics));
+  const auto fitted = analysis::actuatorFidelity(replays, traces);
+  printActuators("setpoint replays, fitted on every trial", fitted);
+  printMechanics(profile);
 
   calibration::FitProvenance provenance;
-  provenance.inputs = s.ci.string();
-  for (const auto& t : physical_list) provenance.physical.push_back(t.path.string());
+  for (const auto& r : physical) provenance.physical.push_back(r.path.string());
   provenance.notes.push_back(
-      fmt::format("score {:.4f} (mean of the four figures over T_PP) after {} replays, {}",
-                  final_fit.fit.score, final_fit.fit.evaluations, final_fit.fit.stop_reason));
-  provenance.notes.push_back(fmt::format(
-      "T_PS after: revolute j_P {:.4f} rad, insertion j_P {:.3f} mm, revolute j_V {:.4f} rad/s, "
-      "insertion j_V {:.3f} mm/s",
-      after_all.revolute_position, after_all.insertion_position, after_all.revolute_velocity,
-      after_all.insertion_velocity));
-  provenance.notes.push_back(std::string("replayed with ") +
-                             (s.paper_deadzone ? "--paper-deadzone, " : "") + "--mapping " +
-                             s.mapping + (s.stand_in ? ", --stand-in" : ""));
-  calibration::writeCalibration(
-      s.out, {final_fit.fit.tracking, setup.controller.iteration_overhead}, provenance);
+      fmt::format("setpoint replays, fitted on every trial: median ratio mpos {:.2f}, mvel {:.2f}, "
+                  "Tau {:.2f}, dac_vals {:.2f}",
+                  fitted.median_ratio[0], fitted.median_ratio[1], fitted.median_ratio[2],
+                  fitted.median_ratio[3]));
+  if (!s.replay.ci.empty()) {
+    // The recording controller's timing, then the whole chain from each trial's start.
+    calibration::ReplaySetup setup = s.replay.setup(0.0);
+    setup.twin.motors = profile.mechanics;
+    const auto fast = calibration::replayOnTwin(setup);
+    analysis::PlatformProfile physical_profile;
+    physical_profile.name = "physical";
+    std::vector<analysis::Trial> trials;
+    for (const auto& r : physical) trials.push_back(analysis::toTrial(r, physical_profile));
+    profile.iteration_overhead = calibration::measureIterationOverhead(fast, trials);
+    setup.controller.iteration_overhead = profile.iteration_overhead;
+    std::printf("\niteration overhead of the recording controller (median, measured): %.2f ms\n",
+                1e3 * profile.iteration_overhead);
+    const auto score = calibration::scoreReplays(setup, physical);
+    printActuators("end-to-end replays of the inputs, each from its trial's start",
+                   score.actuators);
+    printFigures(score);
+    provenance.inputs = s.replay.ci.string();
+    provenance.notes.push_back(fmt::format(
+        "end-to-end replays: median ratio mpos {:.2f}, mvel {:.2f}, Tau {:.2f}, dac_vals {:.2f}; "
+        "{} of 8 joint figures within T_PP",
+        score.actuators.median_ratio[0], score.actuators.median_ratio[1],
+        score.actuators.median_ratio[2], score.actuators.median_ratio[3], score.figuresWithin()));
+  }
+  calibration::writeCalibration(s.out, profile, provenance);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::printf("\nwrote %s (%.0f s)\n", s.out.c_str(), seconds);
+  return 0;
+}
+
+struct ScoreSettings {
+  std::vector<std::filesystem::path> physical;
+  ReplayFlags replay;
+  std::filesystem::path calibration;
+  bool ideal = false;
+  std::filesystem::path write;  ///< directory for the twin's replays, or none
+};
+
+int runScore(const ScoreSettings& s) {
+  const auto physical = loadPhysical(s.physical);
+  const twin::CalibrationProfile profile = s.calibration.empty()
+                                               ? twin::CalibrationProfile::shipped()
+                                               : twin::CalibrationProfile::load(s.calibration);
+  calibration::ReplaySetup setup = s.replay.setup(profile.iteration_overhead);
+  if (!s.ideal) setup.twin.motors = profile.mechanics;
+  std::printf("raven_calibrate score: %zu physical trial(s), %s, %s\n", physical.size(),
+              s.ideal ? "ideal servos" : "motor-level actuation",
+              s.calibration.empty() ? twin::CalibrationProfile::shippedFile().c_str()
+                                    : s.calibration.c_str());
+  const auto score = calibration::scoreReplays(setup, physical);
+  printActuators("end-to-end replays of the inputs, each from its trial's start", score.actuators);
+  printFigures(score);
+  if (!s.write.empty()) {
+    std::filesystem::create_directories(s.write);
+    for (std::size_t k = 0; k < score.replays.size(); ++k) {
+      // Named for raven_analyze's twin profile, one per physical trial, in its order.
+      recording::RsWriter writer(s.write / fmt::format("twin_replay_{}.csv", k + 1));
+      for (const auto& row : score.replays[k].rows) writer.writeRow(row);
+    }
+    std::printf("\nthe twin's replays: %s (raven_analyze %s PHYSICAL... compares them)\n",
+                s.write.c_str(), s.write.c_str());
+  }
+  return 0;
+}
+
+struct ProposeSettings {
+  std::filesystem::path calibration;
+  std::filesystem::path out = "excitation_ci.csv";
+  int candidates = 8;
+  double seconds = 20.0;
+  unsigned seed = 1;
+};
+
+int runPropose(const ProposeSettings& s) {
+  const twin::CalibrationProfile profile = s.calibration.empty()
+                                               ? twin::CalibrationProfile::shipped()
+                                               : twin::CalibrationProfile::load(s.calibration);
+  const auto prior = calibration::MechanicsInformation::fromUncertainty(profile.uncertainty);
+  calibration::ReplaySetup setup = ReplayFlags{}.setup(profile.iteration_overhead);
+  std::mt19937_64 random(s.seed);
+  std::vector<calibration::Candidate> candidates;
+  for (int i = 0; i < s.candidates; ++i) {
+    candidates.push_back(calibration::scoreCandidate(
+        setup, profile, prior, calibration::randomExcitation(random, {s.seconds, 0.022})));
+    const auto& c = candidates.back();
+    std::printf("  candidate %d: expected reduction %5.1f %% %s\n", i + 1,
+                100.0 * calibration::meanReduction(profile.uncertainty,
+                                                   calibration::expectedUncertainty(prior, c)),
+                c.within_limits ? "" : "(comes within 1 % of a joint limit: left out)");
+  }
+  const calibration::Candidate* best = nullptr;
+  for (const auto& c : candidates) {
+    if (c.within_limits && (!best || c.log_det > best->log_det)) best = &c;
+  }
+  if (!best)
+    throw std::runtime_error("every candidate came near a joint limit; try shorter --seconds");
+  recording::CiWriter writer(s.out);
+  for (const auto& pad : best->inputs) writer.write(pad);
+  const auto after = calibration::expectedUncertainty(prior, *best);
+  std::printf(
+      "\nwrote %s: %zu rows, %.0f s; replay it on the robot with raven_controller --replay-ci, "
+      "then fit with the new recording added\n",
+      s.out.c_str(), best->inputs.size(), s.seconds);
+  std::printf(
+      "expected reduction of the fitted values' standard deviations: %.1f %% (mean over %s "
+      "values)\n",
+      100.0 * calibration::meanReduction(profile.uncertainty, after), "the fitted");
   return 0;
 }
 
@@ -240,35 +346,61 @@ int run(const Settings& s) {
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "Fits the twin's tracking response to physical replays of one recording's gamepad inputs "
-      "and writes a calibration profile (raven_controller/raven_twin_node --calibration)."};
-  Settings s;
-  app.add_option("--ci", s.ci, "the recorded controller inputs (ci file) the trials replayed")
-      ->required()
-      ->check(CLI::ExistingFile);
-  app.add_option("physical", s.physical, "physical rs recordings, files or directories")
-      ->required();
-  app.add_option("--out", s.out, "calibration profile to write (YAML)");
-  app.add_flag("--stand-in", s.stand_in, "fit the response in front of the physical stand-in");
-  app.add_flag("--paper-deadzone", s.paper_deadzone,
-               "replay with the released controller's deadzone test (the paper's recordings)");
-  app.add_option("--mapping", s.mapping, "initial mapping of the replay: m2, m1-left, m1-right")
-      ->check(CLI::IsMember({"m2", "m1-left", "m1-right"}));
-  app.add_option("--rate", s.rate, "command steps per second of the replay")
-      ->check(CLI::Range(1.0, raven::kControlRate));
-  app.add_option("--man-steps", s.man_steps, "least steps per manual iteration")
-      ->check(CLI::Range(1, 100));
-  app.add_option("--max-evaluations", s.max_evaluations, "replays per fit at most")
-      ->check(CLI::Range(10, 100000));
-  app.add_option("--threads", s.threads, "fits run in parallel (one per core)")
-      ->check(CLI::Range(1, 64));
-  app.add_flag("!--no-leave-one-out", s.leave_one_out, "fit on every trial only");
+      "Fits the twin's motor-level actuation to physical recordings, scores it, and proposes "
+      "the next excitation motion to record."};
+  app.require_subcommand(1);
   bool verbose = false;
   app.add_flag("-v,--verbose", verbose, "log every replay's mode changes");
+
+  FitSettings fit;
+  auto* fit_cmd =
+      app.add_subcommand("fit", "fit the mechanics behind each motor (leave-one-out reported)");
+  fit_cmd
+      ->add_option("physical", fit.physical,
+                   "physical rs recordings of one motion, files or directories")
+      ->required();
+  fit.replay.add(*fit_cmd, false);
+  fit_cmd->add_option("--out", fit.out, "calibration profile to write (YAML)");
+  fit_cmd->add_option("--evaluations", fit.evaluations, "model replays per motor and sweep")
+      ->check(CLI::Range(5, 10000));
+  fit_cmd->add_option("--threads", fit.threads, "fits run in parallel")->check(CLI::Range(1, 64));
+  fit_cmd->add_flag("!--no-leave-one-out", fit.leave_one_out, "fit on every trial only");
+
+  ScoreSettings score;
+  auto* score_cmd = app.add_subcommand(
+      "score", "replay the inputs on the twin from each trial's start and compare");
+  score_cmd->add_option("physical", score.physical, "physical rs recordings, files or directories")
+      ->required();
+  score.replay.add(*score_cmd, true);
+  score_cmd
+      ->add_option("--calibration", score.calibration,
+                   "profile to score (default: the shipped one)")
+      ->check(CLI::ExistingFile);
+  score_cmd->add_flag("--ideal-servos", score.ideal,
+                      "the twin's ideal servos instead of the motor model");
+  score_cmd->add_option("--write", score.write,
+                        "directory to write the twin's replays to (rs files)");
+
+  ProposeSettings propose;
+  auto* propose_cmd = app.add_subcommand(
+      "propose", "write the excitation motion that most reduces the fit's uncertainty");
+  propose_cmd
+      ->add_option("--calibration", propose.calibration,
+                   "profile with its uncertainty (default: the shipped one)")
+      ->check(CLI::ExistingFile);
+  propose_cmd->add_option("--out", propose.out, "ci file to write");
+  propose_cmd->add_option("--candidates", propose.candidates, "random candidates scored")
+      ->check(CLI::Range(1, 1000));
+  propose_cmd->add_option("--seconds", propose.seconds, "length of the motion")
+      ->check(CLI::Range(2.0, 600.0));
+  propose_cmd->add_option("--seed", propose.seed, "seed of the candidates");
+
   CLI11_PARSE(app, argc, argv);
   spdlog::set_level(verbose ? spdlog::level::info : spdlog::level::warn);
   try {
-    return run(s);
+    if (*fit_cmd) return runFit(fit);
+    if (*score_cmd) return runScore(score);
+    return runPropose(propose);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 1;

@@ -13,36 +13,45 @@ std::vector<double> listOf(const raven::ArmJoints& joints) {
   return {joints.data(), joints.data() + joints.size()};
 }
 
+void emitArms(YAML::Emitter& out, const char* key, const twin::ArmsMechanics& arms) {
+  out << YAML::Key << key << YAML::Value << YAML::BeginMap;
+  for (raven::Arm arm : raven::kArms) {
+    const twin::MotorMechanics& m = arms[static_cast<std::size_t>(raven::index(arm))];
+    out << YAML::Key << std::string(raven::armName(arm)) << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "inertia" << YAML::Value << YAML::Flow << listOf(m.inertia);
+    out << YAML::Key << "coulomb" << YAML::Value << YAML::Flow << listOf(m.coulomb);
+    out << YAML::Key << "viscous" << YAML::Value << YAML::Flow << listOf(m.viscous);
+    out << YAML::Key << "gravity_error" << YAML::Value << YAML::Flow << listOf(m.gravity_error);
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
 }  // namespace
 
 void writeCalibration(const std::filesystem::path& file, const twin::CalibrationProfile& profile,
                       const FitProvenance& provenance) {
-  const twin::TrackingParams& tracking = profile.tracking;
   YAML::Emitter out;
   out.SetDoublePrecision(6);
   out << YAML::BeginMap;
-  out << YAML::Key << "tracking" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "latency_cycles" << YAML::Value << tracking.latency_cycles;
-  out << YAML::Key << "bandwidth_hz" << YAML::Value << YAML::Flow << listOf(tracking.bandwidth_hz);
-  out << YAML::Key << "damping_ratio" << YAML::Value << YAML::Flow
-      << listOf(tracking.damping_ratio);
-  out << YAML::Key << "friction_deadband" << YAML::Value << YAML::Flow
-      << listOf(tracking.friction_deadband);
-  out << YAML::EndMap;
+  emitArms(out, "actuation", profile.mechanics);
+  emitArms(out, "uncertainty", profile.uncertainty);
   out << YAML::Key << "replay" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "iteration_overhead" << YAML::Value << profile.iteration_overhead;
   out << YAML::EndMap;
   out << YAML::Key << "fit" << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "inputs" << YAML::Value << provenance.inputs;
+  if (!provenance.inputs.empty()) out << YAML::Key << "inputs" << YAML::Value << provenance.inputs;
   out << YAML::Key << "physical trials" << YAML::Value << provenance.physical;
   out << YAML::Key << "notes" << YAML::Value << provenance.notes;
   out << YAML::EndMap << YAML::EndMap;
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
   std::ofstream stream(file);
-  stream << "# A tracking response for the Raven-II twin, fitted by raven_calibrate to physical\n"
-            "# replays. Use: raven_controller --calibration FILE, raven_twin_node --calibration "
-            "FILE.\n"
-         << out.c_str() << "\n";
+  stream
+      << "# The Raven-II twin's actuation, fitted by raven_calibrate to physical recordings:\n"
+         "# per arm and motor (shoulder, elbow, insertion, roll, wrist, jaw1, jaw2) the inertia\n"
+         "# (N m s^2 per motor rad at the gearbox output), Coulomb (N m) and viscous (N m s/rad)\n"
+         "# friction, and the gravity compensation's error (fraction). Use: --calibration FILE.\n"
+      << out.c_str() << "\n";
   if (!stream) throw std::runtime_error(file.string() + ": cannot write");
 }
 

@@ -6,14 +6,14 @@ namespace calibration {
 
 namespace {
 
-Figures figuresOf(const analysis::Comparison& c) {
+Figures figuresOf(const analysis::Comparison& c, bool remove_first_row) {
   using analysis::Quantity;
   const auto revolute = analysis::revoluteJoints();
   const auto insertion = analysis::prismaticJoints();
-  return {analysis::groupFigure(c, revolute, Quantity::Position, false),
-          analysis::groupFigure(c, insertion, Quantity::Position, false),
-          analysis::groupFigure(c, revolute, Quantity::Velocity, false),
-          analysis::groupFigure(c, insertion, Quantity::Velocity, false)};
+  return {analysis::groupFigure(c, revolute, Quantity::Position, remove_first_row),
+          analysis::groupFigure(c, insertion, Quantity::Position, remove_first_row),
+          analysis::groupFigure(c, revolute, Quantity::Velocity, remove_first_row),
+          analysis::groupFigure(c, insertion, Quantity::Velocity, remove_first_row)};
 }
 
 JointFigures jointsOf(const analysis::Comparison& c) {
@@ -54,13 +54,14 @@ analysis::PlatformTrials physicalTrials(std::vector<analysis::Trial> trials) {
   return p;
 }
 
-Figures twinVsPhysical(const analysis::Trial& twin, const analysis::PlatformTrials& physical) {
+Figures twinVsPhysical(const analysis::Trial& twin, const analysis::PlatformTrials& physical,
+                       bool remove_first_row) {
   const auto twin_trials = twinTrials(twin);
-  return figuresOf({&twin_trials, &physical});
+  return figuresOf({&twin_trials, &physical}, remove_first_row);
 }
 
-Figures robotRepeatability(const analysis::PlatformTrials& physical) {
-  return figuresOf({&physical, &physical});
+Figures robotRepeatability(const analysis::PlatformTrials& physical, bool remove_first_row) {
+  return figuresOf({&physical, &physical}, remove_first_row);
 }
 
 JointFigures jointsTwinVsPhysical(const analysis::Trial& twin,

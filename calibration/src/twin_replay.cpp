@@ -6,13 +6,35 @@
 
 namespace calibration {
 
-analysis::Trial replayOnTwin(const ReplaySetup& setup,
-                             const std::optional<twin::TrackingParams>& tracking) {
+namespace {
+
+/// Moves the twin to the recorded setpoints, then places its actuators as they were.
+void startAt(twin::TwinPlatform& twin, const RecordedStart& start) {
+  for (raven::Arm arm : raven::kArms) {
+    twin.send(bridge::MoveJp{arm, start.setpoint[static_cast<std::size_t>(raven::index(arm))]});
+  }
+  const double deadline = twin.now() + 30.0;
+  while (twin.operatingStatus().is_busy && twin.now() < deadline) twin.advance(0.01);
+  twin.advance(0.5);  // settled
+  for (raven::Arm arm : raven::kArms) {
+    twin.place(arm, start.arms[static_cast<std::size_t>(raven::index(arm))]);
+  }
+}
+
+}  // namespace
+
+analysis::Trial replayOnTwin(const ReplaySetup& setup) {
+  analysis::PlatformProfile twin_profile;  // the twin records in the robot's convention
+  twin_profile.name = "twin";
+  return analysis::toTrial(recordReplay(setup), twin_profile);
+}
+
+recording::RsRecording recordReplay(const ReplaySetup& setup) {
   twin::TwinOptions twin_options = setup.twin;
   twin_options.clock = bridge::ClockKind::Simulated;
-  twin_options.tracking = tracking;
   twin::TwinPlatform twin(twin_options);
   bridge::enableAndHome(twin, 30.0);
+  if (setup.start) startAt(twin, *setup.start);
   controller::DualPlatformController control({{"twin", &twin, controller::CommandStyle::ServoJr}},
                                              setup.controller);
 
@@ -33,9 +55,7 @@ analysis::Trial replayOnTwin(const ReplaySetup& setup,
   session.select(controller::Mode::ReplayInputs);
   while (session.turn()) {
   }
-  analysis::PlatformProfile twin_profile;  // the twin records in the robot's convention
-  twin_profile.name = "twin";
-  return analysis::toTrial(rs, twin_profile);
+  return rs;
 }
 
 }  // namespace calibration

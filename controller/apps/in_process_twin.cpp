@@ -9,8 +9,8 @@
 
 namespace controller_app {
 
-struct TwinTracking {
-  twin::TrackingParams params;
+struct TwinActuation {
+  twin::ArmsMechanics mechanics;
 };
 
 namespace {
@@ -40,8 +40,10 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
   twin::TwinOptions options;
   if (!settings.launch_file.empty()) options.launch_file = settings.launch_file;
   options.clock = settings.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
-  if (settings.stand_in) options.stand_in = twin::CableActuationParams::physicalStandIn();
-  if (settings.calibration) options.tracking = settings.calibration->twin_tracking->params;
+  if (!settings.ideal_servos) {
+    options.motors = settings.calibration ? settings.calibration->twin_actuation->mechanics
+                                          : twin::CalibrationProfile::shipped().mechanics;
+  }
   if (!settings.video.file.empty()) {
     auto video = std::make_shared<TwinVideo>();
     video->options = viewer::VideoOptions::of(settings.video);
@@ -54,7 +56,7 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
 ControllerCalibration loadControllerCalibration(const std::string& file) {
   auto profile = twin::CalibrationProfile::load(file);
   return {profile.iteration_overhead,
-          std::make_shared<const TwinTracking>(TwinTracking{profile.tracking})};
+          std::make_shared<const TwinActuation>(TwinActuation{profile.mechanics})};
 }
 
 }  // namespace controller_app

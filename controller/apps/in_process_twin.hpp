@@ -11,22 +11,23 @@
 
 namespace controller_app {
 
-/// The twin's part of a calibration profile (its tracking response), known to in_process_twin.cpp.
-struct TwinTracking;
+/// The twin's part of a calibration profile (its motors' mechanics), known to in_process_twin.cpp.
+struct TwinActuation;
 
 /// A raven_calibrate profile, read once: what the controller uses, and what the twin does.
 struct ControllerCalibration {
   double iteration_overhead = 0.0;  ///< s per manual iteration, as the recording controller's
-  std::shared_ptr<const TwinTracking> twin_tracking;
+  std::shared_ptr<const TwinActuation> twin_actuation;
 };
 
 /// What the command line asks of the in-process twin.
 struct InProcessTwinSettings {
-  std::string launch_file;                             ///< empty: our Raven-II alone
-  bool lock_step = false;                              ///< simulated clock
-  bool stand_in = false;                               ///< the physical stand-in's actuation
-  const ControllerCalibration* calibration = nullptr;  ///< from --calibration, or none
-  common::VideoFlags video;                            ///< of the twin; no file: none
+  std::string launch_file;    ///< empty: our Raven-II alone
+  bool lock_step = false;     ///< simulated clock
+  bool ideal_servos = false;  ///< the twin's ideal servos instead of the motor-level actuation
+  /// From --calibration; null: the shipped calibration's actuation.
+  const ControllerCalibration* calibration = nullptr;
+  common::VideoFlags video;  ///< of the twin; no file: none
 };
 
 /// The in-process twin; throws std::runtime_error in a build without the simulator.

@@ -33,7 +33,7 @@ struct Settings {
   bool twin_over_ros = false;
   std::string twin_ns = "/twin";
   std::string physical_ns;
-  bool stand_in = false;
+  bool ideal_servos = false;
   std::string calibration_file;
   std::string twin_launch;
   common::VideoFlags video;  ///< of the in-process twin
@@ -84,7 +84,7 @@ Platforms makePlatforms(const Settings& s,
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
     p.twin = controller_app::makeInProcessTwin(
-        {s.twin_launch, s.lock_step, s.stand_in, calibration, s.video});
+        {s.twin_launch, s.lock_step, s.ideal_servos, calibration, s.video});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -241,10 +241,13 @@ int main(int argc, char** argv) {
   app.add_option("--twin-ns", s.twin_ns, "the twin node's ROS namespace (--twin-over-ros)");
   app.add_option("--physical-ns", s.physical_ns, "the physical robot's ROS namespace");
   app.add_flag("--no-arm-swap", s.no_arm_swap, "the robot publishes each arm on its own topic");
-  app.add_flag("--stand-in", s.stand_in, "in-process twin with the physical stand-in actuation");
+  app.add_flag("--ideal-servos", s.ideal_servos,
+               "in-process twin with ideal joint servos instead of the Raven-II's motor-level "
+               "actuation");
   app.add_option("--calibration", s.calibration_file,
-                 "a profile fitted by raven_calibrate (YAML): the in-process twin's tracking "
-                 "response, and replays timed as the recording controller's iterations were")
+                 "a profile fitted by raven_calibrate (YAML): the in-process twin's actuation "
+                 "(default: twin/config/raven2_calibration.yaml), and replays timed as the "
+                 "recording controller's iterations were")
       ->check(CLI::ExistingFile);
   app.add_option("--twin-launch", s.twin_launch, "launch file of the twin's scene")
       ->check(CLI::ExistingFile);

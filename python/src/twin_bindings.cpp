@@ -117,28 +117,39 @@ void bindTwin(py::module_& m) {
       .def_readonly("pos", &bridge::RavenStateSnapshot::pos)
       .def_readonly("jpos", &bridge::RavenStateSnapshot::jpos)
       .def_readonly("jpos_d", &bridge::RavenStateSnapshot::jpos_d)
+      .def_readonly("mpos", &bridge::RavenStateSnapshot::mpos)
+      .def_readonly("mvel", &bridge::RavenStateSnapshot::mvel)
+      .def_readonly("mpos_d", &bridge::RavenStateSnapshot::mpos_d)
+      .def_readonly("tau", &bridge::RavenStateSnapshot::tau)
+      .def_readonly("dac_val", &bridge::RavenStateSnapshot::dac_val)
       .def_readonly("grasp_d", &bridge::RavenStateSnapshot::grasp_d);
 
   using T = twin::TwinPlatform;
   py::class_<T>(m, "Twin", "The in-process Raven-II twin on the simulated clock (RavenPlatform).")
       .def(py::init([](std::optional<std::filesystem::path> launch_file, const std::string& profile,
-                       bool stand_in, std::optional<std::filesystem::path> calibration,
-                       bool strict) {
+                       const std::string& actuation,
+                       std::optional<std::filesystem::path> calibration, bool strict) {
              twin::TwinOptions options;
              if (launch_file) options.launch_file = *launch_file;
              options.profile = profile;
              options.load.strict = strict;
-             if (stand_in) options.stand_in = twin::CableActuationParams::physicalStandIn();
-             if (calibration)
-               options.tracking = twin::CalibrationProfile::load(*calibration).tracking;
+             if (actuation == "motors") {
+               options.motors = (calibration ? twin::CalibrationProfile::load(*calibration)
+                                             : twin::CalibrationProfile::shipped())
+                                    .mechanics;
+             } else if (actuation != "ideal") {
+               throw std::invalid_argument("actuation must be 'motors' or 'ideal', not '" +
+                                           actuation + "'");
+             }
              py::gil_scoped_release release;
              return std::make_unique<T>(options);
            }),
            py::arg("launch_file") = py::none(), py::arg("profile") = "physical",
-           py::arg("stand_in") = false, py::arg("calibration") = py::none(),
+           py::arg("actuation") = "motors", py::arg("calibration") = py::none(),
            py::arg("strict") = false,
-           "launch_file: a scene with the robot (default: our Raven-II alone); stand_in: the "
-           "physical stand-in's actuation; calibration: a raven_calibrate profile (YAML)")
+           "launch_file: a scene with the robot (default: our Raven-II alone); actuation: "
+           "'motors' (the Raven-II's motor-level actuation, fitted) or 'ideal' (ideal joint "
+           "servos); calibration: a raven_calibrate profile (YAML; default: the shipped one)")
       .def("send", [](T& t, bridge::StateCommand c) { return t.send(c); })
       .def("send", [](T& t, const bridge::ServoJp& c) { return t.send(c); })
       .def("send", [](T& t, const bridge::ServoJr& c) { return t.send(c); })

@@ -83,7 +83,10 @@ RsWriter::RsWriter(const std::filesystem::path& path)
 
 void RsWriter::write(const bridge::RavenStateSnapshot& state) {
   if (rows_ == 0) t0_ = state.time;
-  const std::vector<double> values = rsRow(state, t0_);
+  writeRow(rsRow(state, t0_));
+}
+
+void RsWriter::writeRow(const std::vector<double>& values) {
   std::string line = std::to_string(rows_);
   for (std::size_t i = 0; i < values.size(); ++i) {
     line += ',' + formatRsValue(values[i], /*round_to_micro=*/i != 0);

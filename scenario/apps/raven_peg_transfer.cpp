@@ -46,7 +46,7 @@ struct Settings {
   std::string out_dir = "peg_transfer_results";
   std::string record = "auto";
   std::string jsonl;
-  bool stand_in = false;
+  bool motor_actuation = false;
   double time_limit = 240.0;
   double squeeze_mm = scenario::ArmRoutine::kDefaultSqueeze * 1e3;
   double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
@@ -108,7 +108,7 @@ int runPegTransfers(const Settings& s) {
   options.randomize = s.randomize;
   options.assist =
       s.assist == "contact" ? scenario::AssistMode::Contact : scenario::AssistMode::Off;
-  options.stand_in = s.stand_in;
+  options.motor_actuation = s.motor_actuation;
   options.launch_file = s.launch;
   options.time_limit = s.time_limit;
   options.squeeze = s.squeeze_mm * 1e-3;
@@ -142,7 +142,7 @@ int runPegTransfers(const Settings& s) {
                                            shard.count, s.seed + shard.index - 1)
                              : "",
              s.randomize ? "randomised" : "nominal", s.assist,
-             s.stand_in ? ", physical stand-in actuation" : "");
+             s.motor_actuation ? ", motor-level actuation" : "");
   std::fflush(stdout);
 
   scenario::ProgressBar bar(stderr, single ? "transfers" : "runs");
@@ -211,7 +211,7 @@ int runRectangleTask(const Settings& s) {
   const fs::path out(s.out_dir);
   fs::create_directories(out);
   scenario::RectangleOptions options;
-  options.stand_in = s.stand_in;
+  options.motor_actuation = s.motor_actuation;
   if (s.rect_width_mm > 0) options.width = s.rect_width_mm * 1e-3;
   if (s.rect_depth_mm > 0) options.depth = s.rect_depth_mm * 1e-3;
   if (s.record != "no") {
@@ -268,7 +268,9 @@ int main(int argc, char** argv) {
   app.add_option("--record", s.record, "write rs files: auto (a single run only), yes or no")
       ->check(CLI::IsMember({"auto", "yes", "no"}));
   app.add_option("--jsonl", s.jsonl, "JSON-lines file, one line per run (default: in --out)");
-  app.add_flag("--stand-in", s.stand_in, "the physical stand-in's actuation model");
+  app.add_flag(
+      "--motor-actuation", s.motor_actuation,
+      "the Raven-II's motor-level actuation (shipped calibration) instead of ideal servos");
   app.add_option("--time-limit", s.time_limit, "simulated seconds a run may take")
       ->check(CLI::PositiveNumber);
   app.add_option("--rect-width", s.rect_width_mm, "rectangle task: the side along x (mm)")

@@ -12,6 +12,7 @@
 #include "scenario/grasp_assist.hpp"
 #include "scenario/peg_watch.hpp"
 #include "scenario/scripted_session.hpp"
+#include "twin/calibration_profile.hpp"
 
 namespace scenario {
 
@@ -30,7 +31,7 @@ twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
     // The assist's jaw sensors and actuators, after the arms whose jaws carry them.
     if (assist) ambf_like::appendModelFiles(scene, {GraspAssist::modelFile()});
   };
-  if (options.stand_in) twin.stand_in = twin::CableActuationParams::physicalStandIn();
+  if (options.motor_actuation) twin.motors = twin::CalibrationProfile::shipped().mechanics;
   return twin;
 }
 
@@ -46,7 +47,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   result.variation = options.randomize ? SceneVariation::draw(options.seed) : SceneVariation{};
   result.variation.seed = options.seed;
   result.assist = options.assist;
-  result.stand_in = options.stand_in;
+  result.motor_actuation = options.motor_actuation;
 
   ScriptedSession session(pegTransferTwin(options, result.variation));
   ambf_like::World& world = session.twin().world();

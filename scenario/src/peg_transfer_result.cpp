@@ -49,7 +49,7 @@ nlohmann::json PegTransferResult::json() const {
                    {"seed", variation.seed},
                    {"scene", variation.json()},
                    {"grasp_assist", assistName(assist)},
-                   {"stand_in", stand_in},
+                   {"actuation", motor_actuation ? "motors" : "ideal servos"},
                    {"placed", placed()},
                    {"lost", lost()},
                    {"regrasps", regrasps()},

@@ -7,6 +7,7 @@
 #include "raven/arm_kinematics.hpp"
 #include "recording/recording_io.hpp"
 #include "scenario/scripted_session.hpp"
+#include "twin/calibration_profile.hpp"
 
 namespace scenario {
 
@@ -75,7 +76,7 @@ RectangleResult runRectangle(const RectangleOptions& options) {
   const controller::ControllerOptions controller_options;  // M2, the paper's constants
   const auto inputs = rectangleInputs(options, controller_options.mapping);
   twin::TwinOptions twin_options;
-  if (options.stand_in) twin_options.stand_in = twin::CableActuationParams::physicalStandIn();
+  if (options.motor_actuation) twin_options.motors = twin::CalibrationProfile::shipped().mechanics;
   ScriptedSession session(twin_options, controller_options);
   session.makeReady(options.time_limit);
   twin::TwinPlatform& twin = session.twin();

@@ -1,6 +1,6 @@
 // raven_controller with --platform both: one instance sends the same commands to the twin
-// (in-process) and to a "physical" Raven-II over ROS (here the physical stand-in node), records
-// both, and reports their live divergence.
+// (in-process) and to a "physical" Raven-II over ROS (here a twin node, with the motor-level
+// actuation), records both, and reports their live divergence.
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 namespace {
 
 TEST(ControllerOverRos, BothPlatformsGetTheSameCommandsAndTheirDivergenceIsReported) {
-  ros_test::TwinNode robot(ros_test::freshNamespace(), {"--stand-in"});
+  ros_test::TwinNode robot(ros_test::freshNamespace(), {});
   test_support::TempDir dir;
   std::string ci =
       "Left Joystick X,Left Joystick Y,Left Trigger,Left Bumper,Right Joystick X,"

@@ -17,6 +17,7 @@
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_conversions.hpp"
 #include "ros_peers.hpp"
+#include "twin/calibration_profile.hpp"
 #include "twin/twin_platform.hpp"
 #include "twin_fixtures.hpp"
 
@@ -270,13 +271,13 @@ void expectSameTrajectory(const std::vector<std::string>& node_args,
 }
 
 TEST(TwinOverRos, SameCommandsGiveTheSameTrajectoryInProcessAndOverRos) {
-  expectSameTrajectory({}, twin::TwinOptions{});
+  expectSameTrajectory({"--ideal-servos"}, twin::TwinOptions{});
 }
 
-TEST(TwinOverRos, ThePhysicalStandInGivesTheSameTrajectoryInProcessAndOverRos) {
-  twin::TwinOptions options;
-  options.stand_in = twin::CableActuationParams::physicalStandIn();
-  expectSameTrajectory({"--stand-in"}, options);
+TEST(TwinOverRos, TheMotorLevelActuationGivesTheSameTrajectoryInProcessAndOverRos) {
+  twin::TwinOptions options;  // the node's default: the shipped calibration's motors
+  options.motors = twin::CalibrationProfile::shipped().mechanics;
+  expectSameTrajectory({}, options);
 }
 
 TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {
@@ -385,8 +386,8 @@ TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {
   }
 }
 
-TEST(TwinOverRos, ASilentControllerLeavesTheStandInHolding) {
-  Rig rig({"--stand-in"});
+TEST(TwinOverRos, ASilentControllerLeavesTheMotorsHolding) {
+  Rig rig({});  // the motor-level actuation
   auto& robot = rig.client;
   makeReady(robot);
   for (int k = 0; k < 250; ++k) {

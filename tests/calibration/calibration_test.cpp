@@ -1,14 +1,20 @@
-// raven_calibrate's parts: the recording controller's measured timing, the fit's objective and
-// parameters, the profile it writes, and the shipped calibration of the paper's 2arm set, which
-// must put the twin within the robot's own repeatability in positions and velocities.
+// raven_calibrate's parts: the recording controller's measured timing, the actuation fit and its
+// uncertainty, the profile it writes, and the shipped calibration of the paper's 2arm set, which
+// must put the twin's joints within the robot's own repeatability and its actuator signals
+// (mpos, mvel, Tau, dac_vals) within twice the robot's own spread.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
+#include "calibration/actuation_fit.hpp"
 #include "calibration/calibration_file.hpp"
+#include "calibration/mechanics_information.hpp"
+#include "calibration/replay_score.hpp"
 #include "calibration/replay_timing.hpp"
-#include "calibration/tracking_fit.hpp"
+#include "common/load_error.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -30,56 +36,10 @@ TEST(ReplayTiming, TheOverheadIsTheMedianExtraTimePerRow) {
   EXPECT_EQ(calibration::measureIterationOverhead(twin, {}), 0.0);
 }
 
-TEST(TrackingFit, ParametersMapOntoTheDriveGroups) {
-  const auto& parameters = calibration::trackingParameters();
-  ASSERT_EQ(parameters.size(), 13u);  // latency + 4 drives x (bandwidth, damping, friction)
-  std::vector<double> values;
-  for (const auto& p : parameters) values.push_back(p.initial);
-  values[0] = 3.5;    // latency
-  values[7] = 4.0;    // insertion bandwidth
-  values[9] = 0.001;  // insertion friction deadband
-  values[10] = 40.0;  // instrument bandwidth
-  const auto t = calibration::toTracking(values);
-  EXPECT_EQ(t.latency_cycles, 3.5);
-  EXPECT_EQ(t.bandwidth_hz(raven::kInsertion), 4.0);
-  EXPECT_EQ(t.friction_deadband(raven::kInsertion), 0.001);
-  for (int j : {raven::kRoll, raven::kWrist, raven::kJaw1, raven::kJaw2}) {
-    EXPECT_EQ(t.bandwidth_hz(j), 40.0) << "the instrument's joints share their drive's values";
-  }
-  EXPECT_TRUE(t.invalidReason().empty()) << t.invalidReason();
-  EXPECT_THROW(calibration::toTracking({1.0}), std::invalid_argument);
-  for (const auto& p : parameters) {
-    EXPECT_LE(p.lower, p.initial);
-    EXPECT_LE(p.initial, p.upper);
-  }
-}
-
-TEST(TrackingFit, TheScoreIsTheMeanOfTheFiguresOverTheRobotsOwn) {
-  const calibration::Figures robot{0.01, 1.0, 0.1, 0.2};
-  EXPECT_DOUBLE_EQ(calibration::fidelityScore(robot, robot), 1.0);
-  EXPECT_DOUBLE_EQ(calibration::fidelityScore({0.02, 1.0, 0.1, 0.1}, robot), (2 + 1 + 1 + 0.5) / 4);
-}
-
-TEST(CalibrationFile, WhatIsWrittenIsReadBack) {
-  test_support::TempDir dir;
-  twin::CalibrationProfile profile;
-  profile.tracking = calibration::toTracking(
-      {8.25, 19.5, 1.0, 0.001, 21.0, 0.9, 0.0, 4.5, 1.05, 0.0002, 20.0, 1.0, 0.003});
-  profile.iteration_overhead = 0.001;
-  calibration::writeCalibration(dir.path() / "c.yaml", profile,
-                                {"inputs_ci.csv", {"a_physical_1.csv"}, {"a note"}});
-  const auto read = twin::CalibrationProfile::load(dir.path() / "c.yaml");
-  EXPECT_NEAR(read.tracking.latency_cycles, 8.25, 1e-9);
-  EXPECT_TRUE(read.tracking.bandwidth_hz.isApprox(profile.tracking.bandwidth_hz, 1e-6));
-  EXPECT_TRUE(read.tracking.damping_ratio.isApprox(profile.tracking.damping_ratio, 1e-6));
-  EXPECT_TRUE(read.tracking.friction_deadband.isApprox(profile.tracking.friction_deadband, 1e-6));
-  EXPECT_EQ(read.iteration_overhead, 0.001);
-}
-
 /// The paper's 2arm set: its inputs, the released controller's deadzone, the physical trials.
 struct Paper2arm {
   calibration::ReplaySetup setup;
-  analysis::PlatformTrials physical;
+  std::vector<recording::RsRecording> physical_rs;
 };
 
 std::optional<Paper2arm> paper2arm() {
@@ -89,49 +49,149 @@ std::optional<Paper2arm> paper2arm() {
   Paper2arm p;
   p.setup.inputs = recording::readCi(dir / "2arm_ci.csv");
   p.setup.controller.mapping.deadzone_reads_y_twice = true;
-  std::vector<std::filesystem::path> files;
-  for (int k = 1; k <= 3; ++k)
-    files.push_back(dir / ("2arm_physical_" + std::to_string(k) + ".csv"));
-  const auto set =
-      analysis::loadTrials(files, analysis::readProfiles(analysis::defaultProfilesFile()));
-  p.physical = *set.find("physical");
+  for (int k = 1; k <= 3; ++k) {
+    p.physical_rs.push_back(
+        recording::readRs(dir / ("2arm_physical_" + std::to_string(k) + ".csv")));
+  }
   return p;
 }
 
-TEST(ShippedCalibration, PutsThe2armReplayWithinTheRobotsRepeatabilityInPositionsAndVelocities) {
-  auto paper = paper2arm();
-  if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
-  const auto profile = twin::CalibrationProfile::load(RAVEN_SHIPPED_CALIBRATION);
-  paper->setup.controller.iteration_overhead = profile.iteration_overhead;
-  const auto twin = calibration::replayOnTwin(paper->setup, profile.tracking);
-  ASSERT_EQ(twin.rows(), 1351u);
-  const auto after = calibration::twinVsPhysical(twin, paper->physical).values();
-  const auto robot = calibration::robotRepeatability(paper->physical).values();
-  for (std::size_t i = 0; i < 4; ++i) {
-    RecordProperty(calibration::Figures::names()[i], std::to_string(after[i]));
-    EXPECT_LE(after[i], robot[i]) << calibration::Figures::names()[i] << ": twin " << after[i]
-                                  << ", the robot's own T_PP " << robot[i];
-  }
+twin::ArmsMechanics filled(double value) {
+  twin::MotorMechanics m;
+  m.inertia.setConstant(value);
+  m.coulomb.setConstant(value);
+  m.viscous.setConstant(value);
+  m.gravity_error.setConstant(value);
+  return {m, m};
 }
 
-TEST(TrackingFit, AShortFitImprovesOnItsStartingPoint) {
+TEST(CalibrationFile, WhatIsWrittenIsReadBack) {
+  test_support::TempDir dir;
+  twin::CalibrationProfile profile;
+  profile.mechanics = calibration::startingMechanics();
+  profile.mechanics[1].coulomb(raven::kJaw2) = 0.0123;
+  profile.mechanics[0].gravity_error(raven::kElbow) = -0.25;
+  profile.uncertainty = filled(1e-4);
+  profile.iteration_overhead = 0.001;
+  calibration::writeCalibration(dir.path() / "c.yaml", profile,
+                                {"inputs_ci.csv", {"a_physical_1.csv"}, {"a note"}});
+  const auto read = twin::CalibrationProfile::load(dir.path() / "c.yaml");
+  for (std::size_t a = 0; a < 2; ++a) {
+    EXPECT_TRUE(read.mechanics[a].inertia.isApprox(profile.mechanics[a].inertia, 1e-5));
+    EXPECT_TRUE(read.mechanics[a].coulomb.isApprox(profile.mechanics[a].coulomb, 1e-5));
+    EXPECT_TRUE(read.mechanics[a].viscous.isApprox(profile.mechanics[a].viscous, 1e-5));
+    EXPECT_TRUE(read.mechanics[a].gravity_error.isApprox(profile.mechanics[a].gravity_error, 1e-5));
+    EXPECT_TRUE(read.uncertainty[a].coulomb.isApprox(profile.uncertainty[a].coulomb, 1e-5));
+  }
+  EXPECT_EQ(read.iteration_overhead, 0.001);
+}
+
+TEST(CalibrationFile, BadValuesAreRefusedNamingFileAndKey) {
+  test_support::TempDir dir;
+  twin::CalibrationProfile profile;
+  profile.mechanics = calibration::startingMechanics();
+  profile.uncertainty = filled(0.0);
+  calibration::writeCalibration(dir.path() / "good.yaml", profile, {});
+  std::ifstream in(dir.path() / "good.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto refused = [&](const std::string& from, const std::string& to, const std::string& named) {
+    std::string bad = text;
+    const auto at = bad.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    bad.replace(at, from.size(), to);
+    std::ofstream(dir.path() / "bad.yaml") << bad;
+    try {
+      twin::CalibrationProfile::load(dir.path() / "bad.yaml");
+      ADD_FAILURE() << "loaded with " << to;
+    } catch (const common::LoadError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad.yaml"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(named), std::string::npos) << e.what();
+    }
+  };
+  refused("inertia: [", "inertia: [-1, ", "inertia");
+  refused("coulomb:", "friction:", "friction");
+  refused("right:", "middle:", "middle");
+}
+
+TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
+  // A recording that moves only the left shoulder, its setpoints as the robot would log them.
+  analysis::ActuatorTrace trace;
+  const auto drive = twin::DriveTrain::raven2();
+  raven::ArmJoints home;
+  home << M_PI / 6, M_PI / 2, 0.4, 0.0, 0.0, M_PI / 4, M_PI / 4;
+  for (int r = 0; r < 300; ++r) {
+    const double t = 0.02 * r;
+    raven::ArmJoints q = home;
+    q(raven::kShoulder) += 0.05 * std::sin(2.0 * M_PI * 0.5 * t);
+    trace.time.push_back(t);
+    for (raven::Arm arm : raven::kArms) {
+      auto& a = trace.arms[static_cast<std::size_t>(raven::index(arm))];
+      const raven::ArmJoints set = arm == raven::Arm::Left ? q : home;
+      const raven::ArmJoints motor = drive.toMotor(arm, set) * 180.0 / M_PI;
+      a.joints.push_back(set);
+      a.joint_setpoint.push_back(set);
+      a.motor.push_back(motor);
+      a.motor_velocity.push_back(raven::ArmJoints::Zero());
+      a.motor_setpoint.push_back(motor * M_PI / 180.0);
+      a.torque.push_back(raven::ArmJoints::Zero());
+      a.dac.push_back(raven::ArmJoints::Zero());
+    }
+  }
+  const auto mechanics = calibration::startingMechanics();
+  const auto one = calibration::informationOf(mechanics, trace);
+  auto two = one;
+  two += one;
+  const auto sd_one = one.standardDeviations();
+  const auto sd_two = two.standardDeviations();
+  EXPECT_GT(sd_one[0].coulomb(raven::kShoulder), 0.0);
+  EXPECT_NEAR(sd_two[0].coulomb(raven::kShoulder),
+              sd_one[0].coulomb(raven::kShoulder) / std::sqrt(2.0),
+              1e-9 + 1e-6 * sd_one[0].coulomb(raven::kShoulder));
+  // The right shoulder held still against friction: its Coulomb friction changes nothing.
+  EXPECT_LT(one.blocks[1][raven::kShoulder](1, 1), 1e-6 * one.blocks[0][raven::kShoulder](1, 1));
+}
+
+TEST(ActuationFit, AShortFitImprovesOnItsStartingPoint) {
   auto paper = paper2arm();
   if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
-  paper->setup.controller.iteration_overhead = 0.001;
-  const auto scale = calibration::robotRepeatability(paper->physical);
-  std::vector<double> initial;
-  for (const auto& p : calibration::trackingParameters()) initial.push_back(p.initial);
-  const double start = calibration::fidelityScore(
-      calibration::twinVsPhysical(
-          calibration::replayOnTwin(paper->setup, calibration::toTracking(initial)),
-          paper->physical),
-      scale);
-  calibration::FitOptions options;
-  options.max_evaluations = 12;
-  const auto fit = calibration::fitTracking(paper->setup, paper->physical, scale, options);
-  EXPECT_EQ(fit.evaluations, 12);
-  EXPECT_LE(fit.score, start);
-  EXPECT_TRUE(fit.tracking.invalidReason().empty());
+  std::vector<analysis::ActuatorTrace> traces;
+  for (const auto& rs : paper->physical_rs) traces.push_back(analysis::actuatorTrace(rs));
+  const auto spread = analysis::actuatorFidelity({traces[0]}, traces);
+  const auto start = calibration::startingMechanics();
+  const double before = calibration::scoreMechanics(start, traces, spread).total();
+  calibration::ActuationFitOptions options;
+  options.evaluations_per_joint = 6;
+  options.sweeps = 1;
+  const auto fit = calibration::fitActuation(traces, start, options);
+  EXPECT_LT(fit.score.total(), before);
+  for (const auto& m : fit.mechanics) EXPECT_TRUE(m.invalidReason().empty()) << m.invalidReason();
+}
+
+TEST(ShippedCalibration, PutsThe2armReplaysWithinTheRobotsOwnSpread) {
+  auto paper = paper2arm();
+  if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
+  const auto profile = twin::CalibrationProfile::shipped();
+  paper->setup.controller.iteration_overhead = profile.iteration_overhead;
+  paper->setup.twin.motors = profile.mechanics;
+  const auto score = calibration::scoreReplays(paper->setup, paper->physical_rs);
+  ASSERT_EQ(score.replays.size(), 3u);
+  for (std::size_t k = 0; k < analysis::kActuatorSignals.size(); ++k) {
+    const char* name = analysis::columnName(analysis::kActuatorSignals[k]);
+    RecordProperty(name, std::to_string(score.actuators.median_ratio[k]));
+    EXPECT_LE(score.actuators.median_ratio[k], 2.0)
+        << name << ": the twin's difference from the robot over the robot's own spread";
+  }
+  for (std::size_t k = 0; k < 2; ++k) {
+    const auto twin = score.twin[k].values();
+    const auto robot = score.robot[k].values();
+    for (std::size_t i = 0; i < 4; ++i) {
+      const std::string name =
+          calibration::Figures::names()[i] + (k ? ", first row removed" : ", as recorded");
+      RecordProperty(name, std::to_string(twin[i]));
+      EXPECT_LE(twin[i], robot[i])
+          << name << ": twin " << twin[i] << ", the robot's own T_PP " << robot[i];
+    }
+  }
 }
 
 }  // namespace

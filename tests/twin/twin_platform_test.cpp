@@ -1,6 +1,6 @@
 // The in-process twin behind RavenPlatform: it follows servo streams, reports raven_state in the
 // robot's units and layout, holds when the controller goes silent, and repeats itself exactly.
-// The physical stand-in adds lag and quantised encoders.
+// The motor-level actuation adds the robot's lag, friction band and quantised encoders.
 
 #include "twin/twin_platform.hpp"
 
@@ -10,6 +10,9 @@
 
 #include "bridge/enable_and_home.hpp"
 #include "test_files.hpp"
+#include "twin/calibration_profile.hpp"
+#include "twin/gravity_compensation.hpp"
+#include "twin/motor_controller.hpp"
 #include "twin_fixtures.hpp"
 
 namespace {
@@ -20,9 +23,9 @@ using bridge::StateCommand;
 using test_support::makeReady;
 using twin::TwinPlatform;
 
-twin::TwinOptions standIn() {
+twin::TwinOptions withMotors() {
   twin::TwinOptions options;
-  options.stand_in = twin::CableActuationParams::physicalStandIn();
+  options.motors = twin::CalibrationProfile::shipped().mechanics;
   return options;
 }
 
@@ -97,7 +100,7 @@ TEST(TwinPlatform, RavenStateIsInDegreesAndMicronsInTheRobotsLayout) {
     for (int i = 0; i < raven::kJointCount; ++i) {
       const auto k = static_cast<std::size_t>(bridge::ravenStateIndex(arm, i));
       EXPECT_NEAR(state->jpos[k], measured(i) * 180.0 / M_PI, 1e-3);
-      EXPECT_NEAR(state->mpos[k], measured(i) * drive.transmission(i) * 180.0 / M_PI, 0.05);
+      EXPECT_NEAR(state->mpos[k], drive.toMotor(arm, measured)(i) * 180.0 / M_PI, 0.05);
     }
     // pos: the tool point in microns, in the firmware's frame, as measured_cp reports it.
     const auto pose = twin.measuredCp(arm).pose;
@@ -122,7 +125,7 @@ TEST(TwinPlatform, RunlevelFollowsTheOperatingState) {
 
 TEST(TwinPlatform, SameCommandsGiveTheSameTrajectoryEveryTime) {
   auto run = [] {
-    TwinPlatform twin(standIn());
+    TwinPlatform twin(withMotors());
     makeReady(twin);
     stream(twin, 200);
     return std::make_pair(twin.measuredJs(Arm::Left).position,
@@ -134,49 +137,81 @@ TEST(TwinPlatform, SameCommandsGiveTheSameTrajectoryEveryTime) {
   EXPECT_EQ(first.second, second.second);
 }
 
-TEST(TwinPlatform, TheStandInLagsBehindAndReadsQuantisedEncoders) {
-  TwinPlatform twin(standIn());
+TEST(TwinPlatform, TheMotorsLagSettleWithinTheirFrictionBandAndReadWholeCounts) {
+  TwinPlatform twin(withMotors());
   makeReady(twin);
   const auto drive = twin::DriveTrain::raven2();
-  const ArmJoints start = twin.measuredJs(Arm::Left).position;
-  // A 0.02 rad shoulder step through servo_jp: the setpoint gets there in 8 cycles; the motor
-  // PD, held back by the amplifiers' current limit, follows over about 200 ms.
+  const auto mechanics = twin::CalibrationProfile::shipped().mechanics[0];
+  const auto gains = twin::MotorGains::raven2(Arm::Left);
   ArmJoints goal = twin.setpointJs(Arm::Left).position;
   goal(raven::kShoulder) += 0.02;
   ASSERT_TRUE(twin.send(bridge::ServoJp{Arm::Left, goal}));
   twin.advance(0.01);
-  const double error_at_10ms = goal(0) - twin.measuredJs(Arm::Left).position(0);
-  EXPECT_GT(error_at_10ms, 0.002) << "the stand-in should lag behind a step";
-  double peak = 0.0;
-  for (int i = 0; i < 600; ++i) {
-    twin.advance(0.001);
-    peak = std::max(peak, twin.measuredJs(Arm::Left).position(0) - start(0));
-  }
-  EXPECT_LT(peak - 0.02, 0.002) << "overshoot above 10 %";
+  EXPECT_GT(goal(0) - twin.measuredJs(Arm::Left).position(0), 0.002)
+      << "the motors should lag behind a step";
+  twin.advance(1.0);
+  // The PD has no integrator on the shoulder: Coulomb friction holds the motor anywhere its
+  // error is within coulomb / kp (motor rad), one encoder count more for the reading.
+  const double band = mechanics.coulomb(0) / gains.kp(0) / drive.transmission(0) +
+                      1.0 / drive.countsPerMotorRadian() / drive.transmission(0);
   const ArmJoints settled = twin.measuredJs(Arm::Left).position;
-  EXPECT_NEAR(settled(0), goal(0), 2e-4);
-  // Every reading is a whole number of motor encoder counts.
+  EXPECT_LE(std::abs(settled(0) - goal(0)), band);
+  EXPECT_GT(settled(0) - (goal(0) - 0.02), 0.5 * 0.02) << "the shoulder did not move";
+  // Every motor reading is a whole number of encoder counts.
+  const ArmJoints motor = drive.toMotor(Arm::Left, settled);
   for (int i = 0; i < raven::kJointCount; ++i) {
-    const double counts = settled(i) * drive.transmission(i) * drive.countsPerMotorRadian();
+    const double counts = motor(i) * drive.countsPerMotorRadian();
     EXPECT_NEAR(counts, std::round(counts), 1e-6)
         << raven::kJointNames[static_cast<std::size_t>(i)];
   }
+  // raven_state carries what the control software computed: Tau and its DAC command agree.
+  const auto state = twin.ravenState();
+  ASSERT_TRUE(state);
+  const auto dac = twin::DacConversion::raven2(Arm::Left);
+  EXPECT_NEAR(state->dac_val[0], state->tau[0] * dac.counts_per_torque(0), 1.0);
+  EXPECT_NE(state->tau[0], 0.0f);
 }
 
 TEST(TwinPlatform, TheArmsHoldWhenTheControllerGoesSilent) {
-  TwinPlatform twin(standIn());
+  TwinPlatform twin(withMotors());
   makeReady(twin);
   stream(twin, 250);
-  twin.advance(0.5);  // the last increments are consumed and the motors have caught up
+  twin.advance(0.5);  // the last increments are consumed
   const auto held_setpoint = twin.setpointJs(Arm::Left).position;
-  const auto held = twin.measuredJs(Arm::Left).position;
-  double drift = 0.0;
-  for (int i = 0; i < 100; ++i) {
+  // A PD motor rests anywhere its torque cannot break Coulomb friction plus the weight the
+  // gravity compensation misses: |mpos_d - mpos| <= (coulomb + |gravity_error tau_g|) / kp. The
+  // tool motors' integrators creep them in (kp / ki = 1 s) from wherever they stopped. Nothing
+  // runs away.
+  const auto drive = twin::DriveTrain::raven2();
+  const auto mechanics = twin::CalibrationProfile::shipped().mechanics[0];
+  const auto gains = twin::MotorGains::raven2(Arm::Left);
+  auto motorError = [&] {
+    const auto state = twin.ravenState();
+    ArmJoints e;
+    for (int i = 0; i < raven::kJointCount; ++i) {
+      const auto k = static_cast<std::size_t>(bridge::ravenStateIndex(Arm::Left, i));
+      e(i) = std::abs(state->mpos_d[k] - state->mpos[k]) * M_PI / 180.0;
+    }
+    return e;
+  };
+  const ArmJoints error_then = motorError();
+  for (int k = 0; k < 100; ++k) {
     twin.advance(0.01);
-    drift = std::max(drift, (twin.measuredJs(Arm::Left).position - held).cwiseAbs().maxCoeff());
+    const ArmJoints gravity =
+        twin::gravityCompensation(Arm::Left, twin.measuredJs(Arm::Left).position, drive);
+    const ArmJoints error = motorError();
+    for (int i = 0; i < raven::kJointCount; ++i) {
+      const double rest =
+          (mechanics.coulomb(i) + std::abs(mechanics.gravity_error(i) * gravity(i))) / gains.kp(i);
+      const double band = (gains.ki(i) > 0.0 ? std::max(rest, error_then(i)) : rest) +
+                          2.0 / drive.countsPerMotorRadian();
+      ASSERT_LE(error(i), band) << raven::kJointNames[static_cast<std::size_t>(i)] << " at "
+                                << twin.now();
+    }
   }
+  EXPECT_LE(motorError().maxCoeff(), error_then.maxCoeff() + 1e-9)
+      << "moving away from the setpoint";
   EXPECT_EQ(twin.setpointJs(Arm::Left).position, held_setpoint);
-  EXPECT_LT(drift, 3e-4) << "more than two encoder counts of the roll";
   EXPECT_EQ(twin.operatingStatus().state, bridge::OperatingState::Enabled);
 }
 
@@ -213,10 +248,16 @@ TEST(TwinPlatform, AdvanceRefusesNegativeOrNonFiniteTime) {
   EXPECT_EQ(twin.now(), 0.0);
 }
 
-TEST(TwinPlatform, StandInParametersAreCheckedWhenLoaded) {
-  const auto params = twin::CableActuationParams::physicalStandIn();
-  EXPECT_DOUBLE_EQ(params.kp(0), 0.3);
-  EXPECT_DOUBLE_EQ(params.kd(2), 0.012);
+TEST(TwinPlatform, InvalidMechanicsAreRefusedNamingArmAndField) {
+  twin::TwinOptions options = withMotors();
+  options.motors->at(1).inertia(raven::kWrist) = 0.0;
+  try {
+    TwinPlatform twin(options);
+    ADD_FAILURE() << "built with a zero inertia";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("right arm"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("inertia of wrist"), std::string::npos) << e.what();
+  }
 }
 
 TEST(EnableAndHome, BringsTheTwinToReadyOrSaysWhereItStopped) {

@@ -5,30 +5,46 @@
 
 namespace twin {
 
+namespace {
+
+/// One arm's four lists: fitted `values` (inertia > 0, gravity_error > -1) or uncertainties (>= 0).
+MotorMechanics readMechanics(const common::YamlView& node, bool values) {
+  MotorMechanics m;
+  m.inertia = readJoints(node["inertia"], 0.0, values);
+  m.coulomb = readJoints(node["coulomb"], 0.0, false);
+  m.viscous = readJoints(node["viscous"], 0.0, false);
+  m.gravity_error = readJoints(node["gravity_error"], values ? -1.0 : 0.0, values);
+  return m;
+}
+
+ArmsMechanics readArms(const common::YamlView& node, bool values,
+                       std::vector<common::LoadIssue>& warnings) {
+  node.checkKeys({"left", "right"}, {true, warnings});
+  for (const char* arm : {"left", "right"}) {
+    node[arm].checkKeys({"inertia", "coulomb", "viscous", "gravity_error"}, {true, warnings});
+  }
+  if (!warnings.empty()) throw common::LoadError(warnings);
+  return {readMechanics(node["left"], values), readMechanics(node["right"], values)};
+}
+
+}  // namespace
+
 CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
   const auto root = common::YamlView::parseFile(file);
   std::vector<common::LoadIssue> warnings;
-  root.checkKeys({"tracking", "replay", "fit"}, {true, warnings});
-  const auto node = root["tracking"];
-  node.checkKeys({"latency_cycles", "bandwidth_hz", "damping_ratio", "friction_deadband",
-                  "max_velocity", "max_acceleration"},
-                 {true, warnings});
+  root.checkKeys({"actuation", "uncertainty", "replay", "fit"}, {true, warnings});
   const auto replay = root.find("replay");
   if (replay) replay->checkKeys({"iteration_overhead"}, {true, warnings});
   if (!warnings.empty()) throw common::LoadError(warnings);
 
   CalibrationProfile profile;
-  TrackingParams& t = profile.tracking;
-  t.latency_cycles = node["latency_cycles"].asDouble();
-  if (t.latency_cycles < 0.0 || t.latency_cycles > TrackingParams::kMaxLatencyCycles) {
-    node["latency_cycles"].fail("must be within 0.." +
-                                std::to_string(TrackingParams::kMaxLatencyCycles));
+  profile.mechanics = readArms(root["actuation"], true, warnings);
+  if (const auto u = root.find("uncertainty")) {
+    profile.uncertainty = readArms(*u, false, warnings);
+  } else {
+    profile.uncertainty.fill(
+        {ArmJoints::Zero(), ArmJoints::Zero(), ArmJoints::Zero(), ArmJoints::Zero()});
   }
-  t.bandwidth_hz = readJoints(node["bandwidth_hz"], 0.0, true);
-  t.damping_ratio = readJoints(node["damping_ratio"], 0.0, true);
-  if (auto f = node.find("friction_deadband")) t.friction_deadband = readJoints(*f, 0.0, false);
-  if (auto v = node.find("max_velocity")) t.max_velocity = readJoints(*v, 0.0, true);
-  if (auto a = node.find("max_acceleration")) t.max_acceleration = readJoints(*a, 0.0, true);
   if (replay) {
     profile.iteration_overhead = (*replay)["iteration_overhead"].asDouble();
     if (profile.iteration_overhead < 0.0 || profile.iteration_overhead > 1.0) {
@@ -36,6 +52,10 @@ CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
     }
   }
   return profile;
+}
+
+std::filesystem::path CalibrationProfile::shippedFile() {
+  return std::filesystem::path(RAVEN_TWIN_CONFIG_DIR) / "raven2_calibration.yaml";
 }
 
 }  // namespace twin

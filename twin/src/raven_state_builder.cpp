@@ -65,12 +65,13 @@ RavenStateSnapshot makeRavenState(const TwinStateSources& s) {
     putDegrees(out.mvel, arm, r.motor_velocity);
     putDegrees(out.jpos, arm, r.position);
     putDegrees(out.jvel, arm, r.velocity);
-    putDegrees(out.mpos_d, arm, s.drive.toMotor(setpoint));
+    putDegrees(out.mpos_d, arm, r.motor_setpoint);
     putDegrees(out.jpos_d, arm, setpoint);
     for (int i = 0; i < raven::kJointCount; ++i) {
       const auto k = static_cast<std::size_t>(bridge::ravenStateIndex(arm, i));
       out.enc_vals[k] = r.encoder[static_cast<std::size_t>(i)];
-      out.tau[k] = static_cast<float>(r.effort(i));
+      out.dac_val[k] = r.dac[static_cast<std::size_t>(i)];
+      out.tau[k] = static_cast<float>(r.torque(i));
     }
     out.grasp_d[a] =
         static_cast<float>((setpoint(raven::kJaw1) + setpoint(raven::kJaw2)) * kDegreesPerRadian);

@@ -3,7 +3,6 @@
 
 #include "bridge/raven_state.hpp"
 #include "twin/actuation.hpp"
-#include "twin/drive_train.hpp"
 #include "twin/raven_core.hpp"
 #include "twin/vocabulary.hpp"
 
@@ -13,13 +12,12 @@ namespace twin {
 /// (for the tool velocities in jac_vel).
 struct TwinStateSources {
   const RavenCore& core;
-  const DriveTrain& drive;
   const std::array<ActuatorReadings, 2>& readings;
   const ArmPair& previous_position;
 };
 
-/// Every field the twin can know; dac_val, encoffsets and jac_f stay 0 (no amplifier or force
-/// model; upstream fills jac_f with velocities by mistake).
+/// Every field the twin can know; encoffsets and jac_f stay 0 (the twin's encoders read from
+/// zero; upstream fills jac_f with velocities by mistake).
 RavenStateSnapshot makeRavenState(const TwinStateSources& sources);
 
 /// The runlevel and sublevel the robot reports in an operating state.

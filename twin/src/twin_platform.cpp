@@ -26,16 +26,10 @@ ambf_like::WorldOptions worldOptions(const ServoLimits& limits) {
 
 std::unique_ptr<Actuation> makeActuation(twin::TwinArms& arms, const DriveTrain& drive,
                                          const TwinOptions& options) {
-  std::unique_ptr<Actuation> actuation;
-  if (options.stand_in) {
-    actuation =
-        std::make_unique<CableActuation>(arms, drive, *options.stand_in, options.limits.cycle);
-  } else {
-    actuation = std::make_unique<IdealActuation>(arms, drive);
+  if (options.motors) {
+    return std::make_unique<MotorActuation>(arms, drive, *options.motors, options.limits.cycle);
   }
-  if (!options.tracking) return actuation;
-  return std::make_unique<TrackingActuation>(std::move(actuation), *options.tracking,
-                                             options.limits.cycle);
+  return std::make_unique<IdealActuation>(arms, drive);
 }
 
 ambf_like::LoadedScene loadScene(const TwinOptions& options) {
@@ -80,6 +74,11 @@ void TwinPlatform::advance(double seconds) {
   if (clock_ == ClockKind::Wall) pacer_.waitUntil(requested_);
 }
 
+void TwinPlatform::place(Arm arm, const ArmStart& start) {
+  actuation_->place(arm, start);
+  readings_ = readAll(*actuation_);
+}
+
 void TwinPlatform::runCycle() {
   previous_position_ = measuredPositions();
   core_.cycle(previous_position_);
@@ -89,6 +88,10 @@ void TwinPlatform::runCycle() {
   world_.step();
   if (after_step_) after_step_(world_);
   readings_ = readAll(*actuation_);
+  if (const std::string why = actuation_->fault();
+      !why.empty() && core_.status().state != OperatingState::Fault) {
+    core_.fault(why);
+  }
 }
 
 JointSample TwinPlatform::measuredJs(Arm arm) const {
@@ -114,7 +117,7 @@ std::optional<GrasperForces> TwinPlatform::measuredCf(Arm arm) const {
 }
 
 std::optional<RavenStateSnapshot> TwinPlatform::ravenState() const {
-  return makeRavenState({core_, drive_, readings_, previous_position_});
+  return makeRavenState({core_, readings_, previous_position_});
 }
 
 }  // namespace twin

@@ -1,7 +1,8 @@
 #pragma once
-// Writes the calibration profile raven_calibrate produces: the fitted tracking response, the
-// recording controller's measured iteration overhead, and a `fit` section saying what it was
-// fitted on and how well it did (--calibration on raven_controller and raven_twin_node).
+// Writes the calibration profile raven_calibrate produces: the fitted mechanics of each arm's
+// motors and their uncertainty, the recording controller's measured iteration overhead, and a
+// `fit` section saying what it was fitted on and how well it did (twin::CalibrationProfile
+// reads it back).
 
 #include <filesystem>
 #include <string>
@@ -13,13 +14,12 @@ namespace calibration {
 
 /// Provenance written beside the parameters (free text lines, one per entry).
 struct FitProvenance {
-  std::string inputs;                 ///< the ci file
+  std::string inputs;                 ///< the ci file, if replays were scored
   std::vector<std::string> physical;  ///< the physical trials fitted on
-  std::vector<std::string> notes;     ///< scores, options, stop reason
+  std::vector<std::string> notes;     ///< scores, options
 };
 
-/// Writes `profile` and `provenance` as YAML (twin::CalibrationProfile::load reads it back);
-/// throws std::runtime_error when it cannot.
+/// Writes `profile` and `provenance` as YAML; throws std::runtime_error when it cannot.
 void writeCalibration(const std::filesystem::path& file, const twin::CalibrationProfile& profile,
                       const FitProvenance& provenance);
 

@@ -27,10 +27,12 @@ struct Figures {
 /// A set of physical trials as analysis sees them.
 analysis::PlatformTrials physicalTrials(std::vector<analysis::Trial> trials);
 
-/// T_PS of one twin trial against every physical trial.
-Figures twinVsPhysical(const analysis::Trial& twin, const analysis::PlatformTrials& physical);
+/// T_PS of one twin trial against every physical trial; `remove_first_row`: each trial's
+/// first-row value subtracted first.
+Figures twinVsPhysical(const analysis::Trial& twin, const analysis::PlatformTrials& physical,
+                       bool remove_first_row = false);
 /// T_PP: the physical trials against each other (needs two or more).
-Figures robotRepeatability(const analysis::PlatformTrials& physical);
+Figures robotRepeatability(const analysis::PlatformTrials& physical, bool remove_first_row = false);
 
 /// Per joint (analysis::recordedJoints order): mean absolute position and velocity difference.
 struct JointFigures {

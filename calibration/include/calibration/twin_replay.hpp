@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "analysis/trial_set.hpp"
+#include "calibration/setpoint_replay.hpp"
 #include "controller/dual_platform_controller.hpp"
 #include "recording/gamepad_state.hpp"
 #include "twin/twin_platform.hpp"
@@ -16,14 +17,18 @@ namespace calibration {
 struct ReplaySetup {
   std::vector<recording::GamepadState> inputs;  ///< one ci row per manual-loop iteration
   controller::ControllerOptions controller;     ///< rate, man_steps, scheme, deadzone quirk
-  twin::TwinOptions twin;                       ///< model, stand-in; always on the simulated clock
+  twin::TwinOptions twin;                       ///< model, actuation; always on the simulated clock
   double replay_delay = 1.0;                    ///< O3's wait after loading (s)
+  /// Set: the twin starts where a recording began (moved there after homing, then its
+  /// actuators placed in the recorded state); unset: at its home.
+  std::optional<RecordedStart> start;
 };
 
-/// Builds, enables and homes a twin with `tracking` (none: the twin as it is), replays every
-/// input row and returns one trial row per input row (the state before each iteration, as the
-/// recorder writes it), in the physical robot's conventions.
-analysis::Trial replayOnTwin(const ReplaySetup& setup,
-                             const std::optional<twin::TrackingParams>& tracking);
+/// Builds, enables and homes a twin, replays every input row and returns one trial row per
+/// input row (the state before each iteration, as the recorder writes it), in the physical
+/// robot's conventions.
+analysis::Trial replayOnTwin(const ReplaySetup& setup);
+/// The same replay as the recorder writes it (every raven_state column).
+recording::RsRecording recordReplay(const ReplaySetup& setup);
 
 }  // namespace calibration

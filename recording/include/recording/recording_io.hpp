@@ -44,6 +44,9 @@ class RsWriter {
  public:
   explicit RsWriter(const std::filesystem::path& path);
   void write(const bridge::RavenStateSnapshot& state);
+  /// One row already in rsColumnNames() order (time relative to the first row), e.g. a replay
+  /// kept in memory.
+  void writeRow(const std::vector<double>& values);
   std::size_t rows() const { return rows_; }
   const std::filesystem::path& path() const { return file_.path(); }
 

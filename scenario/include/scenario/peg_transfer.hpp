@@ -26,8 +26,8 @@ struct PegTransferOptions {
   AssistMode assist = AssistMode::Off;
   /// How far (m) the closed jaws reach into a ring's wall (ArmRoutine).
   double squeeze = ArmRoutine::kDefaultSqueeze;
-  /// The physical stand-in's actuation model instead of the twin's ideal servos.
-  bool stand_in = false;
+  /// The Raven-II's motor-level actuation (the shipped calibration) instead of ideal servos.
+  bool motor_actuation = false;
   /// The scene's launch file; empty: raven_description's peg_transfer (the benchmarks pass the
   /// dense-collision variant).
   std::filesystem::path launch_file;
@@ -59,7 +59,7 @@ struct PegTransferOptions {
 PegTransferResult runPegTransfer(const PegTransferOptions& options);
 
 /// The twin of a run: its scene (the shipped one or `launch_file`) with `variation` applied,
-/// sleep, the assist's sensors and the stand-in as the options say.
+/// sleep, the assist's sensors and the actuation as the options say.
 twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
                                   const SceneVariation& variation);
 /// The scripted operators of both arms (left first), each with its arm's jobs.

@@ -41,7 +41,7 @@ struct PegOutcome {
 struct PegTransferResult {
   SceneVariation variation;
   AssistMode assist = AssistMode::Off;
-  bool stand_in = false;
+  bool motor_actuation = false;
   std::array<PegOutcome, 6> pegs;
   bool timed_out = false;  ///< the simulated time limit ended it
   bool stopped = false;    ///< asked to stop (PegTransferOptions::stop) before it was done

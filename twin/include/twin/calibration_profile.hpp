@@ -1,25 +1,33 @@
 #pragma once
-// A calibration profile (raven_calibrate writes it, --calibration reads it): the twin's tracking
-// response, and the timing of the controller that made the physical recordings it was fitted
-// to, so replays of such recordings take as long per iteration as they did on the robot.
+// A calibration profile (raven_calibrate writes it; the twins load the shipped one unless told
+// otherwise): the mechanics behind each arm's motors, how certain the fit is of them, and the
+// timing of the controller that made the recordings, so replays of such recordings take as long
+// per iteration as they did on the robot.
 
+#include <array>
 #include <filesystem>
 
-#include "twin/tracking_response.hpp"
+#include "twin/motor_actuation.hpp"
 #include "twin/vocabulary.hpp"
 
 namespace twin {
 
 struct CalibrationProfile {
-  TrackingParams tracking;
+  ArmsMechanics mechanics;
+  /// Per arm: the standard deviation of each fitted value, in the fit's sense (the change that
+  /// moves the model's signals by the robot's own spread); 0 where it was not fitted.
+  ArmsMechanics uncertainty;
   /// Platform time a manual-loop iteration of the recording controller took besides its command
   /// steps (its pad read, IK and recorder), in seconds.
   double iteration_overhead = 0.0;
 
-  /// Reads `tracking: {latency_cycles, bandwidth_hz, damping_ratio[, friction_deadband,
-  /// max_velocity, max_acceleration]}`, `replay: {iteration_overhead}` and ignores `fit` (what the
-  /// values were fitted on). Throws common::LoadError naming file, line and key.
+  /// Reads `actuation: {left|right: {inertia, coulomb, viscous, gravity_error}}` (7 values
+  /// each), `uncertainty` (the same shape, optional), `replay: {iteration_overhead}`, and ignores
+  /// `fit` (what the values were fitted on). Throws common::LoadError naming file, line and key.
   static CalibrationProfile load(const std::filesystem::path& file);
+  /// twin/config/raven2_calibration.yaml: the fit to the paper's physical recordings.
+  static std::filesystem::path shippedFile();
+  static CalibrationProfile shipped() { return load(shippedFile()); }
 };
 
 }  // namespace twin

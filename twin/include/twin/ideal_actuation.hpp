@@ -1,6 +1,6 @@
 #pragma once
 // The twin's own actuators: stiff joint position servos that reach each setpoint within the
-// cycle, read back exactly from the simulation.
+// cycle, read back exactly from the simulation; no motor torques or amplifier commands.
 
 #include "twin/actuation.hpp"
 #include "twin/drive_train.hpp"
@@ -16,6 +16,8 @@ class IdealActuation final : public Actuation {
   void drive(raven::Arm arm, const raven::ArmJoints& setpoint,
              const raven::ArmJoints& setpoint_velocity) override;
   ActuatorReadings read(raven::Arm arm) const override;
+  /// The joints go where the recorded motors put them.
+  void place(raven::Arm arm, const ArmStart& start) override;
 
  private:
   twin::TwinArms& arms_;

@@ -12,10 +12,9 @@
 #include "bridge/raven_platform.hpp"
 #include "bridge/wall_pacer.hpp"
 #include "twin/actuation.hpp"
-#include "twin/cable_actuation.hpp"
 #include "twin/drive_train.hpp"
+#include "twin/motor_actuation.hpp"
 #include "twin/raven_core.hpp"
-#include "twin/tracking_response.hpp"
 #include "twin/twin_arms.hpp"
 #include "twin/vocabulary.hpp"
 
@@ -35,10 +34,9 @@ struct TwinOptions {
   /// "physical" (our model) or "ambf" (AMBF's blender-raven2.yaml), or a profile file.
   std::string profile = "physical";
   ClockKind clock = ClockKind::Simulated;
-  /// Set: the physical stand-in's actuation model; unset: the twin's ideal servos.
-  std::optional<CableActuationParams> stand_in;
-  /// Set: the robot's tracking response (a calibration) in front of either actuation.
-  std::optional<TrackingParams> tracking;
+  /// Set: the Raven-II's motor-level actuation with these mechanics (raven_calibrate fits
+  /// them); unset: the twin's ideal servos.
+  std::optional<ArmsMechanics> motors;
   ServoLimits limits;
   /// Called after every World step, on the thread that steps it (a video's capture).
   std::function<void(const ambf_like::World&)> after_step;
@@ -63,6 +61,10 @@ class TwinPlatform final : public RavenPlatform {
   ClockKind clockKind() const override { return clock_; }
   double now() const override { return core_.time(); }
   void advance(double seconds) override;
+
+  /// Puts `arm` where a recording began (its motors, encoders and control state); its joint
+  /// setpoint stays where it is (send move_jp to the recorded one first).
+  void place(Arm arm, const ArmStart& start);
 
   /// The simulation, for scenes that need more than the arms (pegs, contacts).
   ambf_like::World& world() { return world_; }

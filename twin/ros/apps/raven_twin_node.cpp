@@ -1,6 +1,6 @@
-// raven_twin_node: the twin served on the physical Raven-II's ROS topics. With --stand-in it is
-// the physical stand-in (the physical profile and a cable-drive actuation model), for testing
-// the physical path without a robot.
+// raven_twin_node: the twin served on the physical Raven-II's ROS topics, with the robot's
+// motor-level actuation (its raven_state carries motor angles, torques and DAC commands), so the
+// physical path can be exercised without a robot.
 
 #include <spdlog/spdlog.h>
 
@@ -30,18 +30,15 @@ int main(int argc, char** argv) {
                "the launch file holds AMBF's blender-raven2.yaml (AMBF joint names)");
   app.add_flag("--strict", twin.load.strict,
                "refuse model files AMBF would load with warnings (unknown keys, missing meshes)");
-  std::optional<std::string> stand_in;
-  app.add_option("--stand-in", stand_in,
-                 "run as the physical stand-in: actuation model parameters (default: "
-                 "twin/config/physical_stand_in.yaml)")
-      ->expected(0, 1);
+  bool ideal_servos = false;
+  app.add_flag("--ideal-servos", ideal_servos,
+               "ideal joint servos instead of the Raven-II's motor-level actuation (always with "
+               "AMBF's model)");
   std::string calibration;
   app.add_option("--calibration", calibration,
-                 "a tracking response fitted by raven_calibrate (YAML), in front of the actuation")
+                 "the actuation fitted by raven_calibrate (YAML; default: "
+                 "twin/config/raven2_calibration.yaml)")
       ->check(CLI::ExistingFile);
-  std::optional<double> noise;
-  app.add_option("--encoder-noise", noise, "stand-in encoder noise, counts (standard deviation)")
-      ->check(CLI::NonNegativeNumber);
   bridge::ros1::RosServerOptions server;
   app.add_flag("--lock-step", server.lock_step,
                "run on the simulated clock, one step per client request (raven_twin/step)");
@@ -76,12 +73,12 @@ int main(int argc, char** argv) {
     twin.launch_file = launch;
     twin.clock = server.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
     if (ambf_model) twin.bindings = twin::ArmBindings::ambfRaven();
-    if (stand_in) {
-      twin.stand_in = stand_in->empty() ? twin::CableActuationParams::physicalStandIn()
-                                        : twin::CableActuationParams::load(*stand_in);
-      if (noise) twin.stand_in->encoder_noise_counts = *noise;
+    // The motor model is the cable-driven robot's: in its joint convention, on our model.
+    if (!ideal_servos && !ambf_model && twin.profile == "physical") {
+      twin.motors = (calibration.empty() ? twin::CalibrationProfile::shipped()
+                                         : twin::CalibrationProfile::load(calibration))
+                        .mechanics;
     }
-    if (!calibration.empty()) twin.tracking = twin::CalibrationProfile::load(calibration).tracking;
     server.arm_swap = !no_arm_swap;
     twin::TwinPlatform platform(twin);
     if (!no_crtk) {
@@ -95,9 +92,9 @@ int main(int argc, char** argv) {
     bridge::ros1::RavenRosServer ros_server(platform, "", server);
     const bridge::ros1::MasterWatch master_watch;  // registers again with a restarted master
     spdlog::info("raven_twin: {} on {} ({}, {} clock, arm swap {}, standard CRTK {})",
-                 stand_in ? "the PHYSICAL STAND-IN" : "the twin", bridge::ros1::masterUri(),
-                 twin.profile, server.lock_step ? "lock-step simulated" : "wall",
-                 server.arm_swap ? "on" : "off",
+                 twin.motors ? "the twin (motor-level actuation)" : "the twin (ideal servos)",
+                 bridge::ros1::masterUri(), twin.profile,
+                 server.lock_step ? "lock-step simulated" : "wall", server.arm_swap ? "on" : "off",
                  no_crtk ? "off"
                          : "under " + crtk.ros_namespace + "/{" + crtk.arm_names[0] + "," +
                                crtk.arm_names[1] + "}");

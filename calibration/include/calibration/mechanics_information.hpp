@@ -1,0 +1,45 @@
+#pragma once
+// How much recordings tell about the motors' fitted mechanics: per arm and motor, the Fisher
+// information J^T J / sigma^2 of its four values (inertia, coulomb, viscous, gravity_error),
+// with J the sensitivity of that motor's logged signals (mpos, mvel, Tau at every row) found by
+// finite differences of the setpoint replay, and sigma the encoder's quantisation noise (one
+// count / sqrt(12) on mpos, its one-cycle difference on mvel, both through the gains on Tau).
+// Rows count as independent, so the bound is optimistic; ratios between designs are what the
+// active learning uses. Motors are taken as independent (block-diagonal information).
+
+#include <Eigen/Core>
+#include <array>
+
+#include "analysis/actuator_signals.hpp"
+#include "twin/motor_actuation.hpp"
+
+namespace calibration {
+
+/// The order of each motor's values in its block.
+inline constexpr int kMechanicsValues = 4;  ///< inertia, coulomb, viscous, gravity_error
+using InformationBlock = Eigen::Matrix<double, kMechanicsValues, kMechanicsValues>;
+
+struct MechanicsInformation {
+  std::array<std::array<InformationBlock, raven::kJointCount>, 2> blocks;
+
+  /// No information at all.
+  static MechanicsInformation none();
+  /// A prior from standard deviations (0: that value is not fitted, and stays out).
+  static MechanicsInformation fromUncertainty(const twin::ArmsMechanics& sd);
+  MechanicsInformation& operator+=(const MechanicsInformation& o);
+  /// sqrt(diag(inverse)) per block over the values with information; 0 elsewhere.
+  twin::ArmsMechanics standardDeviations() const;
+  /// Sum over motors of log det of the block restricted to the values `sd` marks fitted:
+  /// what a D-optimal design maximises.
+  double logDet(const twin::ArmsMechanics& fitted) const;
+};
+
+/// The information one recording (its setpoints replayed from its start) carries about
+/// `mechanics`.
+MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
+                                   const analysis::ActuatorTrace& recording);
+
+/// Reads or writes one value of a motor's block by its index (the block's order).
+double& mechanicsValue(twin::MotorMechanics& m, int value, int joint);
+
+}  // namespace calibration

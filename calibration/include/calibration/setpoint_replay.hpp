@@ -1,0 +1,24 @@
+#pragma once
+// The twin's actuation driven by a recording's own joint setpoints (jpos_d, interpolated to the
+// robot's 1 ms cycle) from the state the recording began in: the motor-level model alone,
+// without the controller or the simulator, in milliseconds. What the actuation fit compares.
+
+#include "analysis/actuator_signals.hpp"
+#include "twin/arm_drive.hpp"
+#include "twin/motor_actuation.hpp"
+
+namespace calibration {
+
+/// The state a recording began in: per arm its joint setpoint and its actuators' state.
+struct RecordedStart {
+  std::array<raven::ArmJoints, 2> setpoint;
+  std::array<twin::ArmStart, 2> arms;
+};
+/// The first row of `trace`, with the integrators that make its Tau.
+RecordedStart recordedStart(const analysis::ActuatorTrace& trace);
+
+/// The twin's actuator signals at the recording's row times (in the recording's units).
+analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording,
+                                        const twin::ArmsMechanics& mechanics);
+
+}  // namespace calibration

@@ -1,0 +1,174 @@
+#include "calibration/mechanics_information.hpp"
+
+#include <Eigen/Cholesky>
+#include <cmath>
+
+#include "calibration/setpoint_replay.hpp"
+#include "twin/motor_controller.hpp"
+
+namespace calibration {
+
+namespace {
+
+using analysis::ActuatorSignal;
+
+constexpr double kDegreesPerRadian = 180.0 / M_PI;
+
+/// The quantisation noise of each logged signal of `arm`, per joint, in the logged units.
+std::array<raven::ArmJoints, 3> noise(raven::Arm arm) {
+  const twin::DriveTrain drive = twin::DriveTrain::raven2();
+  const double count = 1.0 / drive.countsPerMotorRadian();
+  const double position = count / std::sqrt(12.0);
+  const double velocity = position * std::sqrt(2.0) / 0.001;
+  const twin::MotorGains gains = twin::MotorGains::raven2(arm);
+  const raven::ArmJoints torque =
+      ((gains.kp * position).array().square() + (gains.kd * velocity).array().square()).sqrt();
+  return {raven::ArmJoints::Constant(position * kDegreesPerRadian),
+          raven::ArmJoints::Constant(velocity * kDegreesPerRadian), torque};
+}
+
+}  // namespace
+
+double& mechanicsValue(twin::MotorMechanics& m, int value, int joint) {
+  switch (value) {
+    case 0:
+      return m.inertia(joint);
+    case 1:
+      return m.coulomb(joint);
+    case 2:
+      return m.viscous(joint);
+    default:
+      return m.gravity_error(joint);
+  }
+}
+
+MechanicsInformation MechanicsInformation::none() {
+  MechanicsInformation info;
+  for (auto& arm : info.blocks) arm.fill(InformationBlock::Zero());
+  return info;
+}
+
+MechanicsInformation MechanicsInformation::fromUncertainty(const twin::ArmsMechanics& sd) {
+  MechanicsInformation info = none();
+  for (std::size_t a = 0; a < 2; ++a) {
+    twin::MotorMechanics m = sd[a];
+    for (int j = 0; j < raven::kJointCount; ++j) {
+      for (int v = 0; v < kMechanicsValues; ++v) {
+        const double s = mechanicsValue(m, v, j);
+        if (s > 0.0) info.blocks[a][static_cast<std::size_t>(j)](v, v) = 1.0 / (s * s);
+      }
+    }
+  }
+  return info;
+}
+
+MechanicsInformation& MechanicsInformation::operator+=(const MechanicsInformation& o) {
+  for (std::size_t a = 0; a < 2; ++a) {
+    for (std::size_t j = 0; j < blocks[a].size(); ++j) blocks[a][j] += o.blocks[a][j];
+  }
+  return *this;
+}
+
+twin::ArmsMechanics MechanicsInformation::standardDeviations() const {
+  twin::ArmsMechanics sd;
+  for (std::size_t a = 0; a < 2; ++a) {
+    sd[a] = {raven::ArmJoints::Zero(), raven::ArmJoints::Zero(), raven::ArmJoints::Zero(),
+             raven::ArmJoints::Zero()};
+    for (int j = 0; j < raven::kJointCount; ++j) {
+      const InformationBlock& b = blocks[a][static_cast<std::size_t>(j)];
+      // Only the values with information: the rest stay 0 (not fitted, nothing known).
+      std::vector<int> used;
+      for (int v = 0; v < kMechanicsValues; ++v) {
+        if (b(v, v) > 0.0) used.push_back(v);
+      }
+      if (used.empty()) continue;
+      Eigen::MatrixXd sub(used.size(), used.size());
+      for (std::size_t r = 0; r < used.size(); ++r) {
+        for (std::size_t c = 0; c < used.size(); ++c)
+          sub(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = b(used[r], used[c]);
+      }
+      const Eigen::MatrixXd covariance = sub.completeOrthogonalDecomposition().pseudoInverse();
+      for (std::size_t r = 0; r < used.size(); ++r) {
+        mechanicsValue(sd[a], used[r], j) = std::sqrt(
+            std::max(0.0, covariance(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(r))));
+      }
+    }
+  }
+  return sd;
+}
+
+double MechanicsInformation::logDet(const twin::ArmsMechanics& fitted) const {
+  double sum = 0.0;
+  for (std::size_t a = 0; a < 2; ++a) {
+    twin::MotorMechanics m = fitted[a];
+    for (int j = 0; j < raven::kJointCount; ++j) {
+      std::vector<int> used;
+      for (int v = 0; v < kMechanicsValues; ++v) {
+        if (mechanicsValue(m, v, j) > 0.0) used.push_back(v);
+      }
+      if (used.empty()) continue;
+      Eigen::MatrixXd sub(used.size(), used.size());
+      const InformationBlock& b = blocks[a][static_cast<std::size_t>(j)];
+      for (std::size_t r = 0; r < used.size(); ++r) {
+        for (std::size_t c = 0; c < used.size(); ++c)
+          sub(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = b(used[r], used[c]);
+      }
+      const Eigen::LDLT<Eigen::MatrixXd> ldlt(sub);
+      for (Eigen::Index k = 0; k < sub.rows(); ++k)
+        sum += std::log(std::max(ldlt.vectorD()(k), 1e-300));
+    }
+  }
+  return sum;
+}
+
+MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
+                                   const analysis::ActuatorTrace& recording) {
+  constexpr std::array<ActuatorSignal, 3> kSignals{
+      ActuatorSignal::MotorPosition, ActuatorSignal::MotorVelocity, ActuatorSignal::Torque};
+  const std::array<std::array<raven::ArmJoints, 3>, 2> sigma{noise(raven::Arm::Left),
+                                                             noise(raven::Arm::Right)};
+  const auto base = replaySetpoints(recording, mechanics);
+  // Every motor's value v moved at once: the motors are independent, so each motor's signals
+  // answer to its own value only.
+  std::array<analysis::ActuatorTrace, kMechanicsValues> moved;
+  std::array<twin::ArmsMechanics, kMechanicsValues> step;
+  for (int v = 0; v < kMechanicsValues; ++v) {
+    twin::ArmsMechanics m = mechanics;
+    twin::ArmsMechanics h;
+    for (std::size_t a = 0; a < 2; ++a) {
+      h[a] = m[a];
+      for (int j = 0; j < raven::kJointCount; ++j) {
+        double& x = mechanicsValue(m[a], v, j);
+        // Relative steps, absolute where the value may be 0 (friction, gravity error).
+        const double d =
+            v == 0 ? 0.05 * x : (v == 3 ? 0.02 : std::max(0.05 * x, v == 1 ? 1e-3 : 1e-5));
+        mechanicsValue(h[a], v, j) = d;
+        x += d;
+      }
+    }
+    moved[static_cast<std::size_t>(v)] = replaySetpoints(recording, m);
+    step[static_cast<std::size_t>(v)] = h;
+  }
+  MechanicsInformation info = MechanicsInformation::none();
+  for (std::size_t a = 0; a < 2; ++a) {
+    for (int j = 0; j < raven::kJointCount; ++j) {
+      const bool gravity = j <= raven::kInsertion;
+      for (std::size_t s = 0; s < kSignals.size(); ++s) {
+        const auto& y0 = base.arms[a].of(kSignals[s]);
+        for (std::size_t r = 0; r < y0.size(); ++r) {
+          Eigen::Matrix<double, kMechanicsValues, 1> g =
+              Eigen::Matrix<double, kMechanicsValues, 1>::Zero();
+          for (int v = 0; v < (gravity ? 4 : 3); ++v) {
+            const auto& y1 = moved[static_cast<std::size_t>(v)].arms[a].of(kSignals[s]);
+            twin::MotorMechanics h = step[static_cast<std::size_t>(v)][a];
+            g(v) = (y1[r](j) - y0[r](j)) / mechanicsValue(h, v, j) / sigma[a][s](j);
+          }
+          info.blocks[a][static_cast<std::size_t>(j)] += g * g.transpose();
+        }
+      }
+    }
+  }
+  return info;
+}
+
+}  // namespace calibration

@@ -1,0 +1,53 @@
+#pragma once
+// One Raven-II arm below its joints, with no simulator: each 1 ms cycle the encoders are read
+// (4000 counts per motor turn, velocity as the one-cycle difference), the joint setpoint goes
+// through the cable coupling to motor angles, the control software's law gives Tau and the DAC
+// commands, and the motors (MotorAxes) move under the amplified torque.
+
+#include <Eigen/Core>
+#include <string>
+
+#include "twin/actuation.hpp"
+#include "twin/drive_train.hpp"
+#include "twin/motor_controller.hpp"
+#include "twin/motor_dynamics.hpp"
+#include "twin/vocabulary.hpp"
+
+namespace twin {
+
+/// One arm's motors, encoders and motor-level control.
+class ArmDrive {
+ public:
+  /// At rest at `joints` with empty integrators. Throws std::invalid_argument naming the arm
+  /// and field of invalid mechanics.
+  ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
+           const ArmJoints& joints);
+
+  /// One control cycle toward `setpoint` (joints); the readings are this cycle's.
+  const ActuatorReadings& cycle(const ArmJoints& setpoint);
+  /// Puts the motors and the control state where a recording began.
+  void place(const ArmStart& start);
+
+  const ActuatorReadings& readings() const { return readings_; }
+  /// Where the links are: the motors' exact angles through the cables.
+  ArmJoints linkPosition() const { return drive_.toJoints(arm_, motors_.position()); }
+  const MotorController& controller() const { return controller_; }
+  /// Why the robot must stop (the amplifiers' soft e-stop), or empty.
+  const std::string& fault() const { return fault_; }
+
+ private:
+  void sense();
+
+  Arm arm_;
+  DriveTrain drive_;
+  double cycle_;
+  MotorAxes motors_;
+  MotorController controller_;
+  /// d(motor)/d(joint): joint loads are its transpose times motor torques.
+  Eigen::Matrix<double, kJointCount, kJointCount> coupling_;
+  ActuatorReadings readings_;
+  ArmJoints last_count_;  ///< the previous cycle's quantised motor angles
+  std::string fault_;
+};
+
+}  // namespace twin

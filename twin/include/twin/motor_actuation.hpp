@@ -1,0 +1,40 @@
+#pragma once
+// The Raven-II's actuation below the joints in a simulated world: each arm's ArmDrive runs the
+// motors and their control software, and the simulated links follow the motors' angles through
+// the cables (the cables taken as stiff; contact loads on the links do not reach the motors).
+
+#include <array>
+#include <string>
+
+#include "twin/actuation.hpp"
+#include "twin/arm_drive.hpp"
+#include "twin/twin_arms.hpp"
+#include "twin/vocabulary.hpp"
+
+namespace twin {
+
+/// The mechanics of both arms' motors (index raven::index(arm)).
+using ArmsMechanics = std::array<MotorMechanics, 2>;
+
+/// Motor-level actuation of both arms of a TwinArms.
+class MotorActuation final : public Actuation {
+ public:
+  /// Starts at rest at the arms' current joints with empty integrators. Throws
+  /// std::invalid_argument naming the arm and field of invalid mechanics.
+  MotorActuation(TwinArms& arms, const DriveTrain& drive, const ArmsMechanics& mechanics,
+                 double cycle);
+  void drive(Arm arm, const ArmJoints& setpoint, const ArmJoints& setpoint_velocity) override;
+  ActuatorReadings read(Arm arm) const override { return drives_[index(arm)].readings(); }
+  std::string fault() const override;
+
+  void place(Arm arm, const ArmStart& start) override;
+  const ArmDrive& armDrive(Arm arm) const { return drives_[index(arm)]; }
+
+ private:
+  static std::size_t index(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
+
+  TwinArms& arms_;
+  std::array<ArmDrive, 2> drives_;
+};
+
+}  // namespace twin

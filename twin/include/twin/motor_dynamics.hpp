@@ -1,0 +1,49 @@
+#pragma once
+// The mechanics behind each Raven-II motor, on the scale the robot logs torques (N m at the
+// gearbox output, per motor radian): the inertia the motor moves (rotor, gearbox and the link
+// reflected through its cable), Coulomb and viscous friction of gearbox, capstans and cables,
+// and how far the firmware's gravity compensation is from the arm's real weight.
+
+#include "twin/vocabulary.hpp"
+
+namespace twin {
+
+/// Per motor, in raven::ArmJoints order. The values the reference leaves unknown (§8 of
+/// raven2-actuation.md) are fitted by raven_calibrate.
+struct MotorMechanics {
+  ArmJoints inertia = ArmJoints::Constant(1e-4);  ///< N m s^2 per motor rad
+  ArmJoints coulomb = ArmJoints::Zero();          ///< N m
+  ArmJoints viscous = ArmJoints::Zero();          ///< N m s per motor rad
+  /// The arm's weight over the firmware's estimate, minus one (joints 1-3): 0 = exact.
+  ArmJoints gravity_error = ArmJoints::Zero();
+
+  /// Why these values cannot be used (naming the field), or empty when they can.
+  std::string invalidReason() const;
+};
+
+/// Motor angles and speeds of one arm, stepped under the amplifiers' torque.
+class MotorAxes {
+ public:
+  explicit MotorAxes(const MotorMechanics& mechanics) : mechanics_(mechanics) {}
+
+  /// Advances `seconds` with `torque` held (N m at the gearbox output) against gravity's
+  /// `gravity_load` (the firmware's estimate; the real weight is (1 + gravity_error) times it).
+  void step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds);
+  void place(const ArmJoints& position, const ArmJoints& velocity) {
+    position_ = position;
+    velocity_ = velocity;
+  }
+  const ArmJoints& position() const { return position_; }  ///< motor rad
+  const ArmJoints& velocity() const { return velocity_; }
+  const MotorMechanics& mechanics() const { return mechanics_; }
+
+  /// Substeps per step: friction's stick-slip and the stiffest tool axis stay resolved.
+  static constexpr int kSubsteps = 4;
+
+ private:
+  MotorMechanics mechanics_;
+  ArmJoints position_ = ArmJoints::Zero();
+  ArmJoints velocity_ = ArmJoints::Zero();
+};
+
+}  // namespace twin
