@@ -14,6 +14,7 @@
 
 #include "calibration/actuation_fit.hpp"
 #include "calibration/calibration_file.hpp"
+#include "calibration/command_delivery.hpp"
 #include "calibration/excitation.hpp"
 #include "calibration/replay_score.hpp"
 #include "calibration/replay_timing.hpp"
@@ -244,6 +245,13 @@ int runFit(const FitSettings& s) {
     setup.controller.iteration_overhead = profile.iteration_overhead;
     std::printf("\niteration overhead of the recording controller (median, measured): %.2f ms\n",
                 1e3 * profile.iteration_overhead);
+    // Every increment delivered first; the robot's own setpoints then say how many arrived.
+    const auto delivered_all = calibration::scoreReplays(setup, physical);
+    profile.servo_jr_delivered =
+        calibration::measureServoDelivery(tracesOf(delivered_all.replays), traces);
+    setup.twin.limits.servo_jr_delivered = profile.servo_jr_delivered;
+    std::printf("servo_jr increments the robot received (median share, measured): %.4f\n",
+                profile.servo_jr_delivered);
     const auto score = calibration::scoreReplays(setup, physical);
     printActuators("end-to-end replays of the inputs, each from its trial's start",
                    score.actuators);
@@ -276,7 +284,7 @@ int runScore(const ScoreSettings& s) {
                                                ? twin::CalibrationProfile::shipped()
                                                : twin::CalibrationProfile::load(s.calibration);
   calibration::ReplaySetup setup = s.replay.setup(profile.iteration_overhead);
-  if (!s.ideal) setup.twin.motors = profile.mechanics;
+  if (!s.ideal) profile.applyTo(setup.twin);
   std::printf("raven_calibrate score: %zu physical trial(s), %s, %s\n", physical.size(),
               s.ideal ? "ideal servos" : "motor-level actuation",
               s.calibration.empty() ? twin::CalibrationProfile::shippedFile().c_str()

@@ -36,6 +36,9 @@ void writeCalibration(const std::filesystem::path& file, const twin::Calibration
   out << YAML::BeginMap;
   emitArms(out, "actuation", profile.mechanics);
   emitArms(out, "uncertainty", profile.uncertainty);
+  out << YAML::Key << "commands" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "servo_jr_delivered" << YAML::Value << profile.servo_jr_delivered;
+  out << YAML::EndMap;
   out << YAML::Key << "replay" << YAML::Value << YAML::BeginMap;
   out << YAML::Key << "iteration_overhead" << YAML::Value << profile.iteration_overhead;
   out << YAML::EndMap;

@@ -77,7 +77,7 @@ Candidate scoreCandidate(const ReplaySetup& setup, const twin::CalibrationProfil
   ReplaySetup s = setup;
   s.inputs = inputs;
   s.start.reset();
-  s.twin.motors = profile.mechanics;
+  profile.applyTo(s.twin);
   const recording::RsRecording rs = recordReplay(s);
   Candidate c;
   c.inputs = std::move(inputs);

@@ -10,7 +10,7 @@
 namespace controller_app {
 
 struct TwinActuation {
-  twin::ArmsMechanics mechanics;
+  twin::CalibrationProfile profile;
 };
 
 namespace {
@@ -41,8 +41,9 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
   if (!settings.launch_file.empty()) options.launch_file = settings.launch_file;
   options.clock = settings.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
   if (!settings.ideal_servos) {
-    options.motors = settings.calibration ? settings.calibration->twin_actuation->mechanics
-                                          : twin::CalibrationProfile::shipped().mechanics;
+    (settings.calibration ? settings.calibration->twin_actuation->profile
+                          : twin::CalibrationProfile::shipped())
+        .applyTo(options);
   }
   if (!settings.video.file.empty()) {
     auto video = std::make_shared<TwinVideo>();
@@ -56,7 +57,7 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
 ControllerCalibration loadControllerCalibration(const std::string& file) {
   auto profile = twin::CalibrationProfile::load(file);
   return {profile.iteration_overhead,
-          std::make_shared<const TwinActuation>(TwinActuation{profile.mechanics})};
+          std::make_shared<const TwinActuation>(TwinActuation{profile})};
 }
 
 }  // namespace controller_app

@@ -11,7 +11,8 @@
 
 namespace controller_app {
 
-/// The twin's part of a calibration profile (its motors' mechanics), known to in_process_twin.cpp.
+/// The twin's part of a calibration profile (its motors, its commands' delivery), known to
+/// in_process_twin.cpp.
 struct TwinActuation;
 
 /// A raven_calibrate profile, read once: what the controller uses, and what the twin does.

@@ -134,9 +134,9 @@ void bindTwin(py::module_& m) {
              options.profile = profile;
              options.load.strict = strict;
              if (actuation == "motors") {
-               options.motors = (calibration ? twin::CalibrationProfile::load(*calibration)
-                                             : twin::CalibrationProfile::shipped())
-                                    .mechanics;
+               (calibration ? twin::CalibrationProfile::load(*calibration)
+                            : twin::CalibrationProfile::shipped())
+                   .applyTo(options);
              } else if (actuation != "ideal") {
                throw std::invalid_argument("actuation must be 'motors' or 'ideal', not '" +
                                            actuation + "'");

@@ -31,7 +31,7 @@ twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
     // The assist's jaw sensors and actuators, after the arms whose jaws carry them.
     if (assist) ambf_like::appendModelFiles(scene, {GraspAssist::modelFile()});
   };
-  if (options.motor_actuation) twin.motors = twin::CalibrationProfile::shipped().mechanics;
+  if (options.motor_actuation) twin::CalibrationProfile::shipped().applyTo(twin);
   return twin;
 }
 

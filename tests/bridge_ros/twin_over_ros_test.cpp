@@ -276,7 +276,7 @@ TEST(TwinOverRos, SameCommandsGiveTheSameTrajectoryInProcessAndOverRos) {
 
 TEST(TwinOverRos, TheMotorLevelActuationGivesTheSameTrajectoryInProcessAndOverRos) {
   twin::TwinOptions options;  // the node's default: the shipped calibration's motors
-  options.motors = twin::CalibrationProfile::shipped().mechanics;
+  twin::CalibrationProfile::shipped().applyTo(options);
   expectSameTrajectory({}, options);
 }
 

@@ -172,7 +172,7 @@ TEST(ShippedCalibration, PutsThe2armReplaysWithinTheRobotsOwnSpread) {
   if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
   const auto profile = twin::CalibrationProfile::shipped();
   paper->setup.controller.iteration_overhead = profile.iteration_overhead;
-  paper->setup.twin.motors = profile.mechanics;
+  profile.applyTo(paper->setup.twin);
   const auto score = calibration::scoreReplays(paper->setup, paper->physical_rs);
   ASSERT_EQ(score.replays.size(), 3u);
   for (std::size_t k = 0; k < analysis::kActuatorSignals.size(); ++k) {

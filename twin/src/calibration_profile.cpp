@@ -32,9 +32,11 @@ ArmsMechanics readArms(const common::YamlView& node, bool values,
 CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
   const auto root = common::YamlView::parseFile(file);
   std::vector<common::LoadIssue> warnings;
-  root.checkKeys({"actuation", "uncertainty", "replay", "fit"}, {true, warnings});
+  root.checkKeys({"actuation", "uncertainty", "commands", "replay", "fit"}, {true, warnings});
   const auto replay = root.find("replay");
   if (replay) replay->checkKeys({"iteration_overhead"}, {true, warnings});
+  const auto commands = root.find("commands");
+  if (commands) commands->checkKeys({"servo_jr_delivered"}, {true, warnings});
   if (!warnings.empty()) throw common::LoadError(warnings);
 
   CalibrationProfile profile;
@@ -45,6 +47,12 @@ CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
     profile.uncertainty.fill(
         {ArmJoints::Zero(), ArmJoints::Zero(), ArmJoints::Zero(), ArmJoints::Zero()});
   }
+  if (commands) {
+    profile.servo_jr_delivered = (*commands)["servo_jr_delivered"].asDouble();
+    if (!(profile.servo_jr_delivered > 0.5 && profile.servo_jr_delivered <= 1.0)) {
+      (*commands)["servo_jr_delivered"].fail("must be within 0.5..1 (a share of the increments)");
+    }
+  }
   if (replay) {
     profile.iteration_overhead = (*replay)["iteration_overhead"].asDouble();
     if (profile.iteration_overhead < 0.0 || profile.iteration_overhead > 1.0) {
@@ -52,6 +60,11 @@ CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
     }
   }
   return profile;
+}
+
+void CalibrationProfile::applyTo(TwinOptions& options) const {
+  options.motors = mechanics;
+  options.limits.servo_jr_delivered = servo_jr_delivered;
 }
 
 std::filesystem::path CalibrationProfile::shippedFile() {

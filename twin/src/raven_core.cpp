@@ -37,7 +37,9 @@ CommandResult RavenCore::apply(const PlatformCommand& command) {
       bridge::Overloaded{
           [&](StateCommand c) { return applyState(c); },
           [&](const ServoJp& c) { return servoTo(c.arm, c.position); },
-          [&](const ServoJr& c) { return servoTo(c.arm, servoBase(c.arm) + c.increment); },
+          [&](const ServoJr& c) {
+            return servoTo(c.arm, servoBase(c.arm) + limits_.servo_jr_delivered * c.increment);
+          },
           [&](const MoveJp& c) { return moveTo(c.arm, c.goal); },
           [&](const ServoCp& c) { return servoToPose(c.arm, c.pose); },
           [&](const ServoCr& c) {

@@ -16,6 +16,11 @@ struct ServoLimits {
   /// A servo command may leave at most this many cycles of motion pending; a bigger jump is
   /// refused (so a bad stream cannot queue up seconds of motion).
   int jump_cycles = 20;
+  /// The share of servo_jr increments that reach the control loop: the robot subscribes with a
+  /// queue of one message, so one that arrives before its ROS thread took the last is lost now
+  /// and then. The twin applies this expected share of every increment (1: all arrive); a
+  /// calibration measures it.
+  double servo_jr_delivered = 1.0;
   /// The largest tool-point step a servo_cp may ask for (m).
   double cartesian_step = 0.015;
   /// move_jp and homing accelerate at A_MAX = 1 rad/s^2 (the insertion at the same fraction of

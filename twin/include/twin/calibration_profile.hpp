@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "twin/motor_actuation.hpp"
+#include "twin/twin_platform.hpp"
 #include "twin/vocabulary.hpp"
 
 namespace twin {
@@ -17,14 +18,19 @@ struct CalibrationProfile {
   /// Per arm: the standard deviation of each fitted value, in the fit's sense (the change that
   /// moves the model's signals by the robot's own spread); 0 where it was not fitted.
   ArmsMechanics uncertainty;
+  /// The share of servo_jr increments the robot's subscriber delivers (ServoLimits).
+  double servo_jr_delivered = 1.0;
   /// Platform time a manual-loop iteration of the recording controller took besides its command
   /// steps (its pad read, IK and recorder), in seconds.
   double iteration_overhead = 0.0;
 
   /// Reads `actuation: {left|right: {inertia, coulomb, viscous, gravity_error}}` (7 values
-  /// each), `uncertainty` (the same shape, optional), `replay: {iteration_overhead}`, and ignores
-  /// `fit` (what the values were fitted on). Throws common::LoadError naming file, line and key.
+  /// each), `uncertainty` (the same shape, optional), `commands: {servo_jr_delivered}`
+  /// (optional), `replay: {iteration_overhead}`, and ignores `fit` (what the values were fitted
+  /// on). Throws common::LoadError naming file, line and key.
   static CalibrationProfile load(const std::filesystem::path& file);
+  /// Makes `options` a twin of the calibrated robot: its motors and its command delivery.
+  void applyTo(TwinOptions& options) const;
   /// twin/config/raven2_calibration.yaml: the fit to the paper's physical recordings.
   static std::filesystem::path shippedFile();
   static CalibrationProfile shipped() { return load(shippedFile()); }

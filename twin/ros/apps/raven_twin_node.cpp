@@ -75,9 +75,9 @@ int main(int argc, char** argv) {
     if (ambf_model) twin.bindings = twin::ArmBindings::ambfRaven();
     // The motor model is the cable-driven robot's: in its joint convention, on our model.
     if (!ideal_servos && !ambf_model && twin.profile == "physical") {
-      twin.motors = (calibration.empty() ? twin::CalibrationProfile::shipped()
-                                         : twin::CalibrationProfile::load(calibration))
-                        .mechanics;
+      (calibration.empty() ? twin::CalibrationProfile::shipped()
+                           : twin::CalibrationProfile::load(calibration))
+          .applyTo(twin);
     }
     server.arm_swap = !no_arm_swap;
     twin::TwinPlatform platform(twin);
