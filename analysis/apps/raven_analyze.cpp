@@ -1,10 +1,12 @@
 // raven_analyze: how far each simulated platform's replays sit from the physical robot's and from
-// each other (the paper's T_SS, T_PP, T_PS), per joint, with correlating factors and figures.
+// each other (the paper's T_SS, T_PP, T_PS), per joint and, where the recordings log them, per
+// actuator signal (mpos, mvel, Tau, dac_vals), with correlating factors and figures.
 
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/actuator_report.hpp"
 #include "analysis/metrics.hpp"
 #include "analysis/report.hpp"
 #include "analysis/trial_set.hpp"
@@ -31,6 +33,23 @@ void printSummary(const analysis::TrialSet& set) {
                   c.describe().c_str(), g.name.c_str(), raw, removed, g.unit.c_str(), velocity,
                   g.unit.c_str());
     }
+  }
+}
+
+/// The actuator signals, where the recordings log them: per comparison and signal, the median
+/// over the joints of the mean |difference| over the robot's own T_PP.
+void printActuators(const std::vector<analysis::ActuatorComparison>& comparisons) {
+  if (comparisons.empty()) return;
+  std::printf(
+      "\nactuator signals, median over joints of the mean |difference| over the robot's T_PP\n");
+  std::printf("  %-4s %-22s", "", "");
+  for (auto s : analysis::kActuatorSignals) std::printf(" %9s", analysis::columnName(s));
+  std::printf("\n");
+  for (const auto& c : comparisons) {
+    if (!c.median_over_robot) continue;
+    std::printf("  %-4s %-22s", c.symbol.c_str(), c.description.c_str());
+    for (double v : *c.median_over_robot) std::printf(" %8.2fx", v);
+    std::printf("\n");
   }
 }
 
@@ -70,6 +89,10 @@ int main(int argc, char** argv) {
       return 1;
     }
     analysis::writeReportData(set, settings, out);
+    const auto actuators = analysis::loadActuators(set);
+    const auto actuator_comparisons = analysis::compareActuators(actuators);
+    printActuators(actuator_comparisons);
+    analysis::writeActuatorReport(actuators, actuator_comparisons, out);
     if (const auto pictures = analysis::writePictures(inputs, out)) {
       std::printf("\n%zu snapshot(s) and video(s) of the runs in %s\n", pictures,
                   (out / "pictures").c_str());

@@ -7,6 +7,9 @@ Fig. 6: each joint's trajectory per platform, the band between the smallest and 
 Fig. 7: mean absolute difference per joint for every comparison (positions and velocities).
 Fig. 8: simulation-minus-physical difference against time, joint position and joint velocity,
         with the LOWESS trend and the marginal densities.
+Actuators: where recordings log them (the physical robot, our twin), mpos, mvel, Tau and dac_vals
+        per joint over time (mean across trials) and per comparison (mean absolute difference,
+        Fig. 7's form).
 Grasp forces: for every rs file with a cf file beside it (a platform that measures contact forces,
         such as the twin), each grasper's jaw normal and friction forces over time.
 The numbers come from the C++ analysis; this script only draws them.
@@ -201,6 +204,76 @@ def grasp_forces(out):
     return figures
 
 
+def actuators(out):
+    """Figs. 6 and 7 below the joints, from actuators.json and actuator_trajectories.csv."""
+    listed = out / "actuators.json"
+    if not listed.exists():
+        return []
+    report = json.loads(listed.read_text())
+    if not report["comparisons"]:
+        return []
+    series = defaultdict(list)
+    for r in read_rows(out / "actuator_trajectories.csv"):
+        series[(r["platform"], r["signal"], r["arm"], r["joint"])].append(
+            (float(r["time"]), float(r["mean"])))
+    platforms = [p["name"] for p in report["platforms"] if p["logs actuators"]]
+    signals = list(report["comparisons"][0]["signals"].keys())
+    joints = ["shoulder", "elbow", "insertion", "roll", "wrist", "jaw1", "jaw2"]
+    files = []
+    for signal in signals:
+        unit = report["comparisons"][0]["signals"][signal]["unit"]
+        fig, axes = plt.subplots(2, 7, figsize=(24, 7), sharex=True)
+        for a, arm in enumerate(("left", "right")):
+            for j, joint in enumerate(joints):
+                ax = axes[a][j]
+                for i, platform in enumerate(platforms):
+                    data = np.array(series[(platform, signal, arm, joint)])
+                    if data.size:
+                        ax.plot(data[:, 0], data[:, 1], color=colour(platform, i), linewidth=0.8,
+                                label=platform)
+                ax.set_title(f"{arm} {joint}", fontsize=10)
+                ax.set_ylabel(unit)
+        axes[0][0].legend(fontsize=8)
+        axes[1][3].set_xlabel("time (s)")
+        files.append(save(fig, out, f"{signal} per joint, mean across trials",
+                          f"actuators_{signal}.png", 80))
+    fig, axes = plt.subplots(1, len(signals), figsize=(24, 5))
+    width = 0.8 / len(report["comparisons"])
+    x = np.arange(14)
+    for k, signal in enumerate(signals):
+        ax = axes[k]
+        for i, c in enumerate(report["comparisons"]):
+            values = c["signals"][signal]["mean_abs"]
+            ax.bar(x + i * width, values["left"] + values["right"], width,
+                   label=f'{c["symbol"]} {c["comparison"]}')
+        ax.set_xticks(x + width * (len(report["comparisons"]) - 1) / 2)
+        ax.set_xticklabels([f"{a[0]}.{j}" for a in ("left", "right") for j in joints],
+                           rotation=60, ha="right", fontsize=7)
+        ax.set_title(f'{signal} ({report["comparisons"][0]["signals"][signal]["unit"]})')
+    axes[0].legend(fontsize=8)
+    files.append(save(fig, out, "Actuator signals: mean absolute difference per joint",
+                      "actuators_inconsistency.png", 80))
+    return files
+
+
+def actuator_table(out):
+    listed = out / "actuators.json"
+    if not listed.exists():
+        return ""
+    rows = []
+    for c in json.loads(listed.read_text())["comparisons"]:
+        row = {"symbol": c["symbol"], "comparison": c["comparison"]}
+        for signal, v in c["signals"].items():
+            ratio = v.get("median_over_T_PP")
+            row[signal] = "n/a" if ratio is None else f"{ratio:.2f}x"
+        rows.append(row)
+    if not rows:
+        return ""
+    columns = ["symbol", "comparison"] + [k for k in rows[0] if k not in ("symbol", "comparison")]
+    return ("<h2>Actuator signals (median over joints of the mean absolute difference over the "
+            f"robot's own T_PP)</h2>{table(rows, columns)}")
+
+
 def table(rows, columns):
     head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
     body = "".join("<tr>" + "".join(f"<td>{html.escape(str(r.get(c, '')))}</td>" for c in columns)
@@ -250,6 +323,7 @@ metrics.csv, correlations.csv; figure data: trajectories.csv, scatter.csv, lowes
 <h2>Summary (mean absolute difference, averaged over trial pairs)</h2>
 {table(summary, ["symbol", "comparison", "quantity", "group", "unit", "mean_abs",
                  "mean_abs_first_row_removed"])}
+{actuator_table(out)}
 <h2>Figures</h2>{images}
 {pictures(out)}
 </body></html>
@@ -264,7 +338,7 @@ def main():
     metrics = json.loads((out / "metrics.json").read_text())
     joints = metrics["joints"]
     figures = trajectories(out, metrics, joints) + inconsistencies(out, metrics, joints)
-    figures += factors(out, metrics, joints) + grasp_forces(out)
+    figures += factors(out, metrics, joints) + actuators(out) + grasp_forces(out)
     page(out, metrics, figures)
     print(f"draw_report: {len(figures)} figures and index.html in {out}")
 

@@ -134,11 +134,11 @@ void printMechanics(const twin::CalibrationProfile& p) {
     const auto a = static_cast<std::size_t>(raven::index(arm));
     twin::MotorMechanics m = p.mechanics[a], u = p.uncertainty[a];
     for (int v = 0; v < calibration::kMechanicsValues; ++v) {
-      const char* names[4] = {"inertia", "coulomb", "viscous", "gravity_error"};
-      std::printf("  %-6s %-14s", std::string(raven::armName(arm)).c_str(), names[v]);
+      std::printf("  %-6s %-14s", std::string(raven::armName(arm)).c_str(),
+                  std::string(twin::MotorMechanics::kNames[static_cast<std::size_t>(v)]).c_str());
       for (int j = 0; j < raven::kJointCount; ++j) {
-        std::printf(" %9.3g+-%-8.2g", calibration::mechanicsValue(m, v, j),
-                    calibration::mechanicsValue(u, v, j));
+        std::printf(" %9.3g+-%-8.2g", m.field(static_cast<std::size_t>(v))(j),
+                    u.field(static_cast<std::size_t>(v))(j));
       }
       std::printf("\n");
     }

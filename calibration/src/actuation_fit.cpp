@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nlopt.hpp>
 
+#include "calibration/mechanics_information.hpp"
 #include "calibration/setpoint_replay.hpp"
 
 namespace calibration {
@@ -16,13 +17,6 @@ using analysis::ActuatorSignal;
 
 constexpr std::array<ActuatorSignal, 3> kFitted{
     ActuatorSignal::MotorPosition, ActuatorSignal::MotorVelocity, ActuatorSignal::Torque};
-
-double& field(twin::MotorMechanics& m, const std::string& name, int joint) {
-  if (name == "inertia") return m.inertia(joint);
-  if (name == "coulomb") return m.coulomb(joint);
-  if (name == "viscous") return m.viscous(joint);
-  return m.gravity_error(joint);
-}
 
 double toUnit(const MechanicsParameter& p, double v) {
   if (p.log_scale) return std::log(v / p.lower) / std::log(p.upper / p.lower);
@@ -38,12 +32,14 @@ double fromUnit(const MechanicsParameter& p, double u) {
 
 std::vector<MechanicsParameter> mechanicsParameters(int joint) {
   const bool big = joint <= raven::kInsertion;
+  // In twin::MotorMechanics::kNames order.
   std::vector<MechanicsParameter> p{
-      {"inertia", big ? 2e-5 : 1e-6, big ? 2e-3 : 2e-4, true},
-      {"coulomb", 0.0, big ? 0.3 : 0.05, false},
-      {"viscous", 0.0, big ? 0.02 : 0.002, false},
+      {0, big ? 2e-5 : 1e-6, big ? 2e-3 : 2e-4, true},
+      {1, 0.0, big ? 0.3 : 0.05, false},
+      {2, 0.0, 0.8, false},
+      {3, 0.0, big ? 0.02 : 0.002, false},
   };
-  if (big) p.push_back({"gravity_error", -0.8, 0.8, false});
+  if (big) p.push_back({twin::MotorMechanics::kGravityError, -0.8, 0.8, false});
   return p;
 }
 
@@ -90,7 +86,16 @@ ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& trai
                                 const twin::ArmsMechanics& initial,
                                 const ActuationFitOptions& options,
                                 const std::function<void(const std::string&)>& progress) {
-  const analysis::ActuatorFidelity spread = analysis::actuatorFidelity({train[0]}, train);
+  analysis::ActuatorFidelity spread;
+  if (options.same_motion) {
+    spread = analysis::actuatorFidelity({train[0]}, train);
+  } else {
+    for (raven::Arm arm : raven::kArms) {
+      const auto noise = quantisationNoise(arm);
+      const auto a = static_cast<std::size_t>(raven::index(arm));
+      for (std::size_t k = 0; k < noise.size(); ++k) spread.spread[k][a] = noise[k];
+    }
+  }
   ActuationFitResult result{initial, {}, 0};
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     for (raven::Arm arm : raven::kArms) {
@@ -110,7 +115,7 @@ ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& trai
           auto& c = *static_cast<Context*>(data);
           twin::ArmsMechanics m = c.result.mechanics;
           for (std::size_t i = 0; i < unit.size(); ++i) {
-            field(m[c.arm], c.parameters[i].name, c.joint) = fromUnit(c.parameters[i], unit[i]);
+            m[c.arm].field(c.parameters[i].field)(c.joint) = fromUnit(c.parameters[i], unit[i]);
           }
           ++c.result.evaluations;
           const double score = scoreMechanics(m, c.train, c.spread).joint[c.arm](c.joint);
@@ -126,7 +131,7 @@ ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& trai
         std::vector<double> unit(n);
         for (std::size_t i = 0; i < n; ++i) {
           unit[i] = std::clamp(
-              toUnit(parameters[i], field(result.mechanics[a], parameters[i].name, joint)), 0.0,
+              toUnit(parameters[i], result.mechanics[a].field(parameters[i].field)(joint)), 0.0,
               1.0);
         }
         double best = 0.0;
@@ -136,7 +141,7 @@ ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& trai
           best = optimiser.last_optimum_value();
         }
         for (std::size_t i = 0; i < n; ++i) {
-          field(result.mechanics[a], parameters[i].name, joint) = fromUnit(parameters[i], unit[i]);
+          result.mechanics[a].field(parameters[i].field)(joint) = fromUnit(parameters[i], unit[i]);
         }
         if (progress) {
           progress(fmt::format("  sweep {} {} {}: score {:.3f}", sweep + 1, armName(arm),

@@ -18,10 +18,10 @@ void emitArms(YAML::Emitter& out, const char* key, const twin::ArmsMechanics& ar
   for (raven::Arm arm : raven::kArms) {
     const twin::MotorMechanics& m = arms[static_cast<std::size_t>(raven::index(arm))];
     out << YAML::Key << std::string(raven::armName(arm)) << YAML::Value << YAML::BeginMap;
-    out << YAML::Key << "inertia" << YAML::Value << YAML::Flow << listOf(m.inertia);
-    out << YAML::Key << "coulomb" << YAML::Value << YAML::Flow << listOf(m.coulomb);
-    out << YAML::Key << "viscous" << YAML::Value << YAML::Flow << listOf(m.viscous);
-    out << YAML::Key << "gravity_error" << YAML::Value << YAML::Flow << listOf(m.gravity_error);
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
+      out << YAML::Key << std::string(twin::MotorMechanics::kNames[k]) << YAML::Value << YAML::Flow
+          << listOf(m.field(k));
+    }
     out << YAML::EndMap;
   }
   out << YAML::EndMap;
@@ -52,8 +52,10 @@ void writeCalibration(const std::filesystem::path& file, const twin::Calibration
   stream
       << "# The Raven-II twin's actuation, fitted by raven_calibrate to physical recordings:\n"
          "# per arm and motor (shoulder, elbow, insertion, roll, wrist, jaw1, jaw2) the inertia\n"
-         "# (N m s^2 per motor rad at the gearbox output), Coulomb (N m) and viscous (N m s/rad)\n"
-         "# friction, and the gravity compensation's error (fraction). Use: --calibration FILE.\n"
+         "# (N m s^2 per motor rad at the gearbox output), Coulomb friction (N m, plus "
+         "load_friction\n"
+         "# per N m applied), viscous friction (N m s/rad) and the gravity compensation's error\n"
+         "# (fraction). Use: --calibration FILE.\n"
       << out.c_str() << "\n";
   if (!stream) throw std::runtime_error(file.string() + ": cannot write");
 }

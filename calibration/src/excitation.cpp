@@ -113,9 +113,9 @@ double meanReduction(const twin::ArmsMechanics& before, const twin::ArmsMechanic
     twin::MotorMechanics b = before[a], c = after[a];
     for (int j = 0; j < raven::kJointCount; ++j) {
       for (int v = 0; v < kMechanicsValues; ++v) {
-        const double s0 = mechanicsValue(b, v, j);
+        const double s0 = b.field(static_cast<std::size_t>(v))(j);
         if (s0 <= 0.0) continue;
-        sum += 1.0 - mechanicsValue(c, v, j) / s0;
+        sum += 1.0 - c.field(static_cast<std::size_t>(v))(j) / s0;
         ++n;
       }
     }

@@ -14,8 +14,9 @@ using analysis::ActuatorSignal;
 
 constexpr double kDegreesPerRadian = 180.0 / M_PI;
 
-/// The quantisation noise of each logged signal of `arm`, per joint, in the logged units.
-std::array<raven::ArmJoints, 3> noise(raven::Arm arm) {
+}  // namespace
+
+std::array<raven::ArmJoints, 3> quantisationNoise(raven::Arm arm) {
   const twin::DriveTrain drive = twin::DriveTrain::raven2();
   const double count = 1.0 / drive.countsPerMotorRadian();
   const double position = count / std::sqrt(12.0);
@@ -25,21 +26,6 @@ std::array<raven::ArmJoints, 3> noise(raven::Arm arm) {
       ((gains.kp * position).array().square() + (gains.kd * velocity).array().square()).sqrt();
   return {raven::ArmJoints::Constant(position * kDegreesPerRadian),
           raven::ArmJoints::Constant(velocity * kDegreesPerRadian), torque};
-}
-
-}  // namespace
-
-double& mechanicsValue(twin::MotorMechanics& m, int value, int joint) {
-  switch (value) {
-    case 0:
-      return m.inertia(joint);
-    case 1:
-      return m.coulomb(joint);
-    case 2:
-      return m.viscous(joint);
-    default:
-      return m.gravity_error(joint);
-  }
 }
 
 MechanicsInformation MechanicsInformation::none() {
@@ -54,7 +40,7 @@ MechanicsInformation MechanicsInformation::fromUncertainty(const twin::ArmsMecha
     twin::MotorMechanics m = sd[a];
     for (int j = 0; j < raven::kJointCount; ++j) {
       for (int v = 0; v < kMechanicsValues; ++v) {
-        const double s = mechanicsValue(m, v, j);
+        const double s = m.field(static_cast<std::size_t>(v))(j);
         if (s > 0.0) info.blocks[a][static_cast<std::size_t>(j)](v, v) = 1.0 / (s * s);
       }
     }
@@ -72,8 +58,7 @@ MechanicsInformation& MechanicsInformation::operator+=(const MechanicsInformatio
 twin::ArmsMechanics MechanicsInformation::standardDeviations() const {
   twin::ArmsMechanics sd;
   for (std::size_t a = 0; a < 2; ++a) {
-    sd[a] = {raven::ArmJoints::Zero(), raven::ArmJoints::Zero(), raven::ArmJoints::Zero(),
-             raven::ArmJoints::Zero()};
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) sd[a].field(k).setZero();
     for (int j = 0; j < raven::kJointCount; ++j) {
       const InformationBlock& b = blocks[a][static_cast<std::size_t>(j)];
       // Only the values with information: the rest stay 0 (not fitted, nothing known).
@@ -89,7 +74,7 @@ twin::ArmsMechanics MechanicsInformation::standardDeviations() const {
       }
       const Eigen::MatrixXd covariance = sub.completeOrthogonalDecomposition().pseudoInverse();
       for (std::size_t r = 0; r < used.size(); ++r) {
-        mechanicsValue(sd[a], used[r], j) = std::sqrt(
+        sd[a].field(static_cast<std::size_t>(used[r]))(j) = std::sqrt(
             std::max(0.0, covariance(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(r))));
       }
     }
@@ -104,7 +89,7 @@ double MechanicsInformation::logDet(const twin::ArmsMechanics& fitted) const {
     for (int j = 0; j < raven::kJointCount; ++j) {
       std::vector<int> used;
       for (int v = 0; v < kMechanicsValues; ++v) {
-        if (mechanicsValue(m, v, j) > 0.0) used.push_back(v);
+        if (m.field(static_cast<std::size_t>(v))(j) > 0.0) used.push_back(v);
       }
       if (used.empty()) continue;
       Eigen::MatrixXd sub(used.size(), used.size());
@@ -125,8 +110,8 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
                                    const analysis::ActuatorTrace& recording) {
   constexpr std::array<ActuatorSignal, 3> kSignals{
       ActuatorSignal::MotorPosition, ActuatorSignal::MotorVelocity, ActuatorSignal::Torque};
-  const std::array<std::array<raven::ArmJoints, 3>, 2> sigma{noise(raven::Arm::Left),
-                                                             noise(raven::Arm::Right)};
+  const std::array<std::array<raven::ArmJoints, 3>, 2> sigma{quantisationNoise(raven::Arm::Left),
+                                                             quantisationNoise(raven::Arm::Right)};
   const auto base = replaySetpoints(recording, mechanics);
   // Every motor's value v moved at once: the motors are independent, so each motor's signals
   // answer to its own value only.
@@ -138,11 +123,11 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
     for (std::size_t a = 0; a < 2; ++a) {
       h[a] = m[a];
       for (int j = 0; j < raven::kJointCount; ++j) {
-        double& x = mechanicsValue(m[a], v, j);
+        double& x = m[a].field(static_cast<std::size_t>(v))(j);
         // Relative steps, absolute where the value may be 0 (friction, gravity error).
         const double d =
             v == 0 ? 0.05 * x : (v == 3 ? 0.02 : std::max(0.05 * x, v == 1 ? 1e-3 : 1e-5));
-        mechanicsValue(h[a], v, j) = d;
+        h[a].field(static_cast<std::size_t>(v))(j) = d;
         x += d;
       }
     }
@@ -158,10 +143,10 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
         for (std::size_t r = 0; r < y0.size(); ++r) {
           Eigen::Matrix<double, kMechanicsValues, 1> g =
               Eigen::Matrix<double, kMechanicsValues, 1>::Zero();
-          for (int v = 0; v < (gravity ? 4 : 3); ++v) {
+          for (int v = 0; v < (gravity ? 5 : 4); ++v) {
             const auto& y1 = moved[static_cast<std::size_t>(v)].arms[a].of(kSignals[s]);
             twin::MotorMechanics h = step[static_cast<std::size_t>(v)][a];
-            g(v) = (y1[r](j) - y0[r](j)) / mechanicsValue(h, v, j) / sigma[a][s](j);
+            g(v) = (y1[r](j) - y0[r](j)) / h.field(static_cast<std::size_t>(v))(j) / sigma[a][s](j);
           }
           info.blocks[a][static_cast<std::size_t>(j)] += g * g.transpose();
         }

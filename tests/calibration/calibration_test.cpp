@@ -58,10 +58,8 @@ std::optional<Paper2arm> paper2arm() {
 
 twin::ArmsMechanics filled(double value) {
   twin::MotorMechanics m;
-  m.inertia.setConstant(value);
-  m.coulomb.setConstant(value);
-  m.viscous.setConstant(value);
-  m.gravity_error.setConstant(value);
+  for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k)
+    m.field(k).setConstant(value);
   return {m, m};
 }
 
@@ -71,17 +69,19 @@ TEST(CalibrationFile, WhatIsWrittenIsReadBack) {
   profile.mechanics = calibration::startingMechanics();
   profile.mechanics[1].coulomb(raven::kJaw2) = 0.0123;
   profile.mechanics[0].gravity_error(raven::kElbow) = -0.25;
+  profile.mechanics[1].load_friction(raven::kShoulder) = 0.3;
   profile.uncertainty = filled(1e-4);
   profile.iteration_overhead = 0.001;
   calibration::writeCalibration(dir.path() / "c.yaml", profile,
                                 {"inputs_ci.csv", {"a_physical_1.csv"}, {"a note"}});
   const auto read = twin::CalibrationProfile::load(dir.path() / "c.yaml");
   for (std::size_t a = 0; a < 2; ++a) {
-    EXPECT_TRUE(read.mechanics[a].inertia.isApprox(profile.mechanics[a].inertia, 1e-5));
-    EXPECT_TRUE(read.mechanics[a].coulomb.isApprox(profile.mechanics[a].coulomb, 1e-5));
-    EXPECT_TRUE(read.mechanics[a].viscous.isApprox(profile.mechanics[a].viscous, 1e-5));
-    EXPECT_TRUE(read.mechanics[a].gravity_error.isApprox(profile.mechanics[a].gravity_error, 1e-5));
-    EXPECT_TRUE(read.uncertainty[a].coulomb.isApprox(profile.uncertainty[a].coulomb, 1e-5));
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
+      EXPECT_LT((read.mechanics[a].field(k) - profile.mechanics[a].field(k)).cwiseAbs().maxCoeff(),
+                1e-5 * (1.0 + profile.mechanics[a].field(k).cwiseAbs().maxCoeff()))
+          << twin::MotorMechanics::kNames[k];
+      EXPECT_TRUE(read.uncertainty[a].field(k).isApprox(profile.uncertainty[a].field(k), 1e-5));
+    }
   }
   EXPECT_EQ(read.iteration_overhead, 0.001);
 }

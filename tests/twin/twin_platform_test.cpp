@@ -23,6 +23,16 @@ using bridge::StateCommand;
 using test_support::makeReady;
 using twin::TwinPlatform;
 
+/// How far from its setpoint (motor rad) a PD motor can rest: where its torque KP e, plus the
+/// gravity the compensation misses, stays within Coulomb friction and its load-dependent part
+/// (raven2-actuation.md §3 for the law; the mechanics from the shipped calibration).
+double restBand(const twin::MotorMechanics& m, const twin::MotorGains& gains, double gravity,
+                int i) {
+  const double held = m.coulomb(i) + std::abs(m.gravity_error(i) * gravity) +
+                      m.load_friction(i) * std::abs(gravity);
+  return held / (gains.kp(i) * (1.0 - m.load_friction(i)));
+}
+
 twin::TwinOptions withMotors() {
   twin::TwinOptions options;
   options.motors = twin::CalibrationProfile::shipped().mechanics;
@@ -150,11 +160,13 @@ TEST(TwinPlatform, TheMotorsLagSettleWithinTheirFrictionBandAndReadWholeCounts) 
   EXPECT_GT(goal(0) - twin.measuredJs(Arm::Left).position(0), 0.002)
       << "the motors should lag behind a step";
   twin.advance(1.0);
-  // The PD has no integrator on the shoulder: Coulomb friction holds the motor anywhere its
-  // error is within coulomb / kp (motor rad), one encoder count more for the reading.
-  const double band = mechanics.coulomb(0) / gains.kp(0) / drive.transmission(0) +
-                      1.0 / drive.countsPerMotorRadian() / drive.transmission(0);
+  // The PD has no integrator on the shoulder: friction holds the motor anywhere within its rest
+  // band, one encoder count more for the reading.
   const ArmJoints settled = twin.measuredJs(Arm::Left).position;
+  const double gravity = twin::gravityCompensation(Arm::Left, settled, drive)(0);
+  const double band =
+      (restBand(mechanics, gains, gravity, 0) + 1.0 / drive.countsPerMotorRadian()) /
+      drive.transmission(0);
   EXPECT_LE(std::abs(settled(0) - goal(0)), band);
   EXPECT_GT(settled(0) - (goal(0) - 0.02), 0.5 * 0.02) << "the shoulder did not move";
   // Every motor reading is a whole number of encoder counts.
@@ -178,10 +190,8 @@ TEST(TwinPlatform, TheArmsHoldWhenTheControllerGoesSilent) {
   stream(twin, 250);
   twin.advance(0.5);  // the last increments are consumed
   const auto held_setpoint = twin.setpointJs(Arm::Left).position;
-  // A PD motor rests anywhere its torque cannot break Coulomb friction plus the weight the
-  // gravity compensation misses: |mpos_d - mpos| <= (coulomb + |gravity_error tau_g|) / kp. The
-  // tool motors' integrators creep them in (kp / ki = 1 s) from wherever they stopped. Nothing
-  // runs away.
+  // A PD motor rests anywhere within its rest band; the tool motors' integrators creep them in
+  // (kp / ki = 1 s) from wherever they stopped. Nothing runs away.
   const auto drive = twin::DriveTrain::raven2();
   const auto mechanics = twin::CalibrationProfile::shipped().mechanics[0];
   const auto gains = twin::MotorGains::raven2(Arm::Left);
@@ -201,8 +211,7 @@ TEST(TwinPlatform, TheArmsHoldWhenTheControllerGoesSilent) {
         twin::gravityCompensation(Arm::Left, twin.measuredJs(Arm::Left).position, drive);
     const ArmJoints error = motorError();
     for (int i = 0; i < raven::kJointCount; ++i) {
-      const double rest =
-          (mechanics.coulomb(i) + std::abs(mechanics.gravity_error(i) * gravity(i))) / gains.kp(i);
+      const double rest = restBand(mechanics, gains, gravity(i), i);
       const double band = (gains.ki(i) > 0.0 ? std::max(rest, error_then(i)) : rest) +
                           2.0 / drive.countsPerMotorRadian();
       ASSERT_LE(error(i), band) << raven::kJointNames[static_cast<std::size_t>(i)] << " at "

@@ -7,13 +7,15 @@ namespace twin {
 
 namespace {
 
-/// One arm's four lists: fitted `values` (inertia > 0, gravity_error > -1) or uncertainties (>= 0).
+/// One arm's lists: fitted `values` (inertia > 0, gravity_error > -1; MotorMechanics checks the
+/// rest when a twin is built) or uncertainties (all >= 0).
 MotorMechanics readMechanics(const common::YamlView& node, bool values) {
   MotorMechanics m;
-  m.inertia = readJoints(node["inertia"], 0.0, values);
-  m.coulomb = readJoints(node["coulomb"], 0.0, false);
-  m.viscous = readJoints(node["viscous"], 0.0, false);
-  m.gravity_error = readJoints(node["gravity_error"], values ? -1.0 : 0.0, values);
+  for (std::size_t k = 0; k < MotorMechanics::kNames.size(); ++k) {
+    const auto field = node[MotorMechanics::kNames[k]];
+    const bool gravity = k == MotorMechanics::kGravityError;
+    m.field(k) = readJoints(field, values && gravity ? -1.0 : 0.0, values && (k == 0 || gravity));
+  }
   return m;
 }
 
@@ -21,7 +23,8 @@ ArmsMechanics readArms(const common::YamlView& node, bool values,
                        std::vector<common::LoadIssue>& warnings) {
   node.checkKeys({"left", "right"}, {true, warnings});
   for (const char* arm : {"left", "right"}) {
-    node[arm].checkKeys({"inertia", "coulomb", "viscous", "gravity_error"}, {true, warnings});
+    node[arm].checkKeys(std::span(MotorMechanics::kNames.begin(), MotorMechanics::kNames.size()),
+                        {true, warnings});
   }
   if (!warnings.empty()) throw common::LoadError(warnings);
   return {readMechanics(node["left"], values), readMechanics(node["right"], values)};

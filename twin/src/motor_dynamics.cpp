@@ -4,17 +4,46 @@
 
 namespace twin {
 
+ArmJoints& MotorMechanics::field(std::size_t k) {
+  return const_cast<ArmJoints&>(static_cast<const MotorMechanics&>(*this).field(k));
+}
+
+const ArmJoints& MotorMechanics::field(std::size_t k) const {
+  switch (k) {
+    case 0:
+      return inertia;
+    case 1:
+      return coulomb;
+    case 2:
+      return load_friction;
+    case 3:
+      return viscous;
+    default:
+      return gravity_error;
+  }
+}
+
 std::string MotorMechanics::invalidReason() const {
-  for (int i = 0; i < kJointCount; ++i) {
-    const std::string joint(raven::kJointNames[static_cast<std::size_t>(i)]);
-    if (!(inertia(i) > 0.0) || !std::isfinite(inertia(i)))
-      return "inertia of " + joint + " must be > 0";
-    if (!(coulomb(i) >= 0.0) || !std::isfinite(coulomb(i)))
-      return "coulomb of " + joint + " must be >= 0";
-    if (!(viscous(i) >= 0.0) || !std::isfinite(viscous(i)))
-      return "viscous of " + joint + " must be >= 0";
-    if (!(gravity_error(i) > -1.0) || !std::isfinite(gravity_error(i))) {
-      return "gravity_error of " + joint + " must be > -1";
+  // Per field: the smallest value (excluded when `open`) and the largest.
+  struct Range {
+    double low, high;
+    bool open;
+    const char* says;
+  };
+  constexpr std::array<Range, kNames.size()> kRanges{{{0.0, INFINITY, true, "> 0"},
+                                                      {0.0, INFINITY, false, ">= 0"},
+                                                      {0.0, 0.9, false, "within 0..0.9"},
+                                                      {0.0, INFINITY, false, ">= 0"},
+                                                      {-1.0, INFINITY, true, "> -1"}}};
+  for (std::size_t k = 0; k < kNames.size(); ++k) {
+    const Range& r = kRanges[k];
+    for (int i = 0; i < kJointCount; ++i) {
+      const double v = field(k)(i);
+      const bool ok = std::isfinite(v) && (r.open ? v > r.low : v >= r.low) && v <= r.high;
+      if (!ok) {
+        return std::string(kNames[k]) + " of " +
+               std::string(raven::kJointNames[static_cast<std::size_t>(i)]) + " must be " + r.says;
+      }
     }
   }
   return {};
@@ -27,11 +56,16 @@ void MotorAxes::step(const ArmJoints& torque, const ArmJoints& gravity_load, dou
   for (int s = 0; s < kSubsteps; ++s) {
     for (int i = 0; i < kJointCount; ++i) {
       const double inertia = mechanics_.inertia(i);
-      // Viscous friction implicitly; then Coulomb friction as an impulse that may stop the motor.
-      const double free =
-          (velocity_(i) + h * drive(i) / inertia) / (1.0 + h * mechanics_.viscous(i) / inertia);
-      const double stop = h * mechanics_.coulomb(i) / inertia;
-      velocity_(i) = std::abs(free) <= stop ? 0.0 : free - std::copysign(stop, free);
+      // Coulomb friction (its constant part and the part the transmitted torque adds) as an
+      // impulse that may stop the motor, then viscous friction implicitly: at a steady speed the
+      // drive balances both exactly.
+      const double free = velocity_(i) + h * drive(i) / inertia;
+      const double friction =
+          mechanics_.coulomb(i) + mechanics_.load_friction(i) * std::abs(torque(i));
+      const double stop = h * friction / inertia;
+      velocity_(i) = std::abs(free) <= stop ? 0.0
+                                            : (free - std::copysign(stop, free)) /
+                                                  (1.0 + h * mechanics_.viscous(i) / inertia);
       position_(i) += h * velocity_(i);
     }
   }

@@ -1,6 +1,7 @@
 #pragma once
-// Fits the mechanics behind the Raven-II's motors (twin::MotorMechanics: inertia, Coulomb and
-// viscous friction, the gravity compensation's error) to physical recordings: each recording's
+// Fits the mechanics behind the Raven-II's motors (twin::MotorMechanics: inertia, Coulomb
+// friction and its load-dependent part, viscous friction, the gravity compensation's error) to
+// physical recordings: each recording's
 // joint setpoints drive the motor-level model from the state the robot was in
 // (replaySetpoints), and a bounded derivative-free optimiser (NLopt's BOBYQA) brings its motor
 // angles, velocities and torques to the robot's, each over the robot's own trial-to-trial spread.
@@ -14,9 +15,9 @@
 
 namespace calibration {
 
-/// One fitted quantity of one motor: its name, bounds and scale.
+/// One fitted quantity of one motor: its field, bounds and scale.
 struct MechanicsParameter {
-  std::string name;  ///< "inertia", "coulomb", "viscous", "gravity_error"
+  std::size_t field = 0;  ///< index into twin::MotorMechanics::kNames
   double lower = 0.0, upper = 1.0;
   bool log_scale = false;
 };
@@ -41,6 +42,10 @@ MechanicsScore scoreMechanics(const twin::ArmsMechanics& mechanics,
 struct ActuationFitOptions {
   int evaluations_per_joint = 60;
   int sweeps = 2;  ///< passes over the joints (the tool motors follow the insertion's)
+  /// The recordings repeat one motion (two or more): differences count over the robot's own
+  /// trial-to-trial spread. Otherwise (different motions, e.g. proposed excitations) over the
+  /// encoders' quantisation noise.
+  bool same_motion = true;
 };
 
 struct ActuationFitResult {
@@ -49,8 +54,8 @@ struct ActuationFitResult {
   int evaluations = 0;
 };
 
-/// Fits every arm's motors to `train` (two or more recordings of the same motion), one motor
-/// at a time, starting from `initial`. `progress` (if set) gets a line per fitted motor.
+/// Fits every arm's motors to `train`, one motor at a time, starting from `initial`. `progress` (if
+/// set) gets a line per fitted motor.
 ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& train,
                                 const twin::ArmsMechanics& initial,
                                 const ActuationFitOptions& options,

@@ -1,6 +1,6 @@
 #pragma once
 // How much recordings tell about the motors' fitted mechanics: per arm and motor, the Fisher
-// information J^T J / sigma^2 of its four values (inertia, coulomb, viscous, gravity_error),
+// information J^T J / sigma^2 of its values (twin::MotorMechanics::kNames),
 // with J the sensitivity of that motor's logged signals (mpos, mvel, Tau at every row) found by
 // finite differences of the setpoint replay, and sigma the encoder's quantisation noise (one
 // count / sqrt(12) on mpos, its one-cycle difference on mvel, both through the gains on Tau).
@@ -16,7 +16,7 @@
 namespace calibration {
 
 /// The order of each motor's values in its block.
-inline constexpr int kMechanicsValues = 4;  ///< inertia, coulomb, viscous, gravity_error
+inline constexpr int kMechanicsValues = 5;  ///< twin::MotorMechanics::kNames
 using InformationBlock = Eigen::Matrix<double, kMechanicsValues, kMechanicsValues>;
 
 struct MechanicsInformation {
@@ -34,12 +34,12 @@ struct MechanicsInformation {
   double logDet(const twin::ArmsMechanics& fitted) const;
 };
 
+/// The encoders' quantisation noise on mpos, mvel and Tau of `arm`, in the logged units.
+std::array<raven::ArmJoints, 3> quantisationNoise(raven::Arm arm);
+
 /// The information one recording (its setpoints replayed from its start) carries about
 /// `mechanics`.
 MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
                                    const analysis::ActuatorTrace& recording);
-
-/// Reads or writes one value of a motor's block by its index (the block's order).
-double& mechanicsValue(twin::MotorMechanics& m, int value, int joint);
 
 }  // namespace calibration

@@ -1,8 +1,13 @@
 #pragma once
 // The mechanics behind each Raven-II motor, on the scale the robot logs torques (N m at the
 // gearbox output, per motor radian): the inertia the motor moves (rotor, gearbox and the link
-// reflected through its cable), Coulomb and viscous friction of gearbox, capstans and cables,
-// and how far the firmware's gravity compensation is from the arm's real weight.
+// reflected through its cable), Coulomb friction (a constant part and a part that grows with the
+// torque transmitted: the gearbox's and capstans' efficiency loss), viscous friction, and how far
+// the firmware's gravity compensation is from the arm's real weight.
+
+#include <array>
+#include <string>
+#include <string_view>
 
 #include "twin/vocabulary.hpp"
 
@@ -13,9 +18,18 @@ namespace twin {
 struct MotorMechanics {
   ArmJoints inertia = ArmJoints::Constant(1e-4);  ///< N m s^2 per motor rad
   ArmJoints coulomb = ArmJoints::Zero();          ///< N m
-  ArmJoints viscous = ArmJoints::Zero();          ///< N m s per motor rad
+  /// Coulomb friction per N m of torque the motor applies (0 .. 0.9): efficiency loss.
+  ArmJoints load_friction = ArmJoints::Zero();
+  ArmJoints viscous = ArmJoints::Zero();  ///< N m s per motor rad
   /// The arm's weight over the firmware's estimate, minus one (joints 1-3): 0 = exact.
   ArmJoints gravity_error = ArmJoints::Zero();
+
+  /// The fields in a fixed order: calibration files, fits and their uncertainty use it.
+  static constexpr std::array<std::string_view, 5> kNames{"inertia", "coulomb", "load_friction",
+                                                          "viscous", "gravity_error"};
+  static constexpr int kGravityError = 4;  ///< its index: only the arm motors have one
+  ArmJoints& field(std::size_t k);
+  const ArmJoints& field(std::size_t k) const;
 
   /// Why these values cannot be used (naming the field), or empty when they can.
   std::string invalidReason() const;

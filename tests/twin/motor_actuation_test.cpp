@@ -1,0 +1,145 @@
+// The motor-level actuation's parts against the firmware's equations and textbook mechanics:
+// the cable coupling and its inverse, the DAC conversion and clip, the motors under torque and
+// friction, and an arm placed where a recording began.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "twin/arm_drive.hpp"
+#include "twin/drive_train.hpp"
+#include "twin/gravity_compensation.hpp"
+#include "twin/motor_controller.hpp"
+#include "twin/motor_dynamics.hpp"
+
+namespace {
+
+using raven::Arm;
+using raven::ArmJoints;
+
+ArmJoints home() {
+  return (ArmJoints() << M_PI / 6, M_PI / 2, 0.4, 0.1, -0.2, M_PI / 4, M_PI / 3).finished();
+}
+
+TEST(DriveTrain, TheCouplingAndItsInverseAgreeOnBothArms) {
+  const auto drive = twin::DriveTrain::raven2();
+  for (Arm arm : raven::kArms) {
+    const ArmJoints m = drive.toMotor(arm, home());
+    EXPECT_LT((drive.toJoints(arm, m) - home()).cwiseAbs().maxCoeff(), 1e-12);
+    // Inserting drags the tool cables: the tool motors turn with the insertion motor alone.
+    ArmJoints deeper = home();
+    deeper(raven::kInsertion) += 0.01;
+    const ArmJoints dm = drive.toMotor(arm, deeper) - m;
+    const double drag = dm(raven::kInsertion) * drive.tool_drag;
+    const double sign = twin::DriveTrain::toolSign(arm);
+    EXPECT_NEAR(dm(raven::kRoll), sign * drag, 1e-9);
+    EXPECT_NEAR(dm(raven::kJaw1), -sign * drag, 1e-9) << "jaw 1's cable runs the other way";
+  }
+  // The firmware's ratios (raven2-actuation.md §2.1).
+  EXPECT_NEAR(drive.transmission(raven::kShoulder), 136.196, 1e-3);
+  EXPECT_NEAR(drive.transmission(raven::kElbow), 121.522, 1e-3);
+  EXPECT_NEAR(drive.transmission(raven::kInsertion), 2158.59, 1e-2);
+  EXPECT_NEAR(1.0 / drive.tool_drag, 2.9087, 1e-4);
+}
+
+TEST(MotorController, TheDacIsTauOverTheAmplifiersAndTheClipHoldsExceptOnGrasp2) {
+  const auto drive = twin::DriveTrain::raven2();
+  const auto dac = twin::DacConversion::raven2(Arm::Left);
+  EXPECT_NEAR(dac.counts_per_torque(raven::kShoulder), -3695.8, 0.1) << "gold: negative";
+  EXPECT_NEAR(twin::DacConversion::raven2(Arm::Right).counts_per_torque(raven::kShoulder), 3695.8,
+              0.1);
+  EXPECT_NEAR(dac.counts_per_torque(raven::kRoll), 27328.0, 1.0);
+  EXPECT_LT(dac.counts_per_torque(raven::kJaw1), 0.0) << "grasp 1 opposes";
+  twin::MotorController law(Arm::Left, drive);
+  const ArmJoints m = drive.toMotor(Arm::Left, home());
+  // Small errors: Tau is KP e (+ gravity), the DAC its truncated count.
+  ArmJoints set = m;
+  set(raven::kShoulder) += 0.1;
+  auto out = law.cycle(set, m, ArmJoints::Zero(), home());
+  const ArmJoints gravity = twin::gravityCompensation(Arm::Left, home(), drive);
+  EXPECT_NEAR(out.torque(raven::kShoulder), 0.3 * 0.1 + gravity(raven::kShoulder), 1e-12);
+  EXPECT_EQ(out.dac[0], static_cast<int>(std::trunc(out.torque(0) * dac.counts_per_torque(0))));
+  EXPECT_FALSE(out.overdrive);
+  // 2 motor rad of error on the shoulder: 0.6 N m, 2217 counts, under the 2500 clip; 3 rad: over.
+  set(raven::kShoulder) = m(raven::kShoulder) + 3.0;
+  out = law.cycle(set, m, ArmJoints::Zero(), home());
+  EXPECT_EQ(out.dac[0], -2500) << "clipped to DAC_max (gold: negative counts)";
+  EXPECT_NEAR(out.applied(0), -2500 / dac.counts_per_torque(0), 1e-12);
+  // Jaw 2 is never clipped; past 20000 counts anywhere else the amplifiers are zeroed.
+  twin::MotorController jaws(Arm::Left, drive);
+  set = m;
+  set(raven::kJaw2) += 0.1;  // 0.005 N m: 137 counts
+  EXPECT_EQ(jaws.cycle(set, m, ArmJoints::Zero(), home()).dac[raven::kJaw2], 136);
+  set = m;
+  set(raven::kRoll) += 10.0;  // 0.9 N m: 24595 counts
+  out = twin::MotorController(Arm::Left, drive).cycle(set, m, ArmJoints::Zero(), home());
+  EXPECT_TRUE(out.overdrive);
+  for (int c : out.dac) EXPECT_EQ(c, 0);
+}
+
+twin::MotorMechanics frictionless(double inertia) {
+  twin::MotorMechanics m;
+  m.inertia.setConstant(inertia);
+  return m;
+}
+
+TEST(MotorAxes, AConstantTorqueAcceleratesTheInertia) {
+  twin::MotorAxes axes(frictionless(2e-4));
+  ArmJoints torque = ArmJoints::Zero();
+  torque(0) = 0.01;
+  for (int k = 0; k < 100; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_NEAR(axes.velocity()(0), 0.01 * 0.1 / 2e-4, 1e-9);                // a t
+  EXPECT_NEAR(axes.position()(0), 0.5 * 0.01 * 0.01 / 2e-4, 0.01 * 0.25);  // a t^2 / 2, O(h)
+  EXPECT_EQ(axes.velocity()(1), 0.0);
+}
+
+TEST(MotorAxes, FrictionHoldsBelowItsLevelAndDragsAboveIt) {
+  twin::MotorMechanics m = frictionless(2e-4);
+  m.coulomb.setConstant(0.05);
+  m.viscous.setConstant(0.002);
+  m.load_friction.setConstant(0.5);
+  twin::MotorAxes axes(m);
+  ArmJoints torque = ArmJoints::Zero();
+  torque(0) = 0.09;  // below 0.05 + 0.5 * 0.09 = 0.095: stuck
+  torque(1) = 0.3;   // above 0.05 + 0.15 = 0.2: terminal speed (0.3 - 0.2) / 0.002 = 50 rad/s
+  for (int k = 0; k < 3000; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_EQ(axes.velocity()(0), 0.0);
+  EXPECT_EQ(axes.position()(0), 0.0);
+  EXPECT_NEAR(axes.velocity()(1), 50.0, 1e-6);
+}
+
+TEST(MotorAxes, TheGravityTheCompensationMissesPullsTheMotor) {
+  twin::MotorMechanics m = frictionless(2e-4);
+  m.gravity_error(0) = 0.5;  // the arm weighs 1.5 times the firmware's estimate
+  twin::MotorAxes axes(m);
+  ArmJoints load = ArmJoints::Zero();
+  load(0) = 0.02;
+  // The firmware adds its estimate (0.02): the motor feels -0.01 net.
+  for (int k = 0; k < 10; ++k) axes.step(load, load, 0.001);
+  EXPECT_NEAR(axes.velocity()(0), -0.01 * 0.01 / 2e-4, 1e-9);
+}
+
+TEST(ArmDrive, PlacedAtARecordedStateItsFirstCycleGivesThatStatesTorque) {
+  const auto drive = twin::DriveTrain::raven2();
+  twin::MotorMechanics m = frictionless(2e-4);
+  twin::ArmDrive arm(Arm::Right, drive, m, 0.001, home());
+  twin::ArmStart start;
+  start.motor_position = drive.toMotor(Arm::Right, home());
+  const ArmJoints setpoint = home() + ArmJoints::Constant(0.001);
+  const ArmJoints wanted =
+      (ArmJoints() << -0.02, 0.05, 0.01, 0.004, -0.003, 0.002, 0.001).finished();
+  const ArmJoints motor_setpoint =
+      drive.toMotor(Arm::Right, setpoint, drive.quantise(start.motor_position)(raven::kInsertion));
+  start.integrators = arm.controller().integratorsGiving(
+      wanted, motor_setpoint - drive.quantise(start.motor_position), ArmJoints::Zero(),
+      drive.toJoints(Arm::Right, drive.quantise(start.motor_position)));
+  arm.place(start);
+  const auto& r = arm.cycle(setpoint);
+  // The integrator gains one cycle of error: KI e h, at most 0.05 * 0.1 * 0.001.
+  for (int i = raven::kRoll; i < raven::kJointCount; ++i) {
+    EXPECT_NEAR(r.torque(i), wanted(i), 1e-5) << raven::kJointNames[static_cast<std::size_t>(i)];
+  }
+  EXPECT_TRUE(r.motor_velocity.isZero());
+}
+
+}  // namespace
