@@ -101,8 +101,15 @@ ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& trai
     for (raven::Arm arm : raven::kArms) {
       const auto a = static_cast<std::size_t>(raven::index(arm));
       for (int joint = 0; joint < raven::kJointCount; ++joint) {
-        const auto parameters = mechanicsParameters(joint);
+        std::vector<MechanicsParameter> parameters;
+        for (const auto& p : mechanicsParameters(joint)) {
+          if (options.fields.empty() || std::find(options.fields.begin(), options.fields.end(),
+                                                  p.field) != options.fields.end()) {
+            parameters.push_back(p);
+          }
+        }
         const auto n = parameters.size();
+        if (n == 0) continue;
         struct Context {
           ActuationFitResult& result;
           const std::vector<MechanicsParameter>& parameters;
@@ -121,7 +128,9 @@ ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& trai
           const double score = scoreMechanics(m, c.train, c.spread).joint[c.arm](c.joint);
           return std::isfinite(score) ? score : 1e9;
         };
-        nlopt::opt optimiser(nlopt::LN_BOBYQA, static_cast<unsigned>(n));
+        // BOBYQA's quadratic model needs two or more dimensions.
+        nlopt::opt optimiser(n >= 2 ? nlopt::LN_BOBYQA : nlopt::LN_COBYLA,
+                             static_cast<unsigned>(n));
         optimiser.set_lower_bounds(std::vector<double>(n, 0.0));
         optimiser.set_upper_bounds(std::vector<double>(n, 1.0));
         optimiser.set_min_objective(objective, &context);

@@ -4,13 +4,16 @@
 // (mpos, mvel, Tau, dac_vals) within twice the robot's own spread.
 
 #include <gtest/gtest.h>
+#include <spdlog/spdlog.h>
 
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <random>
 
 #include "calibration/actuation_fit.hpp"
 #include "calibration/calibration_file.hpp"
+#include "calibration/excitation.hpp"
 #include "calibration/mechanics_information.hpp"
 #include "calibration/replay_score.hpp"
 #include "calibration/replay_timing.hpp"
@@ -192,6 +195,84 @@ TEST(ShippedCalibration, PutsThe2armReplaysWithinTheRobotsOwnSpread) {
           << name << ": twin " << twin[i] << ", the robot's own T_PP " << robot[i];
     }
   }
+}
+
+/// A stand-in robot whose friction the test knows and the fit does not: the starting values'
+/// Coulomb friction, 40 % more on every motor.
+twin::ArmsMechanics hiddenMechanics() {
+  auto h = calibration::startingMechanics();
+  for (auto& m : h) m.coulomb *= 1.4;
+  return h;
+}
+
+/// How many motors' Coulomb friction a fit found within 10 %.
+int motorsIdentified(const twin::ArmsMechanics& fitted, const twin::ArmsMechanics& truth) {
+  int n = 0;
+  for (std::size_t a = 0; a < 2; ++a) {
+    const raven::ArmJoints error =
+        (fitted[a].coulomb - truth[a].coulomb).cwiseAbs().cwiseQuotient(truth[a].coulomb);
+    n += static_cast<int>((error.array() <= 0.1).count());
+  }
+  return n;
+}
+
+/// Records on the stand-in the motion each round's strategy picks among the same random
+/// candidates, refits the friction, and returns how many motors are identified after each round.
+std::vector<int> identify(bool proposed, int rounds) {
+  const auto truth = hiddenMechanics();
+  twin::CalibrationProfile profile;
+  profile.mechanics = calibration::startingMechanics();
+  for (auto& u : profile.uncertainty) {
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) u.field(k).setZero();
+  }
+  for (std::size_t a = 0; a < 2; ++a)
+    profile.uncertainty[a].coulomb = 0.5 * profile.mechanics[a].coulomb;
+  const auto prior = calibration::MechanicsInformation::fromUncertainty(profile.uncertainty);
+  calibration::ReplaySetup setup;
+  setup.controller.iteration_overhead = 0.001;
+  std::vector<analysis::ActuatorTrace> recordings;
+  std::vector<int> identified;
+  for (int round = 0; round < rounds; ++round) {
+    std::mt19937_64 random(100 + static_cast<unsigned>(round));
+    calibration::MechanicsInformation known = prior;
+    for (const auto& r : recordings) known += calibration::informationOf(profile.mechanics, r);
+    std::vector<calibration::Candidate> candidates;
+    for (int c = 0; c < 4; ++c) {
+      candidates.push_back(calibration::scoreCandidate(
+          setup, profile, known, calibration::randomExcitation(random, {6.0, 0.022})));
+    }
+    const calibration::Candidate* pick = &candidates[0];
+    for (const auto& c : candidates) {
+      if (proposed && c.within_limits && c.log_det > pick->log_det) pick = &c;
+    }
+    calibration::ReplaySetup on_robot = setup;
+    on_robot.inputs = pick->inputs;
+    on_robot.twin.motors = truth;
+    recordings.push_back(analysis::actuatorTrace(calibration::recordReplay(on_robot)));
+    calibration::ActuationFitOptions options;
+    options.evaluations_per_joint = 15;
+    options.sweeps = 1;
+    options.same_motion = false;
+    options.fields = {1};  // Coulomb friction
+    profile.mechanics = calibration::fitActuation(recordings, profile.mechanics, options).mechanics;
+    identified.push_back(motorsIdentified(profile.mechanics, truth));
+  }
+  return identified;
+}
+
+TEST(ActiveLearning, ProposedMotionsIdentifyAHiddenRobotInFewerRecordingsThanRandomOnes) {
+  spdlog::set_level(spdlog::level::warn);
+  // Each round draws the same four random 6 s candidates for both strategies: the proposal
+  // takes the one with the most information, the random strategy the first.
+  const auto proposed = identify(true, 2);
+  const auto random = identify(false, 2);
+  for (std::size_t k = 0; k < proposed.size(); ++k) {
+    RecordProperty("identified_after_" + std::to_string(k + 1) + "_proposed", proposed[k]);
+    RecordProperty("identified_after_" + std::to_string(k + 1) + "_random", random[k]);
+  }
+  EXPECT_EQ(proposed[0], 14) << "every motor's friction within 10 % after one proposed recording";
+  EXPECT_LT(random[0], 14) << "one random recording leaves some motor unidentified";
+  EXPECT_EQ(random[1], 14) << "two random recordings identify every motor";
 }
 
 }  // namespace

@@ -46,6 +46,8 @@ struct ActuationFitOptions {
   /// trial-to-trial spread. Otherwise (different motions, e.g. proposed excitations) over the
   /// encoders' quantisation noise.
   bool same_motion = true;
+  /// Which of twin::MotorMechanics::kNames are fitted (indices); empty: every one.
+  std::vector<std::size_t> fields;
 };
 
 struct ActuationFitResult {
