@@ -4,13 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "bridge/raven_state.hpp"
-
 namespace analysis {
 
 namespace {
-
-constexpr double kRadiansPerDegree = M_PI / 180.0;
 
 const std::vector<raven::ArmJoints>& select(const ArmTrace& t, ActuatorSignal s) {
   switch (s) {
@@ -61,34 +57,20 @@ const std::vector<raven::ArmJoints>& ArmTrace::of(ActuatorSignal s) const {
 }
 
 ActuatorTrace actuatorTrace(const recording::RsRecording& rs) {
+  constexpr double kDegreesPerRadian = 180.0 / M_PI;
   ActuatorTrace trace;
   trace.name = rs.path.filename().string();
-  const auto column = [&](const std::string& name, raven::Arm arm, int joint) {
-    return rs.column(name + std::to_string(bridge::ravenStateIndex(arm, joint)));
-  };
   for (raven::Arm arm : raven::kArms) {
     ArmTrace& t = trace.arms[static_cast<std::size_t>(raven::index(arm))];
-    std::array<std::array<std::size_t, raven::kJointCount>, 7> c{};
-    const char* names[7] = {"jpos", "jpos_d", "mpos", "mvel", "mpos_d", "Tau", "dac_vals"};
-    for (std::size_t n = 0; n < 7; ++n) {
-      for (int j = 0; j < raven::kJointCount; ++j)
-        c[n][static_cast<std::size_t>(j)] = column(names[n], arm, j);
-    }
-    for (const auto& row : rs.rows) {
-      std::array<raven::ArmJoints, 7> v;
-      for (std::size_t n = 0; n < 7; ++n) {
-        for (int j = 0; j < raven::kJointCount; ++j)
-          v[n](j) = row[c[n][static_cast<std::size_t>(j)]];
-      }
-      // jpos_d is logged in degrees, its insertion in metres x 180/pi; motor angles in degrees.
-      v[1] *= kRadiansPerDegree;
-      t.joints.push_back(v[0]);
-      t.joint_setpoint.push_back(v[1]);
-      t.motor.push_back(v[2]);
-      t.motor_velocity.push_back(v[3]);
-      t.motor_setpoint.push_back(v[4] * kRadiansPerDegree);
-      t.torque.push_back(v[5]);
-      t.dac.push_back(v[6]);
+    for (std::size_t r = 0; r < rs.rows.size(); ++r) {
+      const recording::ArmSignals s = rs.signals(r, arm);
+      t.joints.push_back(s.joints);
+      t.joint_setpoint.push_back(s.joint_setpoint);
+      t.motor.push_back(s.motor * kDegreesPerRadian);  // compared as logged
+      t.motor_velocity.push_back(s.motor_velocity * kDegreesPerRadian);
+      t.motor_setpoint.push_back(s.motor_setpoint);
+      t.torque.push_back(s.torque);
+      t.dac.push_back(s.dac);
     }
   }
   const double t0 = rs.rows.empty() ? 0.0 : rs.time(0);

@@ -21,20 +21,19 @@ raven::ArmJoints setpointAt(const analysis::ArmTrace& arm, const std::vector<dou
 
 }  // namespace
 
-RecordedStart recordedStart(const analysis::ActuatorTrace& trace) {
-  RecordedStart out;
-  for (raven::Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
-    const auto& t = trace.arms[a];
-    twin::ArmStart& start = out.arms[a];
-    start.motor_position = t.motor[0] / kDegreesPerRadian;
-    start.motor_velocity = t.motor_velocity[0] / kDegreesPerRadian;
-    const twin::MotorController law(arm, twin::DriveTrain::raven2());
-    start.integrators = law.integratorsGiving(
-        t.torque[0], t.motor_setpoint[0] - start.motor_position, start.motor_velocity, t.joints[0]);
-    out.setpoint[a] = t.joint_setpoint[0];
+twin::RecordedStart recordedStart(const analysis::ActuatorTrace& trace) {
+  std::array<recording::ArmSignals, 2> first{};
+  for (std::size_t a = 0; a < 2; ++a) {
+    const analysis::ArmTrace& t = trace.arms[a];
+    first[a] = {t.joints[0],
+                t.joint_setpoint[0],
+                t.motor[0] / kDegreesPerRadian,
+                t.motor_velocity[0] / kDegreesPerRadian,
+                t.motor_setpoint[0],
+                t.torque[0],
+                t.dac[0]};
   }
-  return out;
+  return twin::recordedStart(first);
 }
 
 analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording,
@@ -43,7 +42,7 @@ analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording
   out.name = "twin from " + recording.name;
   out.time = recording.time;
   const twin::DriveTrain drive = twin::DriveTrain::raven2();
-  const RecordedStart start = recordedStart(recording);
+  const twin::RecordedStart start = recordedStart(recording);
   for (raven::Arm arm : raven::kArms) {
     const auto a = static_cast<std::size_t>(raven::index(arm));
     const analysis::ArmTrace& in = recording.arms[a];

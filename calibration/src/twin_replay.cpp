@@ -6,23 +6,6 @@
 
 namespace calibration {
 
-namespace {
-
-/// Moves the twin to the recorded setpoints, then places its actuators as they were.
-void startAt(twin::TwinPlatform& twin, const RecordedStart& start) {
-  for (raven::Arm arm : raven::kArms) {
-    twin.send(bridge::MoveJp{arm, start.setpoint[static_cast<std::size_t>(raven::index(arm))]});
-  }
-  const double deadline = twin.now() + 30.0;
-  while (twin.operatingStatus().is_busy && twin.now() < deadline) twin.advance(0.01);
-  twin.advance(0.5);  // settled
-  for (raven::Arm arm : raven::kArms) {
-    twin.place(arm, start.arms[static_cast<std::size_t>(raven::index(arm))]);
-  }
-}
-
-}  // namespace
-
 analysis::Trial replayOnTwin(const ReplaySetup& setup) {
   analysis::PlatformProfile twin_profile;  // the twin records in the robot's convention
   twin_profile.name = "twin";
@@ -34,7 +17,7 @@ recording::RsRecording recordReplay(const ReplaySetup& setup) {
   twin_options.clock = bridge::ClockKind::Simulated;
   twin::TwinPlatform twin(twin_options);
   bridge::enableAndHome(twin, 30.0);
-  if (setup.start) startAt(twin, *setup.start);
+  if (setup.start) twin::startAt(twin, *setup.start);
   controller::DualPlatformController control({{"twin", &twin, controller::CommandStyle::ServoJr}},
                                              setup.controller);
 

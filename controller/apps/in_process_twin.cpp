@@ -2,8 +2,10 @@
 
 #include <spdlog/spdlog.h>
 
+#include "bridge/enable_and_home.hpp"
 #include "raven/platform_profile.hpp"
 #include "twin/calibration_profile.hpp"
+#include "twin/recorded_start.hpp"
 #include "twin/twin_platform.hpp"
 #include "viewer/video_recorder.hpp"
 
@@ -51,7 +53,14 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
     video->options.visual_skin = raven::ravenVisualSkin();
     options.after_step = [video](const ambf_like::World& world) { video->capture(world); };
   }
-  return std::make_unique<twin::TwinPlatform>(options);
+  auto platform = std::make_unique<twin::TwinPlatform>(options);
+  if (!settings.start_from.empty()) {
+    const auto start = twin::recordedStart(recording::readRs(settings.start_from));
+    bridge::enableAndHome(*platform, 60.0);
+    twin::startAt(*platform, start);
+    spdlog::info("twin: placed where {} began", settings.start_from);
+  }
+  return platform;
 }
 
 ControllerCalibration loadControllerCalibration(const std::string& file) {

@@ -29,6 +29,8 @@ struct InProcessTwinSettings {
   /// From --calibration; null: the shipped calibration's actuation.
   const ControllerCalibration* calibration = nullptr;
   common::VideoFlags video;  ///< of the twin; no file: none
+  /// An rs recording: the twin is enabled, homed and put where it began; empty: at home.
+  std::string start_from;
 };
 
 /// The in-process twin; throws std::runtime_error in a build without the simulator.

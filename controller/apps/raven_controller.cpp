@@ -34,6 +34,7 @@ struct Settings {
   std::string twin_ns = "/twin";
   std::string physical_ns;
   bool ideal_servos = false;
+  std::string start_from;
   std::string calibration_file;
   std::string twin_launch;
   common::VideoFlags video;  ///< of the in-process twin
@@ -65,6 +66,9 @@ Platforms makePlatforms(const Settings& s,
   Platforms p;
   const bool want_physical = s.platform != "twin";
   const bool want_twin = s.platform != "physical";
+  if (!s.start_from.empty() && (!want_twin || want_physical || s.twin_over_ros)) {
+    throw std::runtime_error("--start-from places the in-process twin (--platform twin only)");
+  }
   if (!s.video.file.empty() && (!want_twin || s.twin_over_ros)) {
     throw std::runtime_error(
         "--video records the in-process twin (not --platform physical, not --twin-over-ros)");
@@ -84,7 +88,7 @@ Platforms makePlatforms(const Settings& s,
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
     p.twin = controller_app::makeInProcessTwin(
-        {s.twin_launch, s.lock_step, s.ideal_servos, calibration, s.video});
+        {s.twin_launch, s.lock_step, s.ideal_servos, calibration, s.video, s.start_from});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -248,6 +252,10 @@ int main(int argc, char** argv) {
                  "a profile fitted by raven_calibrate (YAML): the in-process twin's actuation "
                  "(default: twin/config/raven2_calibration.yaml), and replays timed as the "
                  "recording controller's iterations were")
+      ->check(CLI::ExistingFile);
+  app.add_option("--start-from", s.start_from,
+                 "an rs recording: the in-process twin starts where it began (its joints, motors "
+                 "and integrators), as a replay of that session should")
       ->check(CLI::ExistingFile);
   app.add_option("--twin-launch", s.twin_launch, "launch file of the twin's scene")
       ->check(CLI::ExistingFile);

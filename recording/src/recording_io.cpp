@@ -190,6 +190,26 @@ raven::ArmJoints RsRecording::joints(std::size_t row, raven::Arm arm) const {
   return q;
 }
 
+ArmSignals RsRecording::signals(std::size_t row, raven::Arm arm) const {
+  constexpr double kRadiansPerDegree = M_PI / 180.0;
+  const auto& r = rows.at(row);
+  auto read = [&](const char* prefix, double scale) {
+    raven::ArmJoints v;
+    for (int i = 0; i < raven::kJointCount; ++i) {
+      v(i) = scale * r[column(prefix + std::to_string(bridge::ravenStateIndex(arm, i)))];
+    }
+    return v;
+  };
+  // jpos_d is logged in degrees, its insertion in metres x 180/pi: one scale for all.
+  return {joints(row, arm),
+          read("jpos_d", kRadiansPerDegree),
+          read("mpos", kRadiansPerDegree),
+          read("mvel", kRadiansPerDegree),
+          read("mpos_d", kRadiansPerDegree),
+          read("Tau", 1.0),
+          read("dac_vals", 1.0)};
+}
+
 RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite) {
   const auto lines = readLines(path);
   RsRecording rec;

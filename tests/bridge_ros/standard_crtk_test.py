@@ -165,7 +165,10 @@ class StandardCrtkFace(unittest.TestCase):
         import rospy
         from std_msgs.msg import String
         cls.rospy = rospy
-        cls.node = TwinNode(MASTER.dir.name, "/s1", "--crtk-arms", "PSM1", "PSM2")
+        # Ideal servos: the face's semantics are checked to tight tolerances; the robot's own
+        # friction band (the node's default actuation) would leave joints a few mrad short.
+        cls.node = TwinNode(MASTER.dir.name, "/s1", "--crtk-arms", "PSM1", "PSM2",
+                            "--ideal-servos")
         cls.arm = CrtkArm(rospy, "/s1/crtk/PSM1")
         cls.other = CrtkArm(rospy, "/s1/crtk/PSM2")
         cls.refusals = Latest(rospy, "/s1/raven_twin/refusals", String, cls.arm.changed)
@@ -341,7 +344,7 @@ class LockStepCrtk(unittest.TestCase):
         import rospy
         from raven_twin.msg import Step, StepDone
         from sensor_msgs.msg import JointState
-        node = TwinNode(MASTER.dir.name, "/s2", "--lock-step")
+        node = TwinNode(MASTER.dir.name, "/s2", "--lock-step", "--ideal-servos")
         try:
             arm = CrtkArm(rospy, "/s2/crtk/arm1")
             done = Latest(rospy, "/s2/raven_twin/step_done", StepDone, arm.changed)

@@ -46,8 +46,12 @@ double maxAbs(const ArmJoints& q) {
   return q.cwiseAbs().maxCoeff();
 }
 
+/// The node on ideal servos: these tests are about the ROS edge, and measure positions exactly;
+/// the motor-level actuation over ROS is TheMotorLevelActuationGivesTheSameTrajectory's.
+const std::vector<std::string> kIdealServos{"--ideal-servos"};
+
 TEST(TwinOverRos, EnableHomeAndAServoJrStreamIsFollowed) {
-  Rig rig({});
+  Rig rig(kIdealServos);
   auto& robot = rig.client;
   EXPECT_EQ(robot.operatingStatus().state, OperatingState::Disabled);
   makeReady(robot);
@@ -67,7 +71,7 @@ TEST(TwinOverRos, EnableHomeAndAServoJrStreamIsFollowed) {
 }
 
 TEST(TwinOverRos, EveryTransitionAmongDisabledEnabledAndPausedValidOrNot) {
-  Rig rig({});
+  Rig rig(kIdealServos);
   ros_test::RawPeer peer(rig.node.ns());
   auto& robot = rig.client;
   using S = OperatingState;
@@ -123,7 +127,7 @@ TEST(TwinOverRos, EveryTransitionAmongDisabledEnabledAndPausedValidOrNot) {
 }
 
 TEST(TwinOverRos, RavenStateIsPublishedEveryCycleInDegreesAndMicrons) {
-  Rig rig({});
+  Rig rig(kIdealServos);
   auto& robot = rig.client;
   makeReady(robot);
   robot.advance(0.05);
@@ -194,7 +198,7 @@ TEST(TwinOverRos, ArmsAreSwappedOnMeasuredJsUnlessSwitchedOff) {
   for (bool swap : {true, false}) {
     bridge::ros1::RosClientOptions options;
     options.arm_swap = swap;
-    Rig rig(swap ? std::vector<std::string>{} : std::vector<std::string>{"--no-arm-swap"}, true,
+    Rig rig(swap ? kIdealServos : std::vector<std::string>{"--ideal-servos", "--no-arm-swap"}, true,
             options);
     auto& robot = rig.client;
     makeReady(robot);
@@ -281,7 +285,7 @@ TEST(TwinOverRos, TheMotorLevelActuationGivesTheSameTrajectoryInProcessAndOverRo
 }
 
 TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {
-  Rig rig({});
+  Rig rig(kIdealServos);
   ros_test::RawPeer peer(rig.node.ns());
   auto& robot = rig.client;
   makeReady(robot);
@@ -386,8 +390,8 @@ TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {
   }
 }
 
-TEST(TwinOverRos, ASilentControllerLeavesTheMotorsHolding) {
-  Rig rig({});  // the motor-level actuation
+TEST(TwinOverRos, ASilentControllerLeavesTheArmsHolding) {
+  Rig rig(kIdealServos);
   auto& robot = rig.client;
   makeReady(robot);
   for (int k = 0; k < 250; ++k) {
@@ -408,7 +412,7 @@ TEST(TwinOverRos, ASilentControllerLeavesTheMotorsHolding) {
 TEST(TwinOverRos, AClientThatLosesTheRobotReportsFaultInsteadOfHanging) {
   for (bool lock_step : {true, false}) {
     SCOPED_TRACE(lock_step ? "lock-step" : "wall clock");
-    Rig rig({}, lock_step);
+    Rig rig(kIdealServos, lock_step);
     auto& robot = rig.client;
     ASSERT_TRUE(robot.send(StateCommand::Enable));
     advanceUntil(robot, [&] { return robot.operatingStatus().state == OperatingState::Enabled; });
@@ -430,7 +434,7 @@ TEST(TwinOverRos, AClientThatLosesTheRobotReportsFaultInsteadOfHanging) {
 }
 
 TEST(TwinOverRos, TheWallClockTwinFollowsAServoStreamInRealTime) {
-  Rig rig({}, /*lock_step=*/false);
+  Rig rig(kIdealServos, /*lock_step=*/false);
   auto& robot = rig.client;
   EXPECT_EQ(robot.clockKind(), bridge::ClockKind::Wall);
   makeReady(robot);
@@ -448,7 +452,7 @@ TEST(TwinOverRos, TheWallClockTwinFollowsAServoStreamInRealTime) {
 namespace {
 
 TEST(TwinOverRos, TheTwinPublishesEachGraspersContactForces) {
-  Rig rig({});
+  Rig rig(kIdealServos);
   auto& robot = rig.client;
   makeReady(robot);
   ros::NodeHandle node(rig.node.ns());

@@ -170,6 +170,25 @@ TEST(ActuationFit, AShortFitImprovesOnItsStartingPoint) {
   for (const auto& m : fit.mechanics) EXPECT_TRUE(m.invalidReason().empty()) << m.invalidReason();
 }
 
+TEST(ShippedCalibration, AReplayStartedFromATrialBeginsWhereItBegan) {
+  auto paper = paper2arm();
+  if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
+  const auto profile = twin::CalibrationProfile::shipped();
+  profile.applyTo(paper->setup.twin);
+  const auto physical = analysis::actuatorTrace(paper->physical_rs[1]);
+  paper->setup.start = calibration::recordedStart(physical);
+  const auto replay = analysis::actuatorTrace(calibration::recordReplay(paper->setup));
+  // Row 0 comes after the replay's 1 s wait, as the robot's came 1.4 s before its first input:
+  // the motors held by friction, the tools' integrators a second further on.
+  for (std::size_t a = 0; a < 2; ++a) {
+    const auto& t = replay.arms[a];
+    const auto& p = physical.arms[a];
+    EXPECT_LT((t.motor[0] - p.motor[0]).cwiseAbs().maxCoeff(), 2 * 0.09) << "deg, two counts";
+    EXPECT_LT((t.torque[0] - p.torque[0]).cwiseAbs().maxCoeff(), 0.01) << "N m";
+    EXPECT_LT((t.joint_setpoint[0] - p.joint_setpoint[0]).cwiseAbs().maxCoeff(), 1e-6);
+  }
+}
+
 TEST(ShippedCalibration, PutsThe2armReplaysWithinTheRobotsOwnSpread) {
   auto paper = paper2arm();
   if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";

@@ -6,16 +6,12 @@
 #include "analysis/actuator_signals.hpp"
 #include "twin/arm_drive.hpp"
 #include "twin/motor_actuation.hpp"
+#include "twin/recorded_start.hpp"
 
 namespace calibration {
 
-/// The state a recording began in: per arm its joint setpoint and its actuators' state.
-struct RecordedStart {
-  std::array<raven::ArmJoints, 2> setpoint;
-  std::array<twin::ArmStart, 2> arms;
-};
 /// The first row of `trace`, with the integrators that make its Tau.
-RecordedStart recordedStart(const analysis::ActuatorTrace& trace);
+twin::RecordedStart recordedStart(const analysis::ActuatorTrace& trace);
 
 /// The twin's actuator signals at the recording's row times (in the recording's units).
 analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording,

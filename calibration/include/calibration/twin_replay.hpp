@@ -21,7 +21,7 @@ struct ReplaySetup {
   double replay_delay = 1.0;                    ///< O3's wait after loading (s)
   /// Set: the twin starts where a recording began (moved there after homing, then its
   /// actuators placed in the recorded state); unset: at its home.
-  std::optional<RecordedStart> start;
+  std::optional<twin::RecordedStart> start;
 };
 
 /// Builds, enables and homes a twin, replays every input row and returns one trial row per

@@ -83,6 +83,13 @@ struct RsVariant {
 
 /// An rs file in memory. jpos and jvel are converted to radians (metres) when the file had
 /// degrees; empty fields are NaN.
+/// One arm's row of a Raven-II recording down to its motors, in SI: joints and joint setpoints
+/// (rad, m), motor angles and their setpoints (rad), motor velocities (rad/s), Tau (N m) and the
+/// DAC commands (counts). raven2-actuation.md §1 gives the logged units this converts from.
+struct ArmSignals {
+  raven::ArmJoints joints, joint_setpoint, motor, motor_velocity, motor_setpoint, torque, dac;
+};
+
 struct RsRecording {
   std::filesystem::path path;
   RsVariant variant;
@@ -95,6 +102,9 @@ struct RsRecording {
   /// jpos of `arm` in ArmJoints order, in the platform's own joint convention (AMBF rows: the
   /// recorder's +0.46 m insertion and +pi/4 roll offsets removed, the right jaws' sign restored).
   raven::ArmJoints joints(std::size_t row, raven::Arm arm) const;
+  /// The physical robot's (or our twin's) signals of `arm` at `row`; throws RecordingError
+  /// naming the file and a missing column.
+  ArmSignals signals(std::size_t row, raven::Arm arm) const;
 };
 
 /// What readRs does with a NaN or infinite joint position: refuse the file (anything that will

@@ -1,0 +1,30 @@
+#pragma once
+// Where a recording of the Raven-II began, as a twin needs it to start there: per arm the joint
+// setpoint the robot held and its actuators' state (motor angles, velocities, and the PID's
+// integrators, which the first row's Tau gives away), and the way to put a twin there.
+
+#include <array>
+
+#include "recording/recording_io.hpp"
+#include "twin/actuation.hpp"
+#include "twin/twin_platform.hpp"
+#include "twin/vocabulary.hpp"
+
+namespace twin {
+
+/// The robot's state at a recording's first row.
+struct RecordedStart {
+  std::array<ArmJoints, 2> setpoint;
+  std::array<ArmStart, 2> arms;
+};
+
+/// From the first row's signals of each arm (index raven::index(arm)).
+RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_row);
+/// From a recording's first row; throws recording::RecordingError naming a missing column.
+RecordedStart recordedStart(const recording::RsRecording& rs);
+
+/// Moves an enabled, homed twin to the recorded setpoints (move_jp), lets it settle, then places
+/// its actuators exactly as the robot's were. Throws std::runtime_error if the move is refused.
+void startAt(TwinPlatform& twin, const RecordedStart& start);
+
+}  // namespace twin

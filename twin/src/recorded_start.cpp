@@ -1,0 +1,46 @@
+#include "twin/recorded_start.hpp"
+
+#include <stdexcept>
+
+#include "twin/motor_controller.hpp"
+
+namespace twin {
+
+RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_row) {
+  RecordedStart out;
+  for (Arm arm : raven::kArms) {
+    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const recording::ArmSignals& s = first_row[a];
+    ArmStart& start = out.arms[a];
+    start.motor_position = s.motor;
+    start.motor_velocity = s.motor_velocity;
+    const MotorController law(arm, DriveTrain::raven2());
+    start.integrators =
+        law.integratorsGiving(s.torque, s.motor_setpoint - s.motor, s.motor_velocity, s.joints);
+    out.setpoint[a] = s.joint_setpoint;
+  }
+  return out;
+}
+
+RecordedStart recordedStart(const recording::RsRecording& rs) {
+  if (rs.rows.empty())
+    throw recording::RecordingError(rs.path.string() + ": no rows to start from");
+  return recordedStart({rs.signals(0, Arm::Left), rs.signals(0, Arm::Right)});
+}
+
+void startAt(TwinPlatform& twin, const RecordedStart& start) {
+  for (Arm arm : raven::kArms) {
+    const auto result =
+        twin.send(bridge::MoveJp{arm, start.setpoint[static_cast<std::size_t>(raven::index(arm))]});
+    if (!result) {
+      throw std::runtime_error("cannot start where the recording began: " + result.note);
+    }
+  }
+  const double deadline = twin.now() + 30.0;
+  while (twin.operatingStatus().is_busy && twin.now() < deadline) twin.advance(0.01);
+  twin.advance(0.5);  // settled
+  for (Arm arm : raven::kArms)
+    twin.place(arm, start.arms[static_cast<std::size_t>(raven::index(arm))]);
+}
+
+}  // namespace twin
