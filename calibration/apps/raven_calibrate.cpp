@@ -20,6 +20,7 @@
 #include "calibration/replay_timing.hpp"
 #include "raven/control_cycle.hpp"
 #include "recording/recording_io.hpp"
+#include "twin/recorded_start.hpp"
 
 namespace {
 
@@ -75,8 +76,10 @@ std::vector<recording::RsRecording> loadPhysical(const std::vector<std::filesyst
   }
   std::sort(files.begin(), files.end());
   std::vector<recording::RsRecording> out;
-  for (const auto& f : files)
+  for (const auto& f : files) {
     out.push_back(recording::readRs(f, recording::NonFiniteJoints::Refuse));
+    twin::recordedStart(out.back());  // refuses, naming the file, a recording without motor signals
+  }
   if (out.size() < 2) {
     throw std::runtime_error(fmt::format(
         "{} physical recording(s) found: the robot's spread needs two or more", out.size()));
@@ -317,16 +320,28 @@ int runPropose(const ProposeSettings& s) {
   const twin::CalibrationProfile profile = s.calibration.empty()
                                                ? twin::CalibrationProfile::shipped()
                                                : twin::CalibrationProfile::load(s.calibration);
-  const auto prior = calibration::MechanicsInformation::fromUncertainty(profile.uncertainty);
+  twin::CalibrationProfile profile_with_prior = profile;
+  bool broad = true;
+  for (const auto& arm : profile.uncertainty) {
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k)
+      broad = broad && arm.field(k).isZero();
+  }
+  if (broad) {
+    profile_with_prior.uncertainty = calibration::broadUncertainty(profile.mechanics);
+    std::printf("the profile has no uncertainty: a broad prior (half of each value) is assumed\n");
+  }
+  const auto prior =
+      calibration::MechanicsInformation::fromUncertainty(profile_with_prior.uncertainty);
   calibration::ReplaySetup setup = ReplayFlags{}.setup(profile.iteration_overhead);
   std::mt19937_64 random(s.seed);
   std::vector<calibration::Candidate> candidates;
   for (int i = 0; i < s.candidates; ++i) {
-    candidates.push_back(calibration::scoreCandidate(
-        setup, profile, prior, calibration::randomExcitation(random, {s.seconds, 0.022})));
+    candidates.push_back(
+        calibration::scoreCandidate(setup, profile_with_prior, prior,
+                                    calibration::randomExcitation(random, {s.seconds, 0.022})));
     const auto& c = candidates.back();
     std::printf("  candidate %d: expected reduction %5.1f %% %s\n", i + 1,
-                100.0 * calibration::meanReduction(profile.uncertainty,
+                100.0 * calibration::meanReduction(profile_with_prior.uncertainty,
                                                    calibration::expectedUncertainty(prior, c)),
                 c.within_limits ? "" : "(comes within 1 % of a joint limit: left out)");
   }
@@ -346,7 +361,7 @@ int runPropose(const ProposeSettings& s) {
   std::printf(
       "expected reduction of the fitted values' standard deviations: %.1f %% (mean over %s "
       "values)\n",
-      100.0 * calibration::meanReduction(profile.uncertainty, after), "the fitted");
+      100.0 * calibration::meanReduction(profile_with_prior.uncertainty, after), "the fitted");
   return 0;
 }
 

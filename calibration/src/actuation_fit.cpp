@@ -59,6 +59,19 @@ twin::ArmsMechanics startingMechanics() {
   return {m, m};
 }
 
+twin::ArmsMechanics broadUncertainty(const twin::ArmsMechanics& mechanics) {
+  twin::ArmsMechanics sd;
+  for (std::size_t a = 0; a < 2; ++a) {
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
+      sd[a].field(k) = 0.5 * mechanics[a].field(k).cwiseAbs();
+    }
+    sd[a].load_friction.setConstant(0.2);
+    sd[a].gravity_error.setZero();
+    sd[a].gravity_error.head<3>().setConstant(0.2);
+  }
+  return sd;
+}
+
 double MechanicsScore::total() const {
   return joint[0].sum() + joint[1].sum();
 }

@@ -23,9 +23,23 @@ RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_ro
 }
 
 RecordedStart recordedStart(const recording::RsRecording& rs) {
-  if (rs.rows.empty())
+  if (rs.rows.empty()) {
     throw recording::RecordingError(rs.path.string() + ": no rows to start from");
-  return recordedStart({rs.signals(0, Arm::Left), rs.signals(0, Arm::Right)});
+  }
+  const std::array<recording::ArmSignals, 2> first{rs.signals(0, Arm::Left),
+                                                   rs.signals(0, Arm::Right)};
+  for (const auto& s : first) {
+    for (const ArmJoints* v : {&s.joints, &s.joint_setpoint, &s.motor, &s.motor_velocity,
+                               &s.motor_setpoint, &s.torque}) {
+      if (!v->allFinite()) {
+        throw recording::RecordingError(
+            rs.path.string() +
+            ": row 1 has no finite motor signals (jpos, jpos_d, mpos, mvel, mpos_d, Tau): not a "
+            "recording of the physical robot or the twin (AMBF's log none)");
+      }
+    }
+  }
+  return recordedStart(first);
 }
 
 void startAt(TwinPlatform& twin, const RecordedStart& start) {

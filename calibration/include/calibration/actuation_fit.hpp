@@ -28,6 +28,10 @@ std::vector<MechanicsParameter> mechanicsParameters(int joint);
 /// CSLDepend/raven2_sim fitted on its own robot (raven2-actuation.md §5), exact gravity.
 twin::ArmsMechanics startingMechanics();
 
+/// A broad prior for mechanics nobody has fitted yet: half of each value, 0.2 for the load
+/// friction and (arm motors only) the gravity error.
+twin::ArmsMechanics broadUncertainty(const twin::ArmsMechanics& mechanics);
+
 /// Per arm and joint, how far the model's signals sit from the recordings: the mean over mpos,
 /// mvel and Tau of mean |model - recording| over the recordings' spread (`spread`: per signal
 /// and arm, analysis::ActuatorFidelity's).

@@ -28,7 +28,6 @@ class MotorActuation final : public Actuation {
   std::string fault() const override;
 
   void place(Arm arm, const ArmStart& start) override;
-  const ArmDrive& armDrive(Arm arm) const { return drives_[index(arm)]; }
 
  private:
   static std::size_t index(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }

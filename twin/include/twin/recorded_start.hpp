@@ -20,7 +20,8 @@ struct RecordedStart {
 
 /// From the first row's signals of each arm (index raven::index(arm)).
 RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_row);
-/// From a recording's first row; throws recording::RecordingError naming a missing column.
+/// From a recording's first row; throws recording::RecordingError naming the file when a column
+/// is missing or the row's signals are not numbers.
 RecordedStart recordedStart(const recording::RsRecording& rs);
 
 /// Moves an enabled, homed twin to the recorded setpoints (move_jp), lets it settle, then places
