@@ -41,7 +41,8 @@ void printSummary(const analysis::TrialSet& set) {
 void printActuators(const std::vector<analysis::ActuatorComparison>& comparisons) {
   if (comparisons.empty()) return;
   std::printf(
-      "\nactuator signals, median over joints of the mean |difference| over the robot's T_PP\n");
+      "\nactuator signals (rows by index), median over joints of the mean |difference| over the "
+      "robot's T_PP\n");
   std::printf("  %-4s %-22s", "", "");
   for (auto s : analysis::kActuatorSignals) std::printf(" %9s", analysis::columnName(s));
   std::printf("\n");
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
       return 1;
     }
     analysis::writeReportData(set, settings, out);
-    const auto actuators = analysis::loadActuators(set);
+    const auto actuators = analysis::actuatorPlatforms(set);
     const auto actuator_comparisons = analysis::compareActuators(actuators);
     printActuators(actuator_comparisons);
     analysis::writeActuatorReport(actuators, actuator_comparisons, out);

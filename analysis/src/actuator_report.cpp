@@ -11,22 +11,14 @@ namespace analysis {
 
 namespace {
 
-using Signals = std::array<std::array<raven::ArmJoints, 2>, 4>;
-
-Signals zeros() {
-  Signals z;
-  for (auto& s : z) s.fill(raven::ArmJoints::Zero());
-  return z;
-}
-
 /// Mean over the trial pairs (each unordered pair once within a platform).
-Signals pairMeans(const PlatformActuators& a, const PlatformActuators& b) {
-  Signals sum = zeros();
+SignalJoints pairMeans(const PlatformActuators& a, const PlatformActuators& b) {
+  SignalJoints sum = zeroSignals();
   std::size_t pairs = 0;
   for (std::size_t i = 0; i < a.traces.size(); ++i) {
     for (std::size_t j = (&a == &b ? i + 1 : 0); j < b.traces.size(); ++j, ++pairs) {
       for (std::size_t k = 0; k < kActuatorSignals.size(); ++k) {
-        const auto d = meanAbsoluteDifference(a.traces[i], b.traces[j], kActuatorSignals[k]);
+        const auto d = meanAbsoluteDifference(*a.traces[i], *b.traces[j], kActuatorSignals[k]);
         for (std::size_t arm = 0; arm < 2; ++arm) sum[k][arm] += d[arm];
       }
     }
@@ -53,24 +45,14 @@ std::ofstream openFile(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::vector<PlatformActuators> loadActuators(const TrialSet& set) {
+std::vector<PlatformActuators> actuatorPlatforms(const TrialSet& set) {
   std::vector<PlatformActuators> out;
   for (const auto& p : set.platforms) {
     PlatformActuators a{&p, {}};
-    // Logged: every motor angle finite, and not all of them zero.
-    bool finite = true, moving = false;
     for (const auto& t : p.trials) {
-      const auto rs = recording::readRs(t.path, recording::NonFiniteJoints::Keep);
-      a.traces.push_back(actuatorTrace(rs));
-      for (const auto& arm : a.traces.back().arms) {
-        for (const auto& m : arm.motor) {
-          finite = finite && m.allFinite();
-          moving = moving || !m.isZero();
-        }
-      }
+      if (t.actuators) a.traces.push_back(&*t.actuators);
     }
-    const bool logged = finite && moving;
-    if (!logged) a.traces.clear();
+    if (a.traces.size() != p.trials.size()) a.traces.clear();  // only platforms that log them
     out.push_back(std::move(a));
   }
   return out;
@@ -82,7 +64,7 @@ std::vector<ActuatorComparison> compareActuators(const std::vector<PlatformActua
   for (const auto& p : platforms) {
     if (p.platform->profile.role == Role::Physical && p.traces.size() >= 2) robot = &p;
   }
-  const Signals robot_spread = robot ? pairMeans(*robot, *robot) : zeros();
+  const SignalJoints robot_spread = robot ? pairMeans(*robot, *robot) : zeroSignals();
   auto add = [&](const PlatformActuators& a, const PlatformActuators& b) {
     ActuatorComparison c;
     c.symbol = symbolOf(a, b);
@@ -91,20 +73,7 @@ std::vector<ActuatorComparison> compareActuators(const std::vector<PlatformActua
     c.mean_abs = pairMeans(a, b);
     if (robot) {
       std::array<double, 4> medians{};
-      for (std::size_t k = 0; k < 4; ++k) {
-        std::vector<double> ratios;
-        for (std::size_t arm = 0; arm < 2; ++arm) {
-          for (int j = 0; j < raven::kJointCount; ++j) {
-            if (robot_spread[k][arm](j) > 0.0) {
-              ratios.push_back(c.mean_abs[k][arm](j) / robot_spread[k][arm](j));
-            }
-          }
-        }
-        std::sort(ratios.begin(), ratios.end());
-        const std::size_t n = ratios.size();
-        medians[k] =
-            n == 0 ? 0.0 : (n % 2 ? ratios[n / 2] : 0.5 * (ratios[n / 2 - 1] + ratios[n / 2]));
-      }
+      for (std::size_t k = 0; k < 4; ++k) medians[k] = medianRatio(c.mean_abs[k], robot_spread[k]);
       c.median_over_robot = medians;
     }
     out.push_back(std::move(c));
@@ -162,18 +131,18 @@ void writeActuatorReport(const std::vector<PlatformActuators>& platforms,
   traj << "platform,signal,arm,joint,time,mean\n";
   for (const auto& p : platforms) {
     if (p.traces.empty()) continue;
-    std::size_t rows = p.traces.front().rows();
-    for (const auto& t : p.traces) rows = std::min(rows, t.rows());
+    std::size_t rows = p.traces.front()->rows();
+    for (const ActuatorTrace* t : p.traces) rows = std::min(rows, t->rows());
     for (ActuatorSignal s : kActuatorSignals) {
       for (std::size_t a = 0; a < 2; ++a) {
         for (int j = 0; j < raven::kJointCount; ++j) {
           for (std::size_t r = 0; r < rows; ++r) {
             double sum = 0.0;
-            for (const auto& t : p.traces) sum += t.arms[a].of(s)[r](j);
+            for (const ActuatorTrace* t : p.traces) sum += logged(t->arms[a][r], s)(j);
             traj << fmt::format(
                 "{},{},{},{},{},{}\n", p.platform->profile.name, columnName(s),
                 raven::armName(raven::kArms[a]), raven::kJointNames[static_cast<std::size_t>(j)],
-                p.traces.front().time[r], sum / static_cast<double>(p.traces.size()));
+                p.traces.front()->time[r], sum / static_cast<double>(p.traces.size()));
           }
         }
       }

@@ -1,95 +1,111 @@
 #include "analysis/actuator_signals.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
+
+#include "analysis/metrics.hpp"
 
 namespace analysis {
 
 namespace {
 
-const std::vector<raven::ArmJoints>& select(const ArmTrace& t, ActuatorSignal s) {
-  switch (s) {
-    case ActuatorSignal::MotorPosition:
-      return t.motor;
-    case ActuatorSignal::MotorVelocity:
-      return t.motor_velocity;
-    case ActuatorSignal::Torque:
-      return t.torque;
-    case ActuatorSignal::Dac:
-      break;
-  }
-  return t.dac;
+/// Where each signal sits in a row, its recorder column and its logged unit.
+struct SignalColumn {
+  const char* name;
+  const char* unit;
+  raven::ArmJoints recording::ArmSignals::*field;
+  double to_logged;  ///< SI -> logged unit
+};
+constexpr double kDegreesPerRadian = 180.0 / M_PI;
+constexpr std::array<SignalColumn, 4> kColumns{{
+    {"mpos", "deg", &recording::ArmSignals::motor, kDegreesPerRadian},
+    {"mvel", "deg/s", &recording::ArmSignals::motor_velocity, kDegreesPerRadian},
+    {"Tau", "N m", &recording::ArmSignals::torque, 1.0},
+    {"dac_vals", "counts", &recording::ArmSignals::dac, 1.0},
+}};
+
+const SignalColumn& columnOf(ActuatorSignal s) {
+  return kColumns[static_cast<std::size_t>(s)];
 }
 
 }  // namespace
 
 const char* columnName(ActuatorSignal s) {
-  switch (s) {
-    case ActuatorSignal::MotorPosition:
-      return "mpos";
-    case ActuatorSignal::MotorVelocity:
-      return "mvel";
-    case ActuatorSignal::Torque:
-      return "Tau";
-    case ActuatorSignal::Dac:
-      break;
-  }
-  return "dac_vals";
+  return columnOf(s).name;
 }
 
 const char* loggedUnit(ActuatorSignal s) {
-  switch (s) {
-    case ActuatorSignal::MotorPosition:
-      return "deg";
-    case ActuatorSignal::MotorVelocity:
-      return "deg/s";
-    case ActuatorSignal::Torque:
-      return "N m";
-    case ActuatorSignal::Dac:
-      break;
-  }
-  return "counts";
+  return columnOf(s).unit;
 }
 
-const std::vector<raven::ArmJoints>& ArmTrace::of(ActuatorSignal s) const {
-  return select(*this, s);
+raven::ArmJoints logged(const recording::ArmSignals& row, ActuatorSignal s) {
+  const SignalColumn& c = columnOf(s);
+  return row.*c.field * c.to_logged;
 }
 
 ActuatorTrace actuatorTrace(const recording::RsRecording& rs) {
-  constexpr double kDegreesPerRadian = 180.0 / M_PI;
   ActuatorTrace trace;
   trace.name = rs.path.filename().string();
   for (raven::Arm arm : raven::kArms) {
-    ArmTrace& t = trace.arms[static_cast<std::size_t>(raven::index(arm))];
-    for (std::size_t r = 0; r < rs.rows.size(); ++r) {
-      const recording::ArmSignals s = rs.signals(r, arm);
-      t.joints.push_back(s.joints);
-      t.joint_setpoint.push_back(s.joint_setpoint);
-      t.motor.push_back(s.motor * kDegreesPerRadian);  // compared as logged
-      t.motor_velocity.push_back(s.motor_velocity * kDegreesPerRadian);
-      t.motor_setpoint.push_back(s.motor_setpoint);
-      t.torque.push_back(s.torque);
-      t.dac.push_back(s.dac);
-    }
+    auto& rows = trace.arms[static_cast<std::size_t>(raven::index(arm))];
+    for (std::size_t r = 0; r < rs.rows.size(); ++r) rows.push_back(rs.signals(r, arm));
   }
   const double t0 = rs.rows.empty() ? 0.0 : rs.time(0);
   for (std::size_t r = 0; r < rs.rows.size(); ++r) trace.time.push_back(rs.time(r) - t0);
   return trace;
 }
 
+std::optional<ActuatorTrace> loggedActuatorTrace(const recording::RsRecording& rs) {
+  ActuatorTrace trace;
+  try {
+    trace = actuatorTrace(rs);
+  } catch (const recording::RecordingError&) {
+    return std::nullopt;  // a column is missing: an older or foreign layout
+  }
+  bool moving = false;
+  for (const auto& arm : trace.arms) {
+    for (const recording::ArmSignals& s : arm) {
+      for (const raven::ArmJoints* v : {&s.joints, &s.joint_setpoint, &s.motor, &s.motor_velocity,
+                                        &s.motor_setpoint, &s.torque, &s.dac}) {
+        if (!v->allFinite()) return std::nullopt;
+      }
+      moving = moving || !s.motor.isZero();
+    }
+  }
+  if (!moving) return std::nullopt;
+  return trace;
+}
+
+SignalJoints zeroSignals() {
+  SignalJoints z;
+  for (auto& signal : z) signal.fill(raven::ArmJoints::Zero());
+  return z;
+}
+
 std::array<raven::ArmJoints, 2> meanAbsoluteDifference(const ActuatorTrace& a,
                                                        const ActuatorTrace& b, ActuatorSignal s) {
   std::array<raven::ArmJoints, 2> out{};
   const std::size_t rows = std::min(a.rows(), b.rows());
+  const SignalColumn& c = columnOf(s);
   for (std::size_t arm = 0; arm < 2; ++arm) {
-    const auto& x = a.arms[arm].of(s);
-    const auto& y = b.arms[arm].of(s);
     raven::ArmJoints sum = raven::ArmJoints::Zero();
-    for (std::size_t r = 0; r < rows; ++r) sum += (x[r] - y[r]).cwiseAbs();
-    out[arm] = rows > 0 ? raven::ArmJoints(sum / static_cast<double>(rows)) : sum;
+    for (std::size_t r = 0; r < rows; ++r) {
+      sum += (a.arms[arm][r].*c.field - b.arms[arm][r].*c.field).cwiseAbs();
+    }
+    out[arm] = rows > 0 ? raven::ArmJoints(sum * c.to_logged / static_cast<double>(rows)) : sum;
   }
   return out;
+}
+
+double medianRatio(const std::array<raven::ArmJoints, 2>& value,
+                   const std::array<raven::ArmJoints, 2>& spread) {
+  std::vector<double> ratios;
+  for (std::size_t arm = 0; arm < 2; ++arm) {
+    for (int j = 0; j < raven::kJointCount; ++j) {
+      if (spread[arm](j) > 0.0) ratios.push_back(value[arm](j) / spread[arm](j));
+    }
+  }
+  return ratios.empty() ? 0.0 : median(std::move(ratios));
 }
 
 ActuatorFidelity actuatorFidelity(const std::vector<ActuatorTrace>& twin,
@@ -116,17 +132,8 @@ ActuatorFidelity actuatorFidelity(const std::vector<ActuatorTrace>& twin,
         for (std::size_t arm = 0; arm < 2; ++arm) f.spread[k][arm] += p[arm];
       }
     }
-    std::vector<double> ratios;
-    for (std::size_t arm = 0; arm < 2; ++arm) {
-      f.spread[k][arm] /= static_cast<double>(pairs);
-      for (int j = 0; j < raven::kJointCount; ++j) {
-        if (f.spread[k][arm](j) > 0.0) ratios.push_back(f.twin[k][arm](j) / f.spread[k][arm](j));
-      }
-    }
-    if (ratios.empty()) continue;
-    std::sort(ratios.begin(), ratios.end());
-    const std::size_t n = ratios.size();
-    f.median_ratio[k] = n % 2 ? ratios[n / 2] : 0.5 * (ratios[n / 2 - 1] + ratios[n / 2]);
+    for (std::size_t arm = 0; arm < 2; ++arm) f.spread[k][arm] /= static_cast<double>(pairs);
+    f.median_ratio[k] = medianRatio(f.twin[k], f.spread[k]);
   }
   return f;
 }

@@ -141,4 +141,11 @@ double groupFigure(const Comparison& c, const JointGroup& group, Quantity q,
   return pairs ? sum / pairs : kNaN;
 }
 
+double median(std::vector<double> values) {
+  if (values.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
 }  // namespace analysis

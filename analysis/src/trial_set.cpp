@@ -127,6 +127,7 @@ TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
         for (const auto& r : runs) list += (list.empty() ? "" : ", ") + r;
         set.issues.push_back({file, "NaN in " + list + " (those rows are skipped)", false});
       }
+      trial.actuators = loggedActuatorTrace(rs);
       by_platform[profile->name].push_back(std::move(trial));
     } catch (const std::exception& e) {
       set.issues.push_back({file, e.what()});
@@ -192,6 +193,7 @@ void resampleOnTime(TrialSet& set, double period) {
     for (auto& t : p.trials) {
       Trial resampled;
       resampled.path = t.path;
+      resampled.actuators = std::move(t.actuators);
       for (std::size_t k = 0; k < samples; ++k) {
         const double at = static_cast<double>(k) * period;
         resampled.time.push_back(at);

@@ -20,7 +20,6 @@
 #include "calibration/replay_timing.hpp"
 #include "raven/control_cycle.hpp"
 #include "recording/recording_io.hpp"
-#include "twin/recorded_start.hpp"
 
 namespace {
 
@@ -60,36 +59,48 @@ struct ReplayFlags {
   }
 };
 
-/// The physical recordings named (files or directories: every *physical*.csv in them).
-std::vector<recording::RsRecording> loadPhysical(const std::vector<std::filesystem::path>& inputs) {
-  std::vector<std::filesystem::path> files;
-  for (const auto& input : inputs) {
-    if (!std::filesystem::is_directory(input)) {
-      files.push_back(input);
-      continue;
-    }
-    for (const auto& e : std::filesystem::directory_iterator(input)) {
-      const auto name = e.path().filename().string();
-      if (e.path().extension() == ".csv" && name.find("physical") != std::string::npos)
-        files.push_back(e.path());
+/// The physical robot's trials among the files and directories named, as raven_analyze's
+/// platform profiles assign them; every other file is reported and left out. Throws when a
+/// physical trial logs no actuator signals or fewer than two remain.
+std::vector<analysis::Trial> loadPhysical(const std::vector<std::filesystem::path>& inputs) {
+  const auto set =
+      analysis::loadTrials(inputs, analysis::readProfiles(analysis::defaultProfilesFile()));
+  for (const auto& issue : set.issues) {
+    spdlog::warn("{}: {}{}", issue.path.string(), issue.reason,
+                 issue.excluded ? " (left out)" : "");
+  }
+  std::vector<analysis::Trial> trials;
+  for (const auto& platform : set.platforms) {
+    for (const auto& t : platform.trials) {
+      if (platform.profile.role != analysis::Role::Physical) {
+        spdlog::warn("{}: a {} recording, not physical: left out", t.path.string(),
+                     platform.profile.name);
+        continue;
+      }
+      if (!t.actuators) {
+        throw std::runtime_error(t.path.string() +
+                                 ": logs no finite motor signals (jpos_d, mpos, mvel, mpos_d, Tau, "
+                                 "dac_vals in every row)");
+      }
+      trials.push_back(t);
     }
   }
-  std::sort(files.begin(), files.end());
-  std::vector<recording::RsRecording> out;
-  for (const auto& f : files) {
-    out.push_back(recording::readRs(f, recording::NonFiniteJoints::Refuse));
-    twin::recordedStart(out.back());  // refuses, naming the file, a recording without motor signals
-  }
-  if (out.size() < 2) {
+  if (trials.size() < 2) {
     throw std::runtime_error(fmt::format(
-        "{} physical recording(s) found: the robot's spread needs two or more", out.size()));
+        "{} physical recording(s) found: the robot's spread needs two or more", trials.size()));
   }
-  return out;
+  return trials;
 }
 
-std::vector<analysis::ActuatorTrace> tracesOf(const std::vector<recording::RsRecording>& rs) {
+std::vector<analysis::ActuatorTrace> replayTraces(const calibration::ReplayScore& score) {
   std::vector<analysis::ActuatorTrace> t;
-  for (const auto& r : rs) t.push_back(analysis::actuatorTrace(r));
+  for (const auto& rs : score.replays) t.push_back(analysis::actuatorTrace(rs));
+  return t;
+}
+
+std::vector<analysis::ActuatorTrace> tracesOf(const std::vector<analysis::Trial>& trials) {
+  std::vector<analysis::ActuatorTrace> t;
+  for (const auto& trial : trials) t.push_back(*trial.actuators);
   return t;
 }
 
@@ -117,13 +128,12 @@ void printFigures(const calibration::ReplayScore& s) {
   std::printf(
       "\njoint figures, twin vs its own trial (mean |difference|) against T_PP (physical vs "
       "physical)\n");
-  const char* names[4] = {"revolute j_P (rad)", "insertion j_P (mm)", "revolute j_V (rad/s)",
-                          "insertion j_V (mm/s)"};
+  const auto& names = calibration::Figures::names();
   for (std::size_t k = 0; k < 2; ++k) {
     const auto t = s.twin[k].values();
     const auto r = s.robot[k].values();
     for (std::size_t i = 0; i < 4; ++i) {
-      std::printf("  %-22s %-17s twin %9.4f   T_PP %9.4f   %s\n", names[i],
+      std::printf("  %-22s %-17s twin %9.4f   T_PP %9.4f   %s\n", names[i].c_str(),
                   k == 0 ? "as recorded" : "first row removed", t[i], r[i],
                   t[i] <= r[i] ? "within" : "OUTSIDE");
     }
@@ -135,7 +145,7 @@ void printMechanics(const twin::CalibrationProfile& p) {
   std::printf("\nfitted mechanics (+- standard deviation)\n");
   for (raven::Arm arm : raven::kArms) {
     const auto a = static_cast<std::size_t>(raven::index(arm));
-    twin::MotorMechanics m = p.mechanics[a], u = p.uncertainty[a];
+    const twin::MotorMechanics &m = p.mechanics[a], &u = p.uncertainty[a];
     for (int v = 0; v < calibration::kMechanicsValues; ++v) {
       std::printf("  %-6s %-14s", std::string(raven::armName(arm)).c_str(),
                   std::string(twin::MotorMechanics::kNames[static_cast<std::size_t>(v)]).c_str());
@@ -146,6 +156,24 @@ void printMechanics(const twin::CalibrationProfile& p) {
       std::printf("\n");
     }
   }
+}
+
+/// The recordings' own setpoints through the motor model with `mechanics`, against them.
+analysis::ActuatorFidelity setpointFidelity(const std::vector<analysis::ActuatorTrace>& traces,
+                                            const twin::ArmsMechanics& mechanics) {
+  std::vector<analysis::ActuatorTrace> replays;
+  for (const auto& t : traces) replays.push_back(calibration::replaySetpoints(t, mechanics));
+  return analysis::actuatorFidelity(replays, traces);
+}
+
+/// "median ratio mpos 0.16, mvel 0.88, Tau 1.64, dac_vals 1.64" for the profile's notes.
+std::string medianRatios(const analysis::ActuatorFidelity& f) {
+  std::string line = "median ratio";
+  for (std::size_t k = 0; k < analysis::kActuatorSignals.size(); ++k) {
+    line += fmt::format("{} {} {:.2f}", k ? "," : "",
+                        analysis::columnName(analysis::kActuatorSignals[k]), f.median_ratio[k]);
+  }
+  return line;
 }
 
 /// One leave-one-out fold's result.
@@ -170,11 +198,9 @@ int runFit(const FitSettings& s) {
   const auto traces = tracesOf(physical);
   std::printf("raven_calibrate fit: %zu physical trial(s)\n", physical.size());
   const twin::ArmsMechanics start = calibration::startingMechanics();
-  std::vector<analysis::ActuatorTrace> replays;
-  for (const auto& t : traces) replays.push_back(calibration::replaySetpoints(t, start));
   printActuators(
       "setpoint replays with the starting values (raven2_sim's friction, catalogue inertias)",
-      analysis::actuatorFidelity(replays, traces));
+      setpointFidelity(traces, start));
 
   // Folds: each trial held out (fitted on the others), then every trial.
   std::vector<Fold> folds;
@@ -221,38 +247,27 @@ int runFit(const FitSettings& s) {
   calibration::MechanicsInformation information = calibration::MechanicsInformation::none();
   for (const auto& t : traces) information += calibration::informationOf(profile.mechanics, t);
   profile.uncertainty = information.standardDeviations();
-  replays.clear();
-  for (const auto& t : traces)
-    replays.push_back(calibration::replaySetpoints(t, profile.mechanics));
-  const auto fitted = analysis::actuatorFidelity(replays, traces);
+  const auto fitted = setpointFidelity(traces, profile.mechanics);
   printActuators("setpoint replays, fitted on every trial", fitted);
   printMechanics(profile);
 
   calibration::FitProvenance provenance;
-  for (const auto& r : physical) provenance.physical.push_back(r.path.string());
-  provenance.notes.push_back(
-      fmt::format("setpoint replays, fitted on every trial: median ratio mpos {:.2f}, mvel {:.2f}, "
-                  "Tau {:.2f}, dac_vals {:.2f}",
-                  fitted.median_ratio[0], fitted.median_ratio[1], fitted.median_ratio[2],
-                  fitted.median_ratio[3]));
+  for (const auto& t : physical) provenance.physical.push_back(t.path.string());
+  provenance.notes.push_back("setpoint replays, fitted on every trial: " + medianRatios(fitted));
   if (!s.replay.ci.empty()) {
     // The recording controller's timing, then the whole chain from each trial's start.
     calibration::ReplaySetup setup = s.replay.setup(0.0);
-    setup.twin.motors = profile.mechanics;
+    profile.applyTo(setup.twin);  // every increment delivered, for now
     const auto fast = calibration::replayOnTwin(setup);
-    analysis::PlatformProfile physical_profile;
-    physical_profile.name = "physical";
-    std::vector<analysis::Trial> trials;
-    for (const auto& r : physical) trials.push_back(analysis::toTrial(r, physical_profile));
-    profile.iteration_overhead = calibration::measureIterationOverhead(fast, trials);
+    profile.iteration_overhead = calibration::measureIterationOverhead(fast, physical);
     setup.controller.iteration_overhead = profile.iteration_overhead;
     std::printf("\niteration overhead of the recording controller (median, measured): %.2f ms\n",
                 1e3 * profile.iteration_overhead);
     // Every increment delivered first; the robot's own setpoints then say how many arrived.
     const auto delivered_all = calibration::scoreReplays(setup, physical);
     profile.servo_jr_delivered =
-        calibration::measureServoDelivery(tracesOf(delivered_all.replays), traces);
-    setup.twin.limits.servo_jr_delivered = profile.servo_jr_delivered;
+        calibration::measureServoDelivery(replayTraces(delivered_all), traces);
+    profile.applyTo(setup.twin);
     std::printf("servo_jr increments the robot received (median share, measured): %.4f\n",
                 profile.servo_jr_delivered);
     const auto score = calibration::scoreReplays(setup, physical);
@@ -260,11 +275,9 @@ int runFit(const FitSettings& s) {
                    score.actuators);
     printFigures(score);
     provenance.inputs = s.replay.ci.string();
-    provenance.notes.push_back(fmt::format(
-        "end-to-end replays: median ratio mpos {:.2f}, mvel {:.2f}, Tau {:.2f}, dac_vals {:.2f}; "
-        "{} of 8 joint figures within T_PP",
-        score.actuators.median_ratio[0], score.actuators.median_ratio[1],
-        score.actuators.median_ratio[2], score.actuators.median_ratio[3], score.figuresWithin()));
+    provenance.notes.push_back(
+        fmt::format("end-to-end replays: {}; {} of 8 joint figures within T_PP",
+                    medianRatios(score.actuators), score.figuresWithin()));
   }
   calibration::writeCalibration(s.out, profile, provenance);
   const double seconds =

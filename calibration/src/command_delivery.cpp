@@ -1,8 +1,9 @@
 #include "calibration/command_delivery.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
+
+#include "analysis/metrics.hpp"
 
 namespace calibration {
 
@@ -15,13 +16,13 @@ double measureServoDelivery(const std::vector<analysis::ActuatorTrace>& twin,
   for (std::size_t i = 0; i < twin.size(); ++i) {
     const std::size_t rows = std::min(twin[i].rows(), physical[i].rows());
     for (std::size_t a = 0; a < 2; ++a) {
-      const auto& t = twin[i].arms[a].joint_setpoint;
-      const auto& p = physical[i].arms[a].joint_setpoint;
+      const auto& t = twin[i].arms[a];
+      const auto& p = physical[i].arms[a];
       for (int j = raven::kShoulder; j <= raven::kInsertion; ++j) {
         double tp = 0.0, tt = 0.0;
         for (std::size_t r = 0; r < rows; ++r) {
-          const double dt = t[r](j) - t[0](j);
-          tp += dt * (p[r](j) - p[0](j));
+          const double dt = t[r].joint_setpoint(j) - t[0].joint_setpoint(j);
+          tp += dt * (p[r].joint_setpoint(j) - p[0].joint_setpoint(j));
           tt += dt * dt;
         }
         if (tt > 0.0) slopes.push_back(tp / tt);
@@ -29,10 +30,7 @@ double measureServoDelivery(const std::vector<analysis::ActuatorTrace>& twin,
     }
   }
   if (slopes.empty()) return 1.0;  // nothing moved: nothing to tell
-  std::sort(slopes.begin(), slopes.end());
-  const std::size_t n = slopes.size();
-  const double median = n % 2 ? slopes[n / 2] : 0.5 * (slopes[n / 2 - 1] + slopes[n / 2]);
-  return std::clamp(median, 0.5, 1.0);
+  return std::clamp(analysis::median(std::move(slopes)), 0.5, 1.0);
 }
 
 }  // namespace calibration

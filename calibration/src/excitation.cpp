@@ -12,6 +12,11 @@ namespace {
 struct Wave {
   double amplitude = 0.0, frequency = 0.0, phase = 0.0;
   double at(double t) const { return amplitude * std::sin(2.0 * M_PI * frequency * t + phase); }
+  /// As a trigger (0 .. 3.996 on the paper's scale; the jaws close as it rises): swinging 90 %
+  /// of the way to either end about the middle, or released when the wave is off.
+  double trigger(double t) const {
+    return amplitude > 0.0 ? 2.0 + 1.99 * at(t) / amplitude * 0.9 : 0.0;
+  }
 };
 
 Wave drawWave(std::mt19937_64& random, double on_probability) {
@@ -57,11 +62,8 @@ std::vector<recording::GamepadState> randomExcitation(std::mt19937_64& random,
       pad.left_y = waves[1].at(t);
       pad.right_x = waves[2].at(t);
       pad.right_y = waves[3].at(t);
-      // Triggers read 0 .. 3.996 on the paper's scale; the jaws close as they rise.
-      pad.left_trigger =
-          waves[4].amplitude > 0.0 ? 2.0 + 1.99 * waves[4].at(t) / waves[4].amplitude * 0.9 : 0.0;
-      pad.right_trigger =
-          waves[5].amplitude > 0.0 ? 2.0 + 1.99 * waves[5].at(t) / waves[5].amplitude * 0.9 : 0.0;
+      pad.left_trigger = waves[4].trigger(t);
+      pad.right_trigger = waves[5].trigger(t);
       const bool z = use_bumpers && std::fmod(t, 2.0 * bumper_period) >= bumper_period;
       pad.left_bumper = z;
       pad.right_bumper = z && scheme == Scheme::M2;
@@ -83,9 +85,10 @@ Candidate scoreCandidate(const ReplaySetup& setup, const twin::CalibrationProfil
   c.inputs = std::move(inputs);
   c.trace = analysis::actuatorTrace(rs);
   const raven::JointLimits limits = raven::builtinProfile("physical").limits;
+  const raven::ArmJoints margin = 0.01 * (limits.high - limits.low);
   for (const auto& arm : c.trace.arms) {
-    for (const auto& q : arm.joints) {
-      const raven::ArmJoints margin = 0.01 * (limits.high - limits.low);
+    for (const recording::ArmSignals& row : arm) {
+      const raven::ArmJoints& q = row.joints;
       if (((q - limits.low).array() < margin.array()).any() ||
           ((limits.high - q).array() < margin.array()).any()) {
         c.within_limits = false;
@@ -110,7 +113,7 @@ double meanReduction(const twin::ArmsMechanics& before, const twin::ArmsMechanic
   double sum = 0.0;
   int n = 0;
   for (std::size_t a = 0; a < 2; ++a) {
-    twin::MotorMechanics b = before[a], c = after[a];
+    const twin::MotorMechanics &b = before[a], &c = after[a];
     for (int j = 0; j < raven::kJointCount; ++j) {
       for (int v = 0; v < kMechanicsValues; ++v) {
         const double s0 = b.field(static_cast<std::size_t>(v))(j);

@@ -37,7 +37,7 @@ MechanicsInformation MechanicsInformation::none() {
 MechanicsInformation MechanicsInformation::fromUncertainty(const twin::ArmsMechanics& sd) {
   MechanicsInformation info = none();
   for (std::size_t a = 0; a < 2; ++a) {
-    twin::MotorMechanics m = sd[a];
+    const twin::MotorMechanics& m = sd[a];
     for (int j = 0; j < raven::kJointCount; ++j) {
       for (int v = 0; v < kMechanicsValues; ++v) {
         const double s = m.field(static_cast<std::size_t>(v))(j);
@@ -67,11 +67,7 @@ twin::ArmsMechanics MechanicsInformation::standardDeviations() const {
         if (b(v, v) > 0.0) used.push_back(v);
       }
       if (used.empty()) continue;
-      Eigen::MatrixXd sub(used.size(), used.size());
-      for (std::size_t r = 0; r < used.size(); ++r) {
-        for (std::size_t c = 0; c < used.size(); ++c)
-          sub(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = b(used[r], used[c]);
-      }
+      const Eigen::MatrixXd sub = b(used, used);
       const Eigen::MatrixXd covariance = sub.completeOrthogonalDecomposition().pseudoInverse();
       for (std::size_t r = 0; r < used.size(); ++r) {
         sd[a].field(static_cast<std::size_t>(used[r]))(j) = std::sqrt(
@@ -85,19 +81,14 @@ twin::ArmsMechanics MechanicsInformation::standardDeviations() const {
 double MechanicsInformation::logDet(const twin::ArmsMechanics& fitted) const {
   double sum = 0.0;
   for (std::size_t a = 0; a < 2; ++a) {
-    twin::MotorMechanics m = fitted[a];
+    const twin::MotorMechanics& m = fitted[a];
     for (int j = 0; j < raven::kJointCount; ++j) {
       std::vector<int> used;
       for (int v = 0; v < kMechanicsValues; ++v) {
         if (m.field(static_cast<std::size_t>(v))(j) > 0.0) used.push_back(v);
       }
       if (used.empty()) continue;
-      Eigen::MatrixXd sub(used.size(), used.size());
-      const InformationBlock& b = blocks[a][static_cast<std::size_t>(j)];
-      for (std::size_t r = 0; r < used.size(); ++r) {
-        for (std::size_t c = 0; c < used.size(); ++c)
-          sub(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = b(used[r], used[c]);
-      }
+      const Eigen::MatrixXd sub = blocks[a][static_cast<std::size_t>(j)](used, used);
       const Eigen::LDLT<Eigen::MatrixXd> ldlt(sub);
       for (Eigen::Index k = 0; k < sub.rows(); ++k)
         sum += std::log(std::max(ldlt.vectorD()(k), 1e-300));
@@ -136,18 +127,22 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
   }
   MechanicsInformation info = MechanicsInformation::none();
   for (std::size_t a = 0; a < 2; ++a) {
-    for (int j = 0; j < raven::kJointCount; ++j) {
-      const bool gravity = j <= raven::kInsertion;
-      for (std::size_t s = 0; s < kSignals.size(); ++s) {
-        const auto& y0 = base.arms[a].of(kSignals[s]);
-        for (std::size_t r = 0; r < y0.size(); ++r) {
+    for (std::size_t s = 0; s < kSignals.size(); ++s) {
+      for (std::size_t r = 0; r < base.rows(); ++r) {
+        // Per value, every joint's sensitivity in units of the noise.
+        const raven::ArmJoints y0 = analysis::logged(base.arms[a][r], kSignals[s]);
+        std::array<raven::ArmJoints, kMechanicsValues> dy;
+        for (std::size_t v = 0; v < dy.size(); ++v) {
+          dy[v] = (analysis::logged(moved[v].arms[a][r], kSignals[s]) - y0)
+                      .cwiseQuotient(step[v][a].field(v))
+                      .cwiseQuotient(sigma[a][s]);
+        }
+        for (int j = 0; j < raven::kJointCount; ++j) {
+          // Only the arm motors have a gravity error.
+          const int values = j <= raven::kInsertion ? kMechanicsValues : kMechanicsValues - 1;
           Eigen::Matrix<double, kMechanicsValues, 1> g =
               Eigen::Matrix<double, kMechanicsValues, 1>::Zero();
-          for (int v = 0; v < (gravity ? 5 : 4); ++v) {
-            const auto& y1 = moved[static_cast<std::size_t>(v)].arms[a].of(kSignals[s]);
-            twin::MotorMechanics h = step[static_cast<std::size_t>(v)][a];
-            g(v) = (y1[r](j) - y0[r](j)) / h.field(static_cast<std::size_t>(v))(j) / sigma[a][s](j);
-          }
+          for (int v = 0; v < values; ++v) g(v) = dy[static_cast<std::size_t>(v)](j);
           info.blocks[a][static_cast<std::size_t>(j)] += g * g.transpose();
         }
       }

@@ -14,26 +14,25 @@ int ReplayScore::figuresWithin() const {
   return n;
 }
 
-ReplayScore scoreReplays(ReplaySetup setup, const std::vector<recording::RsRecording>& physical) {
-  if (physical.size() < 2)
+ReplayScore scoreReplays(ReplaySetup setup, const std::vector<analysis::Trial>& physical) {
+  if (physical.size() < 2) {
     throw std::invalid_argument("the robot's spread needs two physical trials");
-  analysis::PlatformProfile physical_profile;
-  physical_profile.name = "physical";
+  }
   analysis::PlatformProfile twin_profile;
   twin_profile.name = "twin";
   ReplayScore score;
   std::vector<analysis::ActuatorTrace> physical_traces, twin_traces;
-  std::vector<analysis::Trial> physical_trials;
-  for (const auto& rs : physical) {
-    physical_traces.push_back(analysis::actuatorTrace(rs));
-    physical_trials.push_back(analysis::toTrial(rs, physical_profile));
-    setup.start = recordedStart(physical_traces.back());
+  for (const analysis::Trial& trial : physical) {
+    if (!trial.actuators) {
+      throw std::invalid_argument(trial.path.string() + ": logs no actuator signals to start from");
+    }
+    physical_traces.push_back(*trial.actuators);
+    setup.start = recordedStart(*trial.actuators);
     score.replays.push_back(recordReplay(setup));
     twin_traces.push_back(analysis::actuatorTrace(score.replays.back()));
     const analysis::Trial twin = analysis::toTrial(score.replays.back(), twin_profile);
     for (std::size_t k = 0; k < 2; ++k) {
-      const auto f =
-          twinVsPhysical(twin, physicalTrials({physical_trials.back()}), k == 1).values();
+      const auto f = twinVsPhysical(twin, physicalTrials({trial}), k == 1).values();
       const double n = static_cast<double>(physical.size());
       score.twin[k].revolute_position += f[0] / n;
       score.twin[k].insertion_position += f[1] / n;
@@ -41,7 +40,7 @@ ReplayScore scoreReplays(ReplaySetup setup, const std::vector<recording::RsRecor
       score.twin[k].insertion_velocity += f[3] / n;
     }
   }
-  const auto all = physicalTrials(physical_trials);
+  const auto all = physicalTrials(physical);
   score.robot = {robotRepeatability(all, false), robotRepeatability(all, true)};
   score.actuators = analysis::actuatorFidelity(twin_traces, physical_traces);
   return score;

@@ -8,32 +8,29 @@ namespace calibration {
 
 namespace {
 
-constexpr double kDegreesPerRadian = 180.0 / M_PI;
+using Rows = std::vector<recording::ArmSignals>;
 
 /// The recording's setpoint at `t`, linear between rows.
-raven::ArmJoints setpointAt(const analysis::ArmTrace& arm, const std::vector<double>& time,
-                            std::size_t& row, double t) {
+raven::ArmJoints setpointAt(const Rows& arm, const std::vector<double>& time, std::size_t& row,
+                            double t) {
   while (row + 1 < time.size() && time[row + 1] <= t) ++row;
-  if (row + 1 >= time.size()) return arm.joint_setpoint[row];
+  if (row + 1 >= time.size()) return arm[row].joint_setpoint;
   const double s = (t - time[row]) / (time[row + 1] - time[row]);
-  return arm.joint_setpoint[row] + s * (arm.joint_setpoint[row + 1] - arm.joint_setpoint[row]);
+  return arm[row].joint_setpoint + s * (arm[row + 1].joint_setpoint - arm[row].joint_setpoint);
+}
+
+/// What a row of the robot's log would hold for this cycle's readings.
+recording::ArmSignals signalsOf(const twin::ActuatorReadings& r, const raven::ArmJoints& setpoint) {
+  raven::ArmJoints dac;
+  for (int j = 0; j < raven::kJointCount; ++j) dac(j) = r.dac[static_cast<std::size_t>(j)];
+  return {r.position, setpoint, r.motor_position, r.motor_velocity, r.motor_setpoint,
+          r.torque,   dac};
 }
 
 }  // namespace
 
 twin::RecordedStart recordedStart(const analysis::ActuatorTrace& trace) {
-  std::array<recording::ArmSignals, 2> first{};
-  for (std::size_t a = 0; a < 2; ++a) {
-    const analysis::ArmTrace& t = trace.arms[a];
-    first[a] = {t.joints[0],
-                t.joint_setpoint[0],
-                t.motor[0] / kDegreesPerRadian,
-                t.motor_velocity[0] / kDegreesPerRadian,
-                t.motor_setpoint[0],
-                t.torque[0],
-                t.dac[0]};
-  }
-  return twin::recordedStart(first);
+  return twin::recordedStart({trace.arms[0].front(), trace.arms[1].front()});
 }
 
 analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording,
@@ -45,10 +42,9 @@ analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording
   const twin::RecordedStart start = recordedStart(recording);
   for (raven::Arm arm : raven::kArms) {
     const auto a = static_cast<std::size_t>(raven::index(arm));
-    const analysis::ArmTrace& in = recording.arms[a];
-    twin::ArmDrive motors(arm, drive, mechanics[a], raven::kControlCycle, in.joints[0]);
+    const Rows& in = recording.arms[a];
+    twin::ArmDrive motors(arm, drive, mechanics[a], raven::kControlCycle, in.front().joints);
     motors.place(start.arms[a]);
-    analysis::ArmTrace& t = out.arms[a];
     std::size_t segment = 0;
     std::size_t cycle = 0;
     for (std::size_t r = 0; r < recording.rows(); ++r) {
@@ -60,15 +56,8 @@ analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording
         now = &motors.cycle(setpointAt(in, recording.time, segment,
                                        static_cast<double>(cycle) * raven::kControlCycle));
       }
-      t.joints.push_back(now->position);
-      t.joint_setpoint.push_back(setpointAt(in, recording.time, segment, recording.time[r]));
-      t.motor.push_back(now->motor_position * kDegreesPerRadian);
-      t.motor_velocity.push_back(now->motor_velocity * kDegreesPerRadian);
-      t.motor_setpoint.push_back(now->motor_setpoint);
-      t.torque.push_back(now->torque);
-      raven::ArmJoints dac;
-      for (int j = 0; j < raven::kJointCount; ++j) dac(j) = now->dac[static_cast<std::size_t>(j)];
-      t.dac.push_back(dac);
+      out.arms[a].push_back(
+          signalsOf(*now, setpointAt(in, recording.time, segment, recording.time[r])));
     }
   }
   return out;

@@ -42,7 +42,12 @@ TEST(ReplayTiming, TheOverheadIsTheMedianExtraTimePerRow) {
 /// The paper's 2arm set: its inputs, the released controller's deadzone, the physical trials.
 struct Paper2arm {
   calibration::ReplaySetup setup;
-  std::vector<recording::RsRecording> physical_rs;
+  std::vector<analysis::Trial> physical;  ///< with their actuator signals
+  std::vector<analysis::ActuatorTrace> traces() const {
+    std::vector<analysis::ActuatorTrace> t;
+    for (const auto& trial : physical) t.push_back(trial.actuators.value());
+    return t;
+  }
 };
 
 std::optional<Paper2arm> paper2arm() {
@@ -52,10 +57,12 @@ std::optional<Paper2arm> paper2arm() {
   Paper2arm p;
   p.setup.inputs = recording::readCi(dir / "2arm_ci.csv");
   p.setup.controller.mapping.deadzone_reads_y_twice = true;
-  for (int k = 1; k <= 3; ++k) {
-    p.physical_rs.push_back(
-        recording::readRs(dir / ("2arm_physical_" + std::to_string(k) + ".csv")));
-  }
+  std::vector<std::filesystem::path> files;
+  for (int k = 1; k <= 3; ++k)
+    files.push_back(dir / ("2arm_physical_" + std::to_string(k) + ".csv"));
+  const auto set =
+      analysis::loadTrials(files, analysis::readProfiles(analysis::defaultProfilesFile()));
+  p.physical = set.find("physical")->trials;
   return p;
 }
 
@@ -130,14 +137,9 @@ TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
     for (raven::Arm arm : raven::kArms) {
       auto& a = trace.arms[static_cast<std::size_t>(raven::index(arm))];
       const raven::ArmJoints set = arm == raven::Arm::Left ? q : home;
-      const raven::ArmJoints motor = drive.toMotor(arm, set) * 180.0 / M_PI;
-      a.joints.push_back(set);
-      a.joint_setpoint.push_back(set);
-      a.motor.push_back(motor);
-      a.motor_velocity.push_back(raven::ArmJoints::Zero());
-      a.motor_setpoint.push_back(motor * M_PI / 180.0);
-      a.torque.push_back(raven::ArmJoints::Zero());
-      a.dac.push_back(raven::ArmJoints::Zero());
+      const raven::ArmJoints motor = drive.toMotor(arm, set);
+      const raven::ArmJoints zero = raven::ArmJoints::Zero();
+      a.push_back({set, set, motor, zero, motor, zero, zero});
     }
   }
   const auto mechanics = calibration::startingMechanics();
@@ -157,8 +159,7 @@ TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
 TEST(ActuationFit, AShortFitImprovesOnItsStartingPoint) {
   auto paper = paper2arm();
   if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
-  std::vector<analysis::ActuatorTrace> traces;
-  for (const auto& rs : paper->physical_rs) traces.push_back(analysis::actuatorTrace(rs));
+  const auto traces = paper->traces();
   const auto spread = analysis::actuatorFidelity({traces[0]}, traces);
   const auto start = calibration::startingMechanics();
   const double before = calibration::scoreMechanics(start, traces, spread).total();
@@ -175,17 +176,18 @@ TEST(ShippedCalibration, AReplayStartedFromATrialBeginsWhereItBegan) {
   if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
   const auto profile = twin::CalibrationProfile::shipped();
   profile.applyTo(paper->setup.twin);
-  const auto physical = analysis::actuatorTrace(paper->physical_rs[1]);
+  const auto physical = paper->physical[1].actuators.value();
   paper->setup.start = calibration::recordedStart(physical);
   const auto replay = analysis::actuatorTrace(calibration::recordReplay(paper->setup));
   // Row 0 comes after the replay's 1 s wait, as the robot's came 1.4 s before its first input:
   // the motors held by friction, the tools' integrators a second further on.
   for (std::size_t a = 0; a < 2; ++a) {
-    const auto& t = replay.arms[a];
-    const auto& p = physical.arms[a];
-    EXPECT_LT((t.motor[0] - p.motor[0]).cwiseAbs().maxCoeff(), 2 * 0.09) << "deg, two counts";
-    EXPECT_LT((t.torque[0] - p.torque[0]).cwiseAbs().maxCoeff(), 0.01) << "N m";
-    EXPECT_LT((t.joint_setpoint[0] - p.joint_setpoint[0]).cwiseAbs().maxCoeff(), 1e-6);
+    const auto& t = replay.arms[a].front();
+    const auto& p = physical.arms[a].front();
+    const double count = 2.0 * M_PI / 4000.0;  // rad
+    EXPECT_LT((t.motor - p.motor).cwiseAbs().maxCoeff(), 2 * count) << "two counts";
+    EXPECT_LT((t.torque - p.torque).cwiseAbs().maxCoeff(), 0.01) << "N m";
+    EXPECT_LT((t.joint_setpoint - p.joint_setpoint).cwiseAbs().maxCoeff(), 1e-6);
   }
 }
 
@@ -195,7 +197,7 @@ TEST(ShippedCalibration, PutsThe2armReplaysWithinTheRobotsOwnSpread) {
   const auto profile = twin::CalibrationProfile::shipped();
   paper->setup.controller.iteration_overhead = profile.iteration_overhead;
   profile.applyTo(paper->setup.twin);
-  const auto score = calibration::scoreReplays(paper->setup, paper->physical_rs);
+  const auto score = calibration::scoreReplays(paper->setup, paper->physical);
   ASSERT_EQ(score.replays.size(), 3u);
   for (std::size_t k = 0; k < analysis::kActuatorSignals.size(); ++k) {
     const char* name = analysis::columnName(analysis::kActuatorSignals[k]);

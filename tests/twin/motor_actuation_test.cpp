@@ -58,6 +58,7 @@ TEST(MotorController, TheDacIsTauOverTheAmplifiersAndTheClipHoldsExceptOnGrasp2)
   auto out = law.cycle(set, m, ArmJoints::Zero(), home());
   const ArmJoints gravity = twin::gravityCompensation(Arm::Left, home(), drive);
   EXPECT_NEAR(out.torque(raven::kShoulder), 0.3 * 0.1 + gravity(raven::kShoulder), 1e-12);
+  EXPECT_EQ(out.gravity, gravity) << "the compensation's part, as the motors are stepped with";
   EXPECT_EQ(out.dac[0], static_cast<int>(std::trunc(out.torque(0) * dac.counts_per_torque(0))));
   EXPECT_FALSE(out.overdrive);
   // 2 motor rad of error on the shoulder: 0.6 N m, 2217 counts, under the 2500 clip; 3 rad: over.

@@ -2,8 +2,6 @@
 
 #include <stdexcept>
 
-#include "twin/gravity_compensation.hpp"
-
 namespace twin {
 
 namespace {
@@ -66,7 +64,7 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
   r.torque = command.torque;
   r.dac = command.dac;
   r.effort = coupling_.transpose() * command.applied.cwiseQuotient(drive_.gearbox);
-  motors_.step(command.applied, gravityCompensation(arm_, r.position, drive_), cycle_);
+  motors_.step(command.applied, command.gravity, cycle_);
   return r;
 }
 

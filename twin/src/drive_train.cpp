@@ -46,9 +46,7 @@ ArmJoints DriveTrain::toMotor(Arm arm, const ArmJoints& q, double insertion_moto
   m(raven::kShoulder) = t(raven::kShoulder) * q(raven::kShoulder);
   m(raven::kElbow) =
       t(raven::kElbow) * (q(raven::kElbow) + shoulder_to_elbow * q(raven::kShoulder));
-  m(raven::kInsertion) =
-      t(raven::kInsertion) * (q(raven::kInsertion) + shoulder_to_insertion * q(raven::kShoulder) +
-                              elbow_to_insertion * q(raven::kElbow));
+  m(raven::kInsertion) = insertionMotor(q);
   m(raven::kRoll) = t(raven::kRoll) * q(raven::kRoll) + drag;
   m(raven::kWrist) = t(raven::kWrist) * q(raven::kWrist) + drag;
   // Jaw 1's cable runs the other way (OPPOSE_GRIP).
@@ -58,11 +56,13 @@ ArmJoints DriveTrain::toMotor(Arm arm, const ArmJoints& q, double insertion_moto
 }
 
 ArmJoints DriveTrain::toMotor(Arm arm, const ArmJoints& q) const {
-  const double insertion_motor =
-      transmission(raven::kInsertion) *
-      (q(raven::kInsertion) + shoulder_to_insertion * q(raven::kShoulder) +
-       elbow_to_insertion * q(raven::kElbow));
-  return toMotor(arm, q, insertion_motor);
+  return toMotor(arm, q, insertionMotor(q));
+}
+
+double DriveTrain::insertionMotor(const ArmJoints& q) const {
+  return transmission(raven::kInsertion) *
+         (q(raven::kInsertion) + shoulder_to_insertion * q(raven::kShoulder) +
+          elbow_to_insertion * q(raven::kElbow));
 }
 
 ArmJoints DriveTrain::toJoints(Arm arm, const ArmJoints& m) const {

@@ -52,8 +52,9 @@ MotorCommand MotorController::cycle(const ArmJoints& motor_setpoint,
   const ArmJoints error = motor_setpoint - motor_position;
   integral_ += error * raven::kControlCycle;
   // mvel_d is never set by the firmware: the D term damps the measured velocity.
+  out.gravity = gravityCompensation(arm_, joints, drive_);
   out.torque = gains_.kp.cwiseProduct(error) - gains_.kd.cwiseProduct(motor_velocity) +
-               gains_.ki.cwiseProduct(integral_) + gravityCompensation(arm_, joints, drive_);
+               gains_.ki.cwiseProduct(integral_) + out.gravity;
   for (int i = 0; i < kJointCount; ++i) {
     const auto k = static_cast<std::size_t>(i);
     const double counts = std::trunc(out.torque(i) * dac_.counts_per_torque(i));

@@ -1,8 +1,8 @@
 #pragma once
 // The disparity report below the joints: for every platform whose recordings log actuator
 // signals (mpos, mvel, Tau, dac_vals; AMBF's do not), the same comparisons as the joints' (T_PP,
-// T_SS, T_PS over every trial pair, rows aligned by index), per signal and joint, and each
-// simulation's figures over the robot's own.
+// T_SS, T_PS over every trial pair), per signal and joint, and each simulation's figures over the
+// robot's own. Rows are aligned by index whatever the joints' alignment.
 
 #include <array>
 #include <filesystem>
@@ -15,15 +15,14 @@
 
 namespace analysis {
 
-/// One platform's actuator traces (empty: its recordings log none).
+/// One platform's actuator traces, its trials' (empty: its recordings log none).
 struct PlatformActuators {
   const PlatformTrials* platform = nullptr;
-  std::vector<ActuatorTrace> traces;
+  std::vector<const ActuatorTrace*> traces;
 };
 
-/// Reads the actuator columns of every trial again; a platform whose motor angles are all zero
-/// or not numbers logs no actuator signals and gets no traces.
-std::vector<PlatformActuators> loadActuators(const TrialSet& set);
+/// Every platform of `set`, with its trials' traces when every one of them logs them.
+std::vector<PlatformActuators> actuatorPlatforms(const TrialSet& set);
 
 /// One comparison: per signal (kActuatorSignals order), arm and joint, the mean over trial pairs
 /// of mean |a - b| in the logged unit.

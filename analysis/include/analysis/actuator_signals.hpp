@@ -1,9 +1,10 @@
 #pragma once
-// What a Raven-II recording says below the joints, per arm in SI units (motor rad, rad/s, N m,
-// DAC counts; raven2-actuation.md §1), and how far two platforms' actuator signals sit apart
-// relative to the robot's own trial-to-trial spread.
+// What a Raven-II recording says below the joints, per arm and row in SI units
+// (recording::ArmSignals), and how far two platforms' actuator signals sit apart relative to the
+// robot's own trial-to-trial spread, compared in the units the robot logs them in.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,48 +22,43 @@ inline constexpr std::array<ActuatorSignal, 4> kActuatorSignals{
 const char* columnName(ActuatorSignal s);
 /// The logged unit: "deg", "deg/s", "N m", "counts".
 const char* loggedUnit(ActuatorSignal s);
-
-/// One arm of one recording's rows, in SI (raven::ArmJoints order).
-struct ArmTrace {
-  std::vector<raven::ArmJoints> joints, joint_setpoint;  ///< jpos, jpos_d (rad, m)
-  std::vector<raven::ArmJoints> motor, motor_velocity;   ///< mpos, mvel (rad, rad/s)
-  std::vector<raven::ArmJoints> motor_setpoint, torque;  ///< mpos_d (rad), Tau (N m)
-  std::vector<raven::ArmJoints> dac;                     ///< counts
-  /// The signal in the logged unit (degrees for motor angles), for comparing as the robot logs.
-  const std::vector<raven::ArmJoints>& of(ActuatorSignal s) const;
-};
+/// One row's signal of one arm in the logged unit.
+raven::ArmJoints logged(const recording::ArmSignals& row, ActuatorSignal s);
 
 /// One recording below the joints.
 struct ActuatorTrace {
   std::string name;
-  std::vector<double> time;  ///< s from the first row
-  std::array<ArmTrace, 2> arms;
+  std::vector<double> time;                                ///< s from the first row
+  std::array<std::vector<recording::ArmSignals>, 2> arms;  ///< per arm, one entry per row
   std::size_t rows() const { return time.size(); }
 };
 
 /// Reads the actuator columns of an rs recording of the physical robot or our twin; throws
 /// recording::RecordingError naming the file and the missing column.
 ActuatorTrace actuatorTrace(const recording::RsRecording& rs);
+/// The recording's trace when it logs actuator signals: every column there, every value a
+/// number, the motor angles not all zero (AMBF's recordings log none).
+std::optional<ActuatorTrace> loggedActuatorTrace(const recording::RsRecording& rs);
+
+/// Per signal (kActuatorSignals order) and arm, a value per joint.
+using SignalJoints = std::array<std::array<raven::ArmJoints, 2>, 4>;
+SignalJoints zeroSignals();
 
 /// Mean |a - b| of one signal per arm and joint over the rows both have (logged units).
 std::array<raven::ArmJoints, 2> meanAbsoluteDifference(const ActuatorTrace& a,
                                                        const ActuatorTrace& b, ActuatorSignal s);
+/// The median over the arms' joints the robot moves (spread > 0) of value / spread.
+double medianRatio(const std::array<raven::ArmJoints, 2>& value,
+                   const std::array<raven::ArmJoints, 2>& spread);
 
 /// Per signal, arm and joint: the twin's difference from the physical trials over the robot's
 /// own spread (mean over trial pairs of mean |physical_i - physical_j|).
 struct ActuatorFidelity {
   /// twin[s][arm](j): mean over the trials of |twin - physical|; one twin trace per physical
   /// trace (a replay from that trial's start), or one for all.
-  std::array<std::array<raven::ArmJoints, 2>, 4> twin = zeros(), spread = zeros();
-  /// ratio twin / spread, median over the arms' joints that move (spread > 0).
+  SignalJoints twin = zeroSignals(), spread = zeroSignals();
+  /// medianRatio(twin, spread) per signal.
   std::array<double, 4> median_ratio{};
-
- private:
-  static std::array<std::array<raven::ArmJoints, 2>, 4> zeros() {
-    std::array<std::array<raven::ArmJoints, 2>, 4> z;
-    for (auto& signal : z) signal.fill(raven::ArmJoints::Zero());
-    return z;
-  }
 };
 /// The spread is that of `spread_from` (two or more trials; empty: `physical`), so a trial
 /// held out of a fit can be scored against the spread of the trials it was fitted on.

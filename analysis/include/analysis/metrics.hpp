@@ -68,4 +68,7 @@ DifferenceStats jointStats(const Comparison& c, Quantity q, int column, bool rem
 /// joints and rows (NaN skipped), in the group's unit, averaged over pairs. NaN without pairs.
 double groupFigure(const Comparison& c, const JointGroup& group, Quantity q, bool remove_first_row);
 
+/// The middle value (the mean of the two middle ones for an even count); NaN for none.
+double median(std::vector<double> values);
+
 }  // namespace analysis

@@ -3,19 +3,24 @@
 // the analysis could not use (or uses with a caveat) and why.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "analysis/actuator_signals.hpp"
 #include "analysis/platform_profile.hpp"
 
 namespace analysis {
 
-/// One replay: joint positions (profile offsets applied) and velocities per row.
+/// One replay: joint positions (profile offsets applied) and velocities per row, and its
+/// actuator signals when the recording logs them.
 struct Trial {
   std::filesystem::path path;
   std::vector<double> time;  ///< seconds from the first row
   std::vector<JointRow> position;
   std::vector<JointRow> velocity;
+  /// Always by row, in the robot's joint convention (resampleOnTime leaves it as recorded).
+  std::optional<ActuatorTrace> actuators;
   std::size_t rows() const { return time.size(); }
 };
 
@@ -46,8 +51,8 @@ Trial toTrial(const recording::RsRecording& rs, const PlatformProfile& profile);
 /// A run of at least this many rows with NaN in a joint column is reported.
 constexpr std::size_t kNanRunReported = 5;
 
-/// Reads every file (directories: their *.csv files except *_ci.csv inputs and *_cf.csv grasp
-/// forces), assigns each
+/// Reads every file once (directories: their *.csv files except *_ci.csv inputs and *_cf.csv
+/// grasp forces), assigns each
 /// to the first profile that claims it and checks it. Never throws for a bad file: the reason
 /// goes into `issues`.
 TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,

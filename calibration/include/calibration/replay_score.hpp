@@ -23,8 +23,9 @@ struct ReplayScore {
   int figuresWithin() const;
 };
 
-/// Replays `setup` (its `start` is replaced per trial) against `physical` (two or more rs
-/// recordings of the physical robot replaying those inputs).
-ReplayScore scoreReplays(ReplaySetup setup, const std::vector<recording::RsRecording>& physical);
+/// Replays `setup` (its `start` is replaced per trial) against `physical`: two or more trials of
+/// the physical robot replaying those inputs, each with its actuator signals (throws
+/// std::invalid_argument naming a trial without).
+ReplayScore scoreReplays(ReplaySetup setup, const std::vector<analysis::Trial>& physical);
 
 }  // namespace calibration

@@ -34,6 +34,8 @@ struct DriveTrain {
   ArmJoints toMotor(Arm arm, const ArmJoints& joint, double insertion_motor) const;
   /// Motor angles with the insertion motor where these joints put it.
   ArmJoints toMotor(Arm arm, const ArmJoints& joint) const;
+  /// The insertion motor's angle of joint values (it turns with the shoulder and elbow too).
+  double insertionMotor(const ArmJoints& joint) const;
   /// Joint values of motor angles (fwd_cable_coupling), the exact inverse.
   ArmJoints toJoints(Arm arm, const ArmJoints& motor) const;
 

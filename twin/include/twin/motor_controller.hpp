@@ -30,7 +30,8 @@ struct DacConversion {
 
 /// What one cycle sends to the amplifiers.
 struct MotorCommand {
-  ArmJoints torque = ArmJoints::Zero();  ///< Tau: PID + gravity, before the clip (N m)
+  ArmJoints torque = ArmJoints::Zero();   ///< Tau: PID + gravity, before the clip (N m)
+  ArmJoints gravity = ArmJoints::Zero();  ///< the gravity compensation's part of it
   std::array<std::int32_t, kJointCount> dac{};
   ArmJoints applied = ArmJoints::Zero();  ///< the torque the amplified current gives (N m)
   bool overdrive = false;                 ///< some |dac| passed the e-stop threshold
