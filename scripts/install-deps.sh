@@ -7,7 +7,7 @@ packages=(
   libbullet-dev libbullet-extras-dev libeigen3-dev libassimp-dev
   libyaml-cpp-dev liburdfdom-dev liburdfdom-headers-dev
   libgtest-dev libgmock-dev libbenchmark-dev time
-  libsdl2-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libnlopt-cxx-dev
+  libsdl2-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libnlopt-cxx-dev libboost-dev
   pybind11-dev python3-dev
   libroscpp-dev libstd-msgs-dev libsensor-msgs-dev libgeometry-msgs-dev
   ros-std-msgs ros-sensor-msgs ros-geometry-msgs

@@ -117,6 +117,7 @@ void ControllerSession::record(const std::optional<recording::GamepadState>& pad
 }
 
 void ControllerSession::report(const IterationReport& r) {
+  if (options_.on_iteration) options_.on_iteration(r);
   if (r.clamped && inputs_.gamepad) inputs_.gamepad->rumble();
   if (r.refused > 0 && refusals_logged_++ < 5) {
     spdlog::warn("{} command(s) refused: {}", r.refused, r.refusal);
@@ -146,7 +147,8 @@ bool ControllerSession::turn() {
       mode_ = Mode::Idle;
       break;
     case Mode::Manual: {
-      const auto pad = inputs_.gamepad ? inputs_.gamepad->read() : std::nullopt;
+      auto pad = inputs_.gamepad ? inputs_.gamepad->read() : std::nullopt;
+      if (pad && options_.gate) pad = options_.gate(*pad);
       if (!pad) {  // unplugged (or never there): no motion, and say so once
         if (!warned_padless_) spdlog::warn("O2: no gamepad connected; holding still");
         warned_padless_ = true;

@@ -40,6 +40,11 @@ struct SessionOptions {
   /// Called with each platform's state (its index in the controller's platforms) at every
   /// iteration a recording would write a row for, whether or not files are being written.
   std::function<void(std::size_t, const bridge::RavenStateSnapshot&)> on_state;
+  /// Applied to every live pad reading before the mapping and the recorder see it (a study's
+  /// condition keeps its scheme and IK this way); unset: readings pass as they are.
+  std::function<recording::GamepadState(const recording::GamepadState&)> gate;
+  /// Called with what every iteration of every mode did (clamps, command steps, refusals).
+  std::function<void(const IterationReport&)> on_iteration;
 };
 
 /// One controller session: modes, inputs and recordings.

@@ -1,0 +1,59 @@
+#pragma once
+// The tasks a trial can run on the twin: reaching targets with the tool tips (random points,
+// the paper's rectangle D_II, or listed points) and the peg transfer. A task watches the twin
+// after every manual-loop iteration, logs its events, says when it is done, and tells what the
+// participant aims for now (the goals a virtual participant steers to, the terminal's line).
+
+#include <Eigen/Core>
+#include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "study/protocol.hpp"
+#include "study/trial_events.hpp"
+#include "twin/twin_platform.hpp"
+
+namespace study {
+
+/// What the task sees after an iteration.
+struct TaskView {
+  double time = 0.0;                    ///< s since the trial began
+  std::array<Eigen::Vector3d, 2> tips;  ///< tool tips, controller frame (m), left first
+  const ambf_like::World* world = nullptr;
+};
+
+/// Where one arm should go now.
+struct ArmGoal {
+  bool active = false;  ///< false: this arm has nothing (more) to do
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  double tolerance = 0.0;
+};
+
+/// One task's progress through one trial.
+class TrialTask {
+ public:
+  virtual ~TrialTask() = default;
+  /// The scene: empty for our Raven-II alone.
+  virtual std::filesystem::path launchFile() const = 0;
+  /// Called once, with the homed twin, before the first iteration.
+  virtual void begin(const TaskView& view, EventLog& events) = 0;
+  /// Called after every iteration.
+  virtual void observe(const TaskView& view, EventLog& events) = 0;
+  virtual bool done() const = 0;
+  virtual std::array<ArmGoal, 2> goals() const = 0;
+  /// One line for the terminal: what is left, how far.
+  virtual std::string status(const TaskView& view) const = 0;
+  /// Whether the virtual participants of this kit can do the task.
+  virtual bool virtualParticipantsCan() const = 0;
+};
+
+/// The task `spec` asks for; `seed` draws random targets; an arm `arms` leaves out gets none.
+std::unique_ptr<TrialTask> makeTask(const TaskSpec& spec, std::uint64_t seed,
+                                    std::array<bool, 2> arms = {true, true});
+
+/// The targets (offsets from each arm's start tip, m) a targets task shows, left arm first.
+std::array<std::vector<Eigen::Vector3d>, 2> targetOffsets(const TaskSpec& spec, std::uint64_t seed);
+
+}  // namespace study

@@ -1,0 +1,317 @@
+#include "study/participant_session.hpp"
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <thread>
+
+#include "harness/virtual_gamepad.hpp"
+#include "study/questionnaire.hpp"
+#include "study/settings_tuner.hpp"
+#include "study/trial_metrics.hpp"
+#include "study/trial_plan.hpp"
+#include "study/trial_runner.hpp"
+
+namespace study {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+Sint16 rawStick(double v) {
+  return static_cast<Sint16>(std::clamp(std::lround(v * 32768.0), -32768L, 32767L));
+}
+
+/// Puts a pad reading on SDL's virtual joystick (what a thumb does to a real one).
+void press(harness::VirtualGamepad& pad, const recording::GamepadState& s) {
+  pad.axis(SDL_CONTROLLER_AXIS_LEFTX, rawStick(s.left_x));
+  pad.axis(SDL_CONTROLLER_AXIS_LEFTY, rawStick(s.left_y));
+  pad.axis(SDL_CONTROLLER_AXIS_RIGHTX, rawStick(s.right_x));
+  pad.axis(SDL_CONTROLLER_AXIS_RIGHTY, rawStick(s.right_y));
+  // The paper's scale back to the trigger's travel; SDL maps a virtual joystick's full axis
+  // (-32768..32767) onto a game controller trigger's 0..32767.
+  const auto trigger = [](double v) {
+    const double travel = std::clamp(v * 256.0 / 1023.0, 0.0, 1.0);
+    return static_cast<Sint16>(std::lround(travel * 65535.0 - 32768.0));
+  };
+  pad.axis(SDL_CONTROLLER_AXIS_TRIGGERLEFT, trigger(s.left_trigger));
+  pad.axis(SDL_CONTROLLER_AXIS_TRIGGERRIGHT, trigger(s.right_trigger));
+  pad.button(SDL_CONTROLLER_BUTTON_LEFTSHOULDER, s.left_bumper);
+  pad.button(SDL_CONTROLLER_BUTTON_RIGHTSHOULDER, s.right_bumper);
+  pad.button(SDL_CONTROLLER_BUTTON_A, s.a);
+  pad.button(SDL_CONTROLLER_BUTTON_B, s.b);
+  pad.button(SDL_CONTROLLER_BUTTON_X, s.x);
+  pad.button(SDL_CONTROLLER_BUTTON_Y, s.y);
+  pad.button(SDL_CONTROLLER_BUTTON_BACK, s.back);
+  pad.button(SDL_CONTROLLER_BUTTON_START, s.start);
+}
+
+/// The next free place in the counterbalancing, or the one `participant` already has.
+int registerParticipant(const fs::path& out, const std::string& participant,
+                        std::optional<int> position) {
+  const fs::path file = out / "participants.json";
+  nlohmann::json registry = fs::exists(file) ? readJson(file) : nlohmann::json::object();
+  if (registry.contains(participant)) return registry[participant].get<int>();
+  const int place = position ? *position : static_cast<int>(registry.size());
+  registry[participant] = place;
+  writeJsonAtomically(file, registry);
+  return place;
+}
+
+/// A person's wait: until A is pressed on the pad (or the session is stopped).
+bool waitForA(const SessionSettings& s) {
+  for (;;) {
+    if (s.stop && *s.stop) return false;
+    if (const auto pad = s.pad->read(); pad && pad->a) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));  // a person's pace, not a test's
+  }
+}
+
+/// A person's countdown on the terminal (wall clock).
+bool countdown(const SessionSettings& s, double seconds, const char* what) {
+  std::ostream& out = *s.out_text;
+  for (int left = static_cast<int>(std::ceil(seconds)); left > 0; --left) {
+    if (s.stop && *s.stop) return false;
+    out << fmt::format("\r{} {} ", what, left) << std::flush;
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+  }
+  out << "\rgo!            \n" << std::flush;
+  return true;
+}
+
+double costOf(const TuningSpec& tuning, const TrialMetrics& metrics) {
+  double cost = 0.0;
+  for (const auto& [name, weight] : tuning.cost) {
+    const double v = metrics.at(name);
+    if (std::isfinite(v)) cost += weight * v;
+  }
+  return cost;
+}
+
+std::vector<TuningObservation> tuningHistory(const fs::path& trials,
+                                             const std::vector<PlannedTrial>& plan) {
+  std::vector<TuningObservation> history;
+  for (const PlannedTrial& t : plan) {
+    const fs::path sealed = trials / t.folderName() / "trial.json";
+    if (!t.tuning || !fs::exists(sealed)) continue;
+    const nlohmann::json j = readJson(sealed);
+    history.push_back({j.at("tuning").at("settings").get<std::vector<double>>(),
+                       j.at("tuning").at("cost").get<double>()});
+  }
+  return history;
+}
+
+/// Moves trial folders without a trial.json (cut short) to aborted/.
+void setAsideUnsealed(const fs::path& home) {
+  for (const auto& entry : fs::directory_iterator(home / "trials")) {
+    if (!entry.is_directory() || fs::exists(entry.path() / "trial.json")) continue;
+    fs::create_directories(home / "aborted");
+    fs::path target = home / "aborted" / entry.path().filename();
+    for (int k = 1; fs::exists(target); ++k) {
+      target = home / "aborted" / fmt::format("{}.{}", entry.path().filename().string(), k);
+    }
+    fs::rename(entry.path(), target);
+    spdlog::warn("{}: cut short before; set aside as {} and run again", entry.path().string(),
+                 target.string());
+  }
+}
+
+bool lastOfBlock(const std::vector<PlannedTrial>& plan, std::size_t i) {
+  return i + 1 == plan.size() || plan[i + 1].condition != plan[i].condition ||
+         plan[i + 1].tuning != plan[i].tuning;
+}
+
+}  // namespace
+
+void writeJsonAtomically(const fs::path& path, const nlohmann::json& j) {
+  const fs::path temporary = fs::path(path).concat(".partial");
+  {
+    std::ofstream out(temporary, std::ios::trunc);
+    out << j.dump(2) << '\n';
+    out.flush();
+    if (!out) throw std::runtime_error("cannot write " + temporary.string());
+  }
+  fs::rename(temporary, path);
+}
+
+nlohmann::json readJson(const fs::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot open " + path.string());
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::runtime_error(path.string() + ": " + e.what());
+  }
+}
+
+nlohmann::json conditionJson(const Condition& c) {
+  return {{"name", c.name},
+          {"scheme", c.scheme},
+          {"ik", c.full_ik ? "full" : "wrist-locked"},
+          {"velocity_scale", c.velocity_scale},
+          {"man_steps", c.man_steps},
+          {"deadzone", c.deadzone},
+          {"divisor", c.divisor},
+          {"wrist_divisor", c.wrist_divisor},
+          {"rate", c.rate},
+          {"gain_m_per_s", c.translationGain()}};
+}
+
+SessionProgress runSession(const Protocol& protocol, const SessionSettings& s) {
+  const fs::path home = s.out / s.participant;
+  const fs::path trials = home / "trials";
+  fs::create_directories(trials);
+  const fs::path session_file = home / "session.json";
+  nlohmann::json session;
+  if (fs::exists(session_file)) {
+    session = readJson(session_file);
+    if (session.at("protocol_text").get<std::string>() != protocol.text) {
+      throw std::runtime_error(session_file.string() +
+                               ": this participant's session began under "
+                               "another protocol; use a new study folder");
+    }
+  } else {
+    const int position = registerParticipant(s.out, s.participant, s.position);
+    nlohmann::json plan = nlohmann::json::array();
+    for (const PlannedTrial& t : planTrials(protocol, position)) plan.push_back(t.json());
+    session = {{"study", protocol.name},
+               {"participant", s.participant},
+               {"position", position},
+               {"order", conditionSequence(protocol, position)},
+               {"virtual", s.traits ? s.traits->json() : nlohmann::json(nullptr)},
+               {"protocol_file", protocol.file.string()},
+               {"protocol_text", protocol.text},
+               {"plan", plan}};
+    writeJsonAtomically(session_file, session);
+  }
+  std::vector<PlannedTrial> plan;
+  for (const auto& t : session.at("plan")) plan.push_back(PlannedTrial::fromJson(t));
+  setAsideUnsealed(home);
+
+  std::ostream* out = s.out_text;
+  const auto stopped = [&] {
+    SessionProgress p;
+    p.total = static_cast<int>(plan.size());
+    for (const PlannedTrial& t : plan) p.done += fs::exists(trials / t.folderName() / "trial.json");
+    p.stopped = true;
+    return p;
+  };
+  const bool person = !s.traits;
+  int finished_here = 0;
+  for (std::size_t i = 0; i < plan.size(); ++i) {
+    const PlannedTrial& planned = plan[i];
+    const fs::path dir = trials / planned.folderName();
+    if (!fs::exists(dir / "trial.json")) {
+      if (person && s.rests && i > 0 && planned.condition != plan[i - 1].condition &&
+          fs::exists(trials / plan[i - 1].folderName() / "trial.json") && out) {
+        *out << fmt::format("\nRest for {:.0f} s.\n", protocol.rest);
+        if (!countdown(s, protocol.rest, "rest")) return stopped();
+      }
+      const TaskSpec& task = protocol.task(planned.task);
+      Condition condition = protocol.condition(planned.condition);
+      std::vector<double> tuned;
+      if (planned.tuning) {
+        const TuningSpec& tuning = *protocol.tuning;
+        tuned =
+            SettingsTuner(tuning.parameters, tuning.initial).propose(tuningHistory(trials, plan));
+        condition = tunedCondition(condition, tuning.parameters, tuned);
+      }
+      int trials_before = 0;
+      for (std::size_t j = 0; j < i; ++j) {
+        trials_before += plan[j].condition == planned.condition && plan[j].tuning == planned.tuning;
+      }
+      TrialSettings ts;
+      ts.task = task;
+      ts.condition = condition;
+      ts.task_seed = planned.task_seed;
+      ts.dir = dir;
+      ts.wall_clock = person;
+      ts.pad = s.pad;
+      ts.stop = s.stop;
+      const std::string heading =
+          fmt::format("{} trial {}/{}: {} under {}{}", s.participant, i + 1, plan.size(), task.name,
+                      planned.condition, planned.tuning ? " (tuning)" : "");
+      std::optional<VirtualParticipant> vp;
+      if (s.traits) {
+        vp.emplace(*s.traits, ConditionFeel::of(condition, trials_before),
+                   s.seed ^ (0x9e3779b97f4a7c15ull * (planned.index + 1)));
+      }
+      const bool drill = s.drill_after >= 0 && finished_here == s.drill_after;
+      ts.before_turn = [&](double t, const std::array<ArmGoal, 2>& goals,
+                           const std::array<Eigen::Vector3d, 2>& tips) {
+        if (drill && t >= 1.0) std::raise(s.drill_signal);
+        if (!vp) return;
+        press(*s.virtual_pad, vp->act(t, goals, tips));
+        s.pad->poll();
+      };
+      if (person && out) {
+        ts.ready = [&] {
+          *out << fmt::format("\n{}\n{}\nPress A on the pad to start.\n", heading,
+                              task.instructions)
+               << std::flush;
+          return waitForA(s) && countdown(s, protocol.countdown, "starting in");
+        };
+        ts.status = [&](const std::string& line) { *out << "\r" << line << "    " << std::flush; };
+      }
+      const TrialRun run = runTrial(ts);
+      if (!run.finished) {
+        if (out) *out << fmt::format("\n{}: stopped; run the same command to resume\n", heading);
+        return stopped();
+      }
+      const TrialMetrics metrics = measureTrial(dir);
+      nlohmann::json sealed{{"participant", s.participant},
+                            {"planned", planned.json()},
+                            {"condition", conditionJson(condition)},
+                            {"task", task.name},
+                            {"completed", run.completed},
+                            {"duration_s", run.duration},
+                            {"trials_before", trials_before}};
+      for (const auto& [name, v] : metrics) {
+        sealed["metrics"][name] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+      }
+      if (planned.tuning) {
+        sealed["tuning"] = {{"parameters", nlohmann::json::array()},
+                            {"settings", tuned},
+                            {"cost", costOf(*protocol.tuning, metrics)},
+                            {"cost_is", protocol.tuning->costText()}};
+        for (const TunedParameter& p : protocol.tuning->parameters) {
+          sealed["tuning"]["parameters"].push_back(
+              {{"name", p.name}, {"low", p.low}, {"high", p.high}});
+        }
+      }
+      writeJsonAtomically(dir / "trial.json", sealed);
+      ++finished_here;
+      if (out) {
+        *out << fmt::format("\n{}: {} in {:.1f} s\n", heading,
+                            run.completed ? "done" : "time limit reached", run.duration)
+             << std::flush;
+      }
+    }
+    if (!lastOfBlock(plan, i) || planned.tuning || !s.questionnaires || !s.in || !out) continue;
+    for (const std::string& name : protocol.questionnaires) {
+      const fs::path file = home / "questionnaires" / (planned.condition + "_" + name + ".json");
+      if (fs::exists(file)) continue;
+      const auto answers = ask(name, planned.condition, *s.in, *out);
+      if (!answers) {
+        *out << "\nno more answers; the questionnaire is asked again when the session resumes\n";
+        return stopped();
+      }
+      fs::create_directories(file.parent_path());
+      nlohmann::json j = answers->json();
+      j["condition"] = planned.condition;
+      j["participant"] = s.participant;
+      writeJsonAtomically(file, j);
+    }
+  }
+  SessionProgress done;
+  done.done = done.total = static_cast<int>(plan.size());
+  done.finished = true;
+  return done;
+}
+
+}  // namespace study

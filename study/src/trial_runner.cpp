@@ -1,0 +1,115 @@
+#include "study/trial_runner.hpp"
+
+#include <chrono>
+
+#include "controller/session.hpp"
+#include "raven/arm_kinematics.hpp"
+#include "raven/platform_profile.hpp"
+#include "scenario/scripted_session.hpp"
+#include "twin/calibration_profile.hpp"
+
+namespace study {
+
+namespace {
+
+/// How long a homing may take (s of platform time).
+constexpr double kHomingLimit = 60.0;
+
+}  // namespace
+
+recording::GamepadState gatePad(const Condition& condition, recording::GamepadState pad,
+                                bool first) {
+  if (condition.scheme != "m1" || (pad.back && pad.start)) pad.back = pad.start = false;
+  pad.a = first && !condition.full_ik;
+  pad.b = first && condition.full_ik;
+  return pad;
+}
+
+std::array<bool, 2> armsMoved(const Condition& condition) {
+  if (condition.scheme == "m1-left") return {true, false};
+  if (condition.scheme == "m1-right") return {false, true};
+  return {true, true};
+}
+
+TrialRun runTrial(const TrialSettings& s) {
+  std::filesystem::create_directories(s.dir);
+  const auto task = makeTask(s.task, s.task_seed, armsMoved(s.condition));
+
+  twin::TwinOptions twin_options;
+  if (const auto launch = task->launchFile(); !launch.empty()) twin_options.launch_file = launch;
+  twin_options.clock = s.wall_clock ? bridge::ClockKind::Wall : bridge::ClockKind::Simulated;
+  twin::CalibrationProfile::shipped().applyTo(twin_options);  // the robot's own motors
+  scenario::ScriptedSession scripted(twin_options, s.condition.controllerOptions());
+  scripted.makeReady(kHomingLimit);
+  twin::TwinPlatform& twin = scripted.twin();
+  controller::DualPlatformController& control = scripted.controller();
+
+  const auto profile = raven::builtinProfile(s.condition.controllerOptions().profile);
+  const std::array<raven::ArmKinematics, 2> kinematics{
+      raven::ArmKinematics::of(profile, raven::Arm::Left),
+      raven::ArmKinematics::of(profile, raven::Arm::Right)};
+  const double start = twin.now();
+  const auto view = [&] {
+    TaskView v;
+    v.time = twin.now() - start;
+    for (raven::Arm arm : raven::kArms) {
+      const auto a = static_cast<std::size_t>(raven::index(arm));
+      v.tips[a] = kinematics[a].toolPose(twin.measuredJs(arm).position).translation();
+    }
+    v.world = &twin.world();
+    return v;
+  };
+
+  EventLog events(s.dir / "events.csv");
+  bool first = true, clamped = false, capped = false;
+  const int min_steps = s.condition.man_steps;
+  controller::SessionOptions options;
+  options.out_dir = s.dir;
+  options.record_name = "trial";
+  options.gate = [&](const recording::GamepadState& pad) {
+    const auto gated = gatePad(s.condition, pad, first);
+    first = false;
+    return gated;
+  };
+  options.on_iteration = [&](const controller::IterationReport& r) {
+    const double t = twin.now() - start;
+    if (r.clamped && !clamped) events.add(t, "joint_limit");
+    const bool stretched = r.steps > min_steps;
+    if (stretched && !capped) events.add(t, "velocity_cap");
+    clamped = r.clamped;
+    capped = stretched;
+  };
+  controller::ControllerSession session(control, {s.pad, {}, std::nullopt}, options);
+
+  TrialRun run;
+  if (s.ready && !s.ready()) return run;
+  task->begin(view(), events);
+  events.add(0.0, "trial_start");
+  session.select(controller::Mode::Manual);
+  session.startRecording();
+  double next_status = 0.0;
+  for (;;) {
+    const TaskView now = view();
+    run.completed = task->done();
+    if (run.completed || now.time >= s.task.time_limit) break;
+    if (s.stop && *s.stop) {
+      events.add(now.time, "stopped");
+      return run;
+    }
+    if (s.before_turn) s.before_turn(now.time, task->goals(), now.tips);
+    session.turn();
+    const TaskView after = view();
+    task->observe(after, events);
+    if (s.status && after.time >= next_status) {
+      s.status(task->status(after));
+      next_status = after.time + 0.1;
+    }
+  }
+  session.stopRecording();
+  run.duration = view().time;
+  run.finished = true;
+  events.add(run.duration, "trial_end", -1, run.completed ? 1.0 : 0.0);
+  return run;
+}
+
+}  // namespace study

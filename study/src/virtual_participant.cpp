@@ -1,0 +1,187 @@
+#include "study/virtual_participant.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace study {
+
+namespace {
+
+/// A normal draw clipped to [low, high].
+double clipped(std::mt19937_64& rng, double mean, double sd, double low, double high) {
+  return std::clamp(std::normal_distribution<double>(mean, sd)(rng), low, high);
+}
+
+}  // namespace
+
+ParticipantTraits ParticipantTraits::draw(std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  ParticipantTraits p;
+  p.delay = clipped(rng, 0.22, 0.03, 0.15, 0.35);
+  p.decision = clipped(rng, 0.08, 0.02, 0.04, 0.15);
+  p.move_time = clipped(rng, 0.40, 0.08, 0.25, 0.70);
+  p.min_push = clipped(rng, 0.08, 0.015, 0.05, 0.12);
+  p.adaptation = clipped(rng, 0.5, 0.15, 0.1, 0.9);
+  p.learning = clipped(rng, 3.0, 1.0, 1.0, 6.0);
+  p.push_learning = clipped(rng, 0.5, 0.1, 0.2, 0.8);
+  p.deflection_cv = clipped(rng, 0.12, 0.03, 0.05, 0.25);
+  p.timing_cv = clipped(rng, 0.10, 0.02, 0.05, 0.20);
+  p.tremor = clipped(rng, 0.015, 0.005, 0.005, 0.04);
+  p.tremor_hz = std::uniform_real_distribution<double>(8.0, 12.0)(rng);
+  p.perception = clipped(rng, 0.0003, 0.0001, 0.0001, 0.0008);
+  return p;
+}
+
+nlohmann::json ParticipantTraits::json() const {
+  return {{"delay_s", delay},
+          {"decision_s", decision},
+          {"move_time_s", move_time},
+          {"min_push_s", min_push},
+          {"adaptation", adaptation},
+          {"learning_trials", learning},
+          {"push_learning", push_learning},
+          {"deflection_cv", deflection_cv},
+          {"timing_cv", timing_cv},
+          {"tremor", tremor},
+          {"tremor_hz", tremor_hz},
+          {"perception_m", perception},
+          {"aim", aim}};
+}
+
+ConditionFeel ConditionFeel::of(const Condition& condition, int trials_before) {
+  ConditionFeel f;
+  f.gain = condition.translationGain();
+  f.deadzone = condition.deadzone;
+  f.scheme = condition.scheme;
+  f.trials_before = trials_before;
+  return f;
+}
+
+VirtualParticipant::VirtualParticipant(const ParticipantTraits& traits, const ConditionFeel& feel,
+                                       std::uint64_t seed)
+    : traits_(traits), feel_(feel), rng_(seed) {
+  // The belief moves from the known gain towards the true one: a share `adaptation` at once,
+  // then half of what is left every `learning` trials.
+  const double left = (1.0 - traits.adaptation) * std::exp2(-feel.trials_before / traits.learning);
+  believed_.fill(std::pow(feel.reference_gain, left) * std::pow(feel.gain, 1.0 - left));
+  believed_deadzone_ = left * feel.reference_deadzone + (1.0 - left) * feel.deadzone;
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * M_PI);
+  for (double& p : tremor_phase_) p = phase(rng_);
+  if (feel.scheme == "m1-right") selected_arm_ = 1;
+}
+
+const VirtualParticipant::Seen& VirtualParticipant::seen(double t) const {
+  const Seen* out = &history_.front();
+  for (const Seen& s : history_) {
+    if (s.t <= t) out = &s;
+  }
+  return *out;
+}
+
+Eigen::Vector2d VirtualParticipant::tremor(double t, int hand) const {
+  const double w = 2.0 * M_PI * traits_.tremor_hz * t;
+  const auto h = static_cast<std::size_t>(2 * hand);
+  return traits_.tremor *
+         Eigen::Vector2d(std::sin(w + tremor_phase_[h]), std::sin(w + tremor_phase_[h + 1]));
+}
+
+void VirtualParticipant::plan(Hand& hand, int arm, const Seen& view, double t) {
+  if (hand.arm != arm) hand.meant.setZero();  // M1 switched arms: nothing to learn from
+  hand.arm = arm;
+  hand.pushing = false;
+  hand.until = t + traits_.decision;
+  const ArmGoal& goal = view.goals[static_cast<std::size_t>(arm)];
+  if (!goal.active) return;
+  std::normal_distribution<double> unit(0.0, 1.0);
+  const Eigen::Vector3d judged =
+      view.tips[static_cast<std::size_t>(arm)] +
+      traits_.perception * Eigen::Vector3d(unit(rng_), unit(rng_), unit(rng_));
+  // What the last push did against what it was meant to do: the belief takes part of the
+  // difference.
+  if (hand.meant.norm() > 0.0005) {
+    const Eigen::Vector3d along = hand.meant.normalized();
+    const double moved = (judged - hand.from).dot(along) / hand.meant.norm();
+    if (moved < 0.1 && hand.deflection < 1.0) {  // nothing moved: the deadzone is wider
+      believed_deadzone_ = std::max(believed_deadzone_, hand.deflection);
+    } else {
+      double& belief = believed_[static_cast<std::size_t>(2 * arm + (hand.z_plane ? 1 : 0))];
+      belief *= std::pow(std::clamp(moved, 0.2, 5.0), traits_.push_learning);
+    }
+  }
+  hand.meant.setZero();
+  const Eigen::Vector3d e = goal.point - judged;
+  if (e.norm() <= traits_.aim * goal.tolerance) return;  // on target: hold still
+  // One push in one plane: the horizontal one, or z with the bumper held.
+  hand.z_plane = std::abs(e.z()) > e.head<2>().norm();
+  const Eigen::Vector2d d =
+      hand.z_plane ? Eigen::Vector2d(0.0, e.z()) : Eigen::Vector2d(e.head<2>());
+  const double distance = d.norm();
+  const double gain = believedGain(arm, hand.z_plane);
+  // Past the deadzone it believes in (a little beyond it), and never beyond full travel.
+  const double least = std::min(believed_deadzone_ + 0.05, 1.0);
+  double deflection = std::clamp(distance / (traits_.move_time * gain), least, 1.0);
+  double duration = std::max(distance / (gain * deflection), traits_.min_push);
+  // What the push should give if the belief is right (past the briefest push: more than meant).
+  const double expected = gain * deflection * duration;
+  hand.deflection = deflection;
+  deflection = std::clamp(deflection * (1.0 + traits_.deflection_cv * unit(rng_)), 0.0, 1.0);
+  duration = std::max(duration * (1.0 + traits_.timing_cv * unit(rng_)), 0.02);
+  const Eigen::Vector2d along = d / distance * deflection;
+  // Stick sense: x right; y down when pushed forward (M2: dy = -y, with the bumper dz = -y).
+  hand.stick = Eigen::Vector2d(along.x(), -along.y());
+  hand.pushing = true;
+  hand.until = t + duration;
+  hand.from = judged;
+  hand.meant =
+      (hand.z_plane ? Eigen::Vector3d(0.0, 0.0, d.y()) : Eigen::Vector3d(d.x(), d.y(), 0.0)) *
+      (expected / distance);
+}
+
+recording::GamepadState VirtualParticipant::act(double t, const std::array<ArmGoal, 2>& goals,
+                                                const std::array<Eigen::Vector3d, 2>& tips) {
+  history_.push_back({t, goals, tips});
+  while (history_.size() > 2 && history_[1].t <= t - traits_.delay) history_.pop_front();
+  const Seen& view = seen(t - traits_.delay);
+
+  recording::GamepadState pad;
+  const bool one_at_a_time = feel_.scheme == "m1";
+  // M1 with both arms to do: when the selected arm is done, select the other (Back: left,
+  // Start: right), then look again.
+  if (one_at_a_time && t >= selecting_until_ && !hands_[0].pushing) {
+    const int other = 1 - selected_arm_;
+    if (!view.goals[static_cast<std::size_t>(selected_arm_)].active &&
+        view.goals[static_cast<std::size_t>(other)].active) {
+      selected_arm_ = other;
+      selecting_until_ = t + 0.1;
+      hands_[0].until = selecting_until_ + traits_.delay + traits_.decision;
+    }
+  }
+  if (t < selecting_until_) (selected_arm_ == 0 ? pad.back : pad.start) = true;
+
+  const bool m2 = feel_.scheme == "m2";
+  for (int h = 0; h < (m2 ? 2 : 1); ++h) {
+    Hand& hand = hands_[static_cast<std::size_t>(h)];
+    const int arm = m2 ? h : selected_arm_;
+    if (hand.pushing && t >= hand.until) {  // let go, then look at where it went
+      hand.pushing = false;
+      hand.until = t + traits_.delay + traits_.decision;
+    } else if (!hand.pushing && t >= hand.until) {
+      plan(hand, arm, view, t);
+    }
+  }
+  const auto stick = [&](int h) {
+    const Hand& hand = hands_[static_cast<std::size_t>(h)];
+    const Eigen::Vector2d s = (hand.pushing ? hand.stick : Eigen::Vector2d::Zero()) + tremor(t, h);
+    return Eigen::Vector2d(std::clamp(s.x(), -1.0, 1.0), std::clamp(s.y(), -1.0, 1.0));
+  };
+  const Eigen::Vector2d left = stick(0), right = stick(1);
+  pad.left_x = left.x();
+  pad.left_y = left.y();
+  pad.left_bumper = hands_[0].pushing && hands_[0].z_plane;
+  pad.right_x = right.x();
+  pad.right_y = right.y();
+  pad.right_bumper = m2 && hands_[1].pushing && hands_[1].z_plane;
+  return pad;
+}
+
+}  // namespace study

@@ -1,0 +1,168 @@
+// raven_study end to end: the README's example with eight virtual participants finds the
+// degraded scheme worse; a session interrupted (Ctrl-C or a crash) and resumed loses nothing and
+// ends as an uninterrupted one; the questionnaires asked in the terminal are kept, and asked
+// again after the input ran out.
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "harness/child_process.hpp"
+#include "harness/temp_dir.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kDrill = R"(study: drill
+tasks:
+  reach: {kind: targets, count: 1, distance: 0.008, height: 0.002, time_limit: 30}
+conditions:
+  A: {scheme: m2}
+  B: {scheme: m2, divisor: 1500}
+trials_per_condition: 2
+questionnaires: [sus]
+countdown: 0
+rest: 0
+)";
+
+/// Runs `command` under /bin/sh in `dir`; its exit code (the output goes to dir/log.txt).
+int shell(const harness::TempDir& dir, const std::string& command) {
+  harness::ChildProcess child({"/bin/sh", "-c", command}, dir.path() / "log.txt");
+  return child.wait(600.0);
+}
+
+std::string study() {
+  return std::string(RAVEN_STUDY) + " run --protocol ";
+}
+
+nlohmann::json readJson(const fs::path& file) {
+  std::ifstream in(file);
+  return nlohmann::json::parse(in);
+}
+
+std::string text(const fs::path& file) {
+  std::ifstream in(file);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Every sealed trial's metrics, by folder.
+std::map<std::string, nlohmann::json> sealed(const fs::path& participant) {
+  std::map<std::string, nlohmann::json> out;
+  for (const auto& e : fs::directory_iterator(participant / "trials")) {
+    if (fs::exists(e.path() / "trial.json")) {
+      out[e.path().filename().string()] = readJson(e.path() / "trial.json").at("metrics");
+    }
+  }
+  return out;
+}
+
+TEST(StudyCli, TheExampleFindsTheDegradedSchemeWorseWithEightVirtualParticipants) {
+  harness::TempDir dir;
+  ASSERT_EQ(shell(dir, study() + RAVEN_STUDY_EXAMPLE + " --out " + (dir.path() / "s").string() +
+                           " --virtual 8"),
+            0)
+      << text(dir.path() / "log.txt");
+  ASSERT_EQ(shell(dir, std::string(RAVEN_STUDY) + " report " + (dir.path() / "s").string() +
+                           " --out " + (dir.path() / "r").string()),
+            0)
+      << text(dir.path() / "log.txt");
+  const nlohmann::json summary = readJson(dir.path() / "r" / "summary.json");
+  EXPECT_EQ(summary.at("participants").size(), 8u);
+  EXPECT_EQ(summary.at("schemes").at("M2").at("trials"), 8 * 3 * 2);
+  EXPECT_GT(summary.at("schemes").at("M2-degraded").at("completion_time_s").at("mean"),
+            summary.at("schemes").at("M2").at("completion_time_s").at("mean"));
+  int worse = 0;
+  for (const auto& c : summary.at("comparisons")) {
+    if (c.at("a") != "M2" || c.at("b") != "M2-degraded") continue;
+    EXPECT_TRUE(c.contains("p") && c.contains("effect_size") && c.contains("test"));
+    if ((c.at("metric") == "completion_time_s" || c.at("metric") == "overshoots") &&
+        c.at("p").get<double>() < 0.05 && c.at("better") == "M2") {
+      ++worse;
+    }
+  }
+  EXPECT_EQ(worse, 2) << summary.at("comparisons").dump(1);
+  EXPECT_NE(summary.at("correction").get<std::string>().find("holm"), std::string::npos);
+  // Each participant's tuning ended in recommended settings within the protocol's bounds.
+  ASSERT_EQ(summary.at("recommended").size(), 8u);
+  for (const auto& [who, r] : summary.at("recommended").items()) {
+    const double divisor = r.at("settings").at("divisor");
+    EXPECT_GE(divisor, 800.0);
+    EXPECT_LE(divisor, 4000.0);
+  }
+  EXPECT_FALSE(summary.at("power").at("observed").empty());
+  EXPECT_NE(text(dir.path() / "r" / "report.html").find("data:image/png;base64"),
+            std::string::npos);
+}
+
+/// An interrupted session resumed ends with the same trials as one never interrupted; the
+/// trials finished before the interruption are not touched.
+void resumeAfter(const std::string& signal) {
+  harness::TempDir dir;
+  const fs::path protocol = dir.write("drill.yaml", kDrill);
+  const std::string run =
+      study() + protocol.string() + " --virtual 1 --out " + (dir.path() / "cut").string();
+  EXPECT_EQ(shell(dir, study() + protocol.string() + " --virtual 1 --out " +
+                           (dir.path() / "whole").string()),
+            0);
+  const int code = shell(dir, run + " --drill-after 1 --drill-with " + signal);
+  EXPECT_EQ(code, signal == "int" ? 130 : 128 + SIGKILL) << text(dir.path() / "log.txt");
+  const fs::path person = dir.path() / "cut" / "V01";
+  const auto before = sealed(person);
+  ASSERT_EQ(before.size(), 1u);
+  const fs::path first = person / "trials" / before.begin()->first / "trial.json";
+  const std::string first_text = text(first);
+  const auto first_time = fs::last_write_time(first);
+  ASSERT_EQ(shell(dir, run), 0) << text(dir.path() / "log.txt");
+  EXPECT_EQ(text(first), first_text);
+  EXPECT_EQ(fs::last_write_time(first), first_time);
+  EXPECT_TRUE(fs::is_directory(person / "aborted"));  // the cut trial, set aside and rerun
+  EXPECT_EQ(sealed(person), sealed(dir.path() / "whole" / "V01"));
+  EXPECT_EQ(sealed(person).size(), 4u);
+}
+
+TEST(StudyCli, ASessionStoppedByCtrlCResumesLosingNothing) {
+  resumeAfter("int");
+}
+
+TEST(StudyCli, ASessionThatCrashedResumesLosingNothing) {
+  resumeAfter("kill");
+}
+
+TEST(StudyCli, QuestionnaireAnswersAreKeptAndAskedAgainAfterTheInputEnds) {
+  harness::TempDir dir;
+  const fs::path protocol = dir.write("drill.yaml", kDrill);
+  // Condition one: a wrong answer, then ten; condition two: only three before the input ends.
+  dir.write("first.txt", "9\n4\n2\n4\n2\n4\n2\n4\n2\n4\n2\n3\n3\n3\n");
+  const std::string run = study() + protocol.string() + " --participant P07 --autopilot --out " +
+                          (dir.path() / "s").string();
+  EXPECT_EQ(shell(dir, run + " < " + (dir.path() / "first.txt").string()), 130)
+      << text(dir.path() / "log.txt");
+  EXPECT_NE(text(dir.path() / "log.txt").find("please answer 1..5"), std::string::npos);
+  const fs::path answers = dir.path() / "s" / "P07" / "questionnaires";
+  ASSERT_EQ(std::distance(fs::directory_iterator(answers), fs::directory_iterator{}), 1);
+  dir.write("second.txt", "5\n1\n5\n1\n5\n1\n5\n1\n5\n1\n");
+  EXPECT_EQ(shell(dir, run + " < " + (dir.path() / "second.txt").string()), 0)
+      << text(dir.path() / "log.txt");
+  const nlohmann::json session = readJson(dir.path() / "s" / "P07" / "session.json");
+  const std::string first_condition = session.at("order").at(0);
+  const std::string second_condition = session.at("order").at(1);
+  EXPECT_EQ(readJson(answers / (first_condition + "_sus.json")).at("score"), 75.0);
+  EXPECT_EQ(readJson(answers / (second_condition + "_sus.json")).at("score"), 100.0);
+}
+
+TEST(StudyCli, ASessionRefusesAChangedProtocol) {
+  harness::TempDir dir;
+  const fs::path protocol = dir.write("drill.yaml", kDrill);
+  dir.write("none.txt", "");
+  const std::string out = " --participant P01 --autopilot --out " + (dir.path() / "s").string();
+  shell(dir, study() + protocol.string() + out + " --drill-after 0 < " +
+                 (dir.path() / "none.txt").string());
+  dir.write("drill.yaml", kDrill + "order: fixed\n");
+  EXPECT_EQ(shell(dir, study() + protocol.string() + out), 1);
+  EXPECT_NE(text(dir.path() / "log.txt").find("another protocol"), std::string::npos);
+}
+
+}  // namespace
