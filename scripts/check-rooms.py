@@ -17,7 +17,7 @@ ROOMS = [
     "common", "harness", "ambf_like", "ambf_like/model", "ambf_like/loading", "ambf_like/dynamics",
     "ambf_like/world", "ambf_like_cli", "raven_description", "bridge", "bridge/ros", "twin",
     "twin/ros", "recording", "controller", "analysis", "calibration", "viewer", "scenario",
-    "python", "bench", "tests", "fuzz",
+    "study", "python", "bench", "tests", "fuzz",
 ]
 # Include prefixes of rooms whose public headers sit under <room>/include/<prefix>.
 PREFIXES = {
@@ -25,7 +25,7 @@ PREFIXES = {
     "raven/": "raven_description", "bridge/ros/": "bridge/ros", "bridge/": "bridge",
     "twin/ros/": "twin/ros", "twin/": "twin", "recording/": "recording",
     "controller/": "controller", "analysis/": "analysis", "calibration/": "calibration",
-    "viewer/": "viewer", "scenario/": "scenario",
+    "viewer/": "viewer", "scenario/": "scenario", "study/": "study",
 }
 ENGINE_STAGES = ["ambf_like/model", "ambf_like/loading", "ambf_like/world"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')

@@ -65,9 +65,16 @@ int registerParticipant(const fs::path& out, const std::string& participant,
 
 /// A person's wait: until A is pressed on the pad (or the session is stopped).
 bool waitForA(const SessionSettings& s) {
+  bool said = false;
   for (;;) {
     if (s.stop && *s.stop) return false;
-    if (const auto pad = s.pad->read(); pad && pad->a) return true;
+    const auto pad = s.pad->read();
+    if (pad && pad->a) return true;
+    if (!pad && !said) {
+      *s.out_text << "no gamepad is connected: plug one in (Ctrl-C stops the session)\n"
+                  << std::flush;
+      said = true;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(10));  // a person's pace, not a test's
   }
 }
@@ -163,6 +170,18 @@ nlohmann::json conditionJson(const Condition& c) {
 }
 
 SessionProgress runSession(const Protocol& protocol, const SessionSettings& s) {
+  if (s.traits) {
+    for (const TaskSpec& task : protocol.tasks) {
+      if (!makeTask(task, 0)->virtualParticipantsCan()) {
+        throw std::runtime_error(protocol.file.string() +
+                                 ": the virtual participants cannot do "
+                                 "task '" +
+                                 task.name +
+                                 "' (they reach targets); run it with "
+                                 "people");
+      }
+    }
+  }
   const fs::path home = s.out / s.participant;
   const fs::path trials = home / "trials";
   fs::create_directories(trials);
