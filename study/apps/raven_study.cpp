@@ -38,6 +38,9 @@ struct RunOptions {
   std::string trigger_range = "xbox-one";
   int drill_after = -1;
   std::string drill_with = "int";
+  bool video = false;
+  int video_fps = 30;
+  std::string video_size = "960x540";
 };
 
 int run(const RunOptions& o) {
@@ -85,6 +88,9 @@ int run(const RunOptions& o) {
     s.stop = &stop_requested;
     s.drill_after = o.drill_after;
     s.drill_signal = o.drill_with == "kill" ? SIGKILL : SIGINT;
+    if (o.video) {
+      s.video = viewer::VideoOptions::of({"trial.mp4", o.video_fps, o.video_size});
+    }
     const study::SessionProgress p = study::runSession(protocol, s);
     fmt::print("{}: {} of {} trials sealed in {}\n", people[k], p.done, p.total,
                (o.out / people[k]).string());
@@ -165,6 +171,11 @@ int main(int argc, char** argv) {
                       "drill: interrupt the trial after this many finished trials");
   run_cmd->add_option("--drill-with", o.drill_with, "int (Ctrl-C) or kill (a crash)")
       ->check(CLI::IsMember({"int", "kill"}));
+  run_cmd->add_flag("--video", o.video,
+                    "a video of every trial (its folder's trial.mp4; headless, no display needed)");
+  run_cmd->add_option("--video-fps", o.video_fps, "frames per simulated second (default 30)")
+      ->check(CLI::Range(1, 240));
+  run_cmd->add_option("--video-size", o.video_size, "WIDTHxHEIGHT, even (default 960x540)");
 
   std::vector<fs::path> dirs;
   fs::path report_out;

@@ -252,6 +252,7 @@ SessionProgress runSession(const Protocol& protocol, const SessionSettings& s) {
       ts.wall_clock = person;
       ts.pad = s.pad;
       ts.stop = s.stop;
+      ts.video = s.video;
       const std::string heading =
           fmt::format("{} trial {}/{}: {} under {}{}", s.participant, i + 1, plan.size(), task.name,
                       planned.condition, planned.tuning ? " (tuning)" : "");

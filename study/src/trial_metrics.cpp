@@ -204,7 +204,7 @@ struct MetricInfo {
   const char* meaning;
   int sense;
 };
-constexpr std::array<MetricInfo, 14> kMetrics{{
+constexpr std::array<MetricInfo, 16> kMetrics{{
     {"completion_time_s", "s to finish (the time limit when not finished)", -1},
     {"completed", "1 when the task was finished within its time limit", +1},
     {"targets_reached", "targets held for the dwell time", +1},
@@ -212,6 +212,8 @@ constexpr std::array<MetricInfo, 14> kMetrics{{
     {"rings_placed", "rings resting on their target posts at the end", +1},
     {"rings_dropped", "rings that fell back to the board off their target post", -1},
     {"path_length_m", "both tool tips' path, m", -1},
+    {"path_length_left_m", "the left tool tip's path, m", -1},
+    {"path_length_right_m", "the right tool tip's path, m", -1},
     {"idle_time_s", "s with both tips slower than 1 mm/s", -1},
     {"sparc", "spectral arc length per movement; closer to 0 is smoother", +1},
     {"joint_limit_hits", "iterations a target was clamped at a joint limit", -1},
@@ -306,7 +308,9 @@ TrialMetrics measureTrial(const fs::path& dir) {
   m["overshoots"] = targets ? count("target_left") : kNaN;
   m["rings_placed"] = pegs ? count("ring_placed") - count("ring_unplaced") : kNaN;
   m["rings_dropped"] = pegs ? count("ring_dropped") : kNaN;
-  m["path_length_m"] = paths[0].length(0.0, end->time) + paths[1].length(0.0, end->time);
+  m["path_length_left_m"] = paths[0].length(0.0, end->time);
+  m["path_length_right_m"] = paths[1].length(0.0, end->time);
+  m["path_length_m"] = m["path_length_left_m"] + m["path_length_right_m"];
   m["idle_time_s"] = idleTime(paths);
   m["sparc"] = meanSparc(paths, events, end->time);
   m["joint_limit_hits"] = count("joint_limit");

@@ -1,5 +1,7 @@
 #include "study/trial_runner.hpp"
 
+#include <spdlog/spdlog.h>
+
 #include <chrono>
 
 #include "controller/session.hpp"
@@ -39,6 +41,16 @@ TrialRun runTrial(const TrialSettings& s) {
   if (const auto launch = task->launchFile(); !launch.empty()) twin_options.launch_file = launch;
   twin_options.clock = s.wall_clock ? bridge::ClockKind::Wall : bridge::ClockKind::Simulated;
   twin::CalibrationProfile::shipped().applyTo(twin_options);  // the robot's own motors
+  std::unique_ptr<viewer::VideoRecorder> video;  // opened at the first step, when the world is
+  if (s.video) {
+    viewer::VideoOptions options = *s.video;
+    options.file = s.dir / "trial.mp4";
+    options.visual_skin = raven::ravenVisualSkin();
+    twin_options.after_step = [&video, options](const ambf_like::World& world) {
+      if (!video) video = std::make_unique<viewer::VideoRecorder>(world, options, std::nullopt);
+      video->capture(world);
+    };
+  }
   scenario::ScriptedSession scripted(twin_options, s.condition.controllerOptions());
   scripted.makeReady(kHomingLimit);
   twin::TwinPlatform& twin = scripted.twin();
@@ -106,6 +118,7 @@ TrialRun runTrial(const TrialSettings& s) {
     }
   }
   session.stopRecording();
+  if (video) spdlog::info("video: {}", video->finish().describe());
   run.duration = view().time;
   run.finished = true;
   events.add(run.duration, "trial_end", -1, run.completed ? 1.0 : 0.0);

@@ -170,3 +170,35 @@ TEST(Trial, ThePegTransferTaskWatchesTheRingsAndTheBoard) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Trial, AVideoOfTheTrialIsWrittenBesideItsRecordings) {
+  controller::SdlGamepad pad(controller::TriggerScale::XboxOne, controller::Polling::Caller);
+  harness::VirtualGamepad thumbs;  // left alone: the arms stay where they are
+  ASSERT_TRUE(thumbs.ok()) << SDL_GetError();
+  thumbs.axis(SDL_CONTROLLER_AXIS_TRIGGERLEFT, -32768);
+  thumbs.axis(SDL_CONTROLLER_AXIS_TRIGGERRIGHT, -32768);
+  pad.poll();
+  harness::TempDir dir;
+  study::TrialSettings s;
+  s.task.count = 1;
+  s.task.time_limit = 1.0;  // the pad left alone: the trial runs to its limit
+  s.dir = dir.path() / "trial";
+  s.pad = &pad;
+  viewer::VideoOptions video;
+  video.fps = 10;
+  video.width = 320;
+  video.height = 180;
+  s.video = video;
+  try {
+    study::runTrial(s);
+  } catch (const std::runtime_error& e) {
+    GTEST_SKIP() << "no headless OpenGL: " << e.what();
+  }
+  ASSERT_TRUE(fs::exists(s.dir / "trial.mp4"));
+  EXPECT_GT(fs::file_size(s.dir / "trial.mp4"), 1000u);
+  EXPECT_EQ(study::measureTrial(s.dir).at("completed"), 0.0);
+}
+
+}  // namespace

@@ -16,6 +16,7 @@
 #include "controller/sdl_gamepad.hpp"
 #include "study/protocol.hpp"
 #include "study/virtual_participant.hpp"
+#include "viewer/video_recorder.hpp"
 
 namespace harness {
 class VirtualGamepad;
@@ -45,6 +46,8 @@ struct SessionSettings {
   /// run (SIGINT: as Ctrl-C; SIGKILL: as a crash); -1: no drill.
   int drill_after = -1;
   int drill_signal = SIGINT;
+  /// Set: every trial's video (its folder's trial.mp4) at this rate and size.
+  std::optional<viewer::VideoOptions> video;
 };
 
 /// How far a session got.

@@ -2,7 +2,8 @@
 // One trial on the twin: the task's scene built and homed, the condition's controller, the
 // participant's pad (a person's, or a virtual participant's through SDL's virtual joystick)
 // read each manual-loop iteration through the condition's gate, everything the controller
-// records (rs, ci, cf) plus the trial's events written to the trial's folder as it goes.
+// records (rs, ci, cf) plus the trial's events written to the trial's folder as it goes, and a
+// video if asked for.
 
 #include <atomic>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include "controller/sdl_gamepad.hpp"
 #include "study/protocol.hpp"
 #include "study/trial_task.hpp"
+#include "viewer/video_recorder.hpp"
 
 namespace study {
 
@@ -35,6 +37,8 @@ struct TrialSettings {
   /// stops the trial before it begins.
   std::function<bool()> ready;
   const std::atomic<bool>* stop = nullptr;  ///< set: the trial ends now, unfinished
+  /// Set: a video of the trial (headless) to `dir`/trial.mp4 at this rate and size.
+  std::optional<viewer::VideoOptions> video;
 };
 
 /// How a trial ended.
