@@ -51,12 +51,12 @@ void DualPlatformController::clamp(ArmPair& joints, IterationReport& report) con
   }
 }
 
-IterationReport DualPlatformController::execute(const ArmPair& next) {
+IterationReport DualPlatformController::execute(const ArmPair& next, int most) {
   const InterpolationPlan plan = planMove(commanded_, next, options_.caps, period());
   const ArmPair increment = plan.increment();
   IterationReport report;
-  report.steps = plan.steps;
-  for (int k = 1; k <= plan.steps; ++k) {
+  report.steps = std::min(plan.steps, most);
+  for (int k = 1; k <= report.steps; ++k) {
     const ArmPair positions = plan.at(k);
     for (const PlatformSlot& slot : platforms_) {
       for (Arm arm : raven::kArms) {
@@ -73,7 +73,7 @@ IterationReport DualPlatformController::execute(const ArmPair& next) {
     }
     for (const PlatformSlot& slot : platforms_) slot.platform->advance(period());
   }
-  commanded_ = next;
+  commanded_ = report.steps == plan.steps ? next : plan.at(report.steps);
   return report;
 }
 
@@ -132,12 +132,23 @@ IterationReport DualPlatformController::sineDance() {
 }
 
 IterationReport DualPlatformController::moveTo(const ArmPair& joints) {
+  return scriptedMove(joints, std::numeric_limits<int>::max());
+}
+
+IterationReport DualPlatformController::scriptedMove(const ArmPair& joints, int most) {
   ArmPair next = joints;
   IterationReport clamp_report;
   clamp(next, clamp_report);
-  IterationReport report = execute(next);
+  IterationReport report = execute(next, most);
   report.clamped = clamp_report.clamped;
   mapping_.reset(commanded_);
+  return report;
+}
+
+IterationReport DualPlatformController::moveFor(const ArmPair& joints, int steps) {
+  IterationReport report = scriptedMove(joints, steps);
+  for (int k = report.steps; k < steps; ++k) idle();
+  report.steps = steps;
   return report;
 }
 

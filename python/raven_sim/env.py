@@ -1,9 +1,16 @@
 """The peg transfer as a learning environment, in Gymnasium's API convention.
 
-One step is one manual-loop iteration of the controller a gamepad drives (at least 2 ms of robot
-time at the controller's 500 Hz): the action is either both arms' joint targets (14 values,
+One step is one manual-loop iteration of the controller a gamepad drives (control="waypoint":
+until the arms reach the action's targets under the controller's velocity caps, at least 2 ms
+of robot time) or exactly `period` seconds (control="period": a move cut short there, or held
+after it arrives). The action (action_type) is both arms' joint targets ("joints", 14 values,
 left arm first, ArmJoints order: shoulder, elbow, insertion (m), roll, wrist, jaw1, jaw2),
-reached under the controller's velocity caps, or a pad reading (a ci row of 14 values). The
+deltas from the current targets ("joint_deltas", 14, at most a joint's range), per arm the tool
+tip's displacement with the wrist locked and the jaws' opening ("tool_deltas", 8: dx, dy, dz in
+m (at most 5 mm) in the controller's frame {B}, the one a gamepad's sticks move the tool in (not
+the observation's pose frame), then jaw1 + jaw2 in rad), or a pad reading ("pad", a ci row of
+14 values).
+Actions are clipped to their bounds, their targets to the joint limits. The
 observation (72 values) is, per arm, measured joints [0, 14), commanded targets [14, 28), tool
 pose x, y, z, qw, qx, qy, qz [28, 42), grasp force and torque [42, 54); then each ring's centre
 [54, 72). The reward is the change in the number of rings resting threaded on their target
@@ -52,15 +59,19 @@ class PegTransferEnv(_Env):
 
     metadata = {"render_modes": []}
 
-    def __init__(self, action_type="joints", randomize=False, time_limit=240.0, launch_file=None):
-        if action_type not in ("joints", "pad"):
-            raise ValueError(f"action_type is '{action_type}': expected 'joints' or 'pad'")
-        self.core = PegTransferCore(randomize, time_limit, launch_file)
+    def __init__(self, action_type="joints", randomize=False, time_limit=240.0, launch_file=None,
+                 control="waypoint", period=0.05):
+        kinds = ("joints", "joint_deltas", "tool_deltas", "pad")
+        if action_type not in kinds:
+            raise ValueError(f"action_type is '{action_type}': expected one of {kinds}")
+        core_action = "joints" if action_type == "pad" else action_type
+        self.core = PegTransferCore(randomize, time_limit, launch_file, core_action, control,
+                                    period)
         self.action_type = action_type
         # float64 throughout (Gymnasium's Box defaults to float32, which the twin's values are not).
         self.observation_space = Box(-np.inf, np.inf, (PegTransferCore.observation_size,),
                                      dtype=np.float64)
-        if action_type == "joints":
+        if action_type != "pad":
             self.action_space = Box(self.core.action_low, self.core.action_high, dtype=np.float64)
         else:
             self.action_space = Box(np.array(PAD_LOW, np.float64), np.array(PAD_HIGH, np.float64),
@@ -77,17 +88,18 @@ class PegTransferEnv(_Env):
 
     def step(self, action):
         action = np.asarray(action, dtype=np.float64)
-        if self.action_type == "joints":
-            result = self.core.step(action)
-        else:
+        if self.action_type == "pad":
             result = self.core.step_pad(action)
+        else:
+            result = self.core.step(action)
         info = {"placed": result.placed, "refused": result.refused, "time": self.core.time}
         if result.failure:  # the world's guard stopped it: truncated, the last good observation
             info["failure"] = result.failure
         return result.observation, result.reward, result.terminated, result.truncated, info
 
     def expert_action(self):
-        """The main job's scripted operator's next joint targets (call once per step)."""
+        """The main job's scripted operator's next step as an action of this environment's kind
+        (joint targets for "pad"; call once per step)."""
         return self.core.expert_action()
 
 

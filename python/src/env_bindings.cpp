@@ -15,7 +15,6 @@ namespace raven_python {
 
 void bindPegTransferEnv(py::module_& m) {
   using E = scenario::PegTransferEnv;
-  using Action = Eigen::Matrix<double, E::kActionSize, 1>;
   py::class_<scenario::PegTransferStep>(m, "PegTransferStep")
       .def_readonly("observation", &scenario::PegTransferStep::observation)
       .def_readonly("reward", &scenario::PegTransferStep::reward)
@@ -27,17 +26,27 @@ void bindPegTransferEnv(py::module_& m) {
 
   py::class_<E>(m, "PegTransferCore", "the peg transfer, one manual-loop iteration per step")
       .def(py::init([](bool randomize, double time_limit,
-                       std::optional<std::filesystem::path> launch_file) {
+                       std::optional<std::filesystem::path> launch_file, const std::string& action,
+                       const std::string& control, double period) {
              scenario::PegTransferEnvOptions options;
              options.randomize = randomize;
              options.time_limit = time_limit;
              if (launch_file) options.launch_file = *launch_file;
+             options.action = scenario::envActionNamed(action);
+             if (control != "waypoint" && control != "period") {
+               throw std::invalid_argument("control is 'waypoint' or 'period', not '" + control +
+                                           "'");
+             }
+             options.control = control == "period" ? scenario::EnvControl::Period
+                                                   : scenario::EnvControl::Waypoint;
+             options.period = period;
              return std::make_unique<E>(options);
            }),
            py::arg("randomize") = false, py::arg("time_limit") = 240.0,
-           py::arg("launch_file") = py::none())
+           py::arg("launch_file") = py::none(), py::arg("action") = "joints",
+           py::arg("control") = "waypoint", py::arg("period") = 0.05)
       .def_readonly_static("observation_size", &E::kObservationSize)
-      .def_readonly_static("action_size", &E::kActionSize)
+      .def_property_readonly("action_size", &E::actionSize)
       .def(
           "reset",
           [](E& e, std::uint64_t seed) {
@@ -47,11 +56,11 @@ void bindPegTransferEnv(py::module_& m) {
           py::arg("seed"))
       .def(
           "step",
-          [](E& e, const Action& targets) {
+          [](E& e, const Eigen::VectorXd& action) {
             py::gil_scoped_release release;
-            return e.step(targets);
+            return e.step(action);
           },
-          py::arg("targets"), "joint targets of both arms (14), reached under the caps")
+          py::arg("action"), "one action of the environment's kind (joints: 14 targets)")
       .def(
           "step_pad",
           [](E& e, const std::array<double, recording::GamepadState::kCiColumns>& row) {
@@ -60,7 +69,8 @@ void bindPegTransferEnv(py::module_& m) {
             return e.step(pad);
           },
           py::arg("ci_row"), "one pad reading as a ci row (14 values)")
-      .def("expert_action", &E::expertAction, "the main job's scripted operator's next targets")
+      .def("expert_action", &E::expertAction,
+           "the main job's scripted operator's next step, as an action of the environment's kind")
       .def_property_readonly("action_low", &E::actionLow)
       .def_property_readonly("action_high", &E::actionHigh)
       .def_property_readonly("time", &E::time)

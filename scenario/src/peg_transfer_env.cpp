@@ -8,30 +8,17 @@
 
 namespace scenario {
 
-namespace {
-
-using Action = Eigen::Matrix<double, PegTransferEnv::kActionSize, 1>;
-
-controller::ArmPair armPair(const Action& action) {
-  for (int i = 0; i < PegTransferEnv::kActionSize; ++i) {
-    if (!std::isfinite(action(i))) {
-      throw std::invalid_argument("action[" + std::to_string(i) + "] is " +
-                                  std::to_string(action(i)) + ": targets must be finite");
-    }
-  }
-  return {action.head<raven::kJointCount>(), action.tail<raven::kJointCount>()};
-}
-
-Action flat(const controller::ArmPair& pair) {
-  Action out;
-  out << pair[0], pair[1];
-  return out;
-}
-
-}  // namespace
-
 PegTransferEnv::PegTransferEnv(PegTransferEnvOptions options)
-    : options_(std::move(options)), limits_(raven::builtinProfile("physical").limits) {}
+    : options_(std::move(options)),
+      profile_(raven::builtinProfile("physical")),
+      kinematics_{raven::ArmKinematics::of(profile_, raven::Arm::Left),
+                  raven::ArmKinematics::of(profile_, raven::Arm::Right)} {
+  if (options_.control == EnvControl::Period &&
+      !(options_.period >= 0.002 && options_.period <= 10.0)) {
+    throw std::invalid_argument("a step's period must lie in [0.002, 10] s, not " +
+                                std::to_string(options_.period));
+  }
+}
 
 PegTransferEnv::~PegTransferEnv() = default;
 
@@ -65,9 +52,16 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   return last_observation_;
 }
 
-PegTransferStep PegTransferEnv::step(const Action& targets) {
-  const controller::ArmPair next = armPair(targets);
-  return guardedStep([&] { return session().controller().moveTo(next).refused; });
+PegTransferStep PegTransferEnv::step(const Eigen::VectorXd& action) {
+  controller::DualPlatformController& controller = session().controller();
+  const controller::ArmPair next =
+      targetsOf(options_.action, action, controller.commanded(), kinematics_, profile_.home);
+  if (options_.control == EnvControl::Waypoint) {
+    return guardedStep([&] { return controller.moveTo(next).refused; });
+  }
+  const int steps =
+      std::max(1, static_cast<int>(std::lround(options_.period / controller.period())));
+  return guardedStep([&] { return controller.moveFor(next, steps).refused; });
 }
 
 PegTransferStep PegTransferEnv::step(const recording::GamepadState& pad) {
@@ -93,20 +87,22 @@ PegTransferStep PegTransferEnv::guardedStep(const std::function<std::size_t()>& 
   }
 }
 
-Action PegTransferEnv::expertAction() {
+Eigen::VectorXd PegTransferEnv::expertAction() {
   if (!failure_.empty()) throw std::logic_error("the episode ended when its world failed");
   controller::DualPlatformController& controller = session().controller();
   const controller::ArmPair& current = controller.commanded();
   const ambf_like::World& world = session().twin().world();
-  return flat({(*expert_)[0].next(current[0], world), (*expert_)[1].next(current[1], world)});
+  const controller::ArmPair targets{(*expert_)[0].next(current[0], world),
+                                    (*expert_)[1].next(current[1], world)};
+  return actionFor(options_.action, targets, current, kinematics_);
 }
 
-Action PegTransferEnv::actionLow() const {
-  return flat({limits_.low, limits_.low});
+Eigen::VectorXd PegTransferEnv::actionLow() const {
+  return scenario::actionLow(options_.action, profile_.limits);
 }
 
-Action PegTransferEnv::actionHigh() const {
-  return flat({limits_.high, limits_.high});
+Eigen::VectorXd PegTransferEnv::actionHigh() const {
+  return scenario::actionHigh(options_.action, profile_.limits);
 }
 
 double PegTransferEnv::time() const {

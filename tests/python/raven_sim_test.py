@@ -158,6 +158,40 @@ class PegTransferEnvironment(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, r"action\[4\] is nan"):
             joints.step(bad)
 
+    def test_joint_deltas_replay_the_experts_targets(self):
+        targets = raven_sim.PegTransferEnv()
+        deltas = raven_sim.PegTransferEnv(action_type="joint_deltas")
+        self.assertEqual(deltas.action_space.shape, (14,))
+        self.assertAlmostEqual(deltas.action_space.high[2], 0.33)  # the insertion's range, m
+        a, b = targets.reset(seed=3)[0], deltas.reset(seed=3)[0]
+        for _ in range(30):
+            a = targets.step(targets.expert_action())[0]
+            b = deltas.step(deltas.expert_action())[0]
+        np.testing.assert_allclose(a, b, atol=1e-9)
+
+    def test_period_control_and_tool_deltas(self):
+        env = raven_sim.PegTransferEnv(action_type="tool_deltas", control="period", period=0.1)
+        self.assertEqual(env.action_space.shape, (8,))
+        start = env.reset(seed=0)[0]
+        t0 = env.core.time
+        push = np.zeros(8)
+        push[0] = 0.004  # the left tool tip +4 mm along the controller's x each step
+        push[3] = start[19] + start[20]  # both jaws' opening as it is
+        push[7] = start[26] + start[27]
+        for k in range(10):
+            observation = env.step(push)[0]
+            self.assertAlmostEqual(env.core.time - t0, 0.1 * (k + 1), places=9)
+        moved = np.linalg.norm(observation[28:31] - start[28:31])  # measured_cp's frame
+        self.assertGreater(moved, 0.002)  # under the caps: at most what ten pushes asked
+        self.assertLess(moved, 0.041)
+        np.testing.assert_allclose(observation[35:38], start[35:38], atol=2e-4)  # right: still
+        with self.assertRaisesRegex(ValueError, "8 values, not 14"):
+            env.step(np.zeros(14))
+        with self.assertRaisesRegex(ValueError, "period"):
+            raven_sim.PegTransferEnv(control="period", period=0.0)
+        with self.assertRaisesRegex(ValueError, "tool_deltas"):
+            raven_sim.PegTransferEnv(action_type="cartesian")
+
     def test_vectorised_environments_match_one_by_one(self):
         vector = raven_sim.VectorPegTransferEnv(2, randomize=True)
         observations, _ = vector.reset([1, 2])

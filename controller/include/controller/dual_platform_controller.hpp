@@ -4,6 +4,7 @@
 // Modes O1 (homing), O2/O3 (manual: a live pad or replayed inputs), O4 (joint replay) and O5
 // (sine dance) each produce targets; execute() turns them into commands.
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,6 +81,10 @@ class DualPlatformController {
   /// Scripted operation: moves every platform to `joints` under the caps (C_V), as a pad's
   /// iteration would; the mapping then continues from there.
   IterationReport moveTo(const ArmPair& joints);
+  /// Scripted operation for exactly `steps` command periods: towards `joints` under the caps;
+  /// a move that needs fewer steps arrives and holds, one that needs more stops where its
+  /// interpolation is after `steps` (the targets are then that point, not `joints`).
+  IterationReport moveFor(const ArmPair& joints, int steps);
 
   /// The largest difference between the first two platforms' measured joints (0 with one).
   double divergence() const;
@@ -89,8 +94,11 @@ class DualPlatformController {
   double period() const { return 1.0 / options_.rate; }
 
  private:
-  /// C_V: moves every platform from the current targets to `next` in capped steps.
-  IterationReport execute(const ArmPair& next);
+  /// C_V: moves every platform from the current targets to `next` in capped steps, at most
+  /// `most` of them (the targets are then where the interpolation got to).
+  IterationReport execute(const ArmPair& next, int most = std::numeric_limits<int>::max());
+  /// moveTo / moveFor: clamped to the limits, at most `most` steps, the mapping following.
+  IterationReport scriptedMove(const ArmPair& joints, int most);
   ArmPair measured(const PlatformSlot& slot) const;
   void clamp(ArmPair& joints, IterationReport& report) const;
 

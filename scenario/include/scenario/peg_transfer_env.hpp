@@ -1,8 +1,10 @@
 #pragma once
 // The peg transfer as a learning environment (Gymnasium's reset/step convention): one step is
-// one manual-loop iteration of the controller a gamepad uses, the action its target (the arms'
-// joints, reached under the velocity caps) or a pad reading; the observation is the robot, the
-// rings and the grasp forces; the scripted operator of the main job is there as the expert.
+// one manual-loop iteration of the controller a gamepad uses (the arms reach the action's
+// targets under the velocity caps) or a fixed period (they follow it for exactly that long);
+// the action is joint targets, joint deltas, tool-tip displacements with the jaws (env_action)
+// or a pad reading; the observation is the robot, the rings and the grasp forces; the scripted
+// operator of the main job is there as the expert.
 
 #include <Eigen/Core>
 #include <array>
@@ -14,13 +16,23 @@
 #include <string>
 
 #include "scenario/arm_routine.hpp"
+#include "scenario/env_action.hpp"
 #include "scenario/peg_layout.hpp"
 #include "scenario/scripted_session.hpp"
 
 namespace scenario {
 
+/// How long a step lasts.
+enum class EnvControl {
+  Waypoint,  ///< until the arms reach the action's targets under the caps (a manual iteration)
+  Period     ///< exactly PegTransferEnvOptions::period: a move cut short there, or held after
+};
+
 /// How the environment's episodes run.
 struct PegTransferEnvOptions {
+  EnvAction action = EnvAction::Joints;
+  EnvControl control = EnvControl::Waypoint;
+  double period = 0.05;  ///< s per step under EnvControl::Period (whole command periods)
   /// Draw each episode's scene from its reset seed (scene_variation.hpp's ranges); else the
   /// nominal scene every time.
   bool randomize = false;
@@ -57,8 +69,6 @@ class PegTransferEnv {
   /// ring peg1..peg6 its centre (3). Layout: [0, 14) measured joints, [14, 28) targets,
   /// [28, 42) tool poses, [42, 54) grasp wrenches, [54, 72) ring centres.
   static constexpr int kObservationSize = 72;
-  /// Both arms' joint targets, left arm first, ArmJoints order.
-  static constexpr int kActionSize = 14;
 
   explicit PegTransferEnv(PegTransferEnvOptions options = {});
   ~PegTransferEnv();
@@ -66,18 +76,20 @@ class PegTransferEnv {
   /// Builds the episode's twin (from `seed` when randomising), enables and homes it, and returns
   /// the first observation. Throws common::LoadError for bad scene files.
   Eigen::VectorXd reset(std::uint64_t seed);
-  /// One manual-loop iteration towards `targets` (clamped to the joint limits, reached under the
-  /// caps). Needs reset().
-  PegTransferStep step(const Eigen::Matrix<double, kActionSize, 1>& targets);
+  /// One step of the options' action (clipped to its bounds, its targets clamped to the joint
+  /// limits, reached under the caps). Needs reset(). Throws std::invalid_argument for an action
+  /// of the wrong size or with a value that is not finite.
+  PegTransferStep step(const Eigen::VectorXd& action);
   /// One manual-loop iteration from a pad reading (the paper's mapping, as a live pad).
   PegTransferStep step(const recording::GamepadState& pad);
-  /// What the main job's scripted operator would command next (call once per step: it keeps
-  /// its own progress); the targets held once it is done.
-  Eigen::Matrix<double, kActionSize, 1> expertAction();
+  /// What the main job's scripted operator would command next, as an action of the options'
+  /// kind (call once per step: it keeps its own progress); the targets held once it is done.
+  Eigen::VectorXd expertAction();
 
-  /// The joint limits of an action.
-  Eigen::Matrix<double, kActionSize, 1> actionLow() const;
-  Eigen::Matrix<double, kActionSize, 1> actionHigh() const;
+  int actionSize() const { return scenario::actionSize(options_.action); }
+  /// An action's bounds.
+  Eigen::VectorXd actionLow() const;
+  Eigen::VectorXd actionHigh() const;
   double time() const;
   int placed() const { return placed_; }
   twin::TwinPlatform& twin();
@@ -92,7 +104,8 @@ class PegTransferEnv {
   ScriptedSession& session();
 
   PegTransferEnvOptions options_;
-  raven::JointLimits limits_;  ///< the controller's (the physical profile's), read once
+  raven::PlatformProfile profile_;  ///< the controller's (the physical one), read once
+  std::array<raven::ArmKinematics, 2> kinematics_;
   PegLayout layout_;
   std::unique_ptr<ScriptedSession> session_;
   std::optional<std::array<ArmRoutine, 2>> expert_;

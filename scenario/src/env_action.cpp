@@ -1,0 +1,131 @@
+#include "scenario/env_action.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace scenario {
+
+EnvAction envActionNamed(std::string_view name) {
+  if (name == "joints") return EnvAction::Joints;
+  if (name == "joint_deltas") return EnvAction::JointDeltas;
+  if (name == "tool_deltas") return EnvAction::ToolDeltas;
+  throw std::invalid_argument("unknown action '" + std::string(name) +
+                              "' (joints, joint_deltas or tool_deltas)");
+}
+
+int actionSize(EnvAction kind) {
+  return kind == EnvAction::ToolDeltas ? 8 : 14;
+}
+
+Eigen::VectorXd actionLow(EnvAction kind, const raven::JointLimits& limits) {
+  Eigen::VectorXd low(actionSize(kind));
+  switch (kind) {
+    case EnvAction::Joints:
+      low << limits.low, limits.low;
+      break;
+    case EnvAction::JointDeltas:  // element by element: GCC 12 misreads the 7-vector packets
+      for (Eigen::Index i = 0; i < low.size(); ++i) low(i) = limits.low(i % 7) - limits.high(i % 7);
+      break;
+    case EnvAction::ToolDeltas:
+      low << Eigen::Vector3d::Constant(-kMaxToolDelta), 0.0,
+          Eigen::Vector3d::Constant(-kMaxToolDelta), 0.0;
+      break;
+  }
+  return low;
+}
+
+Eigen::VectorXd actionHigh(EnvAction kind, const raven::JointLimits& limits) {
+  Eigen::VectorXd high(actionSize(kind));
+  switch (kind) {
+    case EnvAction::Joints:
+      high << limits.high, limits.high;
+      break;
+    case EnvAction::JointDeltas:
+      for (Eigen::Index i = 0; i < high.size(); ++i)
+        high(i) = limits.high(i % 7) - limits.low(i % 7);
+      break;
+    case EnvAction::ToolDeltas: {
+      const double opening = limits.high(raven::kJaw1) + limits.high(raven::kJaw2);
+      high << Eigen::Vector3d::Constant(kMaxToolDelta), opening,
+          Eigen::Vector3d::Constant(kMaxToolDelta), opening;
+      break;
+    }
+  }
+  return high;
+}
+
+controller::ArmPair targetsOf(EnvAction kind, const Eigen::VectorXd& action,
+                              const controller::ArmPair& current,
+                              const std::array<raven::ArmKinematics, 2>& kinematics,
+                              const raven::ArmJoints& home) {
+  if (action.size() != actionSize(kind)) {
+    throw std::invalid_argument("an action has " + std::to_string(actionSize(kind)) +
+                                " values, not " + std::to_string(action.size()));
+  }
+  for (Eigen::Index i = 0; i < action.size(); ++i) {
+    if (!std::isfinite(action(i))) {
+      throw std::invalid_argument("action[" + std::to_string(i) + "] is " +
+                                  std::to_string(action(i)) + ": actions must be finite");
+    }
+  }
+  const auto& limits = kinematics[0].limits();
+  const Eigen::VectorXd a =
+      action.cwiseMax(actionLow(kind, limits)).cwiseMin(actionHigh(kind, limits));
+  controller::ArmPair out = current;
+  for (std::size_t arm = 0; arm < 2; ++arm) {
+    const auto i = static_cast<Eigen::Index>(arm);
+    switch (kind) {
+      case EnvAction::Joints:
+        out[arm] = a.segment<raven::kJointCount>(i * raven::kJointCount);
+        break;
+      case EnvAction::JointDeltas:
+        out[arm] += a.segment<raven::kJointCount>(i * raven::kJointCount);
+        break;
+      case EnvAction::ToolDeltas: {
+        // The wrist point moved until the tool tip lands where asked: with the wrist's joints
+        // locked the tool turns a little as the arm moves, so the first guess is corrected.
+        const raven::ArmKinematics& k = kinematics[arm];
+        const Eigen::Vector3d goal = k.toolPose(current[arm]).translation() + a.segment<3>(i * 4);
+        Eigen::Vector3d wrist = k.wristPoint(current[arm]) + a.segment<3>(i * 4);
+        for (int pass = 0; pass < 4; ++pass) {
+          const auto solved = k.inverseWristLocked(wrist, current[arm], home);
+          if (!solved.ok || solved.clamp.any()) break;  // out of reach: the arm stays
+          out[arm] = solved.joints;
+          wrist += goal - k.toolPose(solved.joints).translation();
+        }
+        // The opening split as it is now: jaw1 - jaw2 (the grasper's turn) kept.
+        const double turn = current[arm](raven::kJaw1) - current[arm](raven::kJaw2);
+        out[arm](raven::kJaw1) = 0.5 * (a(i * 4 + 3) + turn);
+        out[arm](raven::kJaw2) = 0.5 * (a(i * 4 + 3) - turn);
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+Eigen::VectorXd actionFor(EnvAction kind, const controller::ArmPair& targets,
+                          const controller::ArmPair& current,
+                          const std::array<raven::ArmKinematics, 2>& kinematics) {
+  Eigen::VectorXd out(actionSize(kind));
+  for (std::size_t arm = 0; arm < 2; ++arm) {
+    const auto i = static_cast<Eigen::Index>(arm);
+    switch (kind) {
+      case EnvAction::Joints:
+        out.segment<raven::kJointCount>(i * raven::kJointCount) = targets[arm];
+        break;
+      case EnvAction::JointDeltas:
+        out.segment<raven::kJointCount>(i * raven::kJointCount) = targets[arm] - current[arm];
+        break;
+      case EnvAction::ToolDeltas:
+        out.segment<3>(i * 4) = kinematics[arm].toolPose(targets[arm]).translation() -
+                                kinematics[arm].toolPose(current[arm]).translation();
+        out(i * 4 + 3) = targets[arm](raven::kJaw1) + targets[arm](raven::kJaw2);
+        break;
+    }
+  }
+  return out;
+}
+
+}  // namespace scenario
