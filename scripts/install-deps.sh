@@ -13,7 +13,7 @@ packages=(
   ros-std-msgs ros-sensor-msgs ros-geometry-msgs
   python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag
   python3-sensor-msgs python3-geometry-msgs python3-gencpp python3-genmsg python3-genpy
-  python3-rospy python3-pykdl python3-matplotlib python3-numpy
+  python3-rospy python3-pykdl python3-matplotlib python3-numpy python3-torch python3-h5py
   libglfw3-dev libgl-dev libgl1-mesa-dri libstb-dev xvfb xauth
   libegl-dev libegl-mesa0 libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   clang libfuzzer-14-dev

@@ -14,9 +14,9 @@ handle the paper's recordings; PegTransferEnv is the peg transfer as a learning 
 """
 
 from ._raven_sim import (Arm, CommandResult, Controller, ControllerSession, Mode, GrasperForces, JointSample, LoadError, MoveJp,
-                         OperatingStatus, PegTransferCore, PegTransferStep, RavenState,
+                         OperatingStatus, PegCameras, PegTransferCore, PegTransferStep, RavenState,
                          RecordingError, RsRecording, RsWriter, ServoCp, ServoCr, ServoJawJp,
                          SimulationDiverged,
                          ServoJawJr, ServoJp, ServoJr, StateCommand, Twin, World, ci_columns,
                          read_ci, read_rs, write_ci)
-from .env import PegTransferEnv, VectorPegTransferEnv
+from .env import SEGMENT_IDS, PegTransferEnv, VectorPegTransferEnv

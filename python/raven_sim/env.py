@@ -10,7 +10,13 @@ tip's displacement with the wrist locked and the jaws' opening ("tool_deltas", 8
 m (at most 5 mm) in the controller's frame {B}, the one a gamepad's sticks move the tool in (not
 the observation's pose frame), then jaw1 + jaw2 in rad), or a pad reading ("pad", a ci row of
 14 values).
-Actions are clipped to their bounds, their targets to the joint limits. The
+Actions are clipped to their bounds, their targets to the joint limits.
+
+Observations (obs): "state" alone gives the vector below; with "rgb" (H, W, 3) uint8, "depth"
+(H, W) float32 metres along the camera's axis (+inf where nothing is) or "segmentation" (H, W)
+int32 ids (SEGMENT_IDS), the observation is a dict of them (keys "<kind>" for one camera,
+"<camera>/<kind>" for several; camera: any named view, e.g. "overview", "left-task",
+"right-task", "grasper-left", "grasper-right"), rendered headless at image_size (W, H). The
 observation (72 values) is, per arm, measured joints [0, 14), commanded targets [14, 28), tool
 pose x, y, z, qw, qx, qy, qz [28, 42), grasp force and torque [42, 54); then each ring's centre
 [54, 72). The reward is the change in the number of rings resting threaded on their target
@@ -23,14 +29,33 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from ._raven_sim import PegTransferCore
+from ._raven_sim import PegCameras, PegTransferCore
 
 try:  # Gymnasium when it is there; the same API without it
     import gymnasium
-    from gymnasium.spaces import Box
+    from gymnasium.spaces import Box, Dict
     _Env = gymnasium.Env
 except ImportError:
     _Env = object
+
+    class Dict:
+        """A dictionary of spaces (gymnasium.spaces.Dict's fields)."""
+
+        def __init__(self, spaces):
+            self.spaces = dict(spaces)
+
+        def __getitem__(self, key):
+            return self.spaces[key]
+
+        def keys(self):
+            return self.spaces.keys()
+
+        def contains(self, x):
+            return set(x) == set(self.spaces) and all(s.contains(x[k])
+                                                      for k, s in self.spaces.items())
+
+        def sample(self, rng=None):
+            return {k: s.sample(rng) for k, s in self.spaces.items()}
 
     class Box:
         """A box of real vectors (gymnasium.spaces.Box's fields, for describing and sampling)."""
@@ -42,16 +67,24 @@ except ImportError:
             self.high = np.broadcast_to(np.asarray(high, self.dtype), self.shape).copy()
 
         def contains(self, x):
-            x = np.asarray(x, self.dtype)
-            return x.shape == self.shape and bool(np.all(x >= self.low) and np.all(x <= self.high))
+            x = np.asarray(x)
+            return (x.shape == self.shape and x.dtype == self.dtype and
+                    bool(np.all(x >= self.low) and np.all(x <= self.high)))
 
         def sample(self, rng=None):
             rng = rng or np.random.default_rng()
-            return rng.uniform(self.low, self.high).astype(self.dtype)
+            low = np.maximum(self.low, np.finfo(np.float64).min / 4)
+            high = np.minimum(self.high, np.finfo(np.float64).max / 4)
+            return rng.uniform(low, high).astype(self.dtype)
 
 # A pad reading's ranges: sticks in [-1, 1], triggers on the paper's 0 .. 3.996, buttons 0 or 1.
 PAD_LOW = [-1, -1, 0, 0, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0]
 PAD_HIGH = [1, 1, 3.996, 1, 1, 1, 3.996, 1, 1, 1, 1, 1, 1, 1]
+OBSERVATIONS = ("state", "rgb", "depth", "segmentation")
+# Segmentation ids (scenario/peg_cameras.hpp): 0 background, 1 the board's plate, 2-7 the start
+# posts of peg1..peg6, 8-13 their target posts, 14-19 the rings peg1..peg6, 20 the left arm's
+# links, 21 the left jaws, 22 the right arm's links, 23 the right jaws, 24 anything else.
+SEGMENT_IDS = 25
 
 
 class PegTransferEnv(_Env):
@@ -60,7 +93,8 @@ class PegTransferEnv(_Env):
     metadata = {"render_modes": []}
 
     def __init__(self, action_type="joints", randomize=False, time_limit=240.0, launch_file=None,
-                 control="waypoint", period=0.05):
+                 control="waypoint", period=0.05, obs=("state",), camera="overview",
+                 image_size=(128, 96)):
         kinds = ("joints", "joint_deltas", "tool_deltas", "pad")
         if action_type not in kinds:
             raise ValueError(f"action_type is '{action_type}': expected one of {kinds}")
@@ -68,9 +102,29 @@ class PegTransferEnv(_Env):
         self.core = PegTransferCore(randomize, time_limit, launch_file, core_action, control,
                                     period)
         self.action_type = action_type
+        self.obs = (obs,) if isinstance(obs, str) else tuple(obs)
+        unknown = [k for k in self.obs if k not in OBSERVATIONS]
+        if unknown or not self.obs:
+            raise ValueError(f"obs {self.obs}: each one of {OBSERVATIONS}")
+        self.cameras = [camera] if isinstance(camera, str) else list(camera)
+        self.image_size = tuple(int(v) for v in image_size)
+        self._cameras = None
         # float64 throughout (Gymnasium's Box defaults to float32, which the twin's values are not).
-        self.observation_space = Box(-np.inf, np.inf, (PegTransferCore.observation_size,),
-                                     dtype=np.float64)
+        state = Box(-np.inf, np.inf, (PegTransferCore.observation_size,), dtype=np.float64)
+        if self.obs == ("state",):  # the plain vector, as before cameras
+            self.observation_space = state
+        else:
+            w, h = self.image_size
+            spaces = {"state": state} if "state" in self.obs else {}
+            image = {"rgb": Box(0, 255, (h, w, 3), dtype=np.uint8),
+                     "depth": Box(0.0, np.inf, (h, w), dtype=np.float32),
+                     "segmentation": Box(0, SEGMENT_IDS - 1, (h, w), dtype=np.int32)}
+            for kind in self.obs:
+                if kind == "state":
+                    continue
+                for name in self.cameras:
+                    spaces[self._key(name, kind)] = image[kind]
+            self.observation_space = Dict(spaces)
         if action_type != "pad":
             self.action_space = Box(self.core.action_low, self.core.action_high, dtype=np.float64)
         else:
@@ -84,7 +138,24 @@ class PegTransferEnv(_Env):
         seed = self._next_seed if seed is None else int(seed)
         self._next_seed = seed + 1
         observation = self.core.reset(seed)
-        return observation, {"seed": seed, "placed": self.core.placed, "time": self.core.time}
+        if self.obs != ("state",):  # the world is new: so are its cameras
+            self._cameras = PegCameras(self.core, self.cameras, *self.image_size)
+        return (self._observe(observation),
+                {"seed": seed, "placed": self.core.placed, "time": self.core.time})
+
+    def _key(self, camera, kind):
+        return kind if len(self.cameras) == 1 else f"{camera}/{kind}"
+
+    def _observe(self, state):
+        if self.obs == ("state",):
+            return state
+        out = {"state": state} if "state" in self.obs else {}
+        images = self._cameras.render(self.core, "rgb" in self.obs, "depth" in self.obs,
+                                      "segmentation" in self.obs)
+        for name, rendered in zip(self.cameras, images):
+            for kind, array in rendered.items():
+                out[self._key(name, kind)] = array
+        return out
 
     def step(self, action):
         action = np.asarray(action, dtype=np.float64)
@@ -95,7 +166,8 @@ class PegTransferEnv(_Env):
         info = {"placed": result.placed, "refused": result.refused, "time": self.core.time}
         if result.failure:  # the world's guard stopped it: truncated, the last good observation
             info["failure"] = result.failure
-        return result.observation, result.reward, result.terminated, result.truncated, info
+        return (self._observe(result.observation), result.reward, result.terminated,
+                result.truncated, info)
 
     def expert_action(self):
         """The main job's scripted operator's next step as an action of this environment's kind

@@ -7,6 +7,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
+#include "scenario/peg_cameras.hpp"
 #include "scenario/peg_transfer_env.hpp"
 
 namespace py = pybind11;
@@ -75,6 +76,39 @@ void bindPegTransferEnv(py::module_& m) {
       .def_property_readonly("action_high", &E::actionHigh)
       .def_property_readonly("time", &E::time)
       .def_property_readonly("placed", &E::placed);
+
+  py::class_<scenario::PegCameras>(m, "PegCameras",
+                                   "the named views of an episode's world as images (headless)")
+      .def(py::init([](E& env, const std::vector<std::string>& views, int width, int height) {
+             return std::make_unique<scenario::PegCameras>(env.twin().world(), views, width,
+                                                           height);
+           }),
+           py::arg("env"), py::arg("views"), py::arg("width"), py::arg("height"))
+      .def(
+          "render",
+          [](scenario::PegCameras& cameras, E& env, bool rgb, bool depth, bool segmentation) {
+            std::vector<viewer::CameraImages> images;
+            {
+              py::gil_scoped_release release;
+              images = cameras.render(env.twin().world(), rgb, depth, segmentation);
+            }
+            py::list out;
+            for (const auto& i : images) {
+              const auto h = static_cast<py::ssize_t>(i.height);
+              const auto w = static_cast<py::ssize_t>(i.width);
+              py::dict d;
+              if (rgb) d["rgb"] = py::array_t<std::uint8_t>({h, w, py::ssize_t{3}}, i.rgb.data());
+              if (depth) d["depth"] = py::array_t<float>({h, w}, i.depth.data());
+              if (segmentation) {
+                d["segmentation"] = py::array_t<std::int32_t>(
+                    {h, w},
+                    std::vector<std::int32_t>(i.segmentation.begin(), i.segmentation.end()).data());
+              }
+              out.append(d);
+            }
+            return out;
+          },
+          py::arg("env"), py::arg("rgb"), py::arg("depth"), py::arg("segmentation"));
 }
 
 }  // namespace raven_python

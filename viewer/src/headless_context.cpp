@@ -38,6 +38,14 @@ HeadlessContext::HeadlessContext(int width, int height) : width_(width), height_
   }
 }
 
+void HeadlessContext::bind() {
+  if (eglGetCurrentContext() == context_) return;
+  if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
+    throw NoDisplay(eglError("eglMakeCurrent without a surface"));
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+}
+
 void HeadlessContext::makeCurrent() {
   if (!eglBindAPI(EGL_OPENGL_API)) throw NoDisplay(eglError("eglBindAPI(OpenGL)"));
   const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 2, EGL_CONTEXT_MINOR_VERSION, 1,

@@ -16,6 +16,8 @@ class HeadlessContext {
   HeadlessContext(const HeadlessContext&) = delete;
   HeadlessContext& operator=(const HeadlessContext&) = delete;
 
+  /// Makes the context current on the calling thread (one thread at a time draws with it).
+  void bind();
   int width() const { return width_; }
   int height() const { return height_; }
 

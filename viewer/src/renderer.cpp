@@ -3,6 +3,7 @@
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
 
+#include <limits>
 #include <stdexcept>
 
 #pragma GCC diagnostic push
@@ -100,12 +101,12 @@ void contacts(const std::vector<ambf_like::Contact>& list, double scale) {
   glEnable(GL_LIGHTING);
 }
 
-}  // namespace
-
-void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
-          int height, const ViewOptions& view) {
+/// Clears to `background`, sets the camera's projection and view (the lights, when `lit`, in eye
+/// coordinates: they move with the camera).
+void frameUp(const Camera& camera, int width, int height, const Eigen::Vector3f& background,
+             bool lit) {
   glViewport(0, 0, width, height);
-  glClearColor(kBackground.x(), kBackground.y(), kBackground.z(), 1.0f);
+  glClearColor(background.x(), background.y(), background.z(), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_DEPTH_TEST);
   glMatrixMode(GL_PROJECTION);
@@ -113,9 +114,77 @@ void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& cam
   glLoadMatrixd(projection.data());
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  lights();  // in eye coordinates: the light moves with the camera
+  if (lit) {
+    lights();
+  } else {
+    glDisable(GL_LIGHTING);
+  }
   const Eigen::Matrix4d v = camera.view();
   glLoadMatrixd(v.data());
+}
+
+Eigen::Vector3f labelColour(std::uint32_t id) {
+  return Eigen::Vector3f(static_cast<float>(id & 0xff), static_cast<float>((id >> 8) & 0xff),
+                         static_cast<float>((id >> 16) & 0xff)) /
+         255.0f;
+}
+
+}  // namespace
+
+void drawLabels(const SceneGeometry& scene, const FrameState& frame, const Camera& camera,
+                int width, int height, const SceneLabels& labels) {
+  frameUp(camera, width, height, Eigen::Vector3f::Zero(), false);
+  for (std::size_t i = 0; i < scene.bodies.size() && i < frame.body_poses.size(); ++i) {
+    const TriangleMesh& mesh = scene.bodies[i].visual;
+    const std::vector<std::uint32_t>& ids = labels.bodies.at(i);
+    glPushMatrix();
+    glMultMatrixd(frame.body_poses[i].matrix().data());
+    glBegin(GL_TRIANGLES);
+    for (std::size_t t = 0; t < mesh.triangles(); ++t) {
+      glColor3fv(labelColour(ids.size() == 1 ? ids[0] : ids.at(t)).data());
+      for (std::size_t k = 0; k < 3; ++k) glVertex3fv(mesh.positions[3 * t + k].data());
+    }
+    glEnd();
+    glPopMatrix();
+  }
+  for (std::size_t i = 0; i < scene.soft_bodies.size() && i < frame.soft_nodes.size(); ++i) {
+    glColor3fv(labelColour(labels.soft_bodies.at(i)).data());
+    const auto& nodes = frame.soft_nodes[i];
+    glBegin(GL_TRIANGLES);
+    for (const auto& f : scene.soft_bodies[i].faces) {
+      for (int k : f) glVertex3fv(nodes[static_cast<std::size_t>(k)].data());
+    }
+    glEnd();
+  }
+  glEnable(GL_LIGHTING);
+}
+
+std::vector<float> readDepth(const Camera& camera, int width, int height) {
+  std::vector<float> depth(static_cast<std::size_t>(width) * height);
+  glFinish();
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  // The window depth back to the distance along the axis (a perspective projection).
+  const double n = camera.nearPlane(), f = camera.farPlane();
+  for (float& d : depth) {
+    if (d >= 1.0f) {
+      d = std::numeric_limits<float>::infinity();
+      continue;
+    }
+    const double ndc = 2.0 * d - 1.0;
+    d = static_cast<float>(2.0 * n * f / (f + n - ndc * (f - n)));
+  }
+  const std::size_t row = static_cast<std::size_t>(width);
+  for (int y = 0; y < height / 2; ++y) {
+    std::swap_ranges(depth.begin() + y * row, depth.begin() + (y + 1) * row,
+                     depth.begin() + (height - 1 - y) * row);
+  }
+  return depth;
+}
+
+void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
+          int height, const ViewOptions& view) {
+  frameUp(camera, width, height, kBackground, true);
   for (std::size_t i = 0; i < scene.bodies.size() && i < frame.body_poses.size(); ++i) {
     const BodyGeometry& body = scene.bodies[i];
     glPushMatrix();

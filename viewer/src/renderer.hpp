@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "viewer/camera.hpp"
+#include "viewer/camera_sensor.hpp"
 #include "viewer/scene_geometry.hpp"
 #include "viewer/viewer.hpp"
 
@@ -15,6 +16,15 @@ namespace viewer::detail {
 
 void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
           int height, const ViewOptions& view);
+
+/// The scene with every surface in the flat colour of its segmentation id (id = r + 256 g +
+/// 65536 b; the background 0), no lighting.
+void drawLabels(const SceneGeometry& scene, const FrameState& frame, const Camera& camera,
+                int width, int height, const SceneLabels& labels);
+
+/// The current depth buffer as distances along the camera's axis (m), top row first; where
+/// nothing was drawn, +infinity.
+std::vector<float> readDepth(const Camera& camera, int width, int height);
 
 /// A line of text in the top left corner, over whatever is drawn (the window's status line).
 void overlay(const std::string& text, int width, int height);

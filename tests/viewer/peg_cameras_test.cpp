@@ -1,0 +1,65 @@
+// The peg scene's cameras as observations: images of the asked size, segmentation ids that find
+// every ring, post, arm and the board where they are, depth that agrees with the camera's
+// geometry, and the same world rendered twice giving the same images.
+
+#include "scenario/peg_cameras.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+
+#include "headless_peg_scene.hpp"
+#include "scenario/task_views.hpp"
+
+namespace {
+
+TEST(PegCameras, SegmentationFindsEveryRingPostAndArmAndDepthIsMetres) {
+  test_support::HeadlessPegScene scene;  // only its settled world is used
+  if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
+  scenario::PegCameras cameras(*scene.world, {"overview", "left-task"}, 256, 192);
+  const auto images = cameras.render(*scene.world, true, true, true);
+  ASSERT_EQ(images.size(), 2u);
+  const viewer::CameraImages& overview = images[0];
+  EXPECT_EQ(overview.rgb.size(), 256u * 192u * 3u);
+  EXPECT_EQ(overview.depth.size(), 256u * 192u);
+  ASSERT_EQ(overview.segmentation.size(), 256u * 192u);
+  std::set<std::uint32_t> seen(overview.segmentation.begin(), overview.segmentation.end());
+  for (std::uint32_t id = scenario::kFirstRing; id < scenario::kFirstRing + 6; ++id) {
+    EXPECT_TRUE(seen.count(id)) << "ring " << id - scenario::kFirstRing + 1 << " not seen";
+  }
+  EXPECT_TRUE(seen.count(scenario::kPlate));
+  EXPECT_TRUE(seen.count(scenario::kFirstStartPost));
+  EXPECT_TRUE(seen.count(scenario::kFirstTargetPost + 5));
+  EXPECT_TRUE(seen.count(scenario::kLeftArm) || seen.count(scenario::kLeftJaws));
+  for (std::uint32_t id : seen) EXPECT_LT(id, scenario::kPegSegments);
+  // Depth: finite exactly where something was drawn, within the camera's near and far planes.
+  const auto views = scenario::pegTransferViews(*scene.world);
+  const viewer::Camera camera = viewer::findView(views, "overview").camera;
+  for (std::size_t p = 0; p < overview.depth.size(); ++p) {
+    if (overview.segmentation[p] == scenario::kBackground) {
+      EXPECT_TRUE(std::isinf(overview.depth[p])) << p;
+    } else {
+      EXPECT_GE(overview.depth[p], camera.nearPlane() * 0.999);
+      EXPECT_LE(overview.depth[p], camera.farPlane() * 1.001);
+    }
+  }
+  // A ring's pixels lie about as far as the ring is along the camera's axis.
+  const Eigen::Vector3d eye = camera.eye();
+  const Eigen::Vector3d axis = (camera.target - eye).normalized();
+  const double ring_depth = (scene.world->softBody("peg1").centerOfMass() - eye).dot(axis);
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t p = 0; p < overview.depth.size(); ++p) {
+    if (overview.segmentation[p] == scenario::kFirstRing) sum += overview.depth[p], ++n;
+  }
+  ASSERT_GT(n, 0);
+  EXPECT_NEAR(sum / n, ring_depth, 0.012);
+  // The same world twice: the same images.
+  const auto again = cameras.render(*scene.world, true, true, true);
+  EXPECT_EQ(again[0].rgb, overview.rgb);
+  EXPECT_EQ(again[0].segmentation, overview.segmentation);
+  EXPECT_EQ(images[1].segmentation.size(), 256u * 192u);
+}
+
+}  // namespace
