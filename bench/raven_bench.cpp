@@ -54,7 +54,8 @@ int main(int argc, char** argv) {
       {"controller", bench::measureController}, {"replay", bench::measureReplay},
       {"ros", bench::measureRosEdge},           {"viewer", bench::measureViewer},
       {"video", bench::measureVideo},           {"memory", bench::measureMemory},
-      {"micro", bench::measureMicro},           {"python", bench::measurePython}};
+      {"micro", bench::measureMicro},           {"python", bench::measurePython},
+      {"cameras", bench::measureCameras}};
   std::vector<std::string> names;
   for (const auto& section : sections) names.push_back(section.first);
 

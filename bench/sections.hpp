@@ -37,5 +37,7 @@ void measureVideo(const BenchSettings& settings, Report& report);
 void measurePython(const BenchSettings& settings, Report& report);
 /// The Google Benchmark micro-benchmarks (IK, interpolation, a physics step).
 void measureMicro(const BenchSettings& settings, Report& report);
+/// Camera observations: frames per second of the peg scene's overview camera (camera_cost.cpp).
+void measureCameras(const BenchSettings& settings, Report& report);
 
 }  // namespace bench
