@@ -241,7 +241,8 @@ def evaluate(args):
                 break
         placed_total += info["placed"]
         all_six += info["placed"] == 6
-        print(f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s", flush=True)
+        why = f" (the world failed: {info['failure']})" if "failure" in info else ""
+        print(f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s{why}", flush=True)
     print(f"placed {placed_total}/{6 * len(args.seeds)} rings; {all_six}/{len(args.seeds)} "
           "episodes all six")
 
