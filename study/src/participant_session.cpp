@@ -169,169 +169,218 @@ nlohmann::json conditionJson(const Condition& c) {
           {"gain_m_per_s", c.translationGain()}};
 }
 
+namespace {
+
+/// One participant's session as it runs: its folder, its plan (from session.json, written when
+/// the session began) and who is at the pad.
+class SessionRun {
+ public:
+  SessionRun(const Protocol& protocol, const SessionSettings& s)
+      : protocol_(protocol), s_(s), home_(s.out / s.participant), trials_(home_ / "trials") {
+    fs::create_directories(trials_);
+    const nlohmann::json session = openPlan();
+    for (const auto& t : session.at("plan")) plan_.push_back(PlannedTrial::fromJson(t));
+    setAsideUnsealed(home_);
+  }
+
+  SessionProgress run() {
+    for (std::size_t i = 0; i < plan_.size(); ++i) {
+      if (!sealed(i) && (!rest(i) || !runTrial(i))) return progress(true);
+      if (!askQuestionnaires(i)) return progress(true);
+    }
+    return progress(false);
+  }
+
+ private:
+  bool person() const { return !s_.traits; }
+  bool sealed(std::size_t i) const {
+    return fs::exists(trials_ / plan_[i].folderName() / "trial.json");
+  }
+
+  /// The session's record: read back (refusing another protocol), or made now.
+  nlohmann::json openPlan() const {
+    const fs::path file = home_ / "session.json";
+    if (fs::exists(file)) {
+      nlohmann::json session = readJson(file);
+      if (session.at("protocol_text").get<std::string>() != protocol_.text) {
+        throw std::runtime_error(file.string() +
+                                 ": this participant's session began under another protocol; "
+                                 "use a new study folder");
+      }
+      return session;
+    }
+    const int position = registerParticipant(s_.out, s_.participant, s_.position);
+    nlohmann::json plan = nlohmann::json::array();
+    for (const PlannedTrial& t : planTrials(protocol_, position)) plan.push_back(t.json());
+    const nlohmann::json session{
+        {"study", protocol_.name},
+        {"participant", s_.participant},
+        {"position", position},
+        {"order", conditionSequence(protocol_, position)},
+        {"virtual", s_.traits ? s_.traits->json() : nlohmann::json(nullptr)},
+        {"protocol_file", protocol_.file.string()},
+        {"protocol_text", protocol_.text},
+        {"plan", plan}};
+    writeJsonAtomically(file, session);
+    return session;
+  }
+
+  /// A person rests before a new scheme (not on resuming into one). False: stopped.
+  bool rest(std::size_t i) const {
+    if (!person() || !s_.rests || !s_.out_text || i == 0 ||
+        plan_[i].condition == plan_[i - 1].condition || !sealed(i - 1)) {
+      return true;
+    }
+    *s_.out_text << fmt::format("\nRest for {:.0f} s.\n", protocol_.rest);
+    return countdown(s_, protocol_.rest, "rest");
+  }
+
+  /// Runs and seals trial `i`. False: stopped before its end (nothing sealed).
+  bool runTrial(std::size_t i) {
+    const PlannedTrial& planned = plan_[i];
+    const TaskSpec& task = protocol_.task(planned.task);
+    Condition condition = protocol_.condition(planned.condition);
+    std::vector<double> tuned;
+    if (planned.tuning) {
+      const TuningSpec& tuning = *protocol_.tuning;
+      tuned =
+          SettingsTuner(tuning.parameters, tuning.initial).propose(tuningHistory(trials_, plan_));
+      condition = tunedCondition(condition, tuning.parameters, tuned);
+    }
+    int trials_before = 0;
+    for (std::size_t j = 0; j < i; ++j) {
+      trials_before += plan_[j].condition == planned.condition && plan_[j].tuning == planned.tuning;
+    }
+    TrialSettings ts;
+    ts.task = task;
+    ts.condition = condition;
+    ts.task_seed = planned.task_seed;
+    ts.dir = trials_ / planned.folderName();
+    ts.wall_clock = person();
+    ts.pad = s_.pad;
+    ts.stop = s_.stop;
+    ts.video = s_.video;
+    const std::string heading =
+        fmt::format("{} trial {}/{}: {} under {}{}", s_.participant, i + 1, plan_.size(), task.name,
+                    planned.condition, planned.tuning ? " (tuning)" : "");
+    std::optional<VirtualParticipant> vp;
+    if (s_.traits) {
+      vp.emplace(*s_.traits, ConditionFeel::of(condition, trials_before),
+                 s_.seed ^ (0x9e3779b97f4a7c15ull * (planned.index + 1)));
+    }
+    const bool drill = s_.drill_after >= 0 && finished_here_ == s_.drill_after;
+    ts.before_turn = [&](double t, const std::array<ArmGoal, 2>& goals,
+                         const std::array<Eigen::Vector3d, 2>& tips) {
+      if (drill && t >= 1.0) std::raise(s_.drill_signal);
+      if (!vp) return;
+      press(*s_.virtual_pad, vp->act(t, goals, tips));
+      s_.pad->poll();
+    };
+    std::ostream* out = s_.out_text;
+    if (person() && out) {
+      ts.ready = [&] {
+        *out << fmt::format("\n{}\n{}\nPress A on the pad to start.\n", heading, task.instructions)
+             << std::flush;
+        return waitForA(s_) && countdown(s_, protocol_.countdown, "starting in");
+      };
+      ts.status = [&](const std::string& line) { *out << "\r" << line << "    " << std::flush; };
+    }
+    const TrialRun run = study::runTrial(ts);
+    if (!run.finished) {
+      if (out) *out << fmt::format("\n{}: stopped; run the same command to resume\n", heading);
+      return false;
+    }
+    seal(planned, condition, tuned, trials_before, run, ts.dir);
+    ++finished_here_;
+    if (out) {
+      *out << fmt::format("\n{}: {} in {:.1f} s\n", heading,
+                          run.completed ? "done" : "time limit reached", run.duration)
+           << std::flush;
+    }
+    return true;
+  }
+
+  /// trial.json: the settings used and the metrics from the trial's files, written whole.
+  void seal(const PlannedTrial& planned, const Condition& condition,
+            const std::vector<double>& tuned, int trials_before, const TrialRun& run,
+            const fs::path& dir) const {
+    const TrialMetrics metrics = measureTrial(dir);
+    nlohmann::json sealed{{"participant", s_.participant},
+                          {"planned", planned.json()},
+                          {"condition", conditionJson(condition)},
+                          {"task", planned.task},
+                          {"completed", run.completed},
+                          {"duration_s", run.duration},
+                          {"trials_before", trials_before}};
+    for (const auto& [name, v] : metrics) {
+      sealed["metrics"][name] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+    }
+    if (planned.tuning) {
+      sealed["tuning"] = {{"parameters", nlohmann::json::array()},
+                          {"settings", tuned},
+                          {"cost", costOf(*protocol_.tuning, metrics)},
+                          {"cost_is", protocol_.tuning->costText()}};
+      for (const TunedParameter& p : protocol_.tuning->parameters) {
+        sealed["tuning"]["parameters"].push_back(
+            {{"name", p.name}, {"low", p.low}, {"high", p.high}});
+      }
+    }
+    writeJsonAtomically(dir / "trial.json", sealed);
+  }
+
+  /// After a scheme's last trial, its questionnaires not yet answered. False: the input ended.
+  bool askQuestionnaires(std::size_t i) const {
+    const PlannedTrial& planned = plan_[i];
+    if (!lastOfBlock(plan_, i) || planned.tuning || !s_.questionnaires || !s_.in || !s_.out_text) {
+      return true;
+    }
+    for (const std::string& name : protocol_.questionnaires) {
+      const fs::path file = home_ / "questionnaires" / (planned.condition + "_" + name + ".json");
+      if (fs::exists(file)) continue;
+      const auto answers = ask(name, planned.condition, *s_.in, *s_.out_text);
+      if (!answers) {
+        *s_.out_text
+            << "\nno more answers; the questionnaire is asked again when the session resumes\n";
+        return false;
+      }
+      fs::create_directories(file.parent_path());
+      nlohmann::json j = answers->json();
+      j["condition"] = planned.condition;
+      j["participant"] = s_.participant;
+      writeJsonAtomically(file, j);
+    }
+    return true;
+  }
+
+  SessionProgress progress(bool stopped) const {
+    SessionProgress p;
+    p.total = static_cast<int>(plan_.size());
+    for (std::size_t i = 0; i < plan_.size(); ++i) p.done += sealed(i) ? 1 : 0;
+    p.stopped = stopped;
+    p.finished = !stopped;
+    return p;
+  }
+
+  const Protocol& protocol_;
+  const SessionSettings& s_;
+  fs::path home_, trials_;
+  std::vector<PlannedTrial> plan_;
+  int finished_here_ = 0;  ///< trials run and sealed by this run (the drill counts them)
+};
+
+}  // namespace
+
 SessionProgress runSession(const Protocol& protocol, const SessionSettings& s) {
   if (s.traits) {
     for (const TaskSpec& task : protocol.tasks) {
       if (!makeTask(task, 0)->virtualParticipantsCan()) {
         throw std::runtime_error(protocol.file.string() +
-                                 ": the virtual participants cannot do "
-                                 "task '" +
-                                 task.name +
-                                 "' (they reach targets); run it with "
-                                 "people");
+                                 ": the virtual participants cannot do task '" + task.name +
+                                 "' (they reach targets); run it with people");
       }
     }
   }
-  const fs::path home = s.out / s.participant;
-  const fs::path trials = home / "trials";
-  fs::create_directories(trials);
-  const fs::path session_file = home / "session.json";
-  nlohmann::json session;
-  if (fs::exists(session_file)) {
-    session = readJson(session_file);
-    if (session.at("protocol_text").get<std::string>() != protocol.text) {
-      throw std::runtime_error(session_file.string() +
-                               ": this participant's session began under "
-                               "another protocol; use a new study folder");
-    }
-  } else {
-    const int position = registerParticipant(s.out, s.participant, s.position);
-    nlohmann::json plan = nlohmann::json::array();
-    for (const PlannedTrial& t : planTrials(protocol, position)) plan.push_back(t.json());
-    session = {{"study", protocol.name},
-               {"participant", s.participant},
-               {"position", position},
-               {"order", conditionSequence(protocol, position)},
-               {"virtual", s.traits ? s.traits->json() : nlohmann::json(nullptr)},
-               {"protocol_file", protocol.file.string()},
-               {"protocol_text", protocol.text},
-               {"plan", plan}};
-    writeJsonAtomically(session_file, session);
-  }
-  std::vector<PlannedTrial> plan;
-  for (const auto& t : session.at("plan")) plan.push_back(PlannedTrial::fromJson(t));
-  setAsideUnsealed(home);
-
-  std::ostream* out = s.out_text;
-  const auto stopped = [&] {
-    SessionProgress p;
-    p.total = static_cast<int>(plan.size());
-    for (const PlannedTrial& t : plan) p.done += fs::exists(trials / t.folderName() / "trial.json");
-    p.stopped = true;
-    return p;
-  };
-  const bool person = !s.traits;
-  int finished_here = 0;
-  for (std::size_t i = 0; i < plan.size(); ++i) {
-    const PlannedTrial& planned = plan[i];
-    const fs::path dir = trials / planned.folderName();
-    if (!fs::exists(dir / "trial.json")) {
-      if (person && s.rests && i > 0 && planned.condition != plan[i - 1].condition &&
-          fs::exists(trials / plan[i - 1].folderName() / "trial.json") && out) {
-        *out << fmt::format("\nRest for {:.0f} s.\n", protocol.rest);
-        if (!countdown(s, protocol.rest, "rest")) return stopped();
-      }
-      const TaskSpec& task = protocol.task(planned.task);
-      Condition condition = protocol.condition(planned.condition);
-      std::vector<double> tuned;
-      if (planned.tuning) {
-        const TuningSpec& tuning = *protocol.tuning;
-        tuned =
-            SettingsTuner(tuning.parameters, tuning.initial).propose(tuningHistory(trials, plan));
-        condition = tunedCondition(condition, tuning.parameters, tuned);
-      }
-      int trials_before = 0;
-      for (std::size_t j = 0; j < i; ++j) {
-        trials_before += plan[j].condition == planned.condition && plan[j].tuning == planned.tuning;
-      }
-      TrialSettings ts;
-      ts.task = task;
-      ts.condition = condition;
-      ts.task_seed = planned.task_seed;
-      ts.dir = dir;
-      ts.wall_clock = person;
-      ts.pad = s.pad;
-      ts.stop = s.stop;
-      ts.video = s.video;
-      const std::string heading =
-          fmt::format("{} trial {}/{}: {} under {}{}", s.participant, i + 1, plan.size(), task.name,
-                      planned.condition, planned.tuning ? " (tuning)" : "");
-      std::optional<VirtualParticipant> vp;
-      if (s.traits) {
-        vp.emplace(*s.traits, ConditionFeel::of(condition, trials_before),
-                   s.seed ^ (0x9e3779b97f4a7c15ull * (planned.index + 1)));
-      }
-      const bool drill = s.drill_after >= 0 && finished_here == s.drill_after;
-      ts.before_turn = [&](double t, const std::array<ArmGoal, 2>& goals,
-                           const std::array<Eigen::Vector3d, 2>& tips) {
-        if (drill && t >= 1.0) std::raise(s.drill_signal);
-        if (!vp) return;
-        press(*s.virtual_pad, vp->act(t, goals, tips));
-        s.pad->poll();
-      };
-      if (person && out) {
-        ts.ready = [&] {
-          *out << fmt::format("\n{}\n{}\nPress A on the pad to start.\n", heading,
-                              task.instructions)
-               << std::flush;
-          return waitForA(s) && countdown(s, protocol.countdown, "starting in");
-        };
-        ts.status = [&](const std::string& line) { *out << "\r" << line << "    " << std::flush; };
-      }
-      const TrialRun run = runTrial(ts);
-      if (!run.finished) {
-        if (out) *out << fmt::format("\n{}: stopped; run the same command to resume\n", heading);
-        return stopped();
-      }
-      const TrialMetrics metrics = measureTrial(dir);
-      nlohmann::json sealed{{"participant", s.participant},
-                            {"planned", planned.json()},
-                            {"condition", conditionJson(condition)},
-                            {"task", task.name},
-                            {"completed", run.completed},
-                            {"duration_s", run.duration},
-                            {"trials_before", trials_before}};
-      for (const auto& [name, v] : metrics) {
-        sealed["metrics"][name] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-      }
-      if (planned.tuning) {
-        sealed["tuning"] = {{"parameters", nlohmann::json::array()},
-                            {"settings", tuned},
-                            {"cost", costOf(*protocol.tuning, metrics)},
-                            {"cost_is", protocol.tuning->costText()}};
-        for (const TunedParameter& p : protocol.tuning->parameters) {
-          sealed["tuning"]["parameters"].push_back(
-              {{"name", p.name}, {"low", p.low}, {"high", p.high}});
-        }
-      }
-      writeJsonAtomically(dir / "trial.json", sealed);
-      ++finished_here;
-      if (out) {
-        *out << fmt::format("\n{}: {} in {:.1f} s\n", heading,
-                            run.completed ? "done" : "time limit reached", run.duration)
-             << std::flush;
-      }
-    }
-    if (!lastOfBlock(plan, i) || planned.tuning || !s.questionnaires || !s.in || !out) continue;
-    for (const std::string& name : protocol.questionnaires) {
-      const fs::path file = home / "questionnaires" / (planned.condition + "_" + name + ".json");
-      if (fs::exists(file)) continue;
-      const auto answers = ask(name, planned.condition, *s.in, *out);
-      if (!answers) {
-        *out << "\nno more answers; the questionnaire is asked again when the session resumes\n";
-        return stopped();
-      }
-      fs::create_directories(file.parent_path());
-      nlohmann::json j = answers->json();
-      j["condition"] = planned.condition;
-      j["participant"] = s.participant;
-      writeJsonAtomically(file, j);
-    }
-  }
-  SessionProgress done;
-  done.done = done.total = static_cast<int>(plan.size());
-  done.finished = true;
-  return done;
+  return SessionRun(protocol, s).run();
 }
 
 }  // namespace study
