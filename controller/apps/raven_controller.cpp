@@ -51,6 +51,8 @@ struct Settings {
   double duration = 0.0;
   double rate = 500.0;
   int man_steps = 10;
+  double deadzone = 0.15, divisor = 2000.0, wrist_divisor = 10.0;
+  double velocity_scale = 1.0;
 };
 
 /// Owns whichever platforms the settings ask for.
@@ -118,6 +120,11 @@ std::optional<Mode> modeFromKey(char key) {
 }
 
 int run(const Settings& s) {
+  if (s.velocity_scale > 1.0 && s.platform != "twin") {
+    throw std::runtime_error(
+        "--velocity-scale above 1 raises the paper's joint speed caps: the "
+        "twin only, never the physical robot");
+  }
   if (s.lock_step && s.platform != "twin") {
     throw std::runtime_error(
         "--lock-step drives the twin alone; the physical robot runs in real time");
@@ -152,6 +159,10 @@ int run(const Settings& s) {
   controller::ControllerOptions options;
   options.rate = s.rate;
   options.caps.min_steps = s.man_steps;
+  options.caps.per_second *= s.velocity_scale;
+  options.mapping.deadzone = s.deadzone;
+  options.mapping.divisor = s.divisor;
+  options.mapping.wrist_divisor = s.wrist_divisor;
   options.scheme = controller::mappingSchemeNamed(s.mapping);
   options.mapping.deadzone_reads_y_twice = s.paper_deadzone;
   if (calibration) options.iteration_overhead = calibration->iteration_overhead;
@@ -289,6 +300,17 @@ int main(int argc, char** argv) {
                  "least steps per manual iteration; the pad is read between iterations, so this "
                  "bounds the input latency (10, the paper's, is needed to replay its recordings)")
       ->check(CLI::Range(1, 100));
+  app.add_option("--deadzone", s.deadzone, "the sticks' radial deadzone (the paper's: 0.15)")
+      ->check(CLI::Range(0.0, 0.9));
+  app.add_option("--divisor", s.divisor,
+                 "stick / divisor = metres per manual iteration (the paper's: 2000)")
+      ->check(CLI::Range(200.0, 20000.0));
+  app.add_option("--wrist-divisor", s.wrist_divisor,
+                 "M1: stick / wrist-divisor = rad per iteration (the paper's: 10)")
+      ->check(CLI::Range(2.0, 200.0));
+  app.add_option("--velocity-scale", s.velocity_scale,
+                 "C_V: the paper's joint speed caps times this (above 1: the twin only)")
+      ->check(CLI::Range(0.05, 2.0));
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, [](int) { interrupted = true; });
   std::signal(SIGTERM, [](int) { interrupted = true; });
