@@ -66,10 +66,11 @@ except ImportError:
             self.low = np.broadcast_to(np.asarray(low, self.dtype), self.shape).copy()
             self.high = np.broadcast_to(np.asarray(high, self.dtype), self.shape).copy()
 
-        def contains(self, x):
-            x = np.asarray(x)
-            return (x.shape == self.shape and x.dtype == self.dtype and
-                    bool(np.all(x >= self.low) and np.all(x <= self.high)))
+        def contains(self, x):  # as Gymnasium's: lists are taken as the space's dtype
+            if not isinstance(x, np.ndarray):
+                x = np.asarray(x, dtype=self.dtype)
+            return bool(np.can_cast(x.dtype, self.dtype) and x.shape == self.shape and
+                        np.all(x >= self.low) and np.all(x <= self.high))
 
         def sample(self, rng=None):
             rng = rng or np.random.default_rng()

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "recording/csv_text.hpp"
 
 namespace recording {
 
@@ -66,6 +69,22 @@ void CfWriter::write(double time, const std::array<std::optional<bridge::Grasper
   }
   file_.writeLine(line);
   ++rows_;
+}
+
+std::size_t CfRecording::column(const std::string& name) const {
+  const auto& names = CfWriter::columnNames();
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw RecordingError(path.string() + ": no cf column '" + name + "'");
+  return static_cast<std::size_t>(it - names.begin());
+}
+
+CfRecording readCf(const std::filesystem::path& path) {
+  const auto lines = readCsvLines(path);
+  if (splitCsv(lines[0]) != CfWriter::columnNames()) {
+    throw RecordingError(rowWhere(path, 1) + ": not a cf file's header (" +
+                         fmt::format("{}", fmt::join(CfWriter::columnNames(), ",")) + ")");
+  }
+  return {path, readNumberRows(path, lines, CfWriter::columnNames())};
 }
 
 }  // namespace recording

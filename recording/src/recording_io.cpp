@@ -1,57 +1,15 @@
 #include "recording/recording_io.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
+#include "recording/csv_text.hpp"
 #include "recording/recording_format.hpp"
 
 namespace recording {
 
 namespace {
-
-std::string where(const std::filesystem::path& path, std::size_t row) {
-  return path.string() + ": row " + std::to_string(row);
-}
-
-std::vector<std::string> splitCsv(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
-}
-
-/// A whole-field number; empty fields are NaN when `empty_is_nan`.
-std::optional<double> parseNumber(std::string text, bool empty_is_nan) {
-  while (!text.empty() && (text.back() == '\r' || text.back() == ' ')) text.pop_back();
-  while (!text.empty() && text.front() == ' ') text.erase(0, 1);
-  if (text.empty()) {
-    return empty_is_nan ? std::optional<double>(std::nan("")) : std::nullopt;
-  }
-  double value = 0.0;
-  const char* begin = text.data();
-  if (*begin == '+') ++begin;
-  const auto [end, error] = std::from_chars(begin, text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
-/// Reads the lines of a text file; the header is line 1. Throws if it cannot be opened.
-std::vector<std::string> readLines(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw RecordingError(path.string() + ": cannot open");
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(line);
-  }
-  if (lines.empty()) throw RecordingError(path.string() + ": empty file (no header)");
-  return lines;
-}
 
 std::string joinHeader(const std::vector<std::string>& names, bool index_column) {
   std::string header = index_column ? "," : "";
@@ -114,17 +72,17 @@ void CiWriter::write(const GamepadState& pad) {
 }
 
 std::vector<GamepadState> readCi(const std::filesystem::path& path) {
-  const auto lines = readLines(path);
+  const auto lines = readCsvLines(path);
   const auto header = splitCsv(lines[0]);
   const auto& expected = GamepadState::ciColumnNames();
   if (header.size() != expected.size()) {
-    throw RecordingError(where(path, 1) + ": the header has " + std::to_string(header.size()) +
+    throw RecordingError(rowWhere(path, 1) + ": the header has " + std::to_string(header.size()) +
                          " columns; a ci file has 14 (" + std::string(expected[0]) + ", ..., " +
                          std::string(expected.back()) + ")");
   }
   for (std::size_t c = 0; c < expected.size(); ++c) {
     if (header[c] != expected[c]) {
-      throw RecordingError(where(path, 1) + ": column " + std::to_string(c + 1) + " is '" +
+      throw RecordingError(rowWhere(path, 1) + ": column " + std::to_string(c + 1) + " is '" +
                            header[c] + "', expected '" + std::string(expected[c]) + "'");
     }
   }
@@ -133,16 +91,16 @@ std::vector<GamepadState> readCi(const std::filesystem::path& path) {
     if (lines[r].empty() && r + 1 == lines.size()) break;  // a final newline
     const auto fields = splitCsv(lines[r]);
     if (fields.size() != expected.size()) {
-      throw RecordingError(where(path, r + 1) + ": " + std::to_string(fields.size()) +
+      throw RecordingError(rowWhere(path, r + 1) + ": " + std::to_string(fields.size()) +
                            " columns, expected 14" +
                            (r + 1 == lines.size() ? " (a truncated last line?)" : ""));
     }
     std::array<double, GamepadState::kCiColumns> values{};
     for (std::size_t c = 0; c < fields.size(); ++c) {
-      const auto value = parseNumber(fields[c], false);
+      const auto value = parseCsvNumber(fields[c], false);
       if (!value || !std::isfinite(*value)) {
-        throw RecordingError(where(path, r + 1) + ", column '" + std::string(expected[c]) + "': '" +
-                             fields[c] + "' is not a finite number");
+        throw RecordingError(rowWhere(path, r + 1) + ", column '" + std::string(expected[c]) +
+                             "': '" + fields[c] + "' is not a finite number");
       }
       values[c] = *value;
     }
@@ -211,7 +169,7 @@ ArmSignals RsRecording::signals(std::size_t row, raven::Arm arm) const {
 }
 
 RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite) {
-  const auto lines = readLines(path);
+  const auto lines = readCsvLines(path);
   RsRecording rec;
   rec.path = path;
   rec.names = splitCsv(lines[0]);
@@ -222,48 +180,31 @@ RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite
     if (rec.names[c].empty()) continue;  // the index column has none
     if (std::find(rec.names.begin(), rec.names.begin() + static_cast<long>(c), rec.names[c]) !=
         rec.names.begin() + static_cast<long>(c)) {
-      throw RecordingError(where(path, 1) + ": column " + std::to_string(c + 1) + " is a second '" +
-                           rec.names[c] + "' column");
+      throw RecordingError(rowWhere(path, 1) + ": column " + std::to_string(c + 1) +
+                           " is a second '" + rec.names[c] + "' column");
     }
   }
   std::vector<std::string> required{"time"};
   for (int j = 0; j < 16; ++j) required.push_back("jpos" + std::to_string(j));
   for (const auto& name : required) {
     if (std::find(rec.names.begin(), rec.names.end(), name) == rec.names.end()) {
-      throw RecordingError(where(path, 1) + ": no '" + name + "' column; this is not an rs file");
+      throw RecordingError(rowWhere(path, 1) + ": no '" + name +
+                           "' column; this is not an rs file");
     }
   }
   const auto has = [&](const std::string& n) {
     return std::find(rec.names.begin(), rec.names.end(), n) != rec.names.end();
   };
   rec.variant.legacy = !has("mpos_d0") && has("grasp_d15");
-  for (std::size_t r = 1; r < lines.size(); ++r) {
-    if (lines[r].empty() && r + 1 == lines.size()) break;
-    const auto fields = splitCsv(lines[r]);
-    if (fields.size() != rec.names.size()) {
-      throw RecordingError(where(path, r + 1) + ": " + std::to_string(fields.size()) +
-                           " columns, the header has " + std::to_string(rec.names.size()) +
-                           (r + 1 == lines.size() ? " (a truncated last line?)" : ""));
-    }
-    std::vector<double> values;
-    values.reserve(fields.size());
-    for (std::size_t c = 0; c < fields.size(); ++c) {
-      const auto value = parseNumber(fields[c], true);
-      if (!value) {
-        throw RecordingError(where(path, r + 1) + ", column '" + rec.names[c] + "': '" + fields[c] +
-                             "' is not a number");
-      }
-      values.push_back(*value);
-    }
-    rec.rows.push_back(std::move(values));
-  }
+  rec.rows = readNumberRows(path, lines, rec.names);
   if (rec.rows.empty()) throw RecordingError(path.string() + ": no rows after the header");
   for (const auto& name : required) {
     if (non_finite == NonFiniteJoints::Keep && name != "time") continue;
     const std::size_t c = rec.column(name);
     for (std::size_t r = 0; r < rec.rows.size(); ++r) {
       if (!std::isfinite(rec.rows[r][c])) {
-        throw RecordingError(where(path, r + 2) + ", column '" + name + "': not a finite number");
+        throw RecordingError(rowWhere(path, r + 2) + ", column '" + name +
+                             "': not a finite number");
       }
     }
   }
@@ -275,7 +216,7 @@ RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite
     for (std::size_t r = 1; r < rec.rows.size(); ++r) {
       const double gap = rec.rows[r][time] - rec.rows[r - 1][time];
       if (!(gap > 0.0) || gap > kLongestGap) {
-        throw RecordingError(where(path, r + 2) +
+        throw RecordingError(rowWhere(path, r + 2) +
                              ", column 'time': " + std::to_string(rec.rows[r][time]) + " s is " +
                              (gap > 0.0 ? "more than a minute after" : "not after") +
                              " the row before (" + std::to_string(rec.rows[r - 1][time]) +

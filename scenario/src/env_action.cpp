@@ -18,41 +18,32 @@ int actionSize(EnvAction kind) {
   return kind == EnvAction::ToolDeltas ? 8 : 14;
 }
 
-Eigen::VectorXd actionLow(EnvAction kind, const raven::JointLimits& limits) {
-  Eigen::VectorXd low(actionSize(kind));
-  switch (kind) {
-    case EnvAction::Joints:
-      low << limits.low, limits.low;
-      break;
-    case EnvAction::JointDeltas:  // element by element: GCC 12 misreads the 7-vector packets
-      for (Eigen::Index i = 0; i < low.size(); ++i) low(i) = limits.low(i % 7) - limits.high(i % 7);
-      break;
-    case EnvAction::ToolDeltas:
-      low << Eigen::Vector3d::Constant(-kMaxToolDelta), 0.0,
-          Eigen::Vector3d::Constant(-kMaxToolDelta), 0.0;
-      break;
-  }
-  return low;
-}
-
-Eigen::VectorXd actionHigh(EnvAction kind, const raven::JointLimits& limits) {
-  Eigen::VectorXd high(actionSize(kind));
-  switch (kind) {
-    case EnvAction::Joints:
-      high << limits.high, limits.high;
-      break;
-    case EnvAction::JointDeltas:
-      for (Eigen::Index i = 0; i < high.size(); ++i)
-        high(i) = limits.high(i % 7) - limits.low(i % 7);
-      break;
-    case EnvAction::ToolDeltas: {
-      const double opening = limits.high(raven::kJaw1) + limits.high(raven::kJaw2);
-      high << Eigen::Vector3d::Constant(kMaxToolDelta), opening,
-          Eigen::Vector3d::Constant(kMaxToolDelta), opening;
-      break;
+ActionBounds actionBounds(EnvAction kind, const raven::JointLimits& limits) {
+  ActionBounds b{Eigen::VectorXd(actionSize(kind)), Eigen::VectorXd(actionSize(kind))};
+  // Element by element: GCC 12 misreads Eigen's packets over the 7-vectors here.
+  for (Eigen::Index i = 0; i < b.low.size(); ++i) {
+    const Eigen::Index joint = i % raven::kJointCount;
+    switch (kind) {
+      case EnvAction::Joints:
+        b.low(i) = limits.low(joint);
+        b.high(i) = limits.high(joint);
+        break;
+      case EnvAction::JointDeltas:  // at most a joint's range
+        b.high(i) = limits.high(joint) - limits.low(joint);
+        b.low(i) = -b.high(i);
+        break;
+      case EnvAction::ToolDeltas:  // per arm dx, dy, dz, then the jaws' opening
+        if (i % 4 < 3) {
+          b.low(i) = -kMaxToolDelta;
+          b.high(i) = kMaxToolDelta;
+        } else {
+          b.low(i) = 0.0;
+          b.high(i) = limits.high(raven::kJaw1) + limits.high(raven::kJaw2);
+        }
+        break;
     }
   }
-  return high;
+  return b;
 }
 
 controller::ArmPair targetsOf(EnvAction kind, const Eigen::VectorXd& action,
@@ -69,9 +60,8 @@ controller::ArmPair targetsOf(EnvAction kind, const Eigen::VectorXd& action,
                                   std::to_string(action(i)) + ": actions must be finite");
     }
   }
-  const auto& limits = kinematics[0].limits();
-  const Eigen::VectorXd a =
-      action.cwiseMax(actionLow(kind, limits)).cwiseMin(actionHigh(kind, limits));
+  const ActionBounds bounds = actionBounds(kind, kinematics[0].limits());
+  const Eigen::VectorXd a = action.cwiseMax(bounds.low).cwiseMin(bounds.high);
   controller::ArmPair out = current;
   for (std::size_t arm = 0; arm < 2; ++arm) {
     const auto i = static_cast<Eigen::Index>(arm);

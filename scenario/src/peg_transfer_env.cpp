@@ -98,11 +98,11 @@ Eigen::VectorXd PegTransferEnv::expertAction() {
 }
 
 Eigen::VectorXd PegTransferEnv::actionLow() const {
-  return scenario::actionLow(options_.action, profile_.limits);
+  return actionBounds(options_.action, profile_.limits).low;
 }
 
 Eigen::VectorXd PegTransferEnv::actionHigh() const {
-  return scenario::actionHigh(options_.action, profile_.limits);
+  return actionBounds(options_.action, profile_.limits).high;
 }
 
 double PegTransferEnv::time() const {

@@ -3,11 +3,18 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <fstream>
+
+#include "recording/csv_text.hpp"
 
 namespace study {
 
-EventLog::EventLog(const std::filesystem::path& path) : file_(path, "time,event,arm,value") {}
+namespace {
+
+constexpr const char* kHeader = "time,event,arm,value";
+
+}  // namespace
+
+EventLog::EventLog(const std::filesystem::path& path) : file_(path, kHeader) {}
 
 void EventLog::add(double time, std::string_view name, int arm, double value) {
   file_.writeLine(fmt::format("{:.4f},{},{},{:.6g}", time, name, arm, value));
@@ -15,40 +22,27 @@ void EventLog::add(double time, std::string_view name, int arm, double value) {
 }
 
 std::vector<TrialEvent> readEvents(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw recording::RecordingError(path.string() + ": cannot open");
-  std::string line;
-  std::getline(in, line);
-  if (line != "time,event,arm,value") {
-    throw recording::RecordingError(path.string() + ":1: not an events file (header '" + line +
-                                    "')");
+  const std::vector<std::string> lines = recording::readCsvLines(path);
+  if (lines[0] != kHeader) {
+    throw recording::RecordingError(recording::rowWhere(path, 1) + ": not an events file (" +
+                                    kHeader + ")");
   }
   std::vector<TrialEvent> out;
-  for (int row = 2; std::getline(in, line); ++row) {
-    if (line.empty()) continue;
+  for (std::size_t r = 1; r < lines.size(); ++r) {
+    if (lines[r].empty()) continue;
     const auto bad = [&](const char* what) {
-      return recording::RecordingError(fmt::format("{}:{}: {}", path.string(), row, what));
+      return recording::RecordingError(recording::rowWhere(path, r + 1) + ": " + what);
     };
-    std::vector<std::string> fields;
-    for (std::size_t start = 0;;) {
-      const std::size_t comma = line.find(',', start);
-      fields.push_back(line.substr(start, comma - start));
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
+    const std::vector<std::string> fields = recording::splitCsv(lines[r]);
     if (fields.size() != 4) throw bad("expected 4 fields (time,event,arm,value)");
-    TrialEvent e;
-    e.name = fields[1];
-    try {
-      e.time = std::stod(fields[0]);
-      e.arm = std::stoi(fields[2]);
-      e.value = std::stod(fields[3]);
-    } catch (const std::exception&) {
-      throw bad("time, arm and value must be numbers");
-    }
-    if (e.name.empty()) throw bad("an event needs a name");
-    if (!std::isfinite(e.time)) throw bad("the time must be finite");
-    out.push_back(e);
+    const auto time = recording::parseCsvNumber(fields[0], false);
+    const auto arm = recording::parseCsvNumber(fields[2], false);
+    const auto value = recording::parseCsvNumber(fields[3], false);
+    if (!time || !std::isfinite(*time)) throw bad("the time must be a finite number");
+    if (!arm || (*arm != -1.0 && *arm != 0.0 && *arm != 1.0)) throw bad("the arm is -1, 0 or 1");
+    if (!value) throw bad("the value must be a number");
+    if (fields[1].empty()) throw bad("an event needs a name");
+    out.push_back({*time, fields[1], static_cast<int>(*arm), *value});
   }
   return out;
 }

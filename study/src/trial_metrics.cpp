@@ -4,12 +4,12 @@
 #include <array>
 #include <cmath>
 #include <complex>
-#include <fstream>
 #include <limits>
 #include <unsupported/Eigen/FFT>
 
 #include "raven/arm_kinematics.hpp"
 #include "raven/platform_profile.hpp"
+#include "recording/cf_recording.hpp"
 #include "recording/recording_io.hpp"
 #include "study/trial_events.hpp"
 
@@ -139,49 +139,16 @@ double meanSparc(const std::array<TipPath, 2>& paths, const std::vector<TrialEve
 
 /// Peak and mean (over the rows where that grasper touches something) jaw normal force.
 std::pair<double, double> graspForces(const fs::path& cf_file) {
-  std::ifstream in(cf_file);
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = line.find(',', start);
-    header.push_back(line.substr(start, comma - start));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  const auto column = [&](const std::string& name) {
-    const auto it = std::find(header.begin(), header.end(), name);
-    if (it == header.end()) {
-      throw recording::RecordingError(cf_file.string() + ":1: no column '" + name + "'");
-    }
-    return static_cast<std::size_t>(it - header.begin());
-  };
+  const recording::CfRecording cf = recording::readCf(cf_file);
   std::array<std::array<std::size_t, 3>, 2> cols;
   for (std::size_t a = 0; a < 2; ++a) {
     const std::string arm = a == 0 ? "left_" : "right_";
-    cols[a] = {column(arm + "jaw1_normal"), column(arm + "jaw2_normal"), column(arm + "contacts")};
+    cols[a] = {cf.column(arm + "jaw1_normal"), cf.column(arm + "jaw2_normal"),
+               cf.column(arm + "contacts")};
   }
   double peak = 0.0, sum = 0.0;
   int rows = 0;
-  for (int row = 2; std::getline(in, line); ++row) {
-    std::vector<double> v;
-    std::size_t start = 0;
-    for (;;) {
-      const std::size_t comma = line.find(',', start);
-      try {
-        v.push_back(std::stod(line.substr(start, comma - start)));
-      } catch (const std::exception&) {
-        throw recording::RecordingError(cf_file.string() + ":" + std::to_string(row) +
-                                        ": not a number");
-      }
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
-    if (v.size() != header.size()) {
-      throw recording::RecordingError(cf_file.string() + ":" + std::to_string(row) + ": " +
-                                      std::to_string(v.size()) + " fields, the header has " +
-                                      std::to_string(header.size()));
-    }
+  for (const std::vector<double>& v : cf.rows) {
     for (const auto& c : cols) {
       const double force = v[c[0]] + v[c[1]];
       if (!(v[c[2]] > 0.0) || !std::isfinite(force)) continue;

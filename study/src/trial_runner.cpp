@@ -100,8 +100,7 @@ TrialRun runTrial(const TrialSettings& s) {
   session.select(controller::Mode::Manual);
   session.startRecording();
   double next_status = 0.0;
-  for (;;) {
-    const TaskView now = view();
+  for (TaskView now = view();;) {
     run.completed = task->done();
     if (run.completed || now.time >= s.task.time_limit) break;
     if (s.stop && *s.stop) {
@@ -110,16 +109,16 @@ TrialRun runTrial(const TrialSettings& s) {
     }
     if (s.before_turn) s.before_turn(now.time, task->goals(), now.tips);
     session.turn();
-    const TaskView after = view();
-    task->observe(after, events);
-    if (s.status && after.time >= next_status) {
-      s.status(task->status(after));
-      next_status = after.time + 0.1;
+    now = view();
+    task->observe(now, events);
+    if (s.status && now.time >= next_status) {
+      s.status(task->status(now));
+      next_status = now.time + 0.1;
     }
   }
   session.stopRecording();
   if (video) spdlog::info("video: {}", video->finish().describe());
-  run.duration = view().time;
+  run.duration = twin.now() - start;
   run.finished = true;
   events.add(run.duration, "trial_end", -1, run.completed ? 1.0 : 0.0);
   return run;

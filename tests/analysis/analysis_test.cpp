@@ -354,6 +354,22 @@ TEST(Analysis, GraspForceRecordingsBesideRsFilesAreListedForTheirFigureNotReadAs
   const std::string cf = test_support::readFile(recording::cfPathFor(twin));
   EXPECT_EQ(cf.substr(0, cf.find('\n')).find("time,left_fx,"), 0u);
   EXPECT_NE(cf.find(",0.15,0,0,0,3,nan,"), std::string::npos) << "jaw 1 normal 0.15 N, 3 contacts";
+  // Read back: the same values, the arm without forces NaN.
+  const recording::CfRecording back = recording::readCf(recording::cfPathFor(twin));
+  ASSERT_EQ(back.rows.size(), 50u);
+  EXPECT_DOUBLE_EQ(back.rows[7][back.column("time")], 0.14);
+  EXPECT_DOUBLE_EQ(back.rows[7][back.column("left_jaw1_normal")], 0.15);
+  EXPECT_DOUBLE_EQ(back.rows[7][back.column("left_contacts")], 3.0);
+  EXPECT_TRUE(std::isnan(back.rows[7][back.column("right_fx")]));
+  EXPECT_THROW(back.column("left_torque"), recording::RecordingError);
+  try {
+    recording::readCf(twin);  // an rs file
+    FAIL() << "an rs file read as a cf file";
+  } catch (const recording::RecordingError& e) {
+    EXPECT_NE(std::string(e.what()).find("run_twin_rs.csv: row 1: not a cf file's header"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 /// raven_analyze on the paper's recordings and a twin replay of the same inputs.

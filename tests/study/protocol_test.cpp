@@ -66,29 +66,20 @@ conditions: {A: {scheme: m3}}
   EXPECT_NE(scheme.find("conditions/A/scheme"), std::string::npos) << scheme;
   EXPECT_NE(scheme.find("unknown scheme 'm3'"), std::string::npos) << scheme;
   EXPECT_NE(errorOf(kMinimal + "order: random\n").find("latin-square or fixed"), std::string::npos);
-  const std::string bound = errorOf(kMinimal + R"(tuning:
-  condition: A
-  task: reach
-  parameters: {velocity_scale: [0.5, 3.0]}
-  cost: {completion_time_s: 1}
-)");
+  // A tuning block on the minimal protocol, one of its values wrong at a time.
+  const auto tuning = [](const std::string& condition, const std::string& parameters,
+                         const std::string& cost) {
+    return errorOf(kMinimal + "tuning:\n  condition: " + condition + "\n  task: reach\n" +
+                   "  parameters: {" + parameters + "}\n  cost: {" + cost + "}\n");
+  };
+  EXPECT_EQ(tuning("A", "divisor: [800, 4000]", "completion_time_s: 1"), "");
+  const std::string bound = tuning("A", "velocity_scale: [0.5, 3.0]", "completion_time_s: 1");
   EXPECT_NE(bound.find("tuning/parameters/velocity_scale"), std::string::npos) << bound;
-  EXPECT_NE(errorOf(kMinimal + R"(tuning:
-  condition: A
-  task: reach
-  parameters: {divisor: [800, 4000]}
-  cost: {speed: 1}
-)")
-                .find("unknown metric 'speed'"),
+  EXPECT_NE(tuning("A", "divisor: [800, 4000]", "speed: 1").find("unknown metric 'speed'"),
             std::string::npos);
-  EXPECT_NE(errorOf(kMinimal + R"(tuning:
-  condition: C
-  task: reach
-  parameters: {divisor: [800, 4000]}
-  cost: {completion_time_s: 1}
-)")
-                .find("no condition named 'C'"),
-            std::string::npos);
+  EXPECT_NE(
+      tuning("C", "divisor: [800, 4000]", "completion_time_s: 1").find("no condition named 'C'"),
+      std::string::npos);
   EXPECT_NE(errorOf("study: [unclosed\n").find("p.yaml"), std::string::npos);
 }
 

@@ -29,9 +29,11 @@ int actionSize(EnvAction kind);
 /// Largest tool displacement per step (m).
 inline constexpr double kMaxToolDelta = 0.005;
 
-/// The action's bounds (an action is clipped to them).
-Eigen::VectorXd actionLow(EnvAction kind, const raven::JointLimits& limits);
-Eigen::VectorXd actionHigh(EnvAction kind, const raven::JointLimits& limits);
+/// An action's bounds (an action is clipped to them).
+struct ActionBounds {
+  Eigen::VectorXd low, high;
+};
+ActionBounds actionBounds(EnvAction kind, const raven::JointLimits& limits);
 
 /// The joint targets `action` asks for from the current targets `current`, after clipping it to
 /// its bounds. Throws std::invalid_argument for a wrong size or a value that is not finite,
