@@ -39,5 +39,7 @@ void measurePython(const BenchSettings& settings, Report& report);
 void measureMicro(const BenchSettings& settings, Report& report);
 /// Camera observations: frames per second of the peg scene's overview camera (camera_cost.cpp).
 void measureCameras(const BenchSettings& settings, Report& report);
+/// A learner's snapshots: save and restore of a peg-transfer episode against a reset.
+void measureSnapshots(const BenchSettings& settings, Report& report);
 
 }  // namespace bench

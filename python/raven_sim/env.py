@@ -170,6 +170,18 @@ class PegTransferEnv(_Env):
         return (self._observe(result.observation), result.reward, result.terminated,
                 result.truncated, info)
 
+    def save_state(self):
+        """The episode's state now: the world (bodies, rings' nodes, contacts and their warm
+        start), the twin, the controller, the expert's progress and the clock. The same actions
+        after restore_state(state) give the same observations, bit for bit."""
+        return self.core.save_state()
+
+    def restore_state(self, state):
+        """Goes back to a state this episode saved (reset() starts another episode, whose world
+        refuses it); returns the observation of then."""
+        self.core.restore_state(state)
+        return self._observe(self.core.observation)
+
     def expert_action(self):
         """The main job's scripted operator's next step as an action of this environment's kind
         (joint targets for "pad"; call once per step)."""

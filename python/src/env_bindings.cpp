@@ -14,6 +14,13 @@ namespace py = pybind11;
 
 namespace raven_python {
 
+namespace {
+/// An episode's saved state, as Python holds it.
+struct SavedEpisode {
+  std::shared_ptr<const scenario::PegTransferEnv::State> state;
+};
+}  // namespace
+
 void bindPegTransferEnv(py::module_& m) {
   using E = scenario::PegTransferEnv;
   py::class_<scenario::PegTransferStep>(m, "PegTransferStep")
@@ -25,6 +32,8 @@ void bindPegTransferEnv(py::module_& m) {
       .def_readonly("refused", &scenario::PegTransferStep::refused)
       .def_readonly("failure", &scenario::PegTransferStep::failure);
 
+  py::class_<SavedEpisode>(m, "PegTransferState",
+                           "a peg-transfer episode's state (PegTransferCore.save_state)");
   py::class_<E>(m, "PegTransferCore", "the peg transfer, one manual-loop iteration per step")
       .def(py::init([](bool randomize, double time_limit,
                        std::optional<std::filesystem::path> launch_file, const std::string& action,
@@ -72,9 +81,24 @@ void bindPegTransferEnv(py::module_& m) {
           py::arg("ci_row"), "one pad reading as a ci row (14 values)")
       .def("expert_action", &E::expertAction,
            "the main job's scripted operator's next step, as an action of the environment's kind")
+      .def(
+          "save_state",
+          [](E& e) {
+            py::gil_scoped_release release;
+            return SavedEpisode{e.saveState()};
+          },
+          "the episode's state (the world, the twin, the controller, the expert)")
+      .def(
+          "restore_state",
+          [](E& e, const SavedEpisode& saved) {
+            py::gil_scoped_release release;
+            e.restoreState(*saved.state);
+          },
+          py::arg("state"), "back to a state this episode saved")
       .def_property_readonly("action_low", &E::actionLow)
       .def_property_readonly("action_high", &E::actionHigh)
       .def_property_readonly("time", &E::time)
+      .def_property_readonly("observation", &E::observation)
       .def_property_readonly("placed", &E::placed);
 
   py::class_<scenario::PegCameras>(m, "PegCameras",

@@ -17,6 +17,11 @@ namespace raven_python {
 
 namespace {
 
+/// A World's saved state, as Python holds it.
+struct SavedWorld {
+  std::shared_ptr<const ambf_like::WorldState> state;
+};
+
 /// A loaded scene and the world built from it (the world keeps pointers into both).
 struct LoadedWorld {
   ambf_like::LoadedScene scene;
@@ -120,6 +125,7 @@ void bindWorld(py::module_& m) {
           py::arg("body"), py::keep_alive<1, 2>())
       .def("release", &ambf_like::ConstraintActuator::release);
 
+  py::class_<SavedWorld>(m, "WorldState", "a World's saved state (World.save_state)");
   using W = WorldHandle;
   auto ref = py::return_value_policy::reference_internal;
   py::class_<W>(m, "World", "An ambf_like World: loaded from AMBF's files, or a twin's.")
@@ -150,6 +156,20 @@ void bindWorld(py::module_& m) {
             w.world->step(count);
           },
           py::arg("count") = 1, "runs `count` fixed steps (the GIL released)")
+      .def(
+          "save_state",
+          [](W& w) {
+            py::gil_scoped_release release;
+            return SavedWorld{w.world->saveState()};
+          },
+          "the world's state between steps (World::saveState): restore_state puts it back")
+      .def(
+          "restore_state",
+          [](W& w, const SavedWorld& saved) {
+            py::gil_scoped_release release;
+            w.world->restoreState(*saved.state);
+          },
+          py::arg("state"), "back to a state this world saved; the steps after repeat bit for bit")
       .def_property_readonly("time", [](const W& w) { return w.world->time(); })
       .def_property_readonly("step_size", [](const W& w) { return w.world->stepSize(); })
       .def_readonly("warnings", &W::warnings, "what the loader tolerated (file:line: key: why)")

@@ -38,6 +38,7 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   SceneVariation variation = options_.randomize ? SceneVariation::draw(seed) : SceneVariation{};
   variation.seed = seed;
   expert_.reset();
+  ++episode_;
   session_.reset();  // the old twin goes before the new one is built
   session_ = std::make_unique<ScriptedSession>(pegTransferTwin(run, variation));
   session_->makeReady(options_.time_limit);
@@ -151,6 +152,34 @@ Eigen::VectorXd PegTransferEnv::observe() const {
     o.segment<3>(54 + 3 * static_cast<int>(i)) = rings_[i]->centerOfMass();
   }
   return o;
+}
+
+/// Everything PegTransferEnv::saveState captures.
+struct PegTransferEnv::State {
+  std::uint64_t episode;
+  std::shared_ptr<const twin::TwinPlatform::State> twin;
+  controller::DualPlatformController::State controller;
+  std::array<ArmRoutine, 2> expert;
+  int placed;
+  Eigen::VectorXd last_observation;
+};
+
+std::shared_ptr<const PegTransferEnv::State> PegTransferEnv::saveState() {
+  ScriptedSession& s = session();
+  if (!failure_.empty()) throw std::logic_error("the episode ended when its world failed");
+  return std::make_shared<const State>(State{episode_, s.twin().saveState(), s.controller().state(),
+                                             *expert_, placed_, last_observation_});
+}
+
+void PegTransferEnv::restoreState(const State& state) {
+  if (state.episode != episode_) {
+    throw std::invalid_argument("a state of another episode (reset() builds a new world)");
+  }
+  session_->twin().restoreState(*state.twin);
+  session_->controller().restore(state.controller);
+  expert_ = state.expert;
+  placed_ = state.placed;
+  last_observation_ = state.last_observation;
 }
 
 }  // namespace scenario

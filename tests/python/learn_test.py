@@ -18,6 +18,9 @@ import numpy as np
 import raven_sim
 from raven_sim import learn
 
+MODELS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "raven_description",
+                      "models")
+
 
 def camera_env(**kwargs):
     try:
@@ -57,6 +60,37 @@ class CameraObservations(unittest.TestCase):
         bad = raven_sim.PegTransferEnv(obs="rgb", camera="ceiling")
         with self.assertRaisesRegex(ValueError, "overview"):
             bad.reset(seed=0)
+
+
+class Snapshots(unittest.TestCase):
+    def test_the_same_actions_after_a_restore_give_the_same_observations(self):
+        env = raven_sim.PegTransferEnv(action_type="joint_deltas", randomize=True)
+        env.reset(seed=2)
+        for _ in range(120):
+            env.step(env.expert_action())
+        state = env.save_state()
+        saved = env.core.observation.copy()
+        actions, first = [], []
+        for _ in range(80):
+            actions.append(env.expert_action())
+            first.append(env.step(actions[-1])[0])
+        self.assertTrue(np.array_equal(env.restore_state(state), saved))
+        second = [env.step(a)[0] for a in actions]
+        self.assertTrue(all(np.array_equal(a, b) for a, b in zip(first, second)))
+        env.reset(seed=2)
+        with self.assertRaisesRegex(ValueError, "another episode"):
+            env.restore_state(state)
+
+    def test_a_world_restores_from_python(self):
+        world = raven_sim.World.from_launch(os.path.join(MODELS, "peg_transfer", "launch.yaml"))
+        world.step(50)
+        state = world.save_state()
+        ring = world.soft_body(world.soft_bodies[0])
+        world.step(100)
+        after = ring.nodes
+        world.restore_state(state)
+        world.step(100)
+        self.assertTrue(np.array_equal(ring.nodes, after))
 
 
 class Demonstrations(unittest.TestCase):

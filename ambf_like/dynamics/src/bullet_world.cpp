@@ -88,6 +88,10 @@ const std::vector<NodeContactImpulse>& BulletWorld::coulombImpulses() const {
   return impl_->soft_solver.lastImpulses();
 }
 
+CoulombContactSolver& BulletWorld::softBodySolver() {
+  return impl_->soft_solver;
+}
+
 ElasticSolveStats BulletWorld::elasticStats(const btSoftBody& body) const {
   return impl_->soft_solver.elasticStats(body);
 }

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <stdexcept>
 
 #include "ambf_like/bullet_conversions.hpp"
 #include "ambf_like/dynamics/soft_body_upkeep.hpp"
@@ -44,6 +46,51 @@ void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps,
 ElasticSolveStats CoulombContactSolver::elasticStats(const btSoftBody& body) const {
   const auto it = coulomb_.find(&body);
   return it == coulomb_.end() ? ElasticSolveStats{} : it->second.stats;
+}
+
+struct CoulombContactSolver::State {
+  /// A registered body's Registered, its elasticity by value.
+  struct Body {
+    std::optional<ImplicitElasticBody> elasticity;
+    std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_impulse;
+    std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_pin_impulse;
+    std::vector<btVector3> start_velocity;
+    ElasticSolveStats stats;
+  };
+  std::unordered_map<const btSoftBody*, Body> bodies;
+  std::vector<NodeContactImpulse> impulses;
+};
+
+std::shared_ptr<const CoulombContactSolver::State> CoulombContactSolver::state() const {
+  auto out = std::make_shared<State>();
+  for (const auto& [body, r] : coulomb_) {
+    State::Body& saved = out->bodies[body];
+    if (r.elasticity) saved.elasticity.emplace(*r.elasticity);
+    saved.last_impulse = r.last_impulse;
+    saved.last_pin_impulse = r.last_pin_impulse;
+    saved.start_velocity = r.start_velocity;
+    saved.stats = r.stats;
+  }
+  out->impulses = impulses_;
+  return out;
+}
+
+void CoulombContactSolver::restore(const State& state) {
+  if (state.bodies.size() != coulomb_.size()) {
+    throw std::logic_error("a soft-body solver state of other bodies");
+  }
+  for (auto& [body, r] : coulomb_) {
+    const auto it = state.bodies.find(body);
+    if (it == state.bodies.end() || it->second.elasticity.has_value() != bool(r.elasticity)) {
+      throw std::logic_error("a soft-body solver state of other bodies");
+    }
+    if (r.elasticity) *r.elasticity = *it->second.elasticity;
+    r.last_impulse = it->second.last_impulse;
+    r.last_pin_impulse = it->second.last_pin_impulse;
+    r.start_velocity = it->second.start_velocity;
+    r.stats = it->second.stats;
+  }
+  impulses_ = state.impulses;
 }
 
 void CoulombContactSolver::forget(const btSoftBody& body) {

@@ -96,6 +96,20 @@ void ConstraintActuator::release() {
   }
 }
 
+ConstraintActuator::Hold ConstraintActuator::hold() const {
+  Hold out{held_, held_soft_, anchored_};
+  if (constraint_) {
+    out.pivot_in_parent = toEigen(constraint_->getPivotInA());
+    out.pivot_in_body = toEigen(constraint_->getPivotInB());
+  }
+  return out;
+}
+
+bool ConstraintActuator::Hold::sameAs(const Hold& other) const {
+  return rigid == other.rigid && soft == other.soft && nodes == other.nodes &&
+         pivot_in_parent == other.pivot_in_parent && pivot_in_body == other.pivot_in_body;
+}
+
 std::string ConstraintActuator::heldBody() const {
   if (held_soft_) return held_soft_->qualifiedName();
   return held_ ? held_->qualifiedName() : std::string();

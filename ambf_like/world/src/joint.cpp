@@ -166,4 +166,12 @@ void Joint::applyControl(double dt) {
   dynamics_->actuate(actuation, dt);
 }
 
+void Joint::restore(const State& state) {
+  pid_ = state.pid;
+  drive_ = state.drive;
+  target_ = state.target;
+  position_ = state.position;
+  last_raw_ = state.last_raw;
+}
+
 }  // namespace ambf_like

@@ -40,7 +40,6 @@ class SoftBodySleeper {
   /// After a step of `h` seconds: follows the awake bodies' windows and puts rested ones to sleep.
   void afterStep(const std::vector<std::unique_ptr<SoftBody>>& soft, double h);
 
- private:
   /// A body's resting window: node positions when it began, and how long it has lasted.
   struct Rest {
     std::vector<btVector3> start;
@@ -48,6 +47,11 @@ class SoftBodySleeper {
     int rigid_contacts = 0, soft_contacts = 0;  ///< when it fell asleep
     bool resting(const SoftBodySleep& settings) const { return rested >= settings.time; }
   };
+  /// Every body's window (World::saveState).
+  const std::vector<Rest>& state() const { return rest_; }
+  void restore(const std::vector<Rest>& state) { rest_ = state; }
+
+ private:
   bool comesWithinWakeDistance(btCollisionObject& mover, const Box& bounds) const;
   bool approached(const SoftBody& sleeper, const std::vector<std::unique_ptr<SoftBody>>& soft,
                   const std::vector<std::unique_ptr<RigidBody>>& rigid) const;

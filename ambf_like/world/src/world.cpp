@@ -6,6 +6,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <atomic>
 #include <deque>
 #include <map>
 #include <set>
@@ -21,6 +22,7 @@
 #include "constraint_factory.hpp"
 #include "soft_body_factory.hpp"
 #include "soft_body_sleep.hpp"
+#include "world_impl.hpp"
 
 namespace ambf_like {
 
@@ -57,110 +59,49 @@ std::size_t requireByName(const Items& items, std::string_view name, const char*
 
 }  // namespace
 
-namespace detail {
-/// A joint together with its namespace-qualified name, for lookups.
-struct NamedJoint {
-  std::unique_ptr<Joint> joint;
-  std::string qualified;
-  const std::string& name() const { return joint->name(); }
-  const std::string& qualifiedName() const { return qualified; }
-};
-}  // namespace detail
+World::Impl::Impl(const SceneSpec& scene, const WorldOptions& opts)
+    : settings(scene.world),
+      options(opts),
+      plans(planEach(scene.models)),
+      articulated(std::any_of(plans.begin(), plans.end(),
+                              [](const auto& plan) { return !plan.trees.empty(); })),
+      bullet(articulated),
+      world(bullet.dynamics()) {
+  static std::atomic<std::uint64_t> worlds{0};
+  id = ++worlds;
+  btGImpactCollisionAlgorithm::registerAlgorithm(&bullet.dispatcher());
+  world.getPairCache()->setOverlapFilterCallback(&filter);
+  world.setGravity(toBt(settings.gravity));
+  world.getSolverInfo().m_numIterations =
+      options.solver_iterations.value_or(settings.solver_iterations.value_or(10));
+  auto& info = bullet.softBodyInfo();
+  info.m_gravity = toBt(settings.gravity);
+  info.air_density = 1.2;
+  info.m_sparsesdf.Initialize(kSdfHashBuckets);
+  info.m_sparsesdf.setDefaultVoxelsz(
+      options.sdf_voxel_size.value_or(settings.sdf_voxel_size.value_or(0.01)));
+  info.m_sparsesdf.Reset();
+}
 
-struct World::Impl {
-  WorldSpec settings;
-  WorldOptions options;
-  /// Per model, its joint trees to be simulated in reduced coordinates (none unless asked).
-  std::vector<detail::ArticulationPlan> plans;
-  bool articulated;  ///< some model is simulated in reduced coordinates
-  detail::BulletWorld bullet;
-  btDiscreteDynamicsWorld& world;
-  detail::CollisionFilter filter;
-  detail::ShapeStore shapes;
-  btEmptyShape no_geometry;  ///< for bodies without collision geometry
-  std::deque<detail::CollisionTag> tags;
-  std::vector<std::unique_ptr<RigidBody>> bodies;
-  /// What soft bodies meet instead of a static body's planes (see buildBodyShape).
-  std::vector<std::unique_ptr<btCollisionObject>> soft_stand_ins;
-  std::vector<std::unique_ptr<SoftBody>> soft_bodies;
-  std::vector<std::unique_ptr<detail::NamedJoint>> joints;
-  std::vector<std::unique_ptr<detail::Articulation>> articulations;
-  std::vector<std::unique_ptr<ProximitySensor>> sensors;
-  std::vector<std::unique_ptr<ConstraintActuator>> actuators;
-  std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep
-  std::optional<StepGuard> guard;                  ///< set once every model is built
-  std::size_t collision_vertices = 0;
-  std::size_t collision_primitives = 0;
-  std::vector<std::string> warnings;
-  double time = 0.0;
-  std::uint64_t steps = 0;
-
-  Impl(const SceneSpec& scene, const WorldOptions& opts)
-      : settings(scene.world),
-        options(opts),
-        plans(planEach(scene.models)),
-        articulated(std::any_of(plans.begin(), plans.end(),
-                                [](const auto& plan) { return !plan.trees.empty(); })),
-        bullet(articulated),
-        world(bullet.dynamics()) {
-    btGImpactCollisionAlgorithm::registerAlgorithm(&bullet.dispatcher());
-    world.getPairCache()->setOverlapFilterCallback(&filter);
-    world.setGravity(toBt(settings.gravity));
-    world.getSolverInfo().m_numIterations =
-        options.solver_iterations.value_or(settings.solver_iterations.value_or(10));
-    auto& info = bullet.softBodyInfo();
-    info.m_gravity = toBt(settings.gravity);
-    info.air_density = 1.2;
-    info.m_sparsesdf.Initialize(kSdfHashBuckets);
-    info.m_sparsesdf.setDefaultVoxelsz(
-        options.sdf_voxel_size.value_or(settings.sdf_voxel_size.value_or(0.01)));
-    info.m_sparsesdf.Reset();
+World::Impl::~Impl() {
+  // Removing a collision object searches every overlapping pair for it: with the pairs gone
+  // first, taking a 20,000-body chain apart is linear instead of some 40 s.
+  struct EveryPair : btOverlapCallback {
+    bool processOverlap(btBroadphasePair&) override { return true; }
+  } every_pair;
+  world.getBroadphase()->getOverlappingPairCache()->processAllOverlappingPairs(
+      &every_pair, world.getDispatcher());
+  while (world.getNumConstraints() > 0) {
+    world.removeConstraint(world.getConstraint(world.getNumConstraints() - 1));
   }
-
-  ~Impl() {
-    // Removing a collision object searches every overlapping pair for it: with the pairs gone
-    // first, taking a 20,000-body chain apart is linear instead of some 40 s.
-    struct EveryPair : btOverlapCallback {
-      bool processOverlap(btBroadphasePair&) override { return true; }
-    } every_pair;
-    world.getBroadphase()->getOverlappingPairCache()->processAllOverlappingPairs(
-        &every_pair, world.getDispatcher());
-    while (world.getNumConstraints() > 0) {
-      world.removeConstraint(world.getConstraint(world.getNumConstraints() - 1));
-    }
-    articulations.clear();
-    for (auto& s : soft_bodies) bullet.removeSoftBody(s->bullet());
-    for (auto& o : soft_stand_ins) world.removeCollisionObject(o.get());
-    for (auto& b : bodies) {
-      // An articulation's link bodies are mirrors that never entered the world.
-      if (b->bullet().getBroadphaseHandle()) world.removeRigidBody(&b->bullet());
-    }
+  articulations.clear();
+  for (auto& s : soft_bodies) bullet.removeSoftBody(s->bullet());
+  for (auto& o : soft_stand_ins) world.removeCollisionObject(o.get());
+  for (auto& b : bodies) {
+    // An articulation's link bodies are mirrors that never entered the world.
+    if (b->bullet().getBroadphaseHandle()) world.removeRigidBody(&b->bullet());
   }
-
-  std::vector<detail::ArticulationPlan> planEach(const std::vector<ModelSpec>& models) const {
-    std::vector<detail::ArticulationPlan> out(models.size());
-    if (options.articulation.value_or(settings.articulation) == Articulation::Reduced) {
-      std::transform(models.begin(), models.end(), out.begin(), detail::planArticulations);
-    }
-    return out;
-  }
-  void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
-  /// Refuses a soft body whose material needs more substeps than kMaxSoftSubsteps at this
-  /// world's step: one step would take as long as thousands.
-  /// The last step's contacts (Coulomb forces) of the body with this filter tag; null: all.
-  std::vector<Contact> contactsWith(const void* body_tag) const;
-  std::vector<SoftContactForce> softContactForcesOn(const void* body_tag) const;
-  RigidBody& addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
-                     MeshLibrary& meshes, Transform& com_in_body);
-  /// The model's joints in its order: those of `trees` as articulations, the others as
-  /// constraints.
-  void addJoints(const ModelSpec& model, const std::vector<detail::JointTree>& trees,
-                 const std::map<std::string, detail::PlacedBody>& by_name);
-  std::unique_ptr<detail::JointDynamics> constraintJoint(
-      const JointSpec& spec, const std::map<std::string, detail::PlacedBody>& by_name);
-  void addJoint(const ModelSpec& model, const JointSpec& spec,
-                std::unique_ptr<detail::JointDynamics> dynamics);
-};
+}
 
 RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, int model_index,
                                 MeshLibrary& meshes, Transform& com_in_body) {

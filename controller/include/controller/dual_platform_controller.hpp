@@ -93,6 +93,22 @@ class DualPlatformController {
   const std::vector<PlatformSlot>& platforms() const { return platforms_; }
   double period() const { return 1.0 / options_.rate; }
 
+  /// What its next iterations depend on: the targets, the mapping's, the mode's clock (the
+  /// learning environment's snapshots).
+  struct State {
+    ArmPair commanded;
+    GamepadMapping mapping;
+    long dance_count;
+    double mode_start;
+  };
+  State state() const { return {commanded_, mapping_, dance_count_, mode_start_}; }
+  void restore(const State& state) {
+    commanded_ = state.commanded;
+    mapping_ = state.mapping;
+    dance_count_ = state.dance_count;
+    mode_start_ = state.mode_start;
+  }
+
  private:
   /// C_V: moves every platform from the current targets to `next` in capped steps, at most
   /// `most` of them (the targets are then where the interpolation got to).

@@ -86,12 +86,24 @@ class PegTransferEnv {
   /// kind (call once per step: it keeps its own progress); the targets held once it is done.
   Eigen::VectorXd expertAction();
 
+  /// The episode's state between steps: the twin's (TwinPlatform::saveState), the controller's,
+  /// the expert's progress and the episode's count. The same actions after a restore give the
+  /// same observations, bit for bit. Throws std::logic_error before reset() or after the world
+  /// failed.
+  struct State;
+  std::shared_ptr<const State> saveState();
+  /// Puts the episode back to `state`, saved by this environment in this episode (else
+  /// std::invalid_argument: reset() builds a new world).
+  void restoreState(const State& state);
+
   int actionSize() const { return scenario::actionSize(options_.action); }
   /// An action's bounds.
   Eigen::VectorXd actionLow() const;
   Eigen::VectorXd actionHigh() const;
   double time() const;
   int placed() const { return placed_; }
+  /// The last step's (or reset's, or restored) observation.
+  const Eigen::VectorXd& observation() const { return last_observation_; }
   twin::TwinPlatform& twin();
 
  private:
@@ -111,6 +123,7 @@ class PegTransferEnv {
   std::optional<std::array<ArmRoutine, 2>> expert_;
   std::array<const ambf_like::SoftBody*, 6> rings_{};
   int placed_ = 0;
+  std::uint64_t episode_ = 0;  ///< resets so far (a saved state names its episode)
   Eigen::VectorXd last_observation_;
   std::string failure_;  ///< why the episode's world failed, or empty
 };

@@ -1,6 +1,7 @@
 #pragma once
 // How a twin's joints answer the robot's setpoints each 1 ms cycle, and what its sensors read.
 
+#include <any>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -44,6 +45,10 @@ class Actuation {
   virtual void place(raven::Arm arm, const ArmStart& start) = 0;
   /// Why the robot must stop (its amplifiers' soft e-stop), or empty.
   virtual std::string fault() const { return {}; }
+  /// What its next cycles depend on beyond the World (TwinPlatform::saveState), restored only
+  /// into an actuation of the same kind.
+  virtual std::any state() const = 0;
+  virtual void restore(const std::any& state) = 0;
 };
 
 }  // namespace twin

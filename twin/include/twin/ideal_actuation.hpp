@@ -18,6 +18,9 @@ class IdealActuation final : public Actuation {
   ActuatorReadings read(raven::Arm arm) const override;
   /// The joints go where the recorded motors put them.
   void place(raven::Arm arm, const ArmStart& start) override;
+  /// Nothing beyond the World's joints.
+  std::any state() const override { return {}; }
+  void restore(const std::any& /*state*/) override {}
 
  private:
   twin::TwinArms& arms_;

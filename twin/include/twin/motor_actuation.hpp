@@ -28,6 +28,11 @@ class MotorActuation final : public Actuation {
   std::string fault() const override;
 
   void place(Arm arm, const ArmStart& start) override;
+  /// Both arms' drives: motors, controllers, encoders.
+  std::any state() const override { return drives_; }
+  void restore(const std::any& state) override {
+    drives_ = std::any_cast<const std::array<ArmDrive, 2>&>(state);
+  }
 
  private:
   static std::size_t index(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }

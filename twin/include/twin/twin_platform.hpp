@@ -71,6 +71,14 @@ class TwinPlatform final : public RavenPlatform {
   const ambf_like::World& world() const { return world_; }
   const RavenCore& core() const { return core_; }
 
+  /// The twin's state between cycles: its World (World::saveState says what that holds and
+  /// the caches it rebuilds), the actuation's motors and controllers, the command layer and the
+  /// clock. Throws std::logic_error on the wall clock (its pacing is not state).
+  struct State;
+  std::shared_ptr<const State> saveState();
+  /// Puts the twin back to `state`, which only this twin saved (else std::invalid_argument).
+  void restoreState(const State& state);
+
  private:
   void runCycle();
   static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }

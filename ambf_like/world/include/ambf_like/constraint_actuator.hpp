@@ -46,6 +46,17 @@ class ConstraintActuator {
   /// The actuator's location in the world frame, from the parent's pose now.
   Vec3 pointInWorld() const;
 
+  /// What it holds, and where (World::saveState): a world's state is restored only onto the
+  /// same holds.
+  struct Hold {
+    const RigidBody* rigid = nullptr;
+    const SoftBody* soft = nullptr;
+    std::vector<int> nodes;
+    Vec3 pivot_in_parent = Vec3::Zero(), pivot_in_body = Vec3::Zero();
+    bool sameAs(const Hold& other) const;
+  };
+  Hold hold() const;
+
  private:
   ActuatorSpec spec_;
   std::string qualified_name_;

@@ -53,6 +53,15 @@ class Joint {
   void applyControl(double dt);
   void updateCoordinate();
 
+  /// What the joint's next steps depend on beyond its bodies (World::saveState).
+  struct State {
+    PidController pid;
+    JointDrive drive = JointDrive::Free;
+    double target = 0.0, position = 0.0, last_raw = 0.0;
+  };
+  State state() const { return {pid_, drive_, target_, position_, last_raw_}; }
+  void restore(const State& state);
+
  private:
   void requireCommandable(const char* what, double value) const;
   void setDrive(JointDrive drive, double target);

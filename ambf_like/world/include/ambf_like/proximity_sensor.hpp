@@ -49,6 +49,17 @@ class ProximitySensor {
   bool active() const { return active_; }
   void setActive(bool active);
 
+  /// Its readings and activity (World::saveState).
+  struct State {
+    std::vector<RayReading> readings;
+    bool active = true;
+  };
+  State state() const { return {readings_, active_}; }
+  void restore(const State& state) {
+    readings_ = state.readings;
+    active_ = state.active;
+  }
+
  private:
   SensorSpec spec_;
   std::string qualified_name_;

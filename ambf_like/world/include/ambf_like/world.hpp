@@ -60,6 +60,10 @@ struct SoftContactForce {
   Vec3 friction_force = Vec3::Zero();  ///< on the node, tangential (N)
 };
 
+/// A World's state between two steps (World::saveState); opaque, restored only into the World
+/// that saved it.
+class WorldState;
+
 /// Mutable simulation state built once from an immutable SceneSpec (MuJoCo's model/data split).
 /// Bodies and joints are indexed in load order; names may be plain (if unique) or qualified
 /// with their model namespace.
@@ -76,6 +80,19 @@ class World {
   /// finite, has left the world's bounds or moves faster than the scene allows (StepGuard).
   void step();
   void step(std::uint64_t count);
+
+  /// Everything the next steps depend on: the rigid bodies' poses and velocities, the joints'
+  /// commands and controllers, the soft bodies' nodes, faces, anchors and contacts, the contact
+  /// manifolds with their impulses (the solver's warm start), the soft-body solvers' warm starts,
+  /// sleep, the sensors' readings and the clock. Saving also rebuilds the collision caches
+  /// (broadphase trees and pairs, the soft bodies' trees) in a canonical order, as restoring
+  /// does, so the steps after a save and after any restore of it are the same, bit for bit.
+  /// Throws std::logic_error for a world with articulations (reduced coordinates), which it
+  /// does not capture yet.
+  std::shared_ptr<const WorldState> saveState();
+  /// Puts the world back to `state`. Throws std::invalid_argument for a state of another world,
+  /// std::logic_error when a constraint actuator holds otherwise than it did then.
+  void restoreState(const WorldState& state);
 
   double time() const;
   std::uint64_t stepCount() const;

@@ -19,6 +19,7 @@ struct btSoftBodyWorldInfo;
 namespace ambf_like::detail {
 
 struct NodeContactImpulse;
+class CoulombContactSolver;
 
 /// Bullet's soft-rigid world with its solver, or, when articulations are to be stepped too,
 /// its soft-multibody world. The soft-rigid one is kept whenever it suffices: the two differ in
@@ -41,6 +42,8 @@ class BulletWorld {
   void removeSoftBody(btSoftBody& body);
   /// The impulses of the last step's Coulomb contacts.
   const std::vector<NodeContactImpulse>& coulombImpulses() const;
+  /// The soft bodies' solver (its state goes into World::saveState).
+  CoulombContactSolver& softBodySolver();
   /// What the implicit steps of `body` (with a material) took so far.
   ElasticSolveStats elasticStats(const btSoftBody& body) const;
   /// The world articulations go into; only when built with articulations.

@@ -80,6 +80,13 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   /// Its implicit steps so far; zeros for a body without a material.
   ElasticSolveStats elasticStats(const btSoftBody& body) const;
 
+  /// What the next steps depend on: per registered body its warm starts and its elastic
+  /// solver's state, and the last step's impulses (World::saveState).
+  struct State;
+  std::shared_ptr<const State> state() const;
+  /// Restores a state of this solver with the same bodies registered.
+  void restore(const State& state);
+
  private:
   /// A registered body: its substeps, its elasticity if it has a material (with its contacts'
   /// last impulses, by node and surface), and its nodes' velocities before Bullet's prediction.
