@@ -7,8 +7,9 @@ every action is of one scale (the operator's others are already within a millime
 Labels are computed from the current targets, so in a state a learner reached the expert says
 how to go on from there (what DART's noisy demonstrations and DAgger's relabelling need).
 
-A policy sees `Features`: the state, per arm each ring's centre relative to its tool and the
-nearest one's within NEAR (the millimetres a grasp is decided on, at their own scale), the
+A policy sees `Features`: the state, per arm each ring's centre relative to its commanded tool
+point (in the world frame, the rings' frame: raven_sim.tool_points) and the nearest one's within
+NEAR (the millimetres a grasp is decided on, at their own scale), the
 targets' change in the last step (what the arm just did), and per arm how many steps its
 targets have stood still (up to HOLD_MEMORY): the operator waits, and a policy that only saw the
 present could not count.
@@ -18,6 +19,8 @@ import time
 
 import numpy as np
 
+from ._raven_sim import tool_points
+
 ACTION = "joint_deltas"
 # At most this per step and joint: 0.1 rad for the rotary joints, 2 mm of insertion.
 STEP_CAP = np.array([0.1, 0.1, 0.002, 0.1, 0.1, 0.1, 0.1] * 2)
@@ -25,7 +28,6 @@ HOLD_MEMORY = 20
 STILL = 1e-7  # a change of the targets below this is standing still (rad or m)
 NEAR = 0.02  # m: the nearest ring's offset from a tool, clipped
 TARGETS = slice(14, 28)
-TOOLS = (slice(28, 31), slice(35, 38))  # each arm's tool position
 RINGS = slice(54, 72)
 
 
@@ -75,7 +77,7 @@ class Features:
             self.held[arm] = min(self.held[arm] + 1, HOLD_MEMORY) if still else 0
         self.previous = targets.copy()
         rings = state[RINGS].reshape(6, 3)
-        relative = [rings - state[tool] for tool in TOOLS]
+        relative = [rings - tool for tool in tool_points(targets)]
         nearest = [np.clip(r[np.argmin(np.linalg.norm(r, axis=1))], -NEAR, NEAR)
                    for r in relative]
         return np.hstack([state, *(r.ravel() for r in relative), *nearest, moved,
@@ -146,7 +148,7 @@ def fit(states, actions, hidden, epochs, batch=256, lr=1e-3, seed=0, log=print, 
                  "action_mean": y.mean(0), "action_std": y.std(0) + 1e-6}
         network = make_network(x.shape[1], y.shape[1], hidden)
     else:
-        stats, network = start.stats, start.network
+        stats, network, hidden = start.stats, start.network, start.hidden
         network.train()
     xt = torch.as_tensor((x - stats["input_mean"]) / stats["input_std"], dtype=torch.float32)
     yt = torch.as_tensor((y - stats["action_mean"]) / stats["action_std"], dtype=torch.float32)

@@ -104,8 +104,9 @@ def train(args):
     import torch
     torch.set_num_threads(args.threads)
     states, actions = demos.load_all(args.demos)
+    start = Policy.load(args.init) if args.init else None
     policy, samples, seconds = fit(states, actions, hidden_of(args), args.epochs, args.batch,
-                                   args.lr, args.seed)
+                                   args.lr, args.seed, start=start)
     policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds)
     print(f"trained on {len(states)} demonstrations, {samples} steps, in {seconds:.0f} s: "
           f"{args.out}")
@@ -195,6 +196,7 @@ def main(argv=None):
     p.add_argument("--lr", type=float, default=1e-3)
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--threads", type=int, default=2, help="torch's CPU threads")
+    p.add_argument("--init", help="a policy to go on training (its network and scaling)")
     p.set_defaults(run=train)
     p = sub.add_parser("dagger", help="a DAgger round: the policy drives, the expert labels")
     p.add_argument("--policy", required=True, help="the policy that drives")

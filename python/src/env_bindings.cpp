@@ -22,6 +22,9 @@ struct SavedEpisode {
 }  // namespace
 
 void bindPegTransferEnv(py::module_& m) {
+  m.def("tool_points", &scenario::PegTransferEnv::toolPoints, py::arg("joints"),
+        "both arms' tool points (2 x 3, m) in the peg scene's world frame, the rings' frame, for "
+        "14 joint values (left arm first); the state's tool poses are the robot's own report");
   using E = scenario::PegTransferEnv;
   py::class_<scenario::PegTransferStep>(m, "PegTransferStep")
       .def_readonly("observation", &scenario::PegTransferStep::observation)

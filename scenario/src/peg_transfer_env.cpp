@@ -106,6 +106,21 @@ Eigen::VectorXd PegTransferEnv::actionHigh() const {
   return actionBounds(options_.action, profile_.limits).high;
 }
 
+Eigen::Matrix<double, 2, 3, Eigen::RowMajor> PegTransferEnv::toolPoints(
+    const Eigen::Matrix<double, 14, 1>& joints) {
+  static const raven::PlatformProfile profile = raven::builtinProfile("physical");
+  static const std::array<raven::ArmKinematics, 2> arms{
+      raven::ArmKinematics::of(profile, raven::Arm::Left),
+      raven::ArmKinematics::of(profile, raven::Arm::Right)};
+  Eigen::Matrix<double, 2, 3, Eigen::RowMajor> out;
+  for (raven::Arm arm : raven::kArms) {
+    const int a = raven::index(arm);
+    const raven::ArmJoints q = joints.segment<raven::kJointCount>(raven::kJointCount * a);
+    out.row(a) = arms[static_cast<std::size_t>(a)].toolPose(q).translation().transpose();
+  }
+  return out;
+}
+
 double PegTransferEnv::time() const {
   return session_ ? session_->twin().now() : 0.0;
 }

@@ -16,7 +16,7 @@ import unittest
 import numpy as np
 
 import raven_sim
-from raven_sim import learn
+from raven_sim import imitation, learn
 
 MODELS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "raven_description",
                       "models")
@@ -112,6 +112,18 @@ class Demonstrations(unittest.TestCase):
                 self.assertEqual(sum(demo["rewards"]), 6)  # the expert placed all six
             with contextlib.redirect_stdout(io.StringIO()):
                 learn.main(["train", "--demos", demos, "--out", policy, "--epochs", "2"])
+            # A DAgger round: the policy drives, the expert labels; then training goes on.
+            collected = os.path.join(d, "dagger.hdf5")
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["dagger", "--policy", policy, "--episodes", "1", "--seeds", "9",
+                            "--max-steps", "20", "--collect", collected])
+                learn.main(["train", "--demos", demos, collected, "--init", policy, "--out",
+                            policy, "--epochs", "1"])
+            with h5py.File(collected, "r") as f:
+                self.assertEqual(f["data/demo_0/actions"].shape, (20, 14))
+                self.assertEqual(f["data/demo_0"].attrs["seed"], 9)
+                labels = np.asarray(f["data/demo_0/actions"])
+                self.assertTrue(np.all(np.abs(labels) <= imitation.STEP_CAP + 1e-12))
             run = subprocess.run(
                 [sys.executable, "-m", "raven_sim.learn", "evaluate", "--policy", policy,
                  "--seeds", "7-8", "--time-limit", "2"], capture_output=True, text=True,

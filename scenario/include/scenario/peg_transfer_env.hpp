@@ -102,6 +102,11 @@ class PegTransferEnv {
   Eigen::VectorXd actionHigh() const;
   double time() const;
   int placed() const { return placed_; }
+  /// Both arms' tool points (rows, m) in the scene's world frame, the rings' frame, for 14 joint
+  /// values (left arm first), as the expert's kinematics place them; the observation's tool
+  /// poses are the robot's own report, in its frames.
+  static Eigen::Matrix<double, 2, 3, Eigen::RowMajor> toolPoints(
+      const Eigen::Matrix<double, 14, 1>& joints);
   /// The last step's (or reset's, or restored) observation.
   const Eigen::VectorXd& observation() const { return last_observation_; }
   twin::TwinPlatform& twin();
