@@ -46,14 +46,12 @@ class SteppedExpert:
 
     def act(self, state):
         current = state[TARGETS]
-        remaining = np.abs(self.goal - current).max() if self.goal is not None else 0.0
-        if self.goal is None or remaining >= self.remaining or np.all(
-                np.abs(self.goal - current) < STILL):
+        if self.goal is None or np.abs(self.goal - current).max() >= self.remaining:
             self.goal = current + self.env.expert_action()
-            remaining = np.abs(self.goal - current).max()
-        step = np.clip(self.goal - current, -STEP_CAP, STEP_CAP)
-        # Reached with this step: the next call asks the operator again.
-        self.remaining = 0.0 if np.all(np.abs(step) >= np.abs(self.goal - current)) else remaining
+        left = self.goal - current
+        step = np.clip(left, -STEP_CAP, STEP_CAP)
+        # Not clipped: this step reaches the goal, and the next call asks the operator again.
+        self.remaining = 0.0 if np.array_equal(step, left) else np.abs(left).max()
         return step
 
 

@@ -70,21 +70,33 @@ def enough_seeds(args):
                  f"got {len(args.seeds)}")
 
 
+def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None):
+    """Episodes on `seeds`, `drive(state, label)` acting and the expert labelling, into `data`;
+    prints each and returns the rings placed. `policy` (if any) starts each episode afresh."""
+    placed = 0
+    for seed in seeds:
+        expert.reset()
+        if policy is not None:
+            policy.reset()
+        observations, labels, rewards, info = demos.run_episode(env, seed, drive, expert.act,
+                                                                max_steps)
+        demos.write_demo(data, seed, observations, labels, rewards, source)
+        placed += info["placed"]
+        print(f"seed {seed}: {len(labels)} steps, placed {info['placed']}/6", flush=True)
+    return placed
+
+
 def record(args):
     enough_seeds(args)
     rng = np.random.default_rng(args.noise_seed)
     env = PegTransferEnv(**demos.ENV_KWARGS)
-    expert = SteppedExpert(env)
     source = f"expert, DART noise {args.noise}"
     f, data = demos.open_demos(args.out, demos.ENV_KWARGS, source)
-    placed = 0
-    for seed in args.seeds[:args.episodes]:
-        expert.reset()
-        noisy = lambda _, label: label + rng.normal(0.0, 1.0, 14) * NOISE_SCALE * args.noise
-        observations, labels, rewards, info = demos.run_episode(env, seed, noisy, expert.act)
-        demos.write_demo(data, seed, observations, labels, rewards, source)
-        placed += info["placed"]
-        print(f"seed {seed}: {len(labels)} steps, placed {info['placed']}/6", flush=True)
+
+    def noisy(_, label):
+        return label + rng.normal(0.0, 1.0, label.shape) * NOISE_SCALE * args.noise
+
+    placed = collect(env, SteppedExpert(env), args.seeds[:args.episodes], noisy, data, source)
     total = int(data.attrs["total"])
     f.close()
     print(f"{args.episodes} demonstrations, {total} steps, placed {placed}/{6 * args.episodes}: "
@@ -96,16 +108,12 @@ def convert(args):
     print(f"{args.ci}: {steps} steps, placed {placed}/6: {args.out}")
 
 
-def hidden_of(args):
-    return [args.width] * args.layers
-
-
 def train(args):
     import torch
     torch.set_num_threads(args.threads)
     states, actions = demos.load_all(args.demos)
     start = Policy.load(args.init) if args.init else None
-    policy, samples, seconds = fit(states, actions, hidden_of(args), args.epochs, args.batch,
+    policy, samples, seconds = fit(states, actions, [args.width] * args.layers, args.epochs, args.batch,
                                    args.lr, args.seed, start=start)
     policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds)
     print(f"trained on {len(states)} demonstrations, {samples} steps, in {seconds:.0f} s: "
@@ -123,24 +131,15 @@ def dagger(args):
     single_threaded()
     rng = np.random.default_rng(args.noise_seed)
     env = PegTransferEnv(**demos.ENV_KWARGS)
-    expert = SteppedExpert(env)
     policy = Policy.load(args.policy)
+
+    def drive(state, label):
+        action = policy.act(state)  # every step: the policy keeps its memory
+        return label if rng.random() < args.beta else action
+
     f, data = demos.open_demos(args.collect, demos.ENV_KWARGS, "DAgger", mode="a")
-    placed = 0
-    for seed in args.seeds[:args.episodes]:
-        expert.reset()
-        policy.reset()
-
-        def drive(state, label):
-            action = policy.act(state)  # every step: the policy keeps its memory
-            return label if rng.random() < args.beta else action
-
-        observations, labels, rewards, info = demos.run_episode(env, seed, drive, expert.act,
-                                                                args.max_steps)
-        demos.write_demo(data, seed, observations, labels, rewards,
-                         f"DAgger: {args.policy} driving, beta {args.beta}")
-        placed += info["placed"]
-        print(f"seed {seed}: {len(labels)} steps, placed {info['placed']}/6", flush=True)
+    placed = collect(env, SteppedExpert(env), args.seeds[:args.episodes], drive, data,
+                     f"DAgger: {args.policy} driving, beta {args.beta}", args.max_steps, policy)
     f.close()
     print(f"the policy (beta {args.beta}) placed {placed}/{6 * args.episodes}; the expert's "
           f"labels joined {args.collect}")
@@ -152,12 +151,8 @@ def evaluate(args):
     env = PegTransferEnv(**{**demos.ENV_KWARGS, "time_limit": args.time_limit})
     placed_total = all_six = 0
     for seed in args.seeds:
-        state, _ = env.reset(seed=seed)
         policy.reset()
-        while True:
-            state, _, terminated, truncated, info = env.step(policy.act(state))
-            if terminated or truncated:
-                break
+        info = demos.run_episode(env, seed, lambda state, _: policy.act(state), lambda _: None)[3]
         placed_total += info["placed"]
         all_six += info["placed"] == 6
         why = f" (the world failed: {info['failure']})" if "failure" in info else ""

@@ -8,11 +8,20 @@
 
 namespace scenario {
 
+namespace {
+
+/// Both arms' kinematics of `profile`, left first.
+std::array<raven::ArmKinematics, 2> armsOf(const raven::PlatformProfile& profile) {
+  return {raven::ArmKinematics::of(profile, raven::Arm::Left),
+          raven::ArmKinematics::of(profile, raven::Arm::Right)};
+}
+
+}  // namespace
+
 PegTransferEnv::PegTransferEnv(PegTransferEnvOptions options)
     : options_(std::move(options)),
       profile_(raven::builtinProfile("physical")),
-      kinematics_{raven::ArmKinematics::of(profile_, raven::Arm::Left),
-                  raven::ArmKinematics::of(profile_, raven::Arm::Right)} {
+      kinematics_(armsOf(profile_)) {
   if (options_.control == EnvControl::Period &&
       !(options_.period >= 0.002 && options_.period <= 10.0)) {
     throw std::invalid_argument("a step's period must lie in [0.002, 10] s, not " +
@@ -108,10 +117,7 @@ Eigen::VectorXd PegTransferEnv::actionHigh() const {
 
 Eigen::Matrix<double, 2, 3, Eigen::RowMajor> PegTransferEnv::toolPoints(
     const Eigen::Matrix<double, 14, 1>& joints) {
-  static const raven::PlatformProfile profile = raven::builtinProfile("physical");
-  static const std::array<raven::ArmKinematics, 2> arms{
-      raven::ArmKinematics::of(profile, raven::Arm::Left),
-      raven::ArmKinematics::of(profile, raven::Arm::Right)};
+  static const std::array<raven::ArmKinematics, 2> arms = armsOf(raven::builtinProfile("physical"));
   Eigen::Matrix<double, 2, 3, Eigen::RowMajor> out;
   for (raven::Arm arm : raven::kArms) {
     const int a = raven::index(arm);

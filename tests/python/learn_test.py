@@ -89,6 +89,7 @@ class Snapshots(unittest.TestCase):
         world.step(100)
         after = ring.nodes
         world.restore_state(state)
+        self.assertAlmostEqual(world.time, 50 * world.step_size, places=12)
         world.step(100)
         self.assertTrue(np.array_equal(ring.nodes, after))
 

@@ -122,7 +122,6 @@ std::optional<RavenStateSnapshot> TwinPlatform::ravenState() const {
 
 /// Everything TwinPlatform::saveState captures.
 struct TwinPlatform::State {
-  const TwinPlatform* twin;
   std::shared_ptr<const ambf_like::WorldState> world;
   std::any actuation;
   std::array<ActuatorReadings, 2> readings;
@@ -135,14 +134,11 @@ std::shared_ptr<const TwinPlatform::State> TwinPlatform::saveState() {
   if (clock_ == ClockKind::Wall) {
     throw std::logic_error("a twin on the wall clock has no state to save: use the simulated one");
   }
-  return std::make_shared<const State>(State{this, world_.saveState(), actuation_->state(),
-                                             readings_, previous_position_, core_, requested_});
+  return std::make_shared<const State>(State{world_.saveState(), actuation_->state(), readings_,
+                                             previous_position_, core_, requested_});
 }
 
 void TwinPlatform::restoreState(const State& state) {
-  if (state.twin != this) {
-    throw std::invalid_argument("TwinPlatform::restoreState: a state saved by another twin");
-  }
   world_.restoreState(*state.world);
   actuation_->restore(state.actuation);
   readings_ = state.readings;

@@ -40,7 +40,7 @@ void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps,
   }
   Registered& registered = coulomb_[&body];
   registered.substeps = substeps;
-  if (material) registered.elasticity = std::make_unique<ImplicitElasticBody>(body, *material);
+  if (material) registered.elasticity.emplace(body, *material);
 }
 
 ElasticSolveStats CoulombContactSolver::elasticStats(const btSoftBody& body) const {
@@ -49,47 +49,25 @@ ElasticSolveStats CoulombContactSolver::elasticStats(const btSoftBody& body) con
 }
 
 struct CoulombContactSolver::State {
-  /// A registered body's Registered, its elasticity by value.
-  struct Body {
-    std::optional<ImplicitElasticBody> elasticity;
-    std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_impulse;
-    std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_pin_impulse;
-    std::vector<btVector3> start_velocity;
-    ElasticSolveStats stats;
-  };
-  std::unordered_map<const btSoftBody*, Body> bodies;
+  std::unordered_map<const btSoftBody*, Registered> bodies;
   std::vector<NodeContactImpulse> impulses;
 };
 
 std::shared_ptr<const CoulombContactSolver::State> CoulombContactSolver::state() const {
-  auto out = std::make_shared<State>();
-  for (const auto& [body, r] : coulomb_) {
-    State::Body& saved = out->bodies[body];
-    if (r.elasticity) saved.elasticity.emplace(*r.elasticity);
-    saved.last_impulse = r.last_impulse;
-    saved.last_pin_impulse = r.last_pin_impulse;
-    saved.start_velocity = r.start_velocity;
-    saved.stats = r.stats;
-  }
-  out->impulses = impulses_;
-  return out;
+  return std::make_shared<const State>(State{coulomb_, impulses_});
 }
 
 void CoulombContactSolver::restore(const State& state) {
-  if (state.bodies.size() != coulomb_.size()) {
+  const auto same_body = [&](const auto& entry) {
+    const auto it = state.bodies.find(entry.first);
+    return it != state.bodies.end() &&
+           it->second.elasticity.has_value() == entry.second.elasticity.has_value();
+  };
+  if (state.bodies.size() != coulomb_.size() ||
+      !std::all_of(coulomb_.begin(), coulomb_.end(), same_body)) {
     throw std::logic_error("a soft-body solver state of other bodies");
   }
-  for (auto& [body, r] : coulomb_) {
-    const auto it = state.bodies.find(body);
-    if (it == state.bodies.end() || it->second.elasticity.has_value() != bool(r.elasticity)) {
-      throw std::logic_error("a soft-body solver state of other bodies");
-    }
-    if (r.elasticity) *r.elasticity = *it->second.elasticity;
-    r.last_impulse = it->second.last_impulse;
-    r.last_pin_impulse = it->second.last_pin_impulse;
-    r.start_velocity = it->second.start_velocity;
-    r.stats = it->second.stats;
-  }
+  for (auto& [body, registered] : coulomb_) registered = state.bodies.at(body);
   impulses_ = state.impulses;
 }
 
@@ -139,7 +117,7 @@ void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
   const int substeps = registered.substeps;
   const btScalar hs = h / substeps;
   rewindPrediction(body, registered, substeps);
-  startContacts(body, registered.elasticity != nullptr);
+  startContacts(body, registered.elasticity.has_value());
   body.m_sst.sdt = hs;
   body.m_sst.isdt = 1.0 / hs;
   for (int s = 0; s < substeps; ++s) {

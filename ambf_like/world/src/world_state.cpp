@@ -1,5 +1,6 @@
 // World::saveState and World::restoreState: a World's state between steps, and the canonical
-// rebuild of its collision caches that makes a restored run repeat the saved one bit for bit.
+// rebuild of its collision caches, run by both, that makes a restored run repeat the saved one
+// bit for bit.
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletSoftBody/btSoftBody.h>
@@ -24,20 +25,21 @@ struct RigidState {
   btScalar deactivation_time = 0, hit_fraction = 1;
 };
 
-/// A soft body's arrays as Bullet keeps them, and the volumes of its trees' leaves.
+/// A soft body's members its next steps depend on, named as Bullet names them (copyMembers
+/// copies them either way), and the volumes of its trees' leaves.
 struct SoftState {
-  btAlignedObjectArray<btSoftBody::Node> nodes;
-  btAlignedObjectArray<btSoftBody::Face> faces;
-  btAlignedObjectArray<btSoftBody::Link> links;
-  btAlignedObjectArray<btSoftBody::Tetra> tetras;
-  btAlignedObjectArray<btSoftBody::Anchor> anchors;
-  btAlignedObjectArray<btSoftBody::RContact> rigid_contacts;
-  btAlignedObjectArray<btSoftBody::SContact> soft_contacts;
-  btSoftBody::Pose pose;
-  btSoftBody::SolverState solver;
-  btVector3 bounds[2];
-  btScalar time_accumulated = 0;
-  bool update_rest_constants = false;
+  btAlignedObjectArray<btSoftBody::Node> m_nodes;
+  btAlignedObjectArray<btSoftBody::Face> m_faces;
+  btAlignedObjectArray<btSoftBody::Link> m_links;
+  btAlignedObjectArray<btSoftBody::Tetra> m_tetras;
+  btAlignedObjectArray<btSoftBody::Anchor> m_anchors;
+  btAlignedObjectArray<btSoftBody::RContact> m_rcontacts;
+  btAlignedObjectArray<btSoftBody::SContact> m_scontacts;
+  btSoftBody::Pose m_pose;
+  btSoftBody::SolverState m_sst;
+  btVector3 m_bounds[2];
+  btScalar m_timeacc = 0;
+  bool m_bUpdateRtCst = false;
   btTransform transform;
   int activation = 0;
   btScalar deactivation_time = 0;
@@ -86,21 +88,28 @@ std::vector<std::optional<btDbvtVolume>> leavesOf(const Items& items) {
   return out;
 }
 
+/// Copies the members a SoftState keeps between it and a btSoftBody, the contacts aside (a
+/// restore puts them back after its narrowphase, which makes its own).
+template <typename To, typename From>
+void copyMembers(To& to, const From& from) {
+  to.m_nodes = from.m_nodes;
+  to.m_faces = from.m_faces;
+  to.m_links = from.m_links;
+  to.m_tetras = from.m_tetras;
+  to.m_anchors = from.m_anchors;
+  to.m_pose = from.m_pose;
+  to.m_sst = from.m_sst;
+  to.m_bounds[0] = from.m_bounds[0];
+  to.m_bounds[1] = from.m_bounds[1];
+  to.m_timeacc = from.m_timeacc;
+  to.m_bUpdateRtCst = from.m_bUpdateRtCst;
+}
+
 SoftState softStateOf(const btSoftBody& b) {
   SoftState s;
-  s.nodes = b.m_nodes;
-  s.faces = b.m_faces;
-  s.links = b.m_links;
-  s.tetras = b.m_tetras;
-  s.anchors = b.m_anchors;
-  s.rigid_contacts = b.m_rcontacts;
-  s.soft_contacts = b.m_scontacts;
-  s.pose = b.m_pose;
-  s.solver = b.m_sst;
-  s.bounds[0] = b.m_bounds[0];
-  s.bounds[1] = b.m_bounds[1];
-  s.time_accumulated = b.m_timeacc;
-  s.update_rest_constants = b.m_bUpdateRtCst;
+  copyMembers(s, b);
+  s.m_rcontacts = b.m_rcontacts;
+  s.m_scontacts = b.m_scontacts;
   s.transform = b.getWorldTransform();
   s.activation = b.getActivationState();
   s.deactivation_time = b.getDeactivationTime();
@@ -121,29 +130,15 @@ void rebuildTree(btDbvt& tree, Items& items,
 }
 
 void restoreSoft(btSoftBody& b, const SoftState& s) {
-  if (b.m_nodes.size() != s.nodes.size() || b.m_faces.size() != s.faces.size() ||
-      b.m_links.size() != s.links.size() || b.m_tetras.size() != s.tetras.size()) {
+  if (b.m_nodes.size() != s.m_nodes.size() || b.m_faces.size() != s.m_faces.size() ||
+      b.m_links.size() != s.m_links.size() || b.m_tetras.size() != s.m_tetras.size()) {
     throw std::invalid_argument("a world state of another soft body");
   }
   // Same sizes: the arrays keep their storage, so the pointers between them stay valid.
-  b.m_nodes = s.nodes;
-  b.m_faces = s.faces;
-  b.m_links = s.links;
-  b.m_tetras = s.tetras;
-  b.m_anchors = s.anchors;
-  b.m_rcontacts = s.rigid_contacts;
-  b.m_scontacts = s.soft_contacts;
-  b.m_pose = s.pose;
-  b.m_sst = s.solver;
-  b.m_bounds[0] = s.bounds[0];
-  b.m_bounds[1] = s.bounds[1];
-  b.m_timeacc = s.time_accumulated;
-  b.m_bUpdateRtCst = s.update_rest_constants;
+  copyMembers(b, s);
   b.setWorldTransform(s.transform);
   b.forceActivationState(s.activation);
   b.setDeactivationTime(s.deactivation_time);
-  rebuildTree(b.m_ndbvt, b.m_nodes, s.node_leaves);
-  rebuildTree(b.m_fdbvt, b.m_faces, s.face_leaves);
 }
 
 }  // namespace
@@ -216,6 +211,26 @@ void restoreManifolds(btDispatcher& dispatcher, const std::vector<ManifoldState>
   }
 }
 
+/// Rebuilds the collision caches from what `state` holds, in one order whatever the history: the
+/// soft bodies' trees, the broadphase, the narrowphase's manifolds with the saved points, the
+/// soft bodies' contacts.
+void rebuildCaches(btDiscreteDynamicsWorld& world,
+                   const std::vector<std::unique_ptr<SoftBody>>& soft_bodies,
+                   const WorldState& state) {
+  for (std::size_t i = 0; i < soft_bodies.size(); ++i) {
+    btSoftBody& b = soft_bodies[i]->bullet();
+    rebuildTree(b.m_ndbvt, b.m_nodes, state.soft[i].node_leaves);
+    rebuildTree(b.m_fdbvt, b.m_faces, state.soft[i].face_leaves);
+  }
+  rebuildCollisionCaches(world);
+  restoreManifolds(*world.getDispatcher(), state.manifolds);
+  for (std::size_t i = 0; i < soft_bodies.size(); ++i) {  // the narrowphase made its own
+    btSoftBody& b = soft_bodies[i]->bullet();
+    b.m_rcontacts = state.soft[i].m_rcontacts;
+    b.m_scontacts = state.soft[i].m_scontacts;
+  }
+}
+
 }  // namespace
 
 std::shared_ptr<const WorldState> World::saveState() {
@@ -243,7 +258,7 @@ std::shared_ptr<const WorldState> World::saveState() {
   if (w.sleeper) state->sleep = w.sleeper->state();
   for (const auto& a : w.actuators) state->holds.push_back(a->hold());
   for (const auto& s : w.sensors) state->sensors.push_back(s->state());
-  restoreState(*state);  // the canonical caches, for this run as for every restored one
+  rebuildCaches(w.world, w.soft_bodies, *state);  // as every restore of it will
   return state;
 }
 
@@ -265,17 +280,10 @@ void World::restoreState(const WorldState& state) {
     restoreRigid(w.bodies[i]->bullet(), state.rigid[i]);
   }
   for (std::size_t i = 0; i < w.joints.size(); ++i) w.joints[i]->joint->restore(state.joints[i]);
-  // The soft bodies' arrays before the narrowphase below, whose contacts they then replace.
   for (std::size_t i = 0; i < w.soft_bodies.size(); ++i) {
     restoreSoft(w.soft_bodies[i]->bullet(), state.soft[i]);
   }
-  rebuildCollisionCaches(w.world);
-  restoreManifolds(*w.world.getDispatcher(), state.manifolds);
-  for (std::size_t i = 0; i < w.soft_bodies.size(); ++i) {
-    btSoftBody& b = w.soft_bodies[i]->bullet();
-    b.m_rcontacts = state.soft[i].rigid_contacts;
-    b.m_scontacts = state.soft[i].soft_contacts;
-  }
+  rebuildCaches(w.world, w.soft_bodies, state);
   w.bullet.softBodySolver().restore(*state.soft_solver);
   if (w.sleeper) w.sleeper->restore(state.sleep);
   for (std::size_t i = 0; i < w.sensors.size(); ++i) w.sensors[i]->restore(state.sensors[i]);

@@ -76,7 +76,8 @@ class TwinPlatform final : public RavenPlatform {
   /// clock. Throws std::logic_error on the wall clock (its pacing is not state).
   struct State;
   std::shared_ptr<const State> saveState();
-  /// Puts the twin back to `state`, which only this twin saved (else std::invalid_argument).
+  /// Puts the twin back to `state`, which only this twin saved (else its world throws
+  /// std::invalid_argument before anything changes).
   void restoreState(const State& state);
 
  private:

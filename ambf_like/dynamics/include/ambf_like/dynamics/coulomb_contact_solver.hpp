@@ -92,7 +92,7 @@ class CoulombContactSolver final : public btDefaultSoftBodySolver {
   /// last impulses, by node and surface), and its nodes' velocities before Bullet's prediction.
   struct Registered {
     int substeps = 1;
-    std::unique_ptr<ImplicitElasticBody> elasticity;
+    std::optional<ImplicitElasticBody> elasticity;
     std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_impulse;
     /// Its pins' (anchors') last impulses, by node and rigid body.
     std::map<std::pair<int, const btCollisionObject*>, Eigen::Vector3d> last_pin_impulse;
