@@ -1,7 +1,9 @@
 """Demonstrations in robomimic's HDF5 layout: data/demo_<k>/{actions, rewards, dones, obs/state},
 each demo's num_samples and seed as attributes, the environment's arguments in
-data.attrs["env_args"] (JSON). Episodes are recorded by running a driver (the expert, a policy)
-while a labeller (the expert) says what it should have done."""
+data.attrs["env_args"] (JSON); besides, data/demo_<k>/waypoints: where the expert was heading,
+relative to the current targets (the actions are these capped per step). Episodes are recorded by
+running a driver (the expert, a policy) while a labeller (the expert) says what it should have
+done."""
 
 import json
 
@@ -27,7 +29,7 @@ def open_demos(path, env_kwargs, source, mode="w"):
     return f, data
 
 
-def write_demo(data, seed, observations, actions, rewards, source):
+def write_demo(data, seed, observations, actions, waypoints, rewards, source):
     k = len(data.keys())
     demo = data.create_group(f"demo_{k}")
     demo.attrs["num_samples"] = len(actions)
@@ -35,6 +37,7 @@ def write_demo(data, seed, observations, actions, rewards, source):
     demo.attrs["source"] = source
     demo.create_dataset("obs/state", data=np.asarray(observations, np.float64))
     demo.create_dataset("actions", data=np.asarray(actions, np.float64))
+    demo.create_dataset("waypoints", data=np.asarray(waypoints, np.float64))
     demo.create_dataset("rewards", data=np.asarray(rewards, np.float64))
     dones = np.zeros(len(actions), np.int64)
     dones[-1] = 1
@@ -43,40 +46,58 @@ def write_demo(data, seed, observations, actions, rewards, source):
 
 
 def load_demos(path):
-    """Per demo: its states and actions."""
+    """Per demo: its states and waypoints."""
     import h5py
     with h5py.File(path, "r") as f:
         demos = [f["data"][k] for k in sorted(f["data"].keys(), key=lambda k: int(k[5:]))]
+        missing = [d.name for d in demos if "waypoints" not in d]
+        if missing:
+            raise ValueError(f"{path}: {missing[0]} has no waypoints (recorded by an earlier "
+                             "version); record it again")
         return ([np.asarray(d["obs/state"]) for d in demos],
-                [np.asarray(d["actions"]) for d in demos])
+                [np.asarray(d["waypoints"]) for d in demos])
 
 
 def load_all(paths):
-    """Every demo of every file: their states and actions."""
-    states, actions = [], []
+    """Every demo of every file: their states and waypoints."""
+    states, waypoints = [], []
     for path in paths:
-        s, a = load_demos(path)
+        s, w = load_demos(path)
         states += s
-        actions += a
-    return states, actions
+        waypoints += w
+    return states, waypoints
 
 
-def run_episode(env, seed, drive, label, max_steps=None):
-    """One episode: `drive(state, label)` gives the executed action, `label(state)` the
-    recorded one (called every step), until it ends or after `max_steps`. Returns observations,
-    labels, rewards, the last info."""
+class Episode:
+    """What one episode recorded: per step the observation, the expert's action and waypoint
+    (if an expert labelled it) and the reward; the last step's info."""
+
+    def __init__(self):
+        self.observations, self.actions, self.waypoints, self.rewards = [], [], [], []
+        self.info = {}
+
+
+def run_episode(env, seed, drive, expert=None, max_steps=None):
+    """One episode: `drive(state, label)` gives the executed action, the expert (if any)
+    labels every step (`label`: its action, else None), until the episode ends or after
+    `max_steps`. Returns the Episode."""
     state, _ = env.reset(seed=seed)
-    observations, labels, rewards = [], [], []
-    info = {"placed": env.core.placed}
-    while max_steps is None or len(labels) < max_steps:
-        wanted = label(state)
-        observations.append(state)
-        labels.append(wanted)
-        state, reward, terminated, truncated, info = env.step(drive(state, wanted))
-        rewards.append(reward)
+    episode = Episode()
+    episode.info = {"placed": env.core.placed}
+    if expert is not None:
+        expert.reset()
+    while max_steps is None or len(episode.rewards) < max_steps:
+        label = None
+        if expert is not None:
+            label, waypoint = expert.act(state), expert.waypoint(state)
+            episode.actions.append(label)
+            episode.waypoints.append(waypoint)
+        episode.observations.append(state)
+        state, reward, terminated, truncated, episode.info = env.step(drive(state, label))
+        episode.rewards.append(reward)
         if terminated or truncated:
             break
-    return observations, labels, rewards, info
+    return episode
 
 
 def convert(ci_path, seed, out):
@@ -100,6 +121,7 @@ def convert(ci_path, seed, out):
             break
     source = f"gamepad session {ci_path}"
     f, data = open_demos(out, {**ENV_KWARGS, "randomize": randomize}, source)
-    write_demo(data, seed if randomize else -1, observations, actions, rewards, source)
+    # A pad's reading moves the targets once: its waypoint is its action.
+    write_demo(data, seed if randomize else -1, observations, actions, actions, rewards, source)
     f.close()
     return len(actions), info["placed"]

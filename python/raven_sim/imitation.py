@@ -7,28 +7,53 @@ every action is of one scale (the operator's others are already within a millime
 Labels are computed from the current targets, so in a state a learner reached the expert says
 how to go on from there (what DART's noisy demonstrations and DAgger's relabelling need).
 
-A policy sees `Features`: the state, per arm each ring's centre relative to its commanded tool
-point (in the world frame, the rings' frame: raven_sim.tool_points) and the nearest one's within
-NEAR (the millimetres a grasp is decided on, at their own scale), the
-targets' change in the last step (what the arm just did), and per arm how many steps its
-targets have stood still (up to HOLD_MEMORY): the operator waits, and a policy that only saw the
-present could not count.
+What a policy learns is the expert's waypoint, where its targets are heading, relative to the
+current ones; it acts by moving at most STEP_CAP towards it. Heading for a point converges on it
+(an error in the waypoint moves the end a little, never past it), where learning the capped step
+itself leaves the policy to guess the step at which a long move stops, and an overshoot feeds on
+itself. The waypoints span three orders of magnitude (a millimetre's joint change to a 2 rad
+turn), so they are learnt as asinh(waypoint / RESOLUTION): to a relative accuracy at every scale.
+
+The policy is one network for either arm (each arm moves its own three rings, as the operator's
+routines do): it sees one arm's `ArmFeatures` and gives that arm's waypoint. An arm's features
+are its own (the arm, its targets, its tool point in the world frame, the rings' frame:
+raven_sim.tool_points; its grasp wrench), per ring of its jobs where the ring is from the tool,
+from its start and target posts and above the board, with whether it rests on its target (the
+layout's design values: raven_sim.peg_layout); which job is the first not done and that ring's
+offset within NEAR (the millimetres a grasp is decided on, at their own scale); and how many
+steps the targets have stood still (up to HOLD_MEMORY): the operator waits, and a policy that
+only saw the present could not count. The other arm is not seen: in the demonstrations the two
+arms keep in step, which a policy must not learn to rely on. Nor are the policy's own last
+moves (the targets' change, the joints' lag behind them): a clone that sees them learns to
+repeat them, and repeats its own errors (the copycat problem, Wen et al. 2020).
 """
 
 import time
 
 import numpy as np
 
-from ._raven_sim import tool_points
+from ._raven_sim import peg_layout, tool_points
 
 ACTION = "joint_deltas"
+OUTPUT = "asinh(waypoint / RESOLUTION), per arm"
 # At most this per step and joint: 0.1 rad for the rotary joints, 2 mm of insertion.
 STEP_CAP = np.array([0.1, 0.1, 0.002, 0.1, 0.1, 0.1, 0.1] * 2)
+# Waypoints are learnt at this resolution: linear below it, logarithmic above (rad; m).
+RESOLUTION = np.array([0.002, 0.002, 0.0002, 0.002, 0.002, 0.002, 0.002])
 HOLD_MEMORY = 20
-STILL = 1e-7  # a change of the targets below this is standing still (rad or m)
-NEAR = 0.02  # m: the nearest ring's offset from a tool, clipped
+STILL = 2e-4  # targets changing less than this per step stand still (rad or m; the
+#               operator's moves change some joint by a millimetre's 1e-3 or more)
+NEAR = 0.02  # m: the current ring's offset from the tool, clipped
+PLACED_XY = 0.004  # m: a ring this near its target post's axis ...
+PLACED_LIFT = 0.002  # m: ... and its centre this near its resting height is placed
 TARGETS = slice(14, 28)
 RINGS = slice(54, 72)
+LAYOUT = peg_layout()
+REST_Z = LAYOUT["board_top"] + LAYOUT["ring_height"] / 2  # a ring's centre lying on the board
+
+
+def joints_of(arm):
+    return slice(7 * arm, 7 * arm + 7)
 
 
 class SteppedExpert:
@@ -54,37 +79,76 @@ class SteppedExpert:
         self.remaining = 0.0 if np.array_equal(step, left) else np.abs(left).max()
         return step
 
+    def waypoint(self, state):
+        """Where the last act() was heading, relative to the targets in `state`."""
+        return self.goal - state[TARGETS]
 
-class Features:
-    """What the policy sees, from the observations so far of one episode."""
 
-    size = 72 + 2 * 18 + 2 * 3 + 14 + 2
+class ArmFeatures:
+    """What the policy sees of one arm, from the observations so far of one episode."""
 
-    def __init__(self):
+    size = 1 + 7 + 3 + 6 + 3 * 9 + 4 + 3 + 1
+
+    def __init__(self, arm):
+        self.arm = arm
+        jobs = [j for j in LAYOUT["jobs"] if j["arm"] == arm]
+        self.rings = [LAYOUT["jobs"].index(j) for j in jobs]
+        self.starts = np.array([j["from"] for j in jobs])
+        self.ends = np.array([j["to"] for j in jobs])
         self.reset()
 
     def reset(self):
         self.previous = None
-        self.held = np.zeros(2)
+        self.held = 0
+
+    def __call__(self, state, tool):
+        """`tool`: this arm's tool point at its targets (raven_sim.tool_points)."""
+        own = joints_of(self.arm)
+        targets = state[TARGETS][own]
+        moved = np.zeros(7) if self.previous is None else targets - self.previous
+        self.held = min(self.held + 1, HOLD_MEMORY) if np.all(np.abs(moved) < STILL) else 0
+        self.previous = targets.copy()
+        rings = state[RINGS].reshape(6, 3)[self.rings]
+        lift = rings[:, 2] - REST_Z
+        placed = (np.linalg.norm(rings[:, :2] - self.ends, axis=1) < PLACED_XY) & \
+            (lift < PLACED_LIFT)
+        current = int(np.argmin(placed)) if not placed.all() else 3
+        near = np.zeros(3) if current == 3 else np.clip(rings[current] - tool, -NEAR, NEAR)
+        wrench = state[42 + 6 * self.arm:48 + 6 * self.arm]
+        per_ring = np.hstack([rings - tool, rings[:, :2] - self.starts, rings[:, :2] - self.ends,
+                              lift[:, None], placed[:, None]])
+        return np.hstack([1.0 - 2.0 * self.arm, targets, tool, wrench, per_ring.ravel(),
+                          np.eye(4)[current], near, self.held / HOLD_MEMORY])
+
+
+class Features:
+    """Both arms' features (rows, left first) from the observations so far of one episode."""
+
+    def __init__(self):
+        self.arms = [ArmFeatures(0), ArmFeatures(1)]
+
+    def reset(self):
+        for a in self.arms:
+            a.reset()
 
     def __call__(self, state):
-        targets = state[TARGETS]
-        moved = np.zeros(14) if self.previous is None else targets - self.previous
-        for arm in range(2):
-            still = np.all(np.abs(moved[7 * arm:7 * arm + 7]) < STILL)
-            self.held[arm] = min(self.held[arm] + 1, HOLD_MEMORY) if still else 0
-        self.previous = targets.copy()
-        rings = state[RINGS].reshape(6, 3)
-        relative = [rings - tool for tool in tool_points(targets)]
-        nearest = [np.clip(r[np.argmin(np.linalg.norm(r, axis=1))], -NEAR, NEAR)
-                   for r in relative]
-        return np.hstack([state, *(r.ravel() for r in relative), *nearest, moved,
-                          self.held / HOLD_MEMORY])
+        tools = tool_points(state[TARGETS])
+        return np.vstack([a(state, tools[a.arm]) for a in self.arms])
 
     @staticmethod
     def of_episode(states):
+        """Per arm, its features in every state: a (2, steps, ArmFeatures.size) array."""
         features = Features()
-        return np.vstack([features(s) for s in states])
+        return np.stack([features(s) for s in states], axis=1)
+
+
+def to_learnt(waypoints):
+    """Per arm's seven joints: the scale a network learns waypoints at."""
+    return np.arcsinh(waypoints / RESOLUTION)
+
+
+def from_learnt(values):
+    return np.sinh(values) * RESOLUTION
 
 
 def make_network(inputs, outputs, hidden):
@@ -98,7 +162,8 @@ def make_network(inputs, outputs, hidden):
 
 
 class Policy:
-    """A cloned policy: a standardised MLP from Features to the next joint deltas."""
+    """A cloned policy: a standardised MLP from an arm's features to its waypoint (learnt scale),
+    run for each arm; it acts by moving at most STEP_CAP towards it."""
 
     def __init__(self, network, stats, hidden):
         self.network, self.stats, self.hidden = network, stats, hidden
@@ -111,45 +176,49 @@ class Policy:
         import torch
         x = (self.features(state) - self.stats["input_mean"]) / self.stats["input_std"]
         with torch.no_grad():
-            y = self.network(torch.as_tensor(x, dtype=torch.float32)[None])[0].numpy()
-        return (y * self.stats["action_std"] + self.stats["action_mean"]).astype(np.float64)
+            y = self.network(torch.as_tensor(x, dtype=torch.float32)).numpy().astype(np.float64)
+        waypoint = from_learnt(y * self.stats["output_std"] + self.stats["output_mean"]).ravel()
+        return np.clip(waypoint, -STEP_CAP, STEP_CAP)
 
     def save(self, path, **about):
         import torch
         torch.save({"network": self.network.state_dict(), "hidden": self.hidden,
                     "stats": {k: v.tolist() for k, v in self.stats.items()},
-                    "features": Features.size, "action": ACTION, **about}, path)
+                    "features": ArmFeatures.size, "output": OUTPUT, **about}, path)
 
     @staticmethod
     def load(path):
         import torch
         saved = torch.load(path)
-        if saved.get("features") != Features.size:
-            raise ValueError(f"{path}: a policy for another observation ({saved.get('features')} "
-                             f"inputs, this version has {Features.size}); train it again")
+        if saved.get("features") != ArmFeatures.size or saved.get("output") != OUTPUT:
+            raise ValueError(f"{path}: a policy of another version ({saved.get('features')} "
+                             f"inputs per arm, output {saved.get('output')}; this version: "
+                             f"{ArmFeatures.size}, {OUTPUT}); train it again")
         stats = {k: np.asarray(v) for k, v in saved["stats"].items()}
-        network = make_network(Features.size, len(stats["action_mean"]), saved["hidden"])
+        network = make_network(ArmFeatures.size, len(stats["output_mean"]), saved["hidden"])
         network.load_state_dict(saved["network"])
         network.eval()
         return Policy(network, stats, saved["hidden"])
 
 
-def fit(states, actions, hidden, epochs, batch=256, lr=1e-3, seed=0, log=print, start=None):
-    """Trains a Policy on episodes (lists of state and action arrays): Adam with a cosine
-    schedule, mean squared error on standardised actions. `start`: a policy to go on from."""
+def fit(states, waypoints, hidden, epochs, batch=256, lr=1e-3, seed=0, log=print, start=None):
+    """Trains a Policy on episodes (lists of state and waypoint arrays): Adam with a cosine
+    schedule, mean squared error on the standardised learnt scale. `start`: a policy to go on
+    from."""
     import torch
     torch.manual_seed(seed)
-    x = np.vstack([Features.of_episode(s) for s in states])
-    y = np.vstack(actions)
+    x = np.vstack([f for s in states for f in Features.of_episode(s)])
+    # Each arm's rows in the order of_episode gives them: per episode the left arm, then the right.
+    y = to_learnt(np.vstack([w[:, joints_of(arm)] for w in waypoints for arm in (0, 1)]))
     if start is None:
         stats = {"input_mean": x.mean(0), "input_std": x.std(0) + 1e-6,
-                 "action_mean": y.mean(0), "action_std": y.std(0) + 1e-6}
+                 "output_mean": y.mean(0), "output_std": y.std(0) + 1e-6}
         network = make_network(x.shape[1], y.shape[1], hidden)
     else:
         stats, network, hidden = start.stats, start.network, start.hidden
         network.train()
     xt = torch.as_tensor((x - stats["input_mean"]) / stats["input_std"], dtype=torch.float32)
-    yt = torch.as_tensor((y - stats["action_mean"]) / stats["action_std"], dtype=torch.float32)
+    yt = torch.as_tensor((y - stats["output_mean"]) / stats["output_std"], dtype=torch.float32)
     optimiser = torch.optim.Adam(network.parameters(), lr=lr)
     batches = (len(xt) + batch - 1) // batch
     schedule = torch.optim.lr_scheduler.CosineAnnealingLR(optimiser, epochs * batches)

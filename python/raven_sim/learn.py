@@ -75,14 +75,12 @@ def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None
     prints each and returns the rings placed. `policy` (if any) starts each episode afresh."""
     placed = 0
     for seed in seeds:
-        expert.reset()
         if policy is not None:
             policy.reset()
-        observations, labels, rewards, info = demos.run_episode(env, seed, drive, expert.act,
-                                                                max_steps)
-        demos.write_demo(data, seed, observations, labels, rewards, source)
-        placed += info["placed"]
-        print(f"seed {seed}: {len(labels)} steps, placed {info['placed']}/6", flush=True)
+        e = demos.run_episode(env, seed, drive, expert, max_steps)
+        demos.write_demo(data, seed, e.observations, e.actions, e.waypoints, e.rewards, source)
+        placed += e.info["placed"]
+        print(f"seed {seed}: {len(e.rewards)} steps, placed {e.info['placed']}/6", flush=True)
     return placed
 
 
@@ -111,9 +109,9 @@ def convert(args):
 def train(args):
     import torch
     torch.set_num_threads(args.threads)
-    states, actions = demos.load_all(args.demos)
+    states, waypoints = demos.load_all(args.demos)
     start = Policy.load(args.init) if args.init else None
-    policy, samples, seconds = fit(states, actions, [args.width] * args.layers, args.epochs, args.batch,
+    policy, samples, seconds = fit(states, waypoints, [args.width] * args.layers, args.epochs, args.batch,
                                    args.lr, args.seed, start=start)
     policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds)
     print(f"trained on {len(states)} demonstrations, {samples} steps, in {seconds:.0f} s: "
@@ -152,7 +150,7 @@ def evaluate(args):
     placed_total = all_six = 0
     for seed in args.seeds:
         policy.reset()
-        info = demos.run_episode(env, seed, lambda state, _: policy.act(state), lambda _: None)[3]
+        info = demos.run_episode(env, seed, lambda state, _: policy.act(state)).info
         placed_total += info["placed"]
         all_six += info["placed"] == 6
         why = f" (the world failed: {info['failure']})" if "failure" in info else ""

@@ -25,6 +25,29 @@ void bindPegTransferEnv(py::module_& m) {
   m.def("tool_points", &scenario::PegTransferEnv::toolPoints, py::arg("joints"),
         "both arms' tool points (2 x 3, m) in the peg scene's world frame, the rings' frame, for "
         "14 joint values (left arm first); the state's tool poses are the robot's own report");
+  m.def(
+      "peg_layout",
+      [] {
+        const scenario::PegLayout layout;
+        py::list jobs;
+        for (const scenario::PegJob& job : layout.jobs) {
+          py::dict d;
+          d["peg"] = job.peg;
+          d["arm"] = raven::index(job.arm);
+          d["from"] = job.from;
+          d["to"] = job.to;
+          jobs.append(d);
+        }
+        py::dict out;
+        out["jobs"] = jobs;
+        out["board_top"] = layout.geometry.board_top;
+        out["ring_radius"] = layout.ring_radius;
+        out["ring_height"] = layout.ring_height;
+        return out;
+      },
+      "the peg transfer's design values: its six jobs (peg, arm 0 left / 1 right, the start and "
+      "target posts' x, y in m, in the order of the state's ring centres), the board's top z, "
+      "the rings' centre-line radius and height");
   using E = scenario::PegTransferEnv;
   py::class_<scenario::PegTransferStep>(m, "PegTransferStep")
       .def_readonly("observation", &scenario::PegTransferStep::observation)

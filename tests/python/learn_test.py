@@ -94,6 +94,38 @@ class Snapshots(unittest.TestCase):
         self.assertTrue(np.array_equal(ring.nodes, after))
 
 
+class PolicyInputsAndOutputs(unittest.TestCase):
+    def test_each_arm_sees_its_first_ring_not_placed(self):
+        env = raven_sim.PegTransferEnv(action_type="joint_deltas")
+        state = env.reset(seed=0)[0].copy()
+        features = imitation.Features()
+        current = slice(imitation.ArmFeatures.size - 8, imitation.ArmFeatures.size - 4)
+        self.assertEqual(list(features(state)[:, current].argmax(1)), [0, 0])
+        # peg1 (the left arm's first) and peg4 (the right's) down on their target posts.
+        for ring in (0, 3):
+            to = raven_sim.peg_layout()["jobs"][ring]["to"]
+            state[54 + 3 * ring:56 + 3 * ring] = to
+        self.assertEqual(list(imitation.Features()(state)[:, current].argmax(1)), [1, 1])
+        state[54 + 2] += 0.02  # peg1 lifted off its post again
+        self.assertEqual(list(imitation.Features()(state)[:, current].argmax(1)), [0, 1])
+
+    def test_a_policy_moves_at_most_a_step_towards_its_waypoint(self):
+        self.assertTrue(np.allclose(imitation.from_learnt(imitation.to_learnt(
+            np.array([2.3, -1e-4, 0.003, 0.0, -0.5, 0.05, 1e-7]))),
+            [2.3, -1e-4, 0.003, 0.0, -0.5, 0.05, 1e-7]))
+        import torch
+        network = imitation.make_network(imitation.ArmFeatures.size, 7, [8])
+        for p in network.parameters():
+            torch.nn.init.constant_(p, 1.0)  # outputs far beyond any step
+        stats = {"input_mean": np.zeros(imitation.ArmFeatures.size),
+                 "input_std": np.ones(imitation.ArmFeatures.size),
+                 "output_mean": np.zeros(7), "output_std": np.ones(7)}
+        policy = imitation.Policy(network, stats, [8])
+        env = raven_sim.PegTransferEnv(action_type="joint_deltas")
+        action = policy.act(env.reset(seed=0)[0])
+        self.assertTrue(np.array_equal(np.abs(action), imitation.STEP_CAP))
+
+
 class Demonstrations(unittest.TestCase):
     def test_record_train_evaluate_end_to_end(self):
         import h5py
@@ -107,6 +139,11 @@ class Demonstrations(unittest.TestCase):
                 demo = f["data/demo_0"]
                 n = demo.attrs["num_samples"]
                 self.assertEqual(demo["actions"].shape, (n, 14))
+                # The actions are the waypoints capped per step.
+                self.assertTrue(np.array_equal(
+                    demo["actions"], np.clip(demo["waypoints"], -imitation.STEP_CAP,
+                                             imitation.STEP_CAP)))
+                self.assertGreater(np.abs(demo["waypoints"]).max(), 0.5)  # an orientation move
                 self.assertEqual(demo["obs/state"].shape, (n, 72))
                 self.assertEqual(demo["rewards"].shape, (n,))
                 self.assertEqual(list(demo["dones"][-2:]), [0, 1])
