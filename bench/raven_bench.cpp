@@ -55,7 +55,8 @@ int main(int argc, char** argv) {
       {"ros", bench::measureRosEdge},           {"viewer", bench::measureViewer},
       {"video", bench::measureVideo},           {"memory", bench::measureMemory},
       {"micro", bench::measureMicro},           {"python", bench::measurePython},
-      {"cameras", bench::measureCameras},       {"snapshots", bench::measureSnapshots}};
+      {"cameras", bench::measureCameras},       {"snapshots", bench::measureSnapshots},
+      {"training", bench::measureTraining}};
   std::vector<std::string> names;
   for (const auto& section : sections) names.push_back(section.first);
 

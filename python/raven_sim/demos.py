@@ -35,7 +35,13 @@ def write_demo(data, seed, observations, actions, waypoints, rewards, source):
     demo.attrs["num_samples"] = len(actions)
     demo.attrs["seed"] = seed
     demo.attrs["source"] = source
-    demo.create_dataset("obs/state", data=np.asarray(observations, np.float64))
+    if isinstance(observations[0], dict):  # images besides the state: obs/<camera>_<kind>
+        for key in observations[0]:
+            array = np.stack([o[key] for o in observations])
+            demo.create_dataset(f"obs/{key.replace('/', '_')}", data=array,
+                                compression="lzf" if array.ndim > 2 else None)
+    else:
+        demo.create_dataset("obs/state", data=np.asarray(observations, np.float64))
     demo.create_dataset("actions", data=np.asarray(actions, np.float64))
     demo.create_dataset("waypoints", data=np.asarray(waypoints, np.float64))
     demo.create_dataset("rewards", data=np.asarray(rewards, np.float64))
@@ -81,19 +87,20 @@ def run_episode(env, seed, drive, expert=None, max_steps=None):
     """One episode: `drive(state, label)` gives the executed action, the expert (if any)
     labels every step (`label`: its action, else None), until the episode ends or after
     `max_steps`. Returns the Episode."""
-    state, _ = env.reset(seed=seed)
+    observation, _ = env.reset(seed=seed)
     episode = Episode()
     episode.info = {"placed": env.core.placed}
     if expert is not None:
         expert.reset()
     while max_steps is None or len(episode.rewards) < max_steps:
+        state = observation["state"] if isinstance(observation, dict) else observation
         label = None
         if expert is not None:
             label, waypoint = expert.act(state), expert.waypoint(state)
             episode.actions.append(label)
             episode.waypoints.append(waypoint)
-        episode.observations.append(state)
-        state, reward, terminated, truncated, episode.info = env.step(drive(state, label))
+        episode.observations.append(observation)
+        observation, reward, terminated, truncated, episode.info = env.step(drive(state, label))
         episode.rewards.append(reward)
         if terminated or truncated:
             break

@@ -201,7 +201,7 @@ class Policy:
         return Policy(network, stats, saved["hidden"])
 
 
-def fit(states, waypoints, hidden, epochs, batch=256, lr=1e-3, seed=0, log=print, start=None):
+def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print, start=None):
     """Trains a Policy on episodes (lists of state and waypoint arrays): Adam with a cosine
     schedule, mean squared error on the standardised learnt scale. `start`: a policy to go on
     from."""

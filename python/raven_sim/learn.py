@@ -34,7 +34,7 @@ import sys
 import numpy as np
 
 from . import demos
-from .env import PegTransferEnv
+from .env import OBSERVATIONS, PegTransferEnv
 from .imitation import Policy, SteppedExpert, fit
 
 # DART's noise scale per joint (rad; the insertion m), times --noise.
@@ -58,10 +58,22 @@ def seed_range(text):
 def observation_keys(text):
     keys = [k.strip() for k in text.split(",") if k.strip()]
     for k in keys:
-        if k != "state":
-            raise argparse.ArgumentTypeError(
-                f"observation '{k}': the state policy records and learns 'state' only")
+        if k not in OBSERVATIONS:
+            raise argparse.ArgumentTypeError(f"observation '{k}': each one of {OBSERVATIONS}")
+    if "state" not in keys:
+        raise argparse.ArgumentTypeError("observations include 'state' (the expert's and the "
+                                         "state policy's input)")
     return keys
+
+
+def image_size(text):
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"an image size is WxH, not '{text}'") from None
+    if w < 8 or h < 8:
+        raise argparse.ArgumentTypeError(f"image size {text}: at least 8x8")
+    return w, h
 
 
 def enough_seeds(args):
@@ -87,14 +99,19 @@ def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None
 def record(args):
     enough_seeds(args)
     rng = np.random.default_rng(args.noise_seed)
-    env = PegTransferEnv(**demos.ENV_KWARGS)
+    kwargs = demos.ENV_KWARGS
+    if args.obs != ["state"]:
+        kwargs = {**kwargs, "obs": args.obs, "camera": args.camera.split(","),
+                  "image_size": args.image_size}
+    env = PegTransferEnv(**kwargs)
     source = f"expert, DART noise {args.noise}"
-    f, data = demos.open_demos(args.out, demos.ENV_KWARGS, source)
+    f, data = demos.open_demos(args.out, kwargs, source)
 
     def noisy(_, label):
         return label + rng.normal(0.0, 1.0, label.shape) * NOISE_SCALE * args.noise
 
-    placed = collect(env, SteppedExpert(env), args.seeds[:args.episodes], noisy, data, source)
+    placed = collect(env, SteppedExpert(env), args.seeds[:args.episodes], noisy, data, source,
+                     args.max_steps)
     total = int(data.attrs["total"])
     f.close()
     print(f"{args.episodes} demonstrations, {total} steps, placed {placed}/{6 * args.episodes}: "
@@ -143,20 +160,27 @@ def dagger(args):
           f"labels joined {args.collect}")
 
 
+def evaluate_seed(policy_path, seed, time_limit):
+    """One episode of the policy on `seed`'s scene: (rings placed, a line saying how it went)."""
+    policy = Policy.load(policy_path)
+    env = PegTransferEnv(**{**demos.ENV_KWARGS, "time_limit": time_limit})
+    info = demos.run_episode(env, seed, lambda state, _: policy.act(state)).info
+    why = f" (the world failed: {info['failure']})" if "failure" in info else ""
+    return info["placed"], f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s{why}"
+
+
 def evaluate(args):
+    """Episodes on threads (the twin steps without Python's lock), printed in seed order."""
+    from concurrent.futures import ThreadPoolExecutor
     single_threaded()
-    policy = Policy.load(args.policy)
-    env = PegTransferEnv(**{**demos.ENV_KWARGS, "time_limit": args.time_limit})
-    placed_total = all_six = 0
-    for seed in args.seeds:
-        policy.reset()
-        info = demos.run_episode(env, seed, lambda state, _: policy.act(state)).info
-        placed_total += info["placed"]
-        all_six += info["placed"] == 6
-        why = f" (the world failed: {info['failure']})" if "failure" in info else ""
-        print(f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s{why}", flush=True)
-    print(f"placed {placed_total}/{6 * len(args.seeds)} rings; {all_six}/{len(args.seeds)} "
-          "episodes all six")
+    with ThreadPoolExecutor(args.workers) as pool:
+        runs = pool.map(lambda seed: evaluate_seed(args.policy, seed, args.time_limit), args.seeds)
+        placed = []
+        for rings, line in runs:
+            placed.append(rings)
+            print(line, flush=True)
+    print(f"placed {sum(placed)}/{6 * len(args.seeds)} rings; "
+          f"{sum(p == 6 for p in placed)}/{len(args.seeds)} episodes all six")
 
 
 def main(argv=None):
@@ -166,7 +190,12 @@ def main(argv=None):
     p = sub.add_parser("record", help="the expert's demonstrations (HDF5)")
     p.add_argument("--episodes", type=int, required=True)
     p.add_argument("--seeds", type=seed_range, required=True, help="A-B: one per episode")
-    p.add_argument("--obs", type=observation_keys, default=["state"])
+    p.add_argument("--obs", type=observation_keys, default=["state"],
+                   help="state and any of rgb, depth, segmentation (stored as obs/<camera>_<kind>)")
+    p.add_argument("--camera", default="overview",
+                   help="the images' views, comma-separated (e.g. grasper-left,left-task)")
+    p.add_argument("--image-size", type=image_size, default=(128, 96), help="WxH")
+    p.add_argument("--max-steps", type=int, help="an episode's steps at most")
     p.add_argument("--noise", type=float, default=0.0, help="DART noise, times NOISE_SCALE")
     p.add_argument("--noise-seed", type=int, default=0)
     p.add_argument("--out", required=True)
@@ -180,13 +209,12 @@ def main(argv=None):
     p.set_defaults(run=convert)
     p = sub.add_parser("train", help="behaviour cloning on the CPU")
     p.add_argument("--demos", required=True, nargs="+", help="one or more HDF5 files")
-    p.add_argument("--obs", type=observation_keys, default=["state"])
     p.add_argument("--out", required=True)
     p.add_argument("--width", type=int, default=256)
     p.add_argument("--layers", type=int, default=3)
-    p.add_argument("--epochs", type=int, default=60)
-    p.add_argument("--batch", type=int, default=256)
-    p.add_argument("--lr", type=float, default=1e-3)
+    p.add_argument("--epochs", type=int, default=30)
+    p.add_argument("--batch", type=int, default=512)
+    p.add_argument("--lr", type=float, default=2e-3)
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--threads", type=int, default=2, help="torch's CPU threads")
     p.add_argument("--init", help="a policy to go on training (its network and scaling)")
@@ -206,6 +234,7 @@ def main(argv=None):
     p.add_argument("--policy", required=True)
     p.add_argument("--seeds", type=seed_range, required=True)
     p.add_argument("--time-limit", type=float, default=240.0)
+    p.add_argument("--workers", type=int, default=1, help="episodes run side by side")
     p.set_defaults(run=evaluate)
     args = parser.parse_args(argv)
     args.run(args)

@@ -18,8 +18,9 @@ import numpy as np
 import raven_sim
 from raven_sim import imitation, learn
 
-MODELS = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "raven_description",
-                      "models")
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+MODELS = os.path.join(ROOT, "raven_description", "models")
+SHIPPED_POLICY = os.path.join(ROOT, "python", "policies", "bc_state.pt")
 
 
 def camera_env(**kwargs):
@@ -126,6 +127,15 @@ class PolicyInputsAndOutputs(unittest.TestCase):
         self.assertTrue(np.array_equal(np.abs(action), imitation.STEP_CAP))
 
 
+class ShippedPolicy(unittest.TestCase):
+    def test_the_shipped_state_policy_loads_and_places_rings(self):
+        import torch
+        torch.set_num_threads(1)
+        # A seed outside training (1000-1029, 2000-2029) and the documented evaluation (1-20).
+        placed, line = learn.evaluate_seed(SHIPPED_POLICY, 57, 120.0)
+        self.assertGreaterEqual(placed, 4, line)
+
+
 class Demonstrations(unittest.TestCase):
     def test_record_train_evaluate_end_to_end(self):
         import h5py
@@ -168,6 +178,30 @@ class Demonstrations(unittest.TestCase):
                 check=True)
             last = run.stdout.strip().splitlines()[-1]
             self.assertRegex(last, r"^placed \d+/12 rings; \d+/2 episodes all six$")
+
+    def test_images_are_recorded_per_camera_beside_the_state(self):
+        import h5py
+        camera_env(obs="rgb", image_size=(16, 12))  # skips without headless OpenGL
+        with tempfile.TemporaryDirectory() as d:
+            out = os.path.join(d, "images.hdf5")
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["record", "--episodes", "1", "--seeds", "3", "--obs",
+                            "state,rgb,segmentation", "--camera", "grasper-left,left-task",
+                            "--image-size", "32x24", "--max-steps", "15", "--out", out])
+            with h5py.File(out, "r") as f:
+                obs = f["data/demo_0/obs"]
+                self.assertEqual(set(obs), {"state", "grasper-left_rgb", "grasper-left_segmentation",
+                                            "left-task_rgb", "left-task_segmentation"})
+                self.assertEqual((obs["grasper-left_rgb"].shape, obs["grasper-left_rgb"].dtype),
+                                 ((15, 24, 32, 3), np.uint8))
+                self.assertEqual(obs["left-task_segmentation"].shape, (15, 24, 32))
+                self.assertEqual(obs["state"].shape, (15, 72))
+                self.assertTrue({14, 15, 16} <= set(np.unique(obs["left-task_segmentation"])))
+                kwargs = json.loads(f["data"].attrs["env_args"])["env_kwargs"]
+                self.assertEqual(kwargs["camera"], ["grasper-left", "left-task"])
+        with contextlib.redirect_stderr(io.StringIO()) as err, self.assertRaises(SystemExit):
+            learn.main(["record", "--episodes", "1", "--seeds", "3", "--obs", "rgb", "--out", "x"])
+        self.assertIn("include 'state'", err.getvalue())
 
     def test_a_gamepad_session_converts_to_the_same_layout(self):
         import h5py
