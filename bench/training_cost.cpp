@@ -41,10 +41,10 @@ void measureTraining(const BenchSettings& s, Report& report) {
                           Spread::of({std::stod(m[2])}), "s", "torch on the CPU, 2 threads"));
     } else if (std::regex_search(line, m, placed)) {
       const double share = 100.0 * std::stod(m[1]) / std::stod(m[2]);
-      report.add(atLeast(
-          kSection, "state policy: rings placed on unseen seeds 1-20", Spread::of({share}), "%",
-          80.0, fmt::format("{}/{} rings; {}/{} episodes all six", m[1].str(), m[2].str(),
-                            m[3].str(), m[4].str())));
+      report.add(atLeast(kSection, "state policy: rings placed on unseen seeds 1-20",
+                         Spread::of({share}), "%", 80.0,
+                         fmt::format("{}/{} rings; {}/{} episodes all six", m[1].str(), m[2].str(),
+                                     m[3].str(), m[4].str())));
     }
   }
 }
