@@ -16,6 +16,6 @@ out="${OUT_DIR:-$build/replay}"
 # --paper-deadzone: the released controller's deadzone test, which its recordings show
 # (docs/controller.md: "Replaying the paper's recordings").
 "$build/controller/raven_controller" --lock-step --paper-deadzone --replay-ci "$data/2arm_ci.csv" \
-  --record twin_2arm --out "$out" "$@"
+  --record yes --name twin_2arm --out "$out" "$@"
 latest="$(ls -t "$out"/twin_2arm_*_rs.csv | head -1)"
 "$build/analysis/raven_analyze" "$data" "$latest" --out "$out/report"

@@ -42,7 +42,8 @@ struct Settings {
   bool no_arm_swap = false;
   std::string start_mode;
   std::string replay_ci, replay_rs;
-  std::string record;
+  std::string record = "no";   ///< from the start: yes or no (the r key records either way)
+  std::string name = "raven";  ///< the recordings' file prefix
   std::string out_dir = "recordings";
   std::string mapping = "m2";
   std::string trigger_range = "xbox-one";
@@ -178,7 +179,7 @@ int run(const Settings& s) {
   const bool replay = !s.replay_ci.empty() || !s.replay_rs.empty();
   controller::SessionOptions session_options;
   session_options.out_dir = s.out_dir;
-  session_options.record_name = s.record.empty() ? "raven" : s.record;
+  session_options.record_name = s.name;
   session_options.end_after_replay = replay;
   controller::ControllerSession session(control, std::move(inputs), session_options);
   std::unique_ptr<controller::TerminalKeys> keys;
@@ -198,7 +199,7 @@ int run(const Settings& s) {
                                       : Mode::Idle;
   if (!s.start_mode.empty()) first = modes.at(s.start_mode);
   if (first != Mode::Idle) session.select(first);
-  if (!s.record.empty()) session.startRecording();
+  if (s.record == "yes") session.startRecording();
 
   auto& reference = *platforms.slots.front().platform;
   const double start = reference.now();
@@ -279,7 +280,11 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   app.add_option("--replay-rs", s.replay_rs, "O4: replay this robot-state file's joints, then quit")
       ->check(CLI::ExistingFile);
-  app.add_option("--record", s.record, "record from the start under this name");
+  app.add_option("--record", s.record,
+                 "write the rs and ci recordings from the start: yes or no (the r key records "
+                 "either way); as raven_peg_transfer's --record")
+      ->check(CLI::IsMember({"yes", "no"}));
+  app.add_option("--name", s.name, "the recordings' file prefix (<name>_<time>_rs.csv, ...)");
   app.add_option("--out", s.out_dir, "where recordings go");
   app.add_option("--mapping", s.mapping, "initial mapping: m2, m1-left or m1-right")
       ->check(CLI::IsMember({"m2", "m1-left", "m1-right"}));

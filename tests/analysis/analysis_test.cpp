@@ -380,7 +380,7 @@ TEST(RavenAnalyze, ReportsTheTwinAsAThirdPlatformWithFigures) {
   test_support::TempDir dir;
   const std::string replay = fmt::format(
       "{} --lock-step --paper-deadzone --no-gamepad --no-keyboard --replay-ci {} --record "
-      "twin_2arm --out {} --video {} --video-size 320x240 > {} 2>&1",
+      "yes --name twin_2arm --out {} --video {} --video-size 320x240 > {} 2>&1",
       RAVEN_CONTROLLER, (paper / "2arm_ci.csv").string(), dir.path().string(),
       (dir.path() / "twin_2arm.mp4").string(), (dir.path() / "controller.log").string());
   ASSERT_EQ(std::system(replay.c_str()), 0)

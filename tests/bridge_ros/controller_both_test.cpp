@@ -20,8 +20,8 @@ TEST(ControllerOverRos, BothPlatformsGetTheSameCommandsAndTheirDivergenceIsRepor
   const auto inputs = dir.write("inputs_ci.csv", ci);
   harness::ChildProcess controller(
       {RAVEN_CONTROLLER, "--platform", "both", "--physical-ns", robot.ns(), "--no-gamepad",
-       "--no-keyboard", "--replay-ci", inputs.string(), "--record", "both", "--out",
-       (dir.path() / "out").string()},
+       "--no-keyboard", "--replay-ci", inputs.string(), "--record", "yes", "--name", "both",
+       "--out", (dir.path() / "out").string()},
       dir.path() / "controller.log");
   ASSERT_EQ(controller.wait(120.0), 0) << test_support::readFile(dir.path() / "controller.log");
   const std::string log = test_support::readFile(dir.path() / "controller.log");

@@ -130,7 +130,8 @@ TEST(Keyboard, SigtermStopsAReplayCleanlyWithItsRecordingOnDisk) {
   // Its replay, recorded too, stopped by SIGTERM as soon as it has started.
   test_support::TempDir second;
   TerminalSession replay({RAVEN_CONTROLLER, "--no-gamepad", "--no-keyboard", "--replay-rs",
-                          roll.string(), "--record", "replay", "--out", second.path().string()});
+                          roll.string(), "--record", "yes", "--name", "replay", "--out",
+                          second.path().string()});
   ASSERT_TRUE(replay.waitFor("mode O4")) << replay.output();
   replay.signal(SIGTERM);
   ASSERT_TRUE(replay.waitFor("done:", 10.0)) << replay.output();

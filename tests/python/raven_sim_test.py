@@ -94,7 +94,7 @@ class ReplayFromPython(unittest.TestCase):
         with tempfile.TemporaryDirectory() as directory:
             cpp, py = os.path.join(directory, "cpp"), os.path.join(directory, "py")
             subprocess.run([CONTROLLER, "--platform", "twin", "--lock-step", "--replay-ci",
-                            PAPER_CI, "--record", "cpp", "--out", cpp, "--no-gamepad",
+                            PAPER_CI, "--record", "yes", "--name", "cpp", "--out", cpp, "--no-gamepad",
                             "--no-keyboard"], check=True, capture_output=True, timeout=600)
             twin = raven_sim.Twin()
             twin.enable_and_home()
