@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Checks the house's floors: every quoted #include stays in its room or goes down to a room the
 room's README allows ("May include: ..."), no include climbs with "..", and the allowed rooms
-form no cycle (no two rooms include each other, directly or around a loop).
+form no cycle (no two rooms include each other, directly or around a loop); and the README stays
+a door (at most README_LINES lines: topics go to docs/).
 
   scripts/check-rooms.py [--graph]     (--graph prints the includes as found, room by room)
 Exit status 1 with one line per breach, naming file and line."""
@@ -27,6 +28,7 @@ PREFIXES = {
     "controller/": "controller", "analysis/": "analysis", "calibration/": "calibration",
     "viewer/": "viewer", "scenario/": "scenario", "study/": "study",
 }
+README_LINES = 200
 ENGINE_STAGES = ["ambf_like/model", "ambf_like/loading", "ambf_like/world"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 MAY_INCLUDE = re.compile(r"^May include:\s*(.*)$", re.MULTILINE)
@@ -126,6 +128,10 @@ def main():
                 problems.append(f"{room}/README.md: may include '{name}', which is no room")
             elif name not in found[room]:
                 problems.append(f"{room}/README.md: allows {name}, which it does not include")
+    lines = len((ROOT / "README.md").read_text().splitlines())
+    if lines > README_LINES:
+        problems.append(f"README.md: {lines} lines, more than {README_LINES} (a door: quick start, "
+                        "rooms, links; topics go to docs/)")
     cycle = find_cycle(found)
     if cycle:
         problems.append("rooms include each other: " + " -> ".join(cycle))
