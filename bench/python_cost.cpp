@@ -4,11 +4,7 @@
 #include <fmt/format.h>
 #include <stdlib.h>
 
-#include <fstream>
-#include <sstream>
-
-#include "harness/child_process.hpp"
-#include "harness/temp_dir.hpp"
+#include "child_output.hpp"
 #include "sections.hpp"
 
 namespace bench {
@@ -20,19 +16,16 @@ constexpr const char* kSection = "python";
 }  // namespace
 
 void measurePython(const BenchSettings& s, Report& report) {
-  harness::TempDir dir;
   setenv("PYTHONPATH", (s.programs / "python").c_str(), 1);
-  const auto log = dir.path() / "python.log";
-  harness::ChildProcess run(
-      {"/usr/bin/python3", RAVEN_PYTHON_BENCH, "--repeat", std::to_string(s.repeat)}, log);
-  if (run.wait(3600.0) != 0) {
-    report.skip(kSection, "raven_sim", "python_step_bench.py failed; see its log");
+  const auto lines = outputLinesOf(
+      {"/usr/bin/python3", RAVEN_PYTHON_BENCH, "--repeat", std::to_string(s.repeat)}, 3600.0);
+  if (!lines) {
+    report.skip(kSection, "raven_sim", "python_step_bench.py failed");
     return;
   }
   // The last line is the JSON; spdlog's lines from the twin come before it.
-  std::ifstream in(log);
-  std::string line, last;
-  while (std::getline(in, line)) {
+  std::string last;
+  for (const std::string& line : *lines) {
     if (!line.empty() && line.front() == '{') last = line;
   }
   const auto r = nlohmann::json::parse(last);

@@ -1,13 +1,12 @@
 // Learning at full size: scripts/retrain-policy.sh as a child process (the expert's
 // demonstrations, behaviour cloning of the state policy, the policy on 20 unseen randomised
-// scenes), its wall times and success taken into the report. One run: it takes about 20 minutes.
+// scenes), its wall times and success taken into the report. One run: it takes about 25 minutes.
 
 #include <fmt/format.h>
 
-#include <fstream>
 #include <regex>
 
-#include "harness/child_process.hpp"
+#include "child_output.hpp"
 #include "harness/temp_dir.hpp"
 #include "sections.hpp"
 
@@ -20,19 +19,17 @@ constexpr const char* kSection = "training";
 }  // namespace
 
 void measureTraining(const BenchSettings& s, Report& report) {
-  harness::TempDir dir;
-  const auto log = dir.path() / "retrain.log";
-  harness::ChildProcess run({RAVEN_RETRAIN_SCRIPT, s.programs.string(), dir.path().string()}, log);
-  if (run.wait(7200.0) != 0) {
+  harness::TempDir work;  // the demonstrations and the policy
+  const auto lines =
+      outputLinesOf({RAVEN_RETRAIN_SCRIPT, s.programs.string(), work.path().string()}, 7200.0);
+  if (!lines) {
     report.skip(kSection, "bc_state", "scripts/retrain-policy.sh failed");
     return;
   }
-  std::ifstream in(log);
   const std::regex times(R"(recorded in (\d+) s, trained in (\d+) s)");
   const std::regex placed(R"(placed (\d+)/(\d+) rings; (\d+)/(\d+) episodes all six)");
-  std::string line;
   std::smatch m;
-  while (std::getline(in, line)) {
+  for (const std::string& line : *lines) {
     if (std::regex_search(line, m, times)) {
       const std::string how = "scripts/retrain-policy.sh: two recordings side by side";
       report.add(measured(kSection, "expert demonstrations, 30 clean + 30 DART 0.3",

@@ -172,6 +172,10 @@ class Policy:
     def reset(self):
         self.features.reset()
 
+    def fresh(self):
+        """The same network with a memory of its own (the features' hold counts)."""
+        return Policy(self.network, self.stats, self.hidden)
+
     def act(self, state):
         import torch
         x = (self.features(state) - self.stats["input_mean"]) / self.stats["input_std"]

@@ -10,21 +10,23 @@
 
 record: the main job's scripted operator on randomised scenes (one seed per episode), in small
 steps (imitation.SteppedExpert), into robomimic's HDF5 layout (raven_sim.demos). The actions are
-joint deltas (14, both arms' targets minus the current ones, left arm first). With --noise the
+joint deltas (14, both arms' targets minus the current ones, left arm first), the waypoints where
+the expert was heading (the actions capped per step); --obs state,rgb,... adds camera images
+(--camera, --image-size). With --noise the
 executed action carries Gaussian noise (DART, Laskey et al. 2017) while the label stays the
 operator's, so the demonstrations show how to recover from small errors.
 
 convert: a gamepad session on the twin (a ci file of the controller) replayed in the environment
 on its scene, recorded in the same layout.
 
-train: behaviour cloning, a multilayer perceptron from imitation.Features to the next action
-(standardised, mean squared error, Adam), on the CPU.
+train: behaviour cloning, one multilayer perceptron for either arm from its imitation.ArmFeatures
+to its waypoint (standardised, mean squared error, Adam), on the CPU.
 
 dagger: one round of DAgger (Ross et al. 2011): the policy drives on new seeds (the expert's
 action instead with probability --beta) while the expert labels every state it reaches; the
 episodes join --collect, and train on all the files gives the next policy.
 
-evaluate: the policy on randomised scenes; its last line is
+evaluate: the policy on randomised scenes (--workers episodes side by side); its last line is
 "placed N/M rings; K/E episodes all six".
 """
 
@@ -160,9 +162,9 @@ def dagger(args):
           f"labels joined {args.collect}")
 
 
-def evaluate_seed(policy_path, seed, time_limit):
+def evaluate_seed(policy, seed, time_limit):
     """One episode of the policy on `seed`'s scene: (rings placed, a line saying how it went)."""
-    policy = Policy.load(policy_path)
+    policy = policy.fresh()  # its own memory of the episode: episodes may run side by side
     env = PegTransferEnv(**{**demos.ENV_KWARGS, "time_limit": time_limit})
     info = demos.run_episode(env, seed, lambda state, _: policy.act(state)).info
     why = f" (the world failed: {info['failure']})" if "failure" in info else ""
@@ -173,8 +175,9 @@ def evaluate(args):
     """Episodes on threads (the twin steps without Python's lock), printed in seed order."""
     from concurrent.futures import ThreadPoolExecutor
     single_threaded()
+    policy = Policy.load(args.policy)
     with ThreadPoolExecutor(args.workers) as pool:
-        runs = pool.map(lambda seed: evaluate_seed(args.policy, seed, args.time_limit), args.seeds)
+        runs = pool.map(lambda seed: evaluate_seed(policy, seed, args.time_limit), args.seeds)
         placed = []
         for rings, line in runs:
             placed.append(rings)

@@ -132,7 +132,7 @@ class ShippedPolicy(unittest.TestCase):
         import torch
         torch.set_num_threads(1)
         # A seed outside training (1000-1029, 2000-2029) and the documented evaluation (1-20).
-        placed, line = learn.evaluate_seed(SHIPPED_POLICY, 57, 120.0)
+        placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 57, 120.0)
         self.assertGreaterEqual(placed, 4, line)
 
 
