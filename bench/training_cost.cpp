@@ -1,6 +1,7 @@
-// Learning at full size: scripts/retrain-policy.sh as a child process (the expert's
-// demonstrations, behaviour cloning of the state policy, the policy on 20 unseen randomised
-// scenes), its wall times and success taken into the report. One run: it takes about 25 minutes.
+// Learning at full size: scripts/retrain-policy.sh and scripts/retrain-image-policy.sh as child
+// processes (the expert's demonstrations, behaviour cloning, the policy on 20 unseen randomised
+// scenes), their wall times and success taken into the report. One run of each: about 25 and 45
+// minutes.
 
 #include <fmt/format.h>
 
@@ -16,14 +17,20 @@ namespace {
 
 constexpr const char* kSection = "training";
 
-}  // namespace
+/// One retraining script and how its rows are named.
+struct Retraining {
+  const char* script;
+  const char* policy;     ///< "state policy", "image policy"
+  const char* demos;      ///< what its recordings are
+  const char* training;   ///< what its training is
+  double target_percent;  ///< the rings it must place on unseen seeds (0: a report only)
+};
 
-void measureTraining(const BenchSettings& s, Report& report) {
+void measure(const BenchSettings& s, Report& report, const Retraining& r) {
   harness::TempDir work;  // the demonstrations and the policy
-  const auto lines =
-      outputLinesOf({RAVEN_RETRAIN_SCRIPT, s.programs.string(), work.path().string()}, 7200.0);
+  const auto lines = outputLinesOf({r.script, s.programs.string(), work.path().string()}, 7200.0);
   if (!lines) {
-    report.skip(kSection, "bc_state", "scripts/retrain-policy.sh failed");
+    report.skip(kSection, r.policy, fmt::format("{} failed", r.script));
     return;
   }
   const std::regex times(R"(recorded in (\d+) s, trained in (\d+) s)");
@@ -31,19 +38,32 @@ void measureTraining(const BenchSettings& s, Report& report) {
   std::smatch m;
   for (const std::string& line : *lines) {
     if (std::regex_search(line, m, times)) {
-      const std::string how = "scripts/retrain-policy.sh: two recordings side by side";
-      report.add(measured(kSection, "expert demonstrations, 30 clean + 30 DART 0.3",
-                          Spread::of({std::stod(m[1])}), "s", how));
-      report.add(measured(kSection, "behaviour cloning, state policy (3 x 256, 30 epochs)",
+      report.add(measured(kSection, fmt::format("{}: expert demonstrations, {}", r.policy, r.demos),
+                          Spread::of({std::stod(m[1])}), "s", "two recordings side by side"));
+      report.add(measured(kSection, fmt::format("{}: {}", r.policy, r.training),
                           Spread::of({std::stod(m[2])}), "s", "torch on the CPU, 2 threads"));
     } else if (std::regex_search(line, m, placed)) {
       const double share = 100.0 * std::stod(m[1]) / std::stod(m[2]);
-      report.add(atLeast(kSection, "state policy: rings placed on unseen seeds 1-20",
-                         Spread::of({share}), "%", 80.0,
-                         fmt::format("{}/{} rings; {}/{} episodes all six", m[1].str(), m[2].str(),
-                                     m[3].str(), m[4].str())));
+      const std::string what = fmt::format("{}/{} rings; {}/{} episodes all six", m[1].str(),
+                                           m[2].str(), m[3].str(), m[4].str());
+      const std::string row = fmt::format("{}: rings placed on unseen seeds 1-20", r.policy);
+      report.add(r.target_percent > 0.0
+                     ? atLeast(kSection, row, Spread::of({share}), "%", r.target_percent, what)
+                     : measured(kSection, row, Spread::of({share}), "%", what));
     }
   }
+}
+
+}  // namespace
+
+void measureTraining(const BenchSettings& s, Report& report) {
+  measure(s, report,
+          {RAVEN_RETRAIN_SCRIPT, "state policy", "30 clean + 30 DART 0.3",
+           "behaviour cloning (3 x 256, 30 epochs)", 80.0});
+  // The issue asks the image policy to aim for half the rings: a report, not a floor.
+  measure(s, report,
+          {RAVEN_RETRAIN_IMAGE_SCRIPT, "image policy", "40 clean + 20 DART 0.3, two cameras",
+           "ring locator from 128 x 96 images (16 epochs)", 0.0});
 }
 
 }  // namespace bench

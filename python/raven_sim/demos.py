@@ -84,7 +84,7 @@ class Episode:
 
 
 def run_episode(env, seed, drive, expert=None, max_steps=None):
-    """One episode: `drive(state, label)` gives the executed action, the expert (if any)
+    """One episode: `drive(observation, label)` gives the executed action, the expert (if any)
     labels every step (`label`: its action, else None), until the episode ends or after
     `max_steps`. Returns the Episode."""
     observation, _ = env.reset(seed=seed)
@@ -100,7 +100,8 @@ def run_episode(env, seed, drive, expert=None, max_steps=None):
             episode.actions.append(label)
             episode.waypoints.append(waypoint)
         episode.observations.append(observation)
-        observation, reward, terminated, truncated, episode.info = env.step(drive(state, label))
+        action = drive(observation, label)
+        observation, reward, terminated, truncated, episode.info = env.step(action)
         episode.rewards.append(reward)
         if terminated or truncated:
             break

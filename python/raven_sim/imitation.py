@@ -165,6 +165,8 @@ class Policy:
     """A cloned policy: a standardised MLP from an arm's features to its waypoint (learnt scale),
     run for each arm; it acts by moving at most STEP_CAP towards it."""
 
+    env_kwargs = {}  # the observations it needs of PegTransferEnv besides the defaults: none
+
     def __init__(self, network, stats, hidden):
         self.network, self.stats, self.hidden = network, stats, hidden
         self.features = Features()
@@ -176,24 +178,28 @@ class Policy:
         """The same network with a memory of its own (the features' hold counts)."""
         return Policy(self.network, self.stats, self.hidden)
 
-    def act(self, state):
+    def act(self, observation):
+        """Both arms' joint deltas (14) from the observation (the state, or a dict with it)."""
         import torch
+        state = observation["state"] if isinstance(observation, dict) else observation
         x = (self.features(state) - self.stats["input_mean"]) / self.stats["input_std"]
         with torch.no_grad():
             y = self.network(torch.as_tensor(x, dtype=torch.float32)).numpy().astype(np.float64)
         waypoint = from_learnt(y * self.stats["output_std"] + self.stats["output_mean"]).ravel()
         return np.clip(waypoint, -STEP_CAP, STEP_CAP)
 
+    def checkpoint(self, **about):
+        """What save() writes: the network, its scaling and what it was made from."""
+        return {"network": self.network.state_dict(), "hidden": self.hidden,
+                "stats": {k: v.tolist() for k, v in self.stats.items()},
+                "features": ArmFeatures.size, "output": OUTPUT, **about}
+
     def save(self, path, **about):
         import torch
-        torch.save({"network": self.network.state_dict(), "hidden": self.hidden,
-                    "stats": {k: v.tolist() for k, v in self.stats.items()},
-                    "features": ArmFeatures.size, "output": OUTPUT, **about}, path)
+        torch.save(self.checkpoint(**about), path)
 
     @staticmethod
-    def load(path):
-        import torch
-        saved = torch.load(path)
+    def from_checkpoint(saved, path):
         if saved.get("features") != ArmFeatures.size or saved.get("output") != OUTPUT:
             raise ValueError(f"{path}: a policy of another version ({saved.get('features')} "
                              f"inputs per arm, output {saved.get('output')}; this version: "
@@ -203,6 +209,11 @@ class Policy:
         network.load_state_dict(saved["network"])
         network.eval()
         return Policy(network, stats, saved["hidden"])
+
+    @staticmethod
+    def load(path):
+        import torch
+        return Policy.from_checkpoint(torch.load(path), path)
 
 
 def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print, start=None):

@@ -7,6 +7,10 @@
         --collect dagger.hdf5
     python3 -m raven_sim.learn train --demos demos.hdf5 dagger.hdf5 --out bc_state.pt
     python3 -m raven_sim.learn evaluate --policy bc_state.pt --seeds 1-20
+    python3 -m raven_sim.learn record --episodes 20 --seeds 3000-3019 --obs state,rgb \\
+        --camera left-task,right-task --out images.hdf5
+    python3 -m raven_sim.learn train --obs rgb --demos images.hdf5 --state-policy bc_state.pt \\
+        --out bc_rgb.pt
 
 record: the main job's scripted operator on randomised scenes (one seed per episode), in small
 steps (imitation.SteppedExpert), into robomimic's HDF5 layout (raven_sim.demos). The actions are
@@ -20,13 +24,16 @@ convert: a gamepad session on the twin (a ci file of the controller) replayed in
 on its scene, recorded in the same layout.
 
 train: behaviour cloning, one multilayer perceptron for either arm from its imitation.ArmFeatures
-to its waypoint (standardised, mean squared error, Adam), on the CPU.
+to its waypoint (standardised, mean squared error, Adam), on the CPU. With --obs rgb: an image
+policy (vision.ImagePolicy), a ring locator trained on the demos' task-camera images that the
+state policy --state-policy acts through.
 
 dagger: one round of DAgger (Ross et al. 2011): the policy drives on new seeds (the expert's
 action instead with probability --beta) while the expert labels every state it reaches; the
 episodes join --collect, and train on all the files gives the next policy.
 
-evaluate: the policy on randomised scenes (--workers episodes side by side); its last line is
+evaluate: the policy (state or image) on randomised scenes (--workers episodes side by side); its
+last line is
 "placed N/M rings; K/E episodes all six".
 """
 
@@ -38,6 +45,7 @@ import numpy as np
 from . import demos
 from .env import OBSERVATIONS, PegTransferEnv
 from .imitation import Policy, SteppedExpert, fit
+from .vision import ImagePolicy, fit_locator, load_locator_samples, load_policy
 
 # DART's noise scale per joint (rad; the insertion m), times --noise.
 NOISE_SCALE = np.array([0.004, 0.004, 0.0004, 0.02, 0.02, 0.02, 0.02] * 2)
@@ -85,8 +93,9 @@ def enough_seeds(args):
 
 
 def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None):
-    """Episodes on `seeds`, `drive(state, label)` acting and the expert labelling, into `data`;
-    prints each and returns the rings placed. `policy` (if any) starts each episode afresh."""
+    """Episodes on `seeds`, `drive(observation, label)` acting and the expert labelling, into
+    `data`; prints each and returns the rings placed. `policy` (if any) starts each episode
+    afresh."""
     placed = 0
     for seed in seeds:
         if policy is not None:
@@ -128,13 +137,32 @@ def convert(args):
 def train(args):
     import torch
     torch.set_num_threads(args.threads)
+    if args.obs == "rgb":
+        return train_image_policy(args)
     states, waypoints = demos.load_all(args.demos)
     start = Policy.load(args.init) if args.init else None
-    policy, samples, seconds = fit(states, waypoints, [args.width] * args.layers, args.epochs, args.batch,
-                                   args.lr, args.seed, start=start)
+    policy, samples, seconds = fit(states, waypoints, [args.width] * args.layers, args.epochs,
+                                   args.batch, args.lr, args.seed, start=start)
     policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds)
     print(f"trained on {len(states)} demonstrations, {samples} steps, in {seconds:.0f} s: "
           f"{args.out}")
+
+
+def train_image_policy(args):
+    """The ring locator on the demos' task-camera images, joined to the state policy."""
+    if not args.state_policy:
+        sys.exit("train --obs rgb: --state-policy names the state policy that acts on the rings "
+                 "the images show")
+    images, rings = load_locator_samples(args.demos)
+    size = (images.shape[3], images.shape[2])
+    print(f"{len(images)} arm images of {size[0]}x{size[1]}", flush=True)
+    locator, error, seconds = fit_locator(images, rings, args.epochs, args.batch, args.lr,
+                                          args.seed)
+    policy = ImagePolicy(locator, Policy.load(args.state_policy), size)
+    policy.save(args.out, demos=args.demos, samples=len(images), seconds=seconds,
+                state_policy=args.state_policy, ring_error_mm=error)
+    print(f"trained the ring locator on {len(images)} arm images in {seconds:.0f} s (last "
+          f"epoch's ring error {error:.2f} mm), with {args.state_policy}: {args.out}")
 
 
 def single_threaded():
@@ -150,8 +178,8 @@ def dagger(args):
     env = PegTransferEnv(**demos.ENV_KWARGS)
     policy = Policy.load(args.policy)
 
-    def drive(state, label):
-        action = policy.act(state)  # every step: the policy keeps its memory
+    def drive(observation, label):
+        action = policy.act(observation)  # every step: the policy keeps its memory
         return label if rng.random() < args.beta else action
 
     f, data = demos.open_demos(args.collect, demos.ENV_KWARGS, "DAgger", mode="a")
@@ -165,8 +193,9 @@ def dagger(args):
 def evaluate_seed(policy, seed, time_limit):
     """One episode of the policy on `seed`'s scene: (rings placed, a line saying how it went)."""
     policy = policy.fresh()  # its own memory of the episode: episodes may run side by side
-    env = PegTransferEnv(**{**demos.ENV_KWARGS, "time_limit": time_limit})
-    info = demos.run_episode(env, seed, lambda state, _: policy.act(state)).info
+    env = PegTransferEnv(**{**demos.ENV_KWARGS, **policy.env_kwargs,
+                            "time_limit": time_limit})
+    info = demos.run_episode(env, seed, lambda observation, _: policy.act(observation)).info
     why = f" (the world failed: {info['failure']})" if "failure" in info else ""
     return info["placed"], f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s{why}"
 
@@ -175,7 +204,7 @@ def evaluate(args):
     """Episodes on threads (the twin steps without Python's lock), printed in seed order."""
     from concurrent.futures import ThreadPoolExecutor
     single_threaded()
-    policy = Policy.load(args.policy)
+    policy = load_policy(args.policy)
     with ThreadPoolExecutor(args.workers) as pool:
         runs = pool.map(lambda seed: evaluate_seed(policy, seed, args.time_limit), args.seeds)
         placed = []
@@ -221,6 +250,11 @@ def main(argv=None):
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--threads", type=int, default=2, help="torch's CPU threads")
     p.add_argument("--init", help="a policy to go on training (its network and scaling)")
+    p.add_argument("--obs", choices=["state", "rgb"], default="state",
+                   help="rgb: an image policy (vision.ImagePolicy): a ring locator trained on "
+                        "the demos' task-camera images, acting through --state-policy "
+                        "(scripts/retrain-image-policy.sh: --epochs 16 --batch 128 --lr 1e-3)")
+    p.add_argument("--state-policy", help="with --obs rgb: the state policy that acts")
     p.set_defaults(run=train)
     p = sub.add_parser("dagger", help="a DAgger round: the policy drives, the expert labels")
     p.add_argument("--policy", required=True, help="the policy that drives")

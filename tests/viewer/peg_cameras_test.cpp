@@ -1,6 +1,7 @@
 // The peg scene's cameras as observations: images of the asked size, segmentation ids that find
 // every ring, post, arm and the board where they are, depth that agrees with the camera's
-// geometry, and the same world rendered twice giving the same images.
+// geometry, the same world rendered twice giving the same images, and a camera made while an
+// older one still exists drawing after that one is gone (an environment's reset does this).
 
 #include "scenario/peg_cameras.hpp"
 
@@ -60,6 +61,21 @@ TEST(PegCameras, SegmentationFindsEveryRingPostAndArmAndDepthIsMetres) {
   EXPECT_EQ(again[0].rgb, overview.rgb);
   EXPECT_EQ(again[0].segmentation, overview.segmentation);
   EXPECT_EQ(images[1].segmentation.size(), 256u * 192u);
+}
+
+TEST(PegCameras, ANewCameraStillDrawsAfterTheOldOneIsGone) {
+  test_support::HeadlessPegScene scene;
+  if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
+  auto old_cameras = std::make_unique<scenario::PegCameras>(
+      *scene.world, std::vector<std::string>{"left-task"}, 64, 48);
+  const std::vector<std::uint8_t> first =
+      old_cameras->render(*scene.world, true, false, false)[0].rgb;
+  scenario::PegCameras cameras(*scene.world, {"left-task"}, 64, 48);
+  old_cameras.reset();  // its framebuffer's names are also the new context's
+  const auto images = cameras.render(*scene.world, true, false, true);
+  EXPECT_EQ(images[0].rgb, first);
+  std::set<std::uint32_t> seen(images[0].segmentation.begin(), images[0].segmentation.end());
+  EXPECT_TRUE(seen.count(scenario::kFirstRing)) << "the new camera drew no ring";
 }
 
 }  // namespace

@@ -77,6 +77,9 @@ HeadlessContext::~HeadlessContext() {
 
 void HeadlessContext::release() {
   if (context_ != EGL_NO_CONTEXT) {
+    // The framebuffer's names are this context's: deleted with another context current (a newer
+    // camera's), they would delete that one's framebuffer, and it would draw black.
+    eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_);
     glDeleteRenderbuffers(2, renderbuffers_);
     glDeleteFramebuffers(1, &framebuffer_);
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
