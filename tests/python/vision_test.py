@@ -107,7 +107,7 @@ class ImageDemonstrations(unittest.TestCase):
             self.assertEqual(loaded.env_kwargs["image_size"], (32, 24))
             run = subprocess.run(
                 [sys.executable, "-m", "raven_sim.learn", "evaluate", "--policy", policy,
-                 "--seeds", "7", "--time-limit", "1"], capture_output=True, text=True,
+                 "--seeds", "7", "--time-limit", "3"], capture_output=True, text=True,
                 check=True)
             self.assertRegex(run.stdout.strip().splitlines()[-1],
                              r"^placed \d/6 rings; [01]/1 episodes all six$")
