@@ -24,4 +24,4 @@ learn train --obs rgb --demos clean.hdf5 clean2.hdf5 dart.hdf5 --state-policy "$
   --epochs 16 --batch 128 --lr 1e-3 --out bc_rgb.pt | tail -n 1
 trained=$(date +%s)
 echo "recorded in $((recorded - start)) s, trained in $((trained - recorded)) s: $work/bc_rgb.pt"
-learn evaluate --policy bc_rgb.pt --seeds 1-20 --workers 2 2>/dev/null | tail -n 1
+learn evaluate --policy bc_rgb.pt --seeds 1-20 --workers 2 2>/dev/null | tee evaluate.log | tail -n 1

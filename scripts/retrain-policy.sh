@@ -19,4 +19,4 @@ tail -n 1 clean.log dart.log
 learn train --demos clean.hdf5 dart.hdf5 --out bc_state.pt | tail -n 1
 trained=$(date +%s)
 echo "recorded in $((recorded - start)) s, trained in $((trained - recorded)) s: $work/bc_state.pt"
-learn evaluate --policy bc_state.pt --seeds 1-20 --workers 2 2>/dev/null | tail -n 1
+learn evaluate --policy bc_state.pt --seeds 1-20 --workers 2 2>/dev/null | tee evaluate.log | tail -n 1
