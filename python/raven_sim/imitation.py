@@ -216,6 +216,35 @@ class Policy:
         return Policy.from_checkpoint(torch.load(path), path)
 
 
+def train_mse(network, inputs, targets, epochs, batch, lr, seed, measure, log_epoch):
+    """Trains `network` on the tensors (inputs, targets): mean squared error over shuffled
+    batches, Adam with a cosine schedule. Per epoch it calls log_epoch(epoch, the sum of
+    measure(predicted, target, loss) over its batches, seconds so far). Leaves the network in
+    evaluation mode; returns the last epoch's sum and the seconds it took."""
+    import torch
+    optimiser = torch.optim.Adam(network.parameters(), lr=lr)
+    batches = (len(inputs) + batch - 1) // batch
+    schedule = torch.optim.lr_scheduler.CosineAnnealingLR(optimiser, epochs * batches)
+    generator = torch.Generator().manual_seed(seed)
+    began = time.time()
+    total = 0.0
+    for epoch in range(epochs):
+        order = torch.randperm(len(inputs), generator=generator)
+        total = 0.0
+        for i in range(0, len(inputs), batch):
+            rows = order[i:i + batch]
+            predicted = network(inputs[rows])
+            loss = torch.nn.functional.mse_loss(predicted, targets[rows])
+            optimiser.zero_grad()
+            loss.backward()
+            optimiser.step()
+            schedule.step()
+            total += measure(predicted.detach(), targets[rows], loss.item())
+        log_epoch(epoch, total, time.time() - began)
+    network.eval()
+    return total, time.time() - began
+
+
 def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print, start=None):
     """Trains a Policy on episodes (lists of state and waypoint arrays): Adam with a cosine
     schedule, mean squared error on the standardised learnt scale. `start`: a policy to go on
@@ -234,23 +263,11 @@ def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print
         network.train()
     xt = torch.as_tensor((x - stats["input_mean"]) / stats["input_std"], dtype=torch.float32)
     yt = torch.as_tensor((y - stats["output_mean"]) / stats["output_std"], dtype=torch.float32)
-    optimiser = torch.optim.Adam(network.parameters(), lr=lr)
-    batches = (len(xt) + batch - 1) // batch
-    schedule = torch.optim.lr_scheduler.CosineAnnealingLR(optimiser, epochs * batches)
-    generator = torch.Generator().manual_seed(seed)
-    began = time.time()
-    for epoch in range(epochs):
-        order = torch.randperm(len(xt), generator=generator)
-        total = 0.0
-        for i in range(0, len(xt), batch):
-            rows = order[i:i + batch]
-            loss = torch.nn.functional.mse_loss(network(xt[rows]), yt[rows])
-            optimiser.zero_grad()
-            loss.backward()
-            optimiser.step()
-            schedule.step()
-            total += loss.item() * len(rows)
+
+    def log_epoch(epoch, total, seconds):
         if epoch % 10 == 0 or epoch == epochs - 1:
-            log(f"epoch {epoch}: loss {total / len(xt):.5f} ({time.time() - began:.0f} s)")
-    network.eval()
-    return Policy(network, stats, list(hidden)), len(xt), time.time() - began
+            log(f"epoch {epoch}: loss {total / len(xt):.5f} ({seconds:.0f} s)")
+
+    _, seconds = train_mse(network, xt, yt, epochs, batch, lr, seed,
+                           lambda predicted, target, loss: loss * len(target), log_epoch)
+    return Policy(network, stats, list(hidden)), len(xt), seconds

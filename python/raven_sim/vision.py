@@ -18,11 +18,9 @@ The locator learns from the demonstrations' images with their recorded ring cent
 policy from the same demonstrations' states (behaviour cloning, imitation.fit).
 """
 
-import time
-
 import numpy as np
 
-from .imitation import LAYOUT, REST_Z, RINGS, Policy
+from .imitation import LAYOUT, REST_Z, RINGS, Policy, train_mse
 
 CAMERAS = ("left-task", "right-task")  # per arm, left first
 KIND = "image policy: RingLocator on each arm's task camera + imitation.Policy"
@@ -193,24 +191,13 @@ def fit_locator(images, rings, epochs, batch=128, lr=1e-3, seed=0, log=print):
     locator = make_locator()
     images = torch.as_tensor(images)
     rings = torch.as_tensor(rings, dtype=torch.float32)
-    optimiser = torch.optim.Adam(locator.parameters(), lr=lr)
-    batches = (len(images) + batch - 1) // batch
-    schedule = torch.optim.lr_scheduler.CosineAnnealingLR(optimiser, epochs * batches)
-    generator = torch.Generator().manual_seed(seed)
-    began = time.time()
-    for epoch in range(epochs):
-        order = torch.randperm(len(images), generator=generator)
-        error = 0.0
-        for i in range(0, len(images), batch):
-            rows = order[i:i + batch]
-            predicted = locator(images[rows])
-            loss = torch.nn.functional.mse_loss(predicted, rings[rows])
-            optimiser.zero_grad()
-            loss.backward()
-            optimiser.step()
-            schedule.step()
-            error += (predicted - rings[rows]).detach().reshape(-1, 3, 3).norm(dim=2).sum().item()
-        error /= 3 * len(images)
-        log(f"epoch {epoch}: ring error {error:.2f} mm ({time.time() - began:.0f} s)")
-    locator.eval()
-    return locator, error, time.time() - began
+
+    def ring_error(predicted, target, _):  # summed over the batch's rings, mm
+        return (predicted - target).reshape(-1, 3, 3).norm(dim=2).sum().item()
+
+    def log_epoch(epoch, total, seconds):
+        log(f"epoch {epoch}: ring error {total / (3 * len(images)):.2f} mm ({seconds:.0f} s)")
+
+    total, seconds = train_mse(locator, images, rings, epochs, batch, lr, seed, ring_error,
+                               log_epoch)
+    return locator, total / (3 * len(images)), seconds
