@@ -41,8 +41,8 @@ void bindPegTransferEnv(py::module_& m) {
         py::dict out;
         out["jobs"] = jobs;
         out["board_top"] = layout.geometry.board_top;
-        out["ring_radius"] = layout.ring_radius;
-        out["ring_height"] = layout.ring_height;
+        out["ring_radius"] = layout.ring.major_radius;
+        out["ring_height"] = 2.0 * layout.ring.half_height;
         return out;
       },
       "the peg transfer's design values: its six jobs (peg, arm 0 left / 1 right, the start and "

@@ -1,10 +1,12 @@
 // raven_peg_transfer: the project's main job. Runs the peg transfer (or the paper's rectangle
 // task D_II) on the in-process twin, headless, no ROS master: one run with a per-peg report, or
-// a seeded randomised batch, split across machines with --shard, as JSON lines.
+// a seeded randomised batch, split across machines with --shard, as JSON lines. With --over-ros
+// the same job drives the twin node through the robot's ROS topics in lock-step.
 
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -14,11 +16,15 @@
 #include <fstream>
 #include <thread>
 
+#include "bridge/ros/ros_runtime.hpp"
+#include "harness/ros_master.hpp"
+#include "raven/design/arm_design.hpp"
 #include "recording/cf_recording.hpp"
 #include "scenario/batch.hpp"
 #include "scenario/batch_summary.hpp"
 #include "scenario/console_report.hpp"
 #include "scenario/handover_reach.hpp"
+#include "scenario/ros/peg_transfer_over_ros.hpp"
 #include "scenario/run_watcher.hpp"
 #include "scenario/task_views.hpp"
 
@@ -57,11 +63,13 @@ struct Settings {
   common::VideoFlags video;                    ///< a batch: FILE_seed<N>.mp4
   std::string video_view = "overview";
   std::string video_first_frame;
+  bool over_ros = false;
+  scenario::ros1::OverRosOptions ros;
 };
 
 constexpr std::size_t kHandoverSamples = 100000;
-/// The grasper jaw's length past the jaw axis (m): raven_description/tools/arm_design.hpp.
-constexpr double kJawLength = 0.011;
+/// The grasper jaw's length past the jaw axis (m).
+const double kJawLength = raven::design::ArmDesign{}.jaw_length;
 
 /// Logs go to stderr, so stdout holds only the report.
 void setUpLogging(const Settings& s) {
@@ -137,7 +145,8 @@ int runPegTransfers(const Settings& s) {
   const std::string which =
       single ? fmt::format("seed {}", seeds.front())
              : fmt::format("{} runs, seeds {}..{}", seeds.size(), s.seed, s.seed + s.runs - 1);
-  fmt::print("Peg transfer on the Raven-II twin: {}{}, {} scene, grasp assist {}{}\n", which,
+  fmt::print("Peg transfer on the Raven-II twin{}: {}{}, {} scene, grasp assist {}{}\n",
+             s.over_ros ? " over ROS" : "", which,
              shard.count > 1 ? fmt::format(" (shard {}: every {}th from seed {})", s.shard,
                                            shard.count, s.seed + shard.index - 1)
                              : "",
@@ -153,7 +162,8 @@ int runPegTransfers(const Settings& s) {
   if (single) {
     options.seed = seeds.front();
     options.progress = [&bar](const scenario::RunProgress& p) { bar.show(p); };
-    results.push_back(scenario::runPegTransfer(options));
+    results.push_back(s.over_ros ? scenario::ros1::runPegTransferOverRos(options, s.ros)
+                                 : scenario::runPegTransfer(options));
     jsonl << results.back().json().dump() << '\n' << std::flush;
   } else {
     std::vector<scenario::PegTransferResult> finished;
@@ -293,6 +303,16 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(view_names));
   app.add_option("--video-first-frame", s.video_first_frame,
                  "FILE.png: the video's first frame as a picture too (a single run)");
+  app.add_flag("--over-ros", s.over_ros,
+               "drive the twin node through the robot's ROS topics in lock-step (started here "
+               "unless --robot-namespace; a private rosmaster without ROS_MASTER_URI)");
+  app.add_option("--robot-namespace", s.ros.robot_namespace,
+                 "--over-ros: a twin node already serving the peg scene in lock-step there")
+      ->needs("--over-ros");
+  app.add_option("--twin-node", s.ros.twin_node,
+                 "--over-ros: the raven_twin_node program to start (default: the built one)")
+      ->check(CLI::ExistingFile)
+      ->needs("--over-ros");
   app.add_flag("-q,--quiet", s.quiet, "warnings and errors only");
   app.add_flag("-v,--verbose", s.verbose, "log every phase of every transfer");
   CLI11_PARSE(app, argc, argv);
@@ -305,6 +325,23 @@ int main(int argc, char** argv) {
     if (!s.video.file.empty() && s.task != "peg") {
       spdlog::error("--video records the peg transfer (not --task {})", s.task);
       return 2;
+    }
+    if (s.over_ros &&
+        (s.runs > 1 || s.task != "peg" || s.gui || !s.snapshot.empty() || !s.video.file.empty())) {
+      spdlog::error(
+          "--over-ros runs a single peg transfer (no --runs, --task, --gui, "
+          "--snapshot or --video)");
+      return 2;
+    }
+    // Over ROS: a master of our own unless the environment names one.
+    std::unique_ptr<harness::RosMaster> master;
+    if (s.over_ros) {
+      if (std::getenv("ROS_MASTER_URI") == nullptr) master = std::make_unique<harness::RosMaster>();
+      int ros_argc = 1;
+      char name[] = "raven_peg_transfer";
+      char* ros_argv[] = {name, nullptr};
+      bridge::ros1::initRos(ros_argc, ros_argv, "raven_peg_transfer_" + std::to_string(::getpid()),
+                            false);
     }
     return s.task == "rectangle" ? runRectangleTask(s) : runPegTransfers(s);
   } catch (const std::invalid_argument& e) {

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 
+#include "raven/design/arm_design.hpp"
 #include "scenario/grip_geometry.hpp"
 
 namespace scenario {
@@ -14,7 +14,6 @@ namespace scenario {
 namespace {
 
 constexpr double kOpen = 1.3;         ///< the outer jaw's angle when open (rad): clear of the ring
-constexpr double kJawLength = 0.011;  ///< jaw axis to tips (raven_description/tools/arm_design)
 constexpr double kJawStep = 0.05;     ///< jaw angle per iteration
 constexpr double kStep = 0.001;       ///< tool travel per iteration (m)
 constexpr double kAboveTop = 0.0035;  ///< the jaw axis above the ring's top at the grasp
@@ -24,15 +23,10 @@ constexpr double kLift = 0.030;       ///< the ring's bottom clears the 22 mm po
 constexpr double kRetreat = 0.025;
 constexpr double kReleaseHeight = 0.0015;  ///< the ring's bottom above the board when let go
 constexpr int kSettleIterations = 15;
-constexpr double kCentred = 0.0005;      ///< the ring's centre this near the post's axis (m)
-constexpr int kCentringIterations = 40;  ///< ... or this many iterations of trying
-constexpr double kStationWindow = 8.0 * M_PI / 180.0;
+constexpr double kCentred = 0.0005;        ///< the ring's centre this near the post's axis (m)
+constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
 constexpr int kMaxRegrasps = 2;            ///< per peg, as an operator would before moving on
 constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much more (of the first)
-
-double angleAbout(const Eigen::Vector2d& centre, const Eigen::Vector3d& p) {
-  return std::atan2(p.y() - centre.y(), p.x() - centre.x());
-}
 
 }  // namespace
 
@@ -55,32 +49,15 @@ ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
   if (jobs_.empty()) phase_ = Phase::Done;
 }
 
-void ArmRoutine::plan(const ambf_like::World& world) {
-  const auto& peg = world.softBody(jobs_[job_].peg);
-  const PegState state = inspect(peg);
-  const Eigen::Vector2d centre = state.centre.head<2>();
-  // The station (one ring of the tube's nodes) nearest the peg's -y side, away from the
-  // target row: the nodes within a few degrees of the node nearest -90 degrees.
-  const auto& nodes = peg.nodePositions();
-  auto offSide = [&](const Eigen::Vector3d& p) {
-    return std::abs(std::remainder(angleAbout(centre, p) + M_PI / 2, 2 * M_PI));
-  };
-  const auto nearest =
-      std::min_element(nodes.begin(), nodes.end(),
-                       [&](const auto& a, const auto& b) { return offSide(a) < offSide(b); });
-  const double station_angle = angleAbout(centre, *nearest);
-  Eigen::Vector3d station = Eigen::Vector3d::Zero();
-  double top = -std::numeric_limits<double>::infinity();
-  int count = 0;
-  for (const auto& p : nodes) {
-    top = std::max(top, p.z());
-    if (std::abs(std::remainder(angleAbout(centre, p) - station_angle, 2 * M_PI)) <
-        kStationWindow) {
-      station += p;
-      ++count;
-    }
-  }
-  station /= count;
+RingView ArmRoutine::ring(const bridge::ScenePerception& scene) const {
+  return RingView(scene.sight(jobs_[job_].peg), layout_.ring);
+}
+
+void ArmRoutine::plan(const bridge::ScenePerception& scene) {
+  const RingView peg = ring(scene);
+  const Eigen::Vector2d centre = peg.centre().head<2>();
+  // The station: the tube's centre line on the ring's -y side, away from the target row.
+  const Eigen::Vector3d station = peg.centreLineToward(-Eigen::Vector2d::UnitY());
   const Eigen::Vector2d inward = (centre - station.head<2>()).normalized();
   // Jaws down; jaw 1 (the inner one) swings towards grasp_scale's side of the tool's y axis.
   const double side = profile_.arm(arm_).grasp_scale > 0 ? 1.0 : -1.0;
@@ -88,17 +65,17 @@ void ArmRoutine::plan(const ambf_like::World& world) {
   grasp_.orientation.col(0) = x;
   grasp_.orientation.col(1) = y;
   grasp_.orientation.col(2) = x.cross(y);
-  const Eigen::Vector2d face = station.head<2>() + inward * (layout_.tube_half_width + kGap);
-  grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), top + kAboveTop);
+  const Eigen::Vector2d face = station.head<2>() + inward * (layout_.ring.tube_half_width + kGap);
+  grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), peg.top() + kAboveTop);
   grasp_.offset = face - centre;
 }
 
 double ArmRoutine::jawAngleFor(double squeeze) const {
-  const PinchedWall wall{.half_width = layout_.tube_half_width,
-                         .half_height = layout_.ring_height / 2,
+  const PinchedWall wall{.half_width = layout_.ring.tube_half_width,
+                         .half_height = layout_.ring.half_height,
                          .pivot_above = kAboveTop,
                          .gap = kGap,
-                         .jaw_length = kJawLength};
+                         .jaw_length = raven::design::ArmDesign{}.jaw_length};
   return squeezingAngle(wall, squeeze);
 }
 
@@ -157,18 +134,19 @@ bool ArmRoutine::decideToRegrasp(const char* why) {
   return true;
 }
 
-bool ArmRoutine::ringFollows(const ambf_like::World& world) const {
-  return layout_.geometry.offTheBoard(inspect(world.softBody(jobs_[job_].peg)).bottom);
+bool ArmRoutine::ringFollows(const bridge::ScenePerception& scene) const {
+  return layout_.geometry.offTheBoard(ring(scene).bottom());
 }
 
-raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_like::World& world) {
+raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target,
+                                  const bridge::ScenePerception& scene) {
   bool arrived = false;
   raven::ArmJoints q = target;
   const Phase before = phase_;
   const std::size_t job = job_;
   switch (phase_) {
     case Phase::Orient: {  // one capped move: over the peg, jaws down and open
-      plan(world);
+      plan(scene);
       inner_ = 0.0;
       outer_ = kOpen;
       if (const auto above = overPeg(target)) {
@@ -194,39 +172,39 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
       if (!arrived) break;
-      if (!ringFollows(world) && decideToRegrasp("did not come up with the jaws")) {
+      if (!ringFollows(scene) && decideToRegrasp("did not come up with the jaws")) {
         advance(Phase::Open);
       } else {
         advance(Phase::Carry);
       }
       break;
     case Phase::Carry: {  // over the target post, watching the ring (it sways on its grasp)
-      const PegState peg = inspect(world.softBody(jobs_[job_].peg));
+      const RingView peg = ring(scene);
       const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
       // A ring that came along is centred by sight; without one the jaws go where it would be.
-      const bool carried = layout_.geometry.offTheBoard(peg.bottom);
+      const bool carried = layout_.geometry.offTheBoard(peg.bottom());
       if (!carried && decideToRegrasp("slipped out of the jaws on the way")) {
         advance(Phase::Open);
         break;
       }
       const Eigen::Vector2d offset =
-          carried ? Eigen::Vector2d(tool.head<2>() - peg.centre.head<2>()) : grasp_.offset;
+          carried ? Eigen::Vector2d(tool.head<2>() - peg.centre().head<2>()) : grasp_.offset;
       const Eigen::Vector2d over = jobs_[job_].to + offset;
       q = translate(target, Eigen::Vector3d(over.x(), over.y(), grasp_.pivot.z() + kLift), kStep,
                     arrived);
-      const bool centred = !carried || (peg.centre.head<2>() - jobs_[job_].to).norm() < kCentred;
+      const bool centred = !carried || (peg.centre().head<2>() - jobs_[job_].to).norm() < kCentred;
       if (arrived && (centred || ++waited_ > kCentringIterations)) advance(Phase::Lower);
       break;
     }
     case Phase::Lower: {  // down until the ring is just above the board, still centring it
-      const PegState peg = inspect(world.softBody(jobs_[job_].peg));
-      const double drop = peg.bottom - (layout_.geometry.board_top + kReleaseHeight);
-      if (!layout_.geometry.offTheBoard(peg.bottom)) {  // it did not come along
+      const RingView peg = ring(scene);
+      const double drop = peg.bottom() - (layout_.geometry.board_top + kReleaseHeight);
+      if (!layout_.geometry.offTheBoard(peg.bottom())) {  // it did not come along
         advance(Phase::Open);
         break;
       }
       const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
-      const Eigen::Vector2d shift = jobs_[job_].to - peg.centre.head<2>();
+      const Eigen::Vector2d shift = jobs_[job_].to - peg.centre().head<2>();
       q = translate(target, tool + Eigen::Vector3d(shift.x(), shift.y(), -std::max(drop, 0.0)),
                     kStep, arrived);
       if (arrived) advance(Phase::Open);
@@ -240,8 +218,7 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
     case Phase::Settle:
       if (++waited_ < kSettleIterations) break;
       // A ring let go off its target post is grasped again once the jaws are up and clear.
-      if (!retrying_ &&
-          !restsOn(world.softBody(jobs_[job_].peg), jobs_[job_].to, layout_.geometry)) {
+      if (!retrying_ && !restsOn(ring(scene), jobs_[job_].to, layout_.geometry)) {
         decideToRegrasp("landed off its target post");
       }
       advance(Phase::Retreat);
@@ -264,13 +241,13 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const ambf_lik
       break;
   }
   if (phase_ != before) {
-    const PegState peg = inspect(world.softBody(jobs_[job].peg));
+    const RingView peg(scene.sight(jobs_[job].peg), layout_.ring);
     const Eigen::Vector3d tool = kinematics_.toolPose(q).translation();
     spdlog::debug(
         "{} arm, {}: {} -> {}; tool ({:.4f} {:.4f} {:.4f}), peg centre ({:.4f} {:.4f} "
         "{:.4f}) bottom {:.4f}",
         raven::armName(arm_), jobs_[job].peg, phaseName(before), phaseName(phase_), tool.x(),
-        tool.y(), tool.z(), peg.centre.x(), peg.centre.y(), peg.centre.z(), peg.bottom);
+        tool.y(), tool.z(), peg.centre().x(), peg.centre().y(), peg.centre().z(), peg.bottom());
   }
   return q;
 }

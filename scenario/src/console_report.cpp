@@ -60,12 +60,14 @@ std::string pegTable(const PegTransferResult& result) {
                   "squeeze (N)", "placed", "miss (mm)", "volume ratio", "lost");
   for (const PegOutcome& p : result.pegs) {
     out += fmt::format(
-        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:>11} {:<6} {:>9.1f} {:>6.2f}-{:<6.2f}  "
-        "{}\n",
-        p.peg, raven::armName(p.arm), millimetres(p.from), millimetres(p.to), yesNo(p.grasped),
+        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:>11} {:<6} {:>9.1f} {:>13}  {}\n", p.peg,
+        raven::armName(p.arm), millimetres(p.from), millimetres(p.to), yesNo(p.grasped),
         p.lift * 1e3, p.regrasps,
         fmt::format("{:.2f}/{:.2f}", p.carried_squeeze[0], p.carried_squeeze[1]), yesNo(p.placed),
-        p.miss * 1e3, p.min_volume_ratio, p.max_volume_ratio, p.lost ? p.loss : "no");
+        p.miss * 1e3,
+        p.volume_seen ? fmt::format("{:.2f}-{:.2f}", p.min_volume_ratio, p.max_volume_ratio)
+                      : "not seen",
+        p.lost ? p.loss : "no");
   }
   out += fmt::format("placed {}/{}, lost {}, re-grasps {}{}\n", result.placed(), result.pegs.size(),
                      result.lost(), result.regrasps(),

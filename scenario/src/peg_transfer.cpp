@@ -1,10 +1,15 @@
 #include "scenario/peg_transfer.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
 #include <memory>
 #include <optional>
 
 #include "ambf_like/scene_loader.hpp"
+#include "bridge/enable_and_home.hpp"
+#include "raven/control_cycle.hpp"
 #include "recording/cf_recording.hpp"
 #include "recording/recording_io.hpp"
 #include "scenario/arm_routine.hpp"
@@ -13,6 +18,7 @@
 #include "scenario/peg_watch.hpp"
 #include "scenario/scripted_session.hpp"
 #include "twin/calibration_profile.hpp"
+#include "twin/world_perception.hpp"
 
 namespace scenario {
 
@@ -42,71 +48,72 @@ std::array<ArmRoutine, 2> pegTransferOperators(const PegLayout& layout, double s
       ArmRoutine(raven::Arm::Right, profile, layout, layout.jobsOf(raven::Arm::Right), squeeze)};
 }
 
-PegTransferResult runPegTransfer(const PegTransferOptions& options) {
-  PegTransferResult result;
-  result.variation = options.randomize ? SceneVariation::draw(options.seed) : SceneVariation{};
-  result.variation.seed = options.seed;
-  result.assist = options.assist;
-  result.motor_actuation = options.motor_actuation;
+namespace {
 
-  ScriptedSession session(pegTransferTwin(options, result.variation));
-  ambf_like::World& world = session.twin().world();
-  const PegLayout layout;
-  PegWatch watch(world, layout);  // rest volumes: before the first step
+/// What an in-process run adds to the job, both on the world: the grasp assist (after every
+/// move) and the viewer.
+struct InProcessHooks {
+  std::function<void(const std::array<ArmRoutine, 2>&)> after_move = [](const auto&) {};
+  std::function<void(WorldMoment)> show = [](WorldMoment) {};
+};
+
+/// The platform went to FAULT: it takes no more commands.
+class PlatformFault : public std::runtime_error {
+ public:
+  PlatformFault() : std::runtime_error("the platform reported FAULT") {}
+};
+
+/// The rs file a run writes, or none.
+std::filesystem::path rsFileOf(const PegTransferOptions& options) {
+  if (!options.rs_file.empty() || options.rs_folder.empty()) return options.rs_file;
+  return options.rs_folder / ("peg_transfer_seed" + std::to_string(options.seed) + "_rs.csv");
+}
+
+/// The job on a ready platform: the scripted operators move, the watch judges, both through
+/// `scene`; fills the result's pegs, counts and recording.
+void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController& controller,
+            bridge::ScenePerception& scene, const PegTransferOptions& options,
+            const InProcessHooks& hooks, PegTransferResult& result) {
+  scene.update(platform.now());
+  const PegLayout layout = PegLayout::seen(scene);
+  PegWatch watch(layout);
   CarriedSqueeze squeeze;
-  session.makeReady(options.time_limit);
-  controller::DualPlatformController& controller = session.controller();
-  twin::TwinPlatform& twin = session.twin();
-
   std::array<ArmRoutine, 2> routines = pegTransferOperators(layout, options.squeeze);
-  std::optional<GraspAssist> assist;
-  if (options.assist == AssistMode::Contact) {
-    std::vector<std::string> pegs;
-    for (const PegJob& job : layout.jobs) pegs.push_back(job.peg);
-    assist.emplace(world, pegs);
-  }
   std::unique_ptr<recording::RsWriter> rs;
   std::unique_ptr<recording::CfWriter> cf;
-  const std::filesystem::path rs_file =
-      !options.rs_file.empty() || options.rs_folder.empty()
-          ? options.rs_file
-          : options.rs_folder / ("peg_transfer_seed" + std::to_string(options.seed) + "_rs.csv");
-  if (!rs_file.empty()) {
+  if (const auto rs_file = rsFileOf(options); !rs_file.empty()) {
     rs = std::make_unique<recording::RsWriter>(rs_file);
     cf = std::make_unique<recording::CfWriter>(recording::cfPathFor(rs_file));
   }
-
-  RunProgress progress{twin.now(), 0, layout.jobs.size()};
-  auto show = [&](WorldMoment moment) {
-    if (options.observe) options.observe(world, moment, options.seed);
-  };
-  show(WorldMoment::Start);
+  RunProgress progress{platform.now(), 0, layout.jobs.size()};
+  hooks.show(WorldMoment::Start);
   auto done = [&] { return routines[0].done() && routines[1].done(); };
+  auto faulted = [&] { return platform.operatingStatus().state == bridge::OperatingState::Fault; };
   try {
-    while (!done() && twin.now() < options.time_limit && !options.stopRequested()) {
+    while (!done() && platform.now() < options.time_limit && !options.stopRequested()) {
       const controller::ArmPair current = controller.commanded();
-      const controller::ArmPair next{routines[0].next(current[0], world),
-                                     routines[1].next(current[1], world)};
+      const controller::ArmPair next{routines[0].next(current[0], scene),
+                                     routines[1].next(current[1], scene)};
       result.refused += controller.moveTo(next).refused;
-      if (assist) {
-        for (raven::Arm arm : raven::kArms)
-          assist->update(arm, routines[raven::index(arm)].opening());
-      }
+      if (faulted()) throw PlatformFault();
+      scene.update(platform.now());
+      hooks.after_move(routines);
       if (rs) {
-        const auto state = *twin.ravenState();
-        rs->write(state);
-        cf->write(state.time,
-                  {twin.measuredCf(raven::Arm::Left), twin.measuredCf(raven::Arm::Right)});
+        if (const auto state = platform.ravenState()) {
+          rs->write(*state);
+          cf->write(state->time, {platform.measuredCf(raven::Arm::Left),
+                                  platform.measuredCf(raven::Arm::Right)});
+        }
       }
       for (const ArmRoutine& routine : routines) {
-        const auto forces = twin.measuredCf(routine.arm());
-        if (routine.phase() == Phase::Carry && forces && routine.carrying(world)) {
+        const auto forces = platform.measuredCf(routine.arm());
+        if (routine.phase() == Phase::Carry && forces && routine.carrying(scene)) {
           squeeze.record(routine.jobs()[routine.finished()].peg, *forces);
         }
       }
-      watch.observe();
+      watch.observe(scene);
       ++result.iterations;
-      progress.sim_time = twin.now();
+      progress.sim_time = platform.now();
       progress.done = routines[0].finished() + routines[1].finished();
       progress.carrying = static_cast<std::size_t>(
           std::count_if(routines.begin(), routines.end(), [](const ArmRoutine& r) {
@@ -114,29 +121,34 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
                    r.phase() == Phase::Lower;
           }));
       if (options.progress) options.progress(progress);
-      show(WorldMoment::Iteration);
+      hooks.show(WorldMoment::Iteration);
     }
     result.stopped = !done() && options.stopRequested();
     result.timed_out = !done() && !result.stopped;
-    const double settle_end = twin.now() + (result.stopped ? 0.0 : options.settle_time);
-    while (twin.now() < settle_end) {
+    const double settle_end = platform.now() + (result.stopped ? 0.0 : options.settle_time);
+    while (platform.now() < settle_end) {
       controller.idle();
-      watch.observe();
-      show(WorldMoment::Iteration);
+      if (faulted()) throw PlatformFault();
+      scene.update(platform.now());
+      watch.observe(scene);
+      hooks.show(WorldMoment::Iteration);
     }
   } catch (const ambf_like::SimulationDiverged& e) {
-    // The run stops here; its rings' numbers are not results (PegTransferResult::failure).
+    // A world that blew up, a platform in FAULT or rings no longer seen: the run stops here
+    // and its rings' numbers are not results (PegTransferResult::failure).
+    result.failure = e.what();
+  } catch (const PlatformFault& e) {
+    result.failure = e.what();
+  } catch (const bridge::PerceptionError& e) {
     result.failure = e.what();
   }
-  show(WorldMoment::End);
-
-  result.timing = session.timing();
+  hooks.show(WorldMoment::End);
   if (rs) {
     result.rs_file = rs->path();
     result.rs_rows = rs->rows();
   }
-  if (!result.failure.empty()) return result;
-  result.pegs = watch.finish();
+  if (!result.failure.empty()) return;
+  result.pegs = watch.finish(scene);
   for (PegOutcome& outcome : result.pegs) outcome.carried_squeeze = squeeze.median(outcome.peg);
   for (const ArmRoutine& routine : routines) {
     for (std::size_t j = 0; j < routine.jobs().size(); ++j) {
@@ -145,7 +157,65 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
       }
     }
   }
+}
+
+}  // namespace
+
+PegTransferResult runPegTransfer(const PegTransferOptions& options) {
+  PegTransferResult result;
+  result.variation = options.randomize ? SceneVariation::draw(options.seed) : SceneVariation{};
+  result.variation.seed = options.seed;
+  result.assist = options.assist;
+  result.motor_actuation = options.motor_actuation;
+
+  ScriptedSession session(pegTransferTwin(options, result.variation));
+  twin::TwinPlatform& twin = session.twin();
+  const ambf_like::World& world = twin.world();
+  twin::WorldPerception scene(world);
+  session.makeReady(options.time_limit);
+
+  InProcessHooks hooks;
+  std::optional<GraspAssist> assist;
+  if (options.assist == AssistMode::Contact) {
+    std::vector<std::string> pegs;
+    for (const PegJob& job : PegLayout{}.jobs) pegs.push_back(job.peg);
+    assist.emplace(twin.world(), pegs);
+    hooks.after_move = [&](const std::array<ArmRoutine, 2>& routines) {
+      for (const ArmRoutine& routine : routines) assist->update(routine.arm(), routine.opening());
+    };
+  }
+  if (options.observe) {
+    hooks.show = [&](WorldMoment moment) { options.observe(world, moment, options.seed); };
+  }
+  runJob(twin, session.controller(), scene, options, hooks, result);
+  result.timing = session.timing();
   result.grasps = assist ? assist->grasps() : 0;
+  return result;
+}
+
+PegTransferResult runPegTransferOn(bridge::RavenPlatform& platform, bridge::ScenePerception& scene,
+                                   const PegTransferOptions& options) {
+  using Clock = std::chrono::steady_clock;
+  const auto wall_start = Clock::now();
+  PegTransferResult result;
+  result.variation.seed = options.seed;
+  const double sim_start = platform.now();
+  try {
+    bridge::enableAndHome(platform, options.time_limit - platform.now());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("the platform ") + e.what());
+  }
+  controller::DualPlatformController controller(
+      {{"robot", &platform, controller::CommandStyle::ServoJr}}, {});
+  controller.readPose();
+  const auto loop_start = Clock::now();
+  runJob(platform, controller, scene, options, {}, result);
+  const auto end = Clock::now();
+  result.timing.sim_time = platform.now();
+  result.timing.wall_time = std::chrono::duration<double>(end - wall_start).count();
+  result.timing.loop_seconds = std::chrono::duration<double>(end - loop_start).count();
+  result.timing.steps =
+      static_cast<std::uint64_t>(std::llround((platform.now() - sim_start) / raven::kControlCycle));
   return result;
 }
 

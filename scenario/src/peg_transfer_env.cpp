@@ -48,11 +48,13 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   variation.seed = seed;
   expert_.reset();
   ++episode_;
+  scene_.reset();
   session_.reset();  // the old twin goes before the new one is built
   session_ = std::make_unique<ScriptedSession>(pegTransferTwin(run, variation));
   session_->makeReady(options_.time_limit);
   expert_.emplace(pegTransferOperators(layout_, options_.squeeze));
   const ambf_like::World& world = session_->twin().world();
+  scene_ = std::make_unique<twin::WorldPerception>(world);
   for (std::size_t i = 0; i < rings_.size(); ++i) {
     rings_[i] = &world.softBody(layout_.jobs[i].peg);
   }
@@ -101,9 +103,8 @@ Eigen::VectorXd PegTransferEnv::expertAction() {
   if (!failure_.empty()) throw std::logic_error("the episode ended when its world failed");
   controller::DualPlatformController& controller = session().controller();
   const controller::ArmPair& current = controller.commanded();
-  const ambf_like::World& world = session().twin().world();
-  const controller::ArmPair targets{(*expert_)[0].next(current[0], world),
-                                    (*expert_)[1].next(current[1], world)};
+  const controller::ArmPair targets{(*expert_)[0].next(current[0], *scene_),
+                                    (*expert_)[1].next(current[1], *scene_)};
   return actionFor(options_.action, targets, current, kinematics_);
 }
 
@@ -147,8 +148,8 @@ PegTransferStep PegTransferEnv::finishStep(std::size_t refused) {
 
 int PegTransferEnv::countPlaced() const {
   int placed = 0;
-  for (std::size_t i = 0; i < rings_.size(); ++i) {
-    if (restsOn(*rings_[i], layout_.jobs[i].to, layout_.geometry)) ++placed;
+  for (const PegJob& job : layout_.jobs) {
+    if (restsOn(RingView(scene_->sight(job.peg), layout_.ring), job.to, layout_.geometry)) ++placed;
   }
   return placed;
 }

@@ -40,8 +40,8 @@ nlohmann::json PegTransferResult::json() const {
          {"placed", p.placed},
          {"lost", p.lost},
          {"loss", p.loss},
-         {"volume_ratio_min", p.min_volume_ratio},
-         {"volume_ratio_max", p.max_volume_ratio},
+         {"volume_ratio_min", p.volume_seen ? nlohmann::json(p.min_volume_ratio) : nullptr},
+         {"volume_ratio_max", p.volume_seen ? nlohmann::json(p.max_volume_ratio) : nullptr},
          {"final_centre_m", {p.final_centre.x(), p.final_centre.y(), p.final_centre.z()}},
          {"miss_m", p.miss}});
   }

@@ -5,53 +5,51 @@
 
 namespace scenario {
 
-PegWatch::PegWatch(const ambf_like::World& world, const PegLayout& layout, PegIntegrity limits)
+PegWatch::PegWatch(const PegLayout& layout, PegIntegrity limits)
     : layout_(layout), limits_(limits) {
   for (std::size_t i = 0; i < layout_.jobs.size(); ++i) {
     const PegJob& job = layout_.jobs[i];
-    const auto& body = world.softBody(job.peg);
-    pegs_[i] = &body;
-    rest_volume_[i] = inspect(body).volume;
     PegOutcome& o = outcomes_[i];
-    o.peg = body.name();
+    o.peg = job.peg;
     o.arm = job.arm;
     o.from = job.from;
     o.to = job.to;
   }
 }
 
-void PegWatch::observe() {
+void PegWatch::observe(const bridge::ScenePerception& scene) {
   const double board = layout_.geometry.board_top;
-  for (std::size_t i = 0; i < outcomes_.size(); ++i) {
-    PegOutcome& o = outcomes_[i];
+  for (PegOutcome& o : outcomes_) {
     if (o.lost) continue;
-    const PegState s = inspect(*pegs_[i]);
-    const double ratio = s.volume / rest_volume_[i];
-    o.min_volume_ratio = std::min(o.min_volume_ratio, ratio);
-    o.max_volume_ratio = std::max(o.max_volume_ratio, ratio);
-    o.lift = std::max(o.lift, s.bottom - board);
-    o.grasped = o.grasped || layout_.geometry.offTheBoard(s.bottom);
-    if (!s.finite) {
+    const RingView ring(scene.sight(o.peg), layout_.ring);
+    if (ring.volume_ratio) {
+      o.volume_seen = true;
+      o.min_volume_ratio = std::min(o.min_volume_ratio, *ring.volume_ratio);
+      o.max_volume_ratio = std::max(o.max_volume_ratio, *ring.volume_ratio);
+    }
+    const double bottom = ring.bottom();
+    o.lift = std::max(o.lift, bottom - board);
+    o.grasped = o.grasped || layout_.geometry.offTheBoard(bottom);
+    if (!ring.finite()) {
       o.lost = true;
-      o.loss = "non-finite node positions";
-    } else if (std::abs(ratio - 1.0) > limits_.volume_tolerance) {
+      o.loss = "non-finite pose";
+    } else if (ring.volume_ratio && std::abs(*ring.volume_ratio - 1.0) > limits_.volume_tolerance) {
       o.lost = true;
-      o.loss = "volume " + std::to_string(ratio) + " of its rest volume";
-    } else if (s.bottom < board - limits_.below_board) {
+      o.loss = "volume " + std::to_string(*ring.volume_ratio) + " of its rest volume";
+    } else if (bottom < board - limits_.below_board) {
       o.lost = true;
       o.loss = "fell through the board";
     }
   }
 }
 
-std::array<PegOutcome, 6> PegWatch::finish() const {
+std::array<PegOutcome, 6> PegWatch::finish(const bridge::ScenePerception& scene) const {
   auto outcomes = outcomes_;
-  for (std::size_t i = 0; i < outcomes.size(); ++i) {
-    PegOutcome& o = outcomes[i];
-    const PegState s = inspect(*pegs_[i]);
-    o.final_centre = s.centre;
-    o.miss = (s.centre.head<2>() - o.to).norm();
-    o.placed = !o.lost && restsOn(*pegs_[i], o.to, layout_.geometry);
+  for (PegOutcome& o : outcomes) {
+    const RingView ring(scene.sight(o.peg), layout_.ring);
+    o.final_centre = ring.centre();
+    o.miss = (ring.centre().head<2>() - o.to).norm();
+    o.placed = !o.lost && restsOn(ring, o.to, layout_.geometry);
   }
   return outcomes;
 }

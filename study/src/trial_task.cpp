@@ -127,8 +127,9 @@ class PegTransferTask final : public TrialTask {
       const int arm = raven::index(job.arm);
       const double ring = static_cast<double>(i + 1);
       const scenario::PegState s = scenario::inspect(*rings_[i]);
-      const bool placed = scenario::restsOn(*rings_[i], job.to, g);
-      const bool off = g.offTheBoard(s.bottom);
+      const scenario::RingView seen({view.time, rings_[i]->pose(), std::nullopt}, layout_.ring);
+      const bool placed = scenario::restsOn(seen, job.to, g);
+      const bool off = g.offTheBoard(seen.bottom());
       Ring& r = state_[i];
       if (off && !r.lifted) events.add(view.time, "ring_lifted", arm, ring);
       if (placed && !r.placed) events.add(view.time, "ring_placed", arm, ring);

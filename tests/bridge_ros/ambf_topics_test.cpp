@@ -23,7 +23,7 @@ class AmbfTopics : public ::testing::Test {
  protected:
   AmbfTopics()
       : sim_(test_support::simulate({test_support::exampleFile("sensors_actuators.yaml")})),
-        topics_(*sim_->world) {
+        topics_(*sim_->world, false) {
     client_.setCallbackQueue(&queue_);
     sensor_sub_ = client_.subscribe<ambf_msgs::SensorState>(
         "/ambf/env/pad_sensor/State", 1000,

@@ -12,6 +12,7 @@
 #include "scenario/arm_routine.hpp"
 #include "scenario/peg_layout.hpp"
 #include "scenario/scripted_session.hpp"
+#include "twin/world_perception.hpp"
 
 namespace scenario_test {
 
@@ -49,7 +50,7 @@ class OneArmGrasp : public ::testing::Test {
   controller::IterationReport iterate() {
     auto& controller = session_.controller();
     const auto current = controller.commanded();
-    return controller.moveTo({routine_.next(current[0], world()), current[1]});
+    return controller.moveTo({routine_.next(current[0], scene_), current[1]});
   }
   /// Iterates until the routine enters `phase` (at most `limit` iterations), calling `each`
   /// after every iteration.
@@ -72,6 +73,7 @@ class OneArmGrasp : public ::testing::Test {
 
   scenario::PegLayout layout_;
   scenario::ScriptedSession session_;
+  twin::WorldPerception scene_{session_.twin().world()};
   scenario::ArmRoutine routine_;
 };
 

@@ -1,6 +1,8 @@
-// The checks a peg-transfer run is judged by, on the real scene: a ring counts as placed only
-// when threaded on its post and down on the board, and PegWatch calls a peg lost when its nodes
-// go non-finite, its volume leaves the 20 % band, or it falls through the board.
+// The checks a peg-transfer run is judged by, on the real scene and through the perception a run
+// sees it by: a ring's pose (its nodes' shape-matched frame) gives its extremes and whether a
+// post passes through its hole; a ring counts as placed only when threaded on its post and down
+// on the board; PegWatch calls a peg lost when its pose goes non-finite, its volume leaves the
+// 20 % band, or it falls through the board.
 
 #include <BulletSoftBody/btSoftBody.h>
 #include <gtest/gtest.h>
@@ -12,6 +14,7 @@
 #include "scenario/peg_state.hpp"
 #include "scenario/peg_watch.hpp"
 #include "twin/twin_platform.hpp"
+#include "twin/world_perception.hpp"
 
 namespace {
 
@@ -27,28 +30,101 @@ void translate(btSoftBody& body, const btVector3& by) {
   for (int i = 0; i < body.m_nodes.size(); ++i) body.m_nodes[i].m_x += by;
 }
 
+/// Turns every node by `turn` about the nodes' mean.
+void rotate(btSoftBody& body, const Eigen::Matrix3d& turn) {
+  btVector3 mean(0, 0, 0);
+  for (int i = 0; i < body.m_nodes.size(); ++i) mean += body.m_nodes[i].m_x;
+  mean /= body.m_nodes.size();
+  for (int i = 0; i < body.m_nodes.size(); ++i) {
+    const btVector3 d = body.m_nodes[i].m_x - mean;
+    const Eigen::Vector3d r = turn * Eigen::Vector3d(d.x(), d.y(), d.z());
+    body.m_nodes[i].m_x = mean + btVector3(r.x(), r.y(), r.z());
+  }
+}
+
+scenario::RingView seen(const twin::WorldPerception& scene, const std::string& ring) {
+  return scenario::RingView(scene.sight(ring), PegLayout{}.ring);
+}
+
 TEST(PegChecks, EveryRingIsThreadedOnItsStartPostAndOnNoOther) {
   twin::TwinPlatform twin(pegScene());
-  const PegLayout layout;
+  const twin::WorldPerception scene(twin.world());
+  const PegLayout layout = PegLayout::seen(scene);
   for (const auto& job : layout.jobs) {
-    const auto& peg = twin.world().softBody(job.peg);
-    EXPECT_TRUE(scenario::restsOn(peg, job.from, layout.geometry)) << job.peg;
-    EXPECT_FALSE(scenario::restsOn(peg, job.to, layout.geometry)) << job.peg;
-    EXPECT_LT(scenario::bearingGap(peg, job.from), 2 * M_PI / 16 + 0.01) << job.peg;  // 16 stations
-    EXPECT_GT(scenario::bearingGap(peg, job.to), M_PI) << job.peg;  // all on one side
+    const auto ring = seen(scene, job.peg);
+    EXPECT_TRUE(scenario::restsOn(ring, job.from, layout.geometry)) << job.peg;
+    EXPECT_FALSE(scenario::restsOn(ring, job.to, layout.geometry)) << job.peg;
+    EXPECT_LT(ring.postOffset(job.from), 1e-9) << job.peg;  // made centred on it
   }
+}
+
+TEST(PegChecks, TheBoardSeenPlacesThePostsOfTheDesign) {
+  twin::TwinPlatform twin(pegScene());
+  const PegLayout seen_layout = PegLayout::seen(twin::WorldPerception(twin.world()));
+  const PegLayout design;
+  for (std::size_t i = 0; i < design.jobs.size(); ++i) {
+    EXPECT_LT((seen_layout.jobs[i].from - design.jobs[i].from).norm(), 1e-12);
+    EXPECT_LT((seen_layout.jobs[i].to - design.jobs[i].to).norm(), 1e-12);
+  }
+  EXPECT_DOUBLE_EQ(seen_layout.geometry.board_top, design.geometry.board_top);
+  // A board seen turned by 90 degrees about its centre carries its posts with it.
+  Eigen::Isometry3d turned = Eigen::Isometry3d::Identity();
+  turned.translation() << 0.0, 0.08, design.geometry.board_top;
+  turned.linear() = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const PegLayout moved(raven::design::PegSceneDesign{}, turned);
+  const Eigen::Vector2d local = design.jobs[0].from - Eigen::Vector2d(0.0, 0.08);
+  EXPECT_LT(
+      (moved.jobs[0].from - (Eigen::Vector2d(-local.y(), local.x()) + Eigen::Vector2d(0.0, 0.08)))
+          .norm(),
+      1e-12);
+}
+
+TEST(PegChecks, ARingsPoseFollowsItsNodesAndGivesTheirExtremes) {
+  twin::TwinPlatform twin(pegScene());
+  auto& world = twin.world();
+  const twin::WorldPerception scene(world);
+  const auto& body = world.softBody("peg1");
+  // At rest: the spec's orientation, at the nodes' mean, the extremes the nodes have.
+  auto nodeExtremes = [&] {
+    const auto s = scenario::inspect(body);
+    double top = -1.0;
+    for (const auto& p : body.nodePositions()) top = std::max(top, p.z());
+    return std::pair{s.bottom, top};
+  };
+  auto ring = seen(scene, "peg1");
+  EXPECT_TRUE(ring.pose.linear().isApprox(body.spec().location.linear(), 1e-9));
+  EXPECT_LT((ring.centre() - scenario::inspect(body).centre).norm(), 1e-12);
+  EXPECT_NEAR(ring.bottom(), nodeExtremes().first, 1e-9);
+  EXPECT_NEAR(ring.top(), nodeExtremes().second, 1e-9);
+  // Tipped by 0.4 rad about x and turned about z: the pose turns with it, and the extremes are
+  // the elliptic tube's, which the octagonal mesh inscribes (within a few tenths of a mm).
+  const Eigen::Matrix3d turn = (Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()))
+                                   .toRotationMatrix();
+  rotate(world.softBody("peg1").bullet(), turn);
+  ring = seen(scene, "peg1");
+  EXPECT_TRUE(ring.pose.linear().isApprox(turn * body.spec().location.linear(), 1e-9));
+  EXPECT_LE(ring.bottom(), nodeExtremes().first + 1e-9);
+  EXPECT_GT(ring.bottom(), nodeExtremes().first - 0.0005);
+  EXPECT_GE(ring.top(), nodeExtremes().second - 1e-9);
+  EXPECT_LT(ring.top(), nodeExtremes().second + 0.0005);
 }
 
 TEST(PegChecks, ARingPerchedAboveItsPostOrBesideItIsNotPlaced) {
   twin::TwinPlatform twin(pegScene());
+  const twin::WorldPerception scene(twin.world());
   const PegLayout layout;
   const auto& job = layout.jobs[0];
   auto& peg = twin.world().softBody(job.peg);
   translate(peg.bullet(), btVector3(0, 0, 0.03));  // held over the post, not on it
-  EXPECT_FALSE(scenario::restsOn(peg, job.from, layout.geometry));
+  EXPECT_TRUE(seen(scene, job.peg).threadedOn(job.from));
+  EXPECT_FALSE(scenario::restsOn(seen(scene, job.peg), job.from, layout.geometry));
   translate(peg.bullet(), btVector3(0.012, 0, -0.03));  // down on the board, beside the post
-  EXPECT_FALSE(scenario::restsOn(peg, job.from, layout.geometry));
-  EXPECT_GT(scenario::bearingGap(peg, job.from), M_PI);
+  EXPECT_FALSE(seen(scene, job.peg).threadedOn(job.from));
+  EXPECT_FALSE(scenario::restsOn(seen(scene, job.peg), job.from, layout.geometry));
+  // Leaning on the post (its hole's edge 1 mm from the post's axis) it is still threaded.
+  translate(peg.bullet(), btVector3(-0.012 + layout.ring.innerRadius() - 0.001, 0, 0));
+  EXPECT_TRUE(scenario::restsOn(seen(scene, job.peg), job.from, layout.geometry));
 }
 
 TEST(PegChecks, TheVolumeFromTheNodesIsTheRingsPolyhedralVolume) {
@@ -56,20 +132,21 @@ TEST(PegChecks, TheVolumeFromTheNodesIsTheRingsPolyhedralVolume) {
   const PegLayout layout;
   // An octagon inscribed in the 2 x 5 mm elliptical section (area 2 sqrt(2) a b) lofted in 16
   // straight segments around the 8 mm radius: each segment holds A R 2 sin(pi/16) cos(pi/16).
-  const double section = 2 * std::sqrt(2.0) * layout.tube_half_width * (layout.ring_height / 2);
-  const double perimeter = 16 * layout.ring_radius * std::sin(2 * M_PI / 16);
+  const double section = 2 * std::sqrt(2.0) * layout.ring.tube_half_width * layout.ring.half_height;
+  const double perimeter = 16 * layout.ring.major_radius * std::sin(2 * M_PI / 16);
   for (const auto& job : layout.jobs) {
-    EXPECT_NEAR(scenario::inspect(twin.world().softBody(job.peg)).volume, section * perimeter,
-                1e-6 * section * perimeter)
-        << job.peg;
+    const auto& ring = twin.world().softBody(job.peg);
+    EXPECT_NEAR(ring.volume(), section * perimeter, 1e-6 * section * perimeter) << job.peg;
+    EXPECT_DOUBLE_EQ(ring.restVolume(), ring.volume()) << job.peg;
   }
 }
 
 TEST(PegWatch, CallsAPegLostForEachKindOfLoss) {
   twin::TwinPlatform twin(pegScene());
   auto& world = twin.world();
-  scenario::PegWatch watch(world, PegLayout{});
-  watch.observe();
+  const twin::WorldPerception scene(world);
+  scenario::PegWatch watch(PegLayout{});
+  watch.observe(scene);
   EXPECT_EQ(watch.lost(), 0u);
 
   world.softBody("peg1").bullet().m_nodes[5].m_x.setX(std::numeric_limits<double>::quiet_NaN());
@@ -79,11 +156,11 @@ TEST(PegWatch, CallsAPegLostForEachKindOfLoss) {
     swollen.m_nodes[i].m_x = centre + (swollen.m_nodes[i].m_x - centre) * 1.1;
   }
   translate(world.softBody("peg4").bullet(), btVector3(0, 0, -0.01));  // under the board
-  watch.observe();
+  watch.observe(scene);
 
-  const auto outcomes = watch.finish();
+  const auto outcomes = watch.finish(scene);
   EXPECT_EQ(watch.lost(), 3u);
-  EXPECT_EQ(outcomes[0].loss, "non-finite node positions");
+  EXPECT_EQ(outcomes[0].loss, "non-finite pose");
   EXPECT_NE(outcomes[1].loss.find("volume"), std::string::npos) << outcomes[1].loss;
   EXPECT_EQ(outcomes[3].loss, "fell through the board");
   for (std::size_t i : {0u, 1u, 3u}) EXPECT_FALSE(outcomes[i].placed) << outcomes[i].peg;

@@ -4,15 +4,17 @@
 // is grasped again (at most twice), as an operator watching it would. Each call gives the next
 // manual-loop target (at most a millimetre or 0.05 rad from the last), which the controller then
 // reaches under its caps, exactly as it would a gamepad's. Positions move with the wrist-locked IK
-// C_W.
+// C_W. It sees the rings only as a ScenePerception reports them (poses), so it runs the same on
+// the in-process twin, the twin over ROS and, with a tracker, the physical robot.
 
 #include <optional>
 #include <string_view>
 #include <vector>
 
-#include "ambf_like/world.hpp"
+#include "bridge/scene_perception.hpp"
 #include "raven/arm_kinematics.hpp"
 #include "scenario/peg_layout.hpp"
+#include "scenario/ring_view.hpp"
 
 namespace scenario {
 
@@ -32,13 +34,15 @@ class ArmRoutine {
   /// force a real grasp of a peg-transfer ring takes (../shared/reference/soft-materials.md).
   static constexpr double kDefaultSqueeze = 0.0005;
 
-  /// The arm's next target. `target` is its current one, `world` shows the pegs.
-  raven::ArmJoints next(const raven::ArmJoints& target, const ambf_like::World& world);
+  /// The arm's next target. `target` is its current one, `scene` shows the rings.
+  raven::ArmJoints next(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
   bool done() const { return phase_ == Phase::Done; }
   Phase phase() const { return phase_; }
   raven::Arm arm() const { return arm_; }
   /// True when the ring of the current job is off the board (the jaws have it).
-  bool carrying(const ambf_like::World& world) const { return !done() && ringFollows(world); }
+  bool carrying(const bridge::ScenePerception& scene) const {
+    return !done() && ringFollows(scene);
+  }
   /// The outer jaw's angle that reaches `squeeze` (m) into a ring's wall, the grasper placed as
   /// the routine places it.
   double jawAngleFor(double squeeze) const;
@@ -59,7 +63,9 @@ class ArmRoutine {
     Eigen::Vector3d pivot;        ///< the jaw axis at the grasp
     Eigen::Vector2d offset;       ///< the jaw axis from the ring's centre, horizontally
   };
-  void plan(const ambf_like::World& world);
+  /// The current job's ring as `scene` sees it.
+  RingView ring(const bridge::ScenePerception& scene) const;
+  void plan(const bridge::ScenePerception& scene);
   /// The joints (within the limits, nearest `target`) that hold the jaws open over the grasp.
   std::optional<raven::ArmJoints> overPeg(const raven::ArmJoints& target) const;
   /// Moves the tool point towards `goal` by at most `step`, the wrist locked.
@@ -68,7 +74,7 @@ class ArmRoutine {
   raven::ArmJoints withJaws(raven::ArmJoints q) const;
   void advance(Phase next);
   /// True when the ring of the current job left the board with the jaws.
-  bool ringFollows(const ambf_like::World& world) const;
+  bool ringFollows(const bridge::ScenePerception& scene) const;
   /// Counts a re-grasp of the current job and marks it to be started again, unless it had its
   /// two; logs `why`.
   bool decideToRegrasp(const char* why);

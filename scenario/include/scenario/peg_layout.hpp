@@ -1,18 +1,21 @@
 #pragma once
-// The peg-transfer scene's layout as the scenario needs it: which peg starts where, where it
-// goes, and the ring's dimensions (raven_description/tools/peg_scene.hpp's design values).
+// The peg-transfer scene's layout as the scenario needs it: which ring starts on which post, where
+// it goes, and the ring's and board's dimensions, all from raven_description's scene design
+// (raven/design/peg_scene_design.hpp), placed where the board is seen.
 
-#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <string>
 #include <vector>
 
+#include "bridge/scene_perception.hpp"
 #include "raven/arm.hpp"
-#include "scenario/peg_state.hpp"
+#include "raven/design/peg_scene_design.hpp"
+#include "scenario/ring_view.hpp"
 
 namespace scenario {
 
-/// One transfer: the soft body named `peg` from post `from` to post `to`, by `arm`.
+/// One transfer: the ring named `peg` from post `from` to post `to`, by `arm`.
 struct PegJob {
   std::string peg;
   raven::Arm arm;
@@ -21,29 +24,27 @@ struct PegJob {
 
 /// The ring and board dimensions and the six jobs.
 struct PegLayout {
-  double ring_radius = 0.008;      ///< centre line
-  double tube_half_width = 0.002;  ///< radially
-  double ring_height = 0.010;
+  /// The design's scene where the design puts it.
+  PegLayout() : PegLayout(raven::design::PegSceneDesign{}) {}
+  /// The design's scene with its board at `board` (its frame: the board's top centre); by
+  /// default where the design puts it.
+  explicit PegLayout(const raven::design::PegSceneDesign& design,
+                     const std::optional<Eigen::Isometry3d>& board = std::nullopt);
+  /// The design's scene placed where `scene` sees the board.
+  static PegLayout seen(const bridge::ScenePerception& scene,
+                        const raven::design::PegSceneDesign& design = {});
+
+  /// The board's name in the scene (raven_description's peg_board.yaml).
+  static constexpr const char* kBoard = "peg_board";
+
+  RingDimensions ring;
   PegGeometry geometry;
-  /// Left-side pegs by the left arm, right-side by the right: from the start row (y 0.058) to
-  /// the target row (y 0.100) straight behind.
-  std::array<PegJob, 6> jobs{
-      PegJob{"peg1", raven::Arm::Left, {0.266, 0.058}, {0.266, 0.100}},
-      PegJob{"peg2", raven::Arm::Left, {0.300, 0.058}, {0.300, 0.100}},
-      PegJob{"peg3", raven::Arm::Left, {0.334, 0.058}, {0.334, 0.100}},
-      PegJob{"peg4", raven::Arm::Right, {-0.266, 0.058}, {-0.266, 0.100}},
-      PegJob{"peg5", raven::Arm::Right, {-0.300, 0.058}, {-0.300, 0.100}},
-      PegJob{"peg6", raven::Arm::Right, {-0.334, 0.058}, {-0.334, 0.100}},
-  };
+  /// Ring i (peg1..peg6) from start post i to target post i + 6, by the arm on its side of the
+  /// board (x > 0: the left arm): from the start row straight back to the target row.
+  std::array<PegJob, 6> jobs;
 
   /// The jobs of one arm, in order.
-  std::vector<PegJob> jobsOf(raven::Arm arm) const {
-    std::vector<PegJob> out;
-    for (const PegJob& job : jobs) {
-      if (job.arm == arm) out.push_back(job);
-    }
-    return out;
-  }
+  std::vector<PegJob> jobsOf(raven::Arm arm) const;
 };
 
 }  // namespace scenario

@@ -1,6 +1,7 @@
 #pragma once
-// What a soft peg is doing, read from its nodes: where it is, whether it rests on a post,
-// whether it is still whole (finite, its volume near its rest volume).
+// What a simulated soft ring's nodes say beyond its pose: their lowest point, fastest speed and
+// whether they are all finite (a study's view inside the simulator; tasks see rings through
+// ring_view.hpp).
 
 #include <Eigen/Core>
 
@@ -8,32 +9,14 @@
 
 namespace scenario {
 
-/// The scene's geometry a check needs (its design values).
-struct PegGeometry {
-  double board_top = -0.205;
-  double lifted = 0.005;  ///< a ring whose lowest node is this far above the board is off it
-
-  bool offTheBoard(double bottom) const { return bottom > board_top + lifted; }
-};
-
-/// A snapshot of one soft peg.
+/// A snapshot of one soft peg's nodes.
 struct PegState {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< mean of the nodes
   double bottom = 0.0;                               ///< lowest node z
-  double volume = 0.0;                               ///< enclosed by its faces (m^3)
   double speed = 0.0;                                ///< fastest node (m/s)
   bool finite = true;
 };
 
 PegState inspect(const ambf_like::SoftBody& peg);
-
-/// The widest angle (rad) between the bearings of the peg's nodes seen from the vertical line
-/// through `axis`: a few degrees when the ring is threaded on that line, above pi when it is not.
-double bearingGap(const ambf_like::SoftBody& peg, const Eigen::Vector2d& axis);
-
-/// Threaded on the post (no bearing gap as wide as 90 degrees) and down on the board (its
-/// lowest node within `tolerance` of the board top), with every node finite.
-bool restsOn(const ambf_like::SoftBody& peg, const Eigen::Vector2d& post, const PegGeometry& g,
-             double tolerance = 0.001);
 
 }  // namespace scenario

@@ -1,8 +1,10 @@
 #pragma once
-// The peg-transfer scenario, the project's main job: both arms of the in-process twin move the
-// six soft pegs from the start row to the target row, driven through the same controller path
-// a gamepad uses (DualPlatformController: velocity caps, wrist-locked IK), on the simulated
-// clock, optionally recording the paper's rs file.
+// The peg-transfer scenario, the project's main job: both arms move the six soft pegs from the
+// start row to the target row, driven through the same controller path a gamepad uses
+// (DualPlatformController: velocity caps, wrist-locked IK), optionally recording the paper's rs
+// file. The job sees only a RavenPlatform and a ScenePerception, so it runs on the in-process
+// twin (runPegTransfer) and on any platform with a perception (runPegTransferOn: the twin node
+// over ROS, or the physical robot with a tracker).
 
 #include <array>
 #include <atomic>
@@ -10,6 +12,7 @@
 #include <filesystem>
 
 #include "bridge/raven_platform.hpp"
+#include "bridge/scene_perception.hpp"
 #include "scenario/arm_routine.hpp"
 #include "scenario/peg_transfer_result.hpp"
 #include "scenario/run_progress.hpp"
@@ -51,12 +54,19 @@ struct PegTransferOptions {
   /// Called after every manual-loop iteration.
   ProgressCallback progress;
   /// Shown the world before the first move, after every manual-loop iteration (settling too)
-  /// and once the pegs are judged: the viewer's hook.
+  /// and once the pegs are judged: the viewer's hook (in process only).
   WorldObserver observe;
 };
 
-/// Runs the scenario once. Throws common::LoadError if the scene's files are bad.
+/// Runs the scenario once on the in-process twin. Throws common::LoadError if the scene's files
+/// are bad.
 PegTransferResult runPegTransfer(const PegTransferOptions& options);
+
+/// Runs the scenario once on `platform` (enabled and homed here), seeing the rings through
+/// `scene`. The options that build a twin (seed variation, assist, actuation, scene file, sleep,
+/// observer) are the platform's business and not read; the result's variation is nominal.
+PegTransferResult runPegTransferOn(bridge::RavenPlatform& platform, bridge::ScenePerception& scene,
+                                   const PegTransferOptions& options);
 
 /// The twin of a run: its scene (the shipped one or `launch_file`) with `variation` applied,
 /// sleep, the assist's sensors and the actuation as the options say.

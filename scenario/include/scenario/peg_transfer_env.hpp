@@ -19,6 +19,7 @@
 #include "scenario/env_action.hpp"
 #include "scenario/peg_layout.hpp"
 #include "scenario/scripted_session.hpp"
+#include "twin/world_perception.hpp"
 
 namespace scenario {
 
@@ -127,6 +128,7 @@ class PegTransferEnv {
   std::unique_ptr<ScriptedSession> session_;
   std::optional<std::array<ArmRoutine, 2>> expert_;
   std::array<const ambf_like::SoftBody*, 6> rings_{};
+  std::unique_ptr<twin::WorldPerception> scene_;  ///< what the expert and the judge see
   int placed_ = 0;
   std::uint64_t episode_ = 0;  ///< resets so far (a saved state names its episode)
   Eigen::VectorXd last_observation_;

@@ -19,19 +19,21 @@ enum class AssistMode { Off, Contact };
 
 std::string_view assistName(AssistMode mode);
 
-/// One peg's transfer, as its soft body's nodes tell it.
+/// One peg's transfer, as the run's ScenePerception showed it.
 struct PegOutcome {
   std::string peg;
   raven::Arm arm = raven::Arm::Left;
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
-  bool grasped = false;  ///< the ring left the board (its lowest node 5 mm above it)
-  double lift = 0.0;     ///< the highest its lowest node rose above the board (m)
+  bool grasped = false;  ///< the ring left the board (its bottom 5 mm above it)
+  double lift = 0.0;     ///< the highest its bottom rose above the board (m)
   int regrasps = 0;      ///< times the operator opened and grasped it again (ArmRoutine)
   /// Each jaw's median normal force on it while carried (N; zeros if it never was).
   std::array<double, 2> carried_squeeze{0.0, 0.0};
   bool placed = false;  ///< at the end: resting on its target post
-  bool lost = false;    ///< non-finite nodes, volume off by more than 20 %, or under the board
+  bool lost = false;    ///< a non-finite pose, volume off by more than 20 %, or under the board
   std::string loss;     ///< why it counts as lost
+  /// The perception reported its volume (a simulation does; AMBF's topics and a tracker do not).
+  bool volume_seen = false;
   double min_volume_ratio = 1.0, max_volume_ratio = 1.0;  ///< volume / rest volume, extremes
   Eigen::Vector3d final_centre = Eigen::Vector3d::Zero();
   double miss = 0.0;  ///< final centre to the target post's axis, horizontally (m)

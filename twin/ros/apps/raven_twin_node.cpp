@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
                  "the actuation fitted by raven_calibrate (YAML; default: "
                  "twin/config/raven2_calibration.yaml)")
       ->check(CLI::ExistingFile);
+  bool soft_body_sleep = false;
+  app.add_flag("--soft-body-sleep", soft_body_sleep,
+               "resting soft bodies sleep (as raven_peg_transfer runs them), whatever the world "
+               "file says");
   bridge::ros1::RosServerOptions server;
   app.add_flag("--lock-step", server.lock_step,
                "run on the simulated clock, one step per client request (raven_twin/step)");
@@ -73,6 +77,11 @@ int main(int argc, char** argv) {
     twin.launch_file = launch;
     twin.clock = server.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
     if (ambf_model) twin.bindings = twin::ArmBindings::ambfRaven();
+    if (soft_body_sleep) {
+      twin.adjust_scene = [](ambf_like::SceneSpec& scene) {
+        scene.world.soft_body_sleep.enabled = true;
+      };
+    }
     // The motor model is the cable-driven robot's: in its joint convention, on our model.
     if (!ideal_servos && !ambf_model && twin.profile == "physical") {
       (calibration.empty() ? twin::CalibrationProfile::shipped()
@@ -86,8 +95,8 @@ int main(int argc, char** argv) {
       crtk.profile = platform.core().profile();
       server.crtk = crtk;
     }
-    // The scene's sensors and actuators on AMBF's topics, served after every cycle.
-    twin::ros1::AmbfObjectTopics objects(platform.world());
+    // The scene's bodies, sensors and actuators on AMBF's topics, served after every cycle.
+    twin::ros1::AmbfObjectTopics objects(platform.world(), server.lock_step);
     server.after_cycle = [&] { objects.update(platform.now()); };
     bridge::ros1::RavenRosServer ros_server(platform, "", server);
     const bridge::ros1::MasterWatch master_watch;  // registers again with a restarted master

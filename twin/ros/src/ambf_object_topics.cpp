@@ -2,6 +2,7 @@
 
 #include <ambf_msgs/ActuatorCmd.h>
 #include <ambf_msgs/ActuatorState.h>
+#include <ambf_msgs/RigidBodyState.h>
 #include <ambf_msgs/SensorState.h>
 #include <ros/callback_queue.h>
 #include <ros/ros.h>
@@ -31,8 +32,17 @@ ambf_like::Vec3 offsetOf(const geometry_msgs::Pose& p) {
 
 class AmbfObjectTopics::Impl {
  public:
-  explicit Impl(ambf_like::World& world) : world_(world) {
+  Impl(ambf_like::World& world, bool simulated_stamps)
+      : world_(world), simulated_stamps_(simulated_stamps) {
     node_.setCallbackQueue(&queue_);
+    for (std::size_t i = 0; i < world.bodyCount(); ++i) {
+      bodies_.push_back(
+          node_.advertise<ambf_msgs::RigidBodyState>(world.body(i).qualifiedName() + "/State", 10));
+    }
+    for (std::size_t i = 0; i < world.softBodyCount(); ++i) {
+      soft_bodies_.push_back(node_.advertise<ambf_msgs::RigidBodyState>(
+          world.softBody(i).qualifiedName() + "/State", 10));
+    }
     for (std::size_t i = 0; i < world.sensorCount(); ++i) {
       sensors_.push_back(
           node_.advertise<ambf_msgs::SensorState>(world.sensor(i).qualifiedName() + "/State", 10));
@@ -54,10 +64,13 @@ class AmbfObjectTopics::Impl {
       pending_.pop_front();
     }
     ++step_;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) publishBody(i, sim_time);
+    for (std::size_t i = 0; i < soft_bodies_.size(); ++i) publishSoftBody(i, sim_time);
     for (std::size_t i = 0; i < sensors_.size(); ++i) publishSensor(i, sim_time);
     for (std::size_t i = 0; i < actuators_.size(); ++i) publishActuator(i, sim_time);
   }
 
+  std::size_t bodyTopics() const { return bodies_.size() + soft_bodies_.size(); }
   std::size_t sensorTopics() const { return sensors_.size(); }
   std::size_t actuatorTopics() const { return actuators_.size(); }
 
@@ -91,7 +104,7 @@ class AmbfObjectTopics::Impl {
   template <typename Message>
   void stampCommon(Message& m, const std::string& type, const std::string& parent,
                    const std::string& name, const ambf_like::Transform& pose, double sim_time) {
-    m.header.stamp = ::ros::Time::now();
+    m.header.stamp = simulated_stamps_ ? ::ros::Time(sim_time) : ::ros::Time::now();
     m.sim_step = step_;
     m.type = text(type);
     m.parent_name = text(parent);
@@ -100,6 +113,42 @@ class AmbfObjectTopics::Impl {
     m.wall_time = static_cast<float>(::ros::WallTime::now().toSec());
     m.sim_time = static_cast<float>(sim_time);
     m.pose = bridge::ros1::toPose(pose);
+  }
+
+  /// The fields AMBF's RigidBodyState shares with the other states (it has no type or parent).
+  ambf_msgs::RigidBodyState bodyState(const std::string& name, const ambf_like::Transform& pose,
+                                      double mass, double sim_time) {
+    ambf_msgs::RigidBodyState m;
+    m.header.stamp = simulated_stamps_ ? ::ros::Time(sim_time) : ::ros::Time::now();
+    m.sim_step = step_;
+    m.identifier = text(name);
+    m.name = text(name);
+    m.wall_time = static_cast<float>(::ros::WallTime::now().toSec());
+    m.sim_time = static_cast<float>(sim_time);
+    m.mass = static_cast<float>(mass);
+    m.pose = bridge::ros1::toPose(pose);
+    return m;
+  }
+
+  void publishBody(std::size_t index, double sim_time) {
+    if (bodies_[index].getNumSubscribers() == 0) return;
+    const ambf_like::RigidBody& body = world_.body(index);
+    auto m = bodyState(body.name(), body.pose(), body.mass(), sim_time);
+    const ambf_like::Vec3 v = body.linearVelocity(), w = body.angularVelocity();
+    m.twist.linear.x = v.x();
+    m.twist.linear.y = v.y();
+    m.twist.linear.z = v.z();
+    m.twist.angular.x = w.x();
+    m.twist.angular.y = w.y();
+    m.twist.angular.z = w.z();
+    bodies_[index].publish(m);
+  }
+
+  /// A soft body as the frame a tracker would report (SoftBody::pose).
+  void publishSoftBody(std::size_t index, double sim_time) {
+    if (soft_bodies_[index].getNumSubscribers() == 0) return;
+    const ambf_like::SoftBody& body = world_.softBody(index);
+    soft_bodies_[index].publish(bodyState(body.name(), body.pose(), body.spec().mass, sim_time));
   }
 
   void publishSensor(std::size_t index, double sim_time) {
@@ -133,21 +182,25 @@ class AmbfObjectTopics::Impl {
   }
 
   ambf_like::World& world_;
+  bool simulated_stamps_;
   ::ros::NodeHandle node_;
   ::ros::CallbackQueue queue_;
-  std::vector<::ros::Publisher> sensors_, actuators_;
+  std::vector<::ros::Publisher> bodies_, soft_bodies_, sensors_, actuators_;
   std::vector<::ros::Subscriber> commands_;
   std::deque<std::pair<std::size_t, ambf_msgs::ActuatorCmd>> pending_;
   std::uint32_t step_ = 0;
   bridge::ThrottledLog log_;
 };
 
-AmbfObjectTopics::AmbfObjectTopics(ambf_like::World& world)
-    : impl_(std::make_unique<Impl>(world)) {}
+AmbfObjectTopics::AmbfObjectTopics(ambf_like::World& world, bool simulated_stamps)
+    : impl_(std::make_unique<Impl>(world, simulated_stamps)) {}
 AmbfObjectTopics::~AmbfObjectTopics() = default;
 
 void AmbfObjectTopics::update(double sim_time) {
   impl_->update(sim_time);
+}
+std::size_t AmbfObjectTopics::bodyTopics() const {
+  return impl_->bodyTopics();
 }
 std::size_t AmbfObjectTopics::sensorTopics() const {
   return impl_->sensorTopics();
