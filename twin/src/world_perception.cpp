@@ -13,8 +13,7 @@ const WorldPerception::Object& WorldPerception::find(const std::string& name) co
   try {
     return found_[name] = &world_.body(name);
   } catch (const std::out_of_range& e) {
-    throw bridge::PerceptionError(std::string("the world has no soft body '") + name +
-                                  "', and its rigid " + e.what());
+    throw bridge::PerceptionError("the world has no soft body '" + name + "'; " + e.what());
   }
 }
 

@@ -75,8 +75,6 @@ class CrtkFace {
   void publishOperatingStates(::ros::Time stamp);
   void publishArmState(Arm arm, ::ros::Time stamp);
 
-  static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
-
   RavenPlatform& platform_;
   ::ros::NodeHandle& node_;
   CrtkFaceOptions options_;

@@ -99,7 +99,6 @@ class RavenRosClient::Impl {
     JointTrajectory trajectory;
     double start;
   };
-  static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
 
   void subscribe();
   void waitForRobot();

@@ -14,7 +14,7 @@ namespace controller {
 
 using raven::Arm;
 using raven::ArmJoints;
-using ArmPair = std::array<ArmJoints, 2>;
+using raven::ArmPair;
 
 enum class MappingScheme { M2, M1Left, M1Right };
 /// "m2", "m1-left", "m1-right" (the command-line names); throws std::invalid_argument otherwise.
@@ -75,7 +75,6 @@ class GamepadMapping {
     double jaw_difference = 0.0;     ///< jaw1 - jaw2 (the grasper's orientation)
     double grasp = 0.0;              ///< jaw1 + jaw2
   };
-  static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
 
   void selectScheme(const recording::GamepadState& pad);
   /// Moves `arm`'s target by the stick (x, y), or along z when `bumper` is held.

@@ -8,7 +8,7 @@
 
 namespace controller {
 
-using ArmPair = std::array<raven::ArmJoints, 2>;
+using raven::ArmPair;
 
 /// Joint speed caps (rad/s, m/s for the insertion): 5 deg/s on joints 1-2, 0.02 m/s on the
 /// insertion, 15 deg/s on joints 4-7 (MAX_JR of the reference at 500 steps a second).

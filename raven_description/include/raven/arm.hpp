@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstddef>
 #include <string_view>
 
 namespace raven {
@@ -27,6 +28,16 @@ inline int index(Arm arm) {
 inline Arm other(Arm arm) {
   return arm == Arm::Left ? Arm::Right : Arm::Left;
 }
+/// One value per arm, the left first: the container every room keeps its two arms' things in.
+template <typename T>
+using PerArm = std::array<T, 2>;
+/// Both arms' joint vectors.
+using ArmPair = PerArm<ArmJoints>;
+/// The arm's place in a PerArm.
+inline std::size_t slot(Arm arm) {
+  return static_cast<std::size_t>(arm);
+}
+
 inline std::string_view armName(Arm arm) {
   return arm == Arm::Left ? "left" : "right";
 }

@@ -47,7 +47,6 @@ class GraspAssist {
     ambf_like::SoftBody* peg = nullptr;
     double opening = 0.0;  ///< the tightest commanded opening since the grasp
   };
-  static std::size_t slot(raven::Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
   void release(raven::Arm arm);
 
   std::vector<ambf_like::SoftBody*> pegs_;

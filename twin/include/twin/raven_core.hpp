@@ -21,7 +21,7 @@
 
 namespace twin {
 
-using ArmPair = std::array<ArmJoints, 2>;
+using raven::ArmPair;
 
 /// Commands in, one joint setpoint per arm and cycle out.
 class RavenCore {
@@ -60,7 +60,6 @@ class RavenCore {
     std::optional<JointTrajectory> move;
     double move_start = 0.0;
   };
-  static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
 
   CommandResult applyState(StateCommand command);
   /// Joint commands must stay within the jump window; Cartesian ones are bounded by their

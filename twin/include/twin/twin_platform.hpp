@@ -82,7 +82,6 @@ class TwinPlatform final : public RavenPlatform {
 
  private:
   void runCycle();
-  static std::size_t slot(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
   ArmPair measuredPositions() const;
 
   ambf_like::LoadedScene scene_;
