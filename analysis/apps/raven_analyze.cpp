@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
       "and writes a disparity report: metrics as JSON/CSV, figures as PNG and an HTML page."};
   std::vector<std::filesystem::path> inputs;
   std::filesystem::path out = "disparity_report";
-  std::filesystem::path profiles_file = analysis::defaultProfilesFile();
+  std::filesystem::path profiles_file = analysis::defaultRecordingSourcesFile();
   std::string align = "index";
   double period = 0.02;
   bool figures = true;
@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
 
   try {
-    const auto profiles = analysis::readProfiles(profiles_file);
+    const auto profiles = analysis::readRecordingSources(profiles_file);
     analysis::TrialSet set = analysis::loadTrials(inputs, profiles);
     analysis::ReportSettings settings;
     if (align == "time") {

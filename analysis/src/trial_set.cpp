@@ -67,7 +67,7 @@ std::vector<std::string> nanRuns(const Trial& t) {
 
 }  // namespace
 
-Trial toTrial(const recording::RsRecording& rs, const PlatformProfile& profile) {
+Trial toTrial(const recording::RsRecording& rs, const RecordingSource& profile) {
   Trial t;
   t.path = rs.path;
   std::array<std::size_t, kJointColumns> pos{}, vel{};
@@ -98,13 +98,13 @@ const PlatformTrials* TrialSet::find(const std::string& name) const {
 }
 
 TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
-                    const std::vector<PlatformProfile>& profiles) {
+                    const std::vector<RecordingSource>& profiles) {
   TrialSet set;
   std::map<std::string, std::vector<Trial>> by_platform;
   for (const auto& file : expand(inputs)) {
     try {
       const auto rs = recording::readRs(file, recording::NonFiniteJoints::Keep);
-      const PlatformProfile* profile = profileFor(profiles, file, rs.variant);
+      const RecordingSource* profile = sourceOf(profiles, file, rs.variant);
       if (!profile) {
         set.issues.push_back({file, "no platform profile claims this file"});
         continue;

@@ -63,8 +63,8 @@ struct ReplayFlags {
 /// platform profiles assign them; every other file is reported and left out. Throws when a
 /// physical trial logs no actuator signals or fewer than two remain.
 std::vector<analysis::Trial> loadPhysical(const std::vector<std::filesystem::path>& inputs) {
-  const auto set =
-      analysis::loadTrials(inputs, analysis::readProfiles(analysis::defaultProfilesFile()));
+  const auto set = analysis::loadTrials(
+      inputs, analysis::readRecordingSources(analysis::defaultRecordingSourcesFile()));
   for (const auto& issue : set.issues) {
     spdlog::warn("{}: {}{}", issue.path.string(), issue.reason,
                  issue.excluded ? " (left out)" : "");

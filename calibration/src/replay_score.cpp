@@ -18,7 +18,7 @@ ReplayScore scoreReplays(ReplaySetup setup, const std::vector<analysis::Trial>& 
   if (physical.size() < 2) {
     throw std::invalid_argument("the robot's spread needs two physical trials");
   }
-  analysis::PlatformProfile twin_profile;
+  analysis::RecordingSource twin_profile;
   twin_profile.name = "twin";
   ReplayScore score;
   std::vector<analysis::ActuatorTrace> physical_traces, twin_traces;

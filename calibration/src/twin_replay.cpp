@@ -7,7 +7,7 @@
 namespace calibration {
 
 analysis::Trial replayOnTwin(const ReplaySetup& setup) {
-  analysis::PlatformProfile twin_profile;  // the twin records in the robot's convention
+  analysis::RecordingSource twin_profile;  // the twin records in the robot's convention
   twin_profile.name = "twin";
   return analysis::toTrial(recordReplay(setup), twin_profile);
 }

@@ -30,9 +30,9 @@ void bindPegTransferEnv(py::module_& m) {
       [] {
         const scenario::PegLayout layout;
         py::list jobs;
-        for (const scenario::PegJob& job : layout.jobs) {
+        for (const scenario::RingJob& job : layout.jobs) {
           py::dict d;
-          d["peg"] = job.peg;
+          d["peg"] = job.ring;
           d["arm"] = raven::index(job.arm);
           d["from"] = job.from;
           d["to"] = job.to;

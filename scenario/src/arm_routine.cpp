@@ -37,7 +37,7 @@ std::string_view phaseName(Phase phase) {
 }
 
 ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
-                       const PegLayout& layout, std::vector<PegJob> jobs, double squeeze)
+                       const PegLayout& layout, std::vector<RingJob> jobs, double squeeze)
     : arm_(arm),
       profile_(profile),
       kinematics_(raven::ArmKinematics::of(profile, arm)),
@@ -50,7 +50,7 @@ ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
 }
 
 RingView ArmRoutine::ring(const bridge::ScenePerception& scene) const {
-  return RingView(scene.sight(jobs_[job_].peg), layout_.ring);
+  return RingView(scene.sight(jobs_[job_].ring), layout_.ring);
 }
 
 void ArmRoutine::plan(const bridge::ScenePerception& scene) {
@@ -129,8 +129,8 @@ bool ArmRoutine::decideToRegrasp(const char* why) {
   retrying_ = true;
   // A person whose grip slipped grips harder the next time.
   closed_ = jawAngleFor(squeeze_ * (1.0 + kFirmerPerRegrasp * regrasps_[job_]));
-  spdlog::info("{} arm: {} {}; grasping it again ({} of {})", raven::armName(arm_), jobs_[job_].peg,
-               why, regrasps_[job_], kMaxRegrasps);
+  spdlog::info("{} arm: {} {}; grasping it again ({} of {})", raven::armName(arm_),
+               jobs_[job_].ring, why, regrasps_[job_], kMaxRegrasps);
   return true;
 }
 
@@ -154,7 +154,7 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target,
         advance(Phase::Descend);
       } else {  // out of reach: leave this peg (its outcome shows it)
         spdlog::warn("{} arm: no joint solution within the limits over {}; skipping it",
-                     raven::armName(arm_), jobs_[job_].peg);
+                     raven::armName(arm_), jobs_[job_].ring);
         retrying_ = false;
         advance(Phase::Retreat);
       }
@@ -241,12 +241,12 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target,
       break;
   }
   if (phase_ != before) {
-    const RingView peg(scene.sight(jobs_[job].peg), layout_.ring);
+    const RingView peg(scene.sight(jobs_[job].ring), layout_.ring);
     const Eigen::Vector3d tool = kinematics_.toolPose(q).translation();
     spdlog::debug(
         "{} arm, {}: {} -> {}; tool ({:.4f} {:.4f} {:.4f}), peg centre ({:.4f} {:.4f} "
         "{:.4f}) bottom {:.4f}",
-        raven::armName(arm_), jobs_[job].peg, phaseName(before), phaseName(phase_), tool.x(),
+        raven::armName(arm_), jobs_[job].ring, phaseName(before), phaseName(phase_), tool.x(),
         tool.y(), tool.z(), peg.centre().x(), peg.centre().y(), peg.centre().z(), peg.bottom());
   }
   return q;

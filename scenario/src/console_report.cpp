@@ -58,9 +58,9 @@ std::string pegTable(const PegTransferResult& result) {
       fmt::format("{:<5} {:<5} {:<12} {:<12} {:<7} {:>9} {:>8} {:>11} {:<6} {:>9} {:>13}  {}\n",
                   "peg", "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)", "regrasps",
                   "squeeze (N)", "placed", "miss (mm)", "volume ratio", "lost");
-  for (const PegOutcome& p : result.pegs) {
+  for (const RingOutcome& p : result.pegs) {
     out += fmt::format(
-        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:>11} {:<6} {:>9.1f} {:>13}  {}\n", p.peg,
+        "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:>11} {:<6} {:>9.1f} {:>13}  {}\n", p.ring,
         raven::armName(p.arm), millimetres(p.from), millimetres(p.to), yesNo(p.grasped),
         p.lift * 1e3, p.regrasps,
         fmt::format("{:.2f}/{:.2f}", p.carried_squeeze[0], p.carried_squeeze[1]), yesNo(p.placed),

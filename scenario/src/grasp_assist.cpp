@@ -72,13 +72,13 @@ void GraspAssist::update(raven::Arm arm, double commanded_opening) {
 void GraspAssist::release(raven::Arm arm) {
   for (auto* actuator : actuators_[slot(arm)]) actuator->release();
   spdlog::debug("grasp assist: {} grasper lets {} go", raven::armName(arm),
-                holds_[slot(arm)]->peg->name());
+                holds_[slot(arm)]->ring->name());
   holds_[slot(arm)].reset();
 }
 
 const ambf_like::SoftBody* GraspAssist::held(raven::Arm arm) const {
   const auto& hold = holds_[slot(arm)];
-  return hold ? hold->peg : nullptr;
+  return hold ? hold->ring : nullptr;
 }
 
 }  // namespace scenario

@@ -53,7 +53,7 @@ viewer::SceneLabels pegSceneLabels(const ambf_like::World& world,
   for (std::size_t i = 0; i < geometry.soft_bodies.size(); ++i) {
     std::uint32_t id = kOther;
     for (std::size_t j = 0; j < layout.jobs.size(); ++j) {
-      if (world.softBody(i).name() == layout.jobs[j].peg) {
+      if (world.softBody(i).name() == layout.jobs[j].ring) {
         id = kFirstRing + static_cast<std::uint32_t>(j);
       }
     }

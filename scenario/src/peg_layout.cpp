@@ -18,7 +18,7 @@ PegLayout::PegLayout(const raven::design::PegSceneDesign& design,
   geometry.post_radius = design.post_radius;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const raven::Arm arm = design.posts[i].x() > 0.0 ? raven::Arm::Left : raven::Arm::Right;
-    jobs[i] = PegJob{"peg" + std::to_string(i + 1), arm, post(i), post(i + jobs.size())};
+    jobs[i] = RingJob{"peg" + std::to_string(i + 1), arm, post(i), post(i + jobs.size())};
   }
 }
 
@@ -27,9 +27,9 @@ PegLayout PegLayout::seen(const bridge::ScenePerception& scene,
   return PegLayout(design, scene.sight(kBoard).pose);
 }
 
-std::vector<PegJob> PegLayout::jobsOf(raven::Arm arm) const {
-  std::vector<PegJob> out;
-  for (const PegJob& job : jobs) {
+std::vector<RingJob> PegLayout::jobsOf(raven::Arm arm) const {
+  std::vector<RingJob> out;
+  for (const RingJob& job : jobs) {
     if (job.arm == arm) out.push_back(job);
   }
   return out;

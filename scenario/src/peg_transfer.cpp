@@ -15,7 +15,7 @@
 #include "scenario/arm_routine.hpp"
 #include "scenario/carried_squeeze.hpp"
 #include "scenario/grasp_assist.hpp"
-#include "scenario/peg_watch.hpp"
+#include "scenario/ring_watch.hpp"
 #include "scenario/scripted_session.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/world_perception.hpp"
@@ -76,7 +76,7 @@ void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController&
             const InProcessHooks& hooks, PegTransferResult& result) {
   scene.update(platform.now());
   const PegLayout layout = PegLayout::seen(scene);
-  PegWatch watch(layout);
+  RingWatch watch(layout);
   CarriedSqueeze squeeze;
   std::array<ArmRoutine, 2> routines = pegTransferOperators(layout, options.squeeze);
   std::unique_ptr<recording::RsWriter> rs;
@@ -108,7 +108,7 @@ void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController&
       for (const ArmRoutine& routine : routines) {
         const auto forces = platform.measuredCf(routine.arm());
         if (routine.phase() == Phase::Carry && forces && routine.carrying(scene)) {
-          squeeze.record(routine.jobs()[routine.finished()].peg, *forces);
+          squeeze.record(routine.jobs()[routine.finished()].ring, *forces);
         }
       }
       watch.observe(scene);
@@ -149,11 +149,11 @@ void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController&
   }
   if (!result.failure.empty()) return;
   result.pegs = watch.finish(scene);
-  for (PegOutcome& outcome : result.pegs) outcome.carried_squeeze = squeeze.median(outcome.peg);
+  for (RingOutcome& outcome : result.pegs) outcome.carried_squeeze = squeeze.median(outcome.ring);
   for (const ArmRoutine& routine : routines) {
     for (std::size_t j = 0; j < routine.jobs().size(); ++j) {
-      for (PegOutcome& outcome : result.pegs) {
-        if (outcome.peg == routine.jobs()[j].peg) outcome.regrasps = routine.regrasps()[j];
+      for (RingOutcome& outcome : result.pegs) {
+        if (outcome.ring == routine.jobs()[j].ring) outcome.regrasps = routine.regrasps()[j];
       }
     }
   }
@@ -178,7 +178,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   std::optional<GraspAssist> assist;
   if (options.assist == AssistMode::Contact) {
     std::vector<std::string> pegs;
-    for (const PegJob& job : PegLayout{}.jobs) pegs.push_back(job.peg);
+    for (const RingJob& job : PegLayout{}.jobs) pegs.push_back(job.ring);
     assist.emplace(twin.world(), pegs);
     hooks.after_move = [&](const std::array<ArmRoutine, 2>& routines) {
       for (const ArmRoutine& routine : routines) assist->update(routine.arm(), routine.opening());

@@ -56,7 +56,7 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   const ambf_like::World& world = session_->twin().world();
   scene_ = std::make_unique<twin::WorldPerception>(world);
   for (std::size_t i = 0; i < rings_.size(); ++i) {
-    rings_[i] = &world.softBody(layout_.jobs[i].peg);
+    rings_[i] = &world.softBody(layout_.jobs[i].ring);
   }
   placed_ = countPlaced();
   failure_.clear();
@@ -148,8 +148,9 @@ PegTransferStep PegTransferEnv::finishStep(std::size_t refused) {
 
 int PegTransferEnv::countPlaced() const {
   int placed = 0;
-  for (const PegJob& job : layout_.jobs) {
-    if (restsOn(RingView(scene_->sight(job.peg), layout_.ring), job.to, layout_.geometry)) ++placed;
+  for (const RingJob& job : layout_.jobs) {
+    if (restsOn(RingView(scene_->sight(job.ring), layout_.ring), job.to, layout_.geometry))
+      ++placed;
   }
   return placed;
 }

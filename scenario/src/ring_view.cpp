@@ -42,7 +42,7 @@ double RingView::postOffset(const Eigen::Vector2d& post) const {
   return Eigen::Vector3d(horizontal.x(), horizontal.y(), dz).norm();
 }
 
-bool restsOn(const RingView& ring, const Eigen::Vector2d& post, const PegGeometry& geometry,
+bool restsOn(const RingView& ring, const Eigen::Vector2d& post, const BoardGeometry& geometry,
              double tolerance) {
   return ring.finite() && ring.bottom() < geometry.board_top + tolerance && ring.threadedOn(post);
 }

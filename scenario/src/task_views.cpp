@@ -27,7 +27,7 @@ std::size_t bodyIndex(const ambf_like::World& world, const std::string& name) {
 viewer::Camera taskCamera(const PegLayout& layout, raven::Arm arm) {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   const auto jobs = layout.jobsOf(arm);
-  for (const PegJob& job : jobs) centre += (job.from + job.to) / 2.0;
+  for (const RingJob& job : jobs) centre += (job.from + job.to) / 2.0;
   centre /= static_cast<double>(jobs.size());
   viewer::Camera c;
   c.target = Eigen::Vector3d(centre.x(), centre.y(), kBoardTop + 0.6 * kPostHeight);

@@ -7,7 +7,7 @@
 
 #include "raven/platform_profile.hpp"
 #include "scenario/peg_layout.hpp"
-#include "scenario/peg_state.hpp"
+#include "scenario/ring_nodes.hpp"
 
 namespace study {
 
@@ -114,19 +114,19 @@ class PegTransferTask final : public TrialTask {
 
   void begin(const TaskView& view, EventLog& events) override {
     for (std::size_t i = 0; i < 6; ++i) {
-      rings_[i] = &view.world->softBody(layout_.jobs[i].peg);
+      rings_[i] = &view.world->softBody(layout_.jobs[i].ring);
     }
     events.add(view.time, "rings", -1, 6);
     observe(view, events);
   }
 
   void observe(const TaskView& view, EventLog& events) override {
-    const scenario::PegGeometry& g = layout_.geometry;
+    const scenario::BoardGeometry& g = layout_.geometry;
     for (std::size_t i = 0; i < 6; ++i) {
-      const scenario::PegJob& job = layout_.jobs[i];
+      const scenario::RingJob& job = layout_.jobs[i];
       const int arm = raven::index(job.arm);
       const double ring = static_cast<double>(i + 1);
-      const scenario::PegState s = scenario::inspect(*rings_[i]);
+      const scenario::RingNodes s = scenario::inspect(*rings_[i]);
       const scenario::RingView seen({view.time, rings_[i]->pose(), std::nullopt}, layout_.ring);
       const bool placed = scenario::restsOn(seen, job.to, g);
       const bool off = g.offTheBoard(seen.bottom());

@@ -134,7 +134,7 @@ TEST(Contact, SoftBodyDroppedOnAPlaneRestsOnIt) {
   EXPECT_GT(lowest, -0.002);
   EXPECT_LT(lowest, margin + 0.002);
   EXPECT_GT(highest, 0.05) << "the ball collapsed flat";
-  // It rests on the plane's stand-in (soft bodies cannot rest on a half-space), which reads as
+  // It rests on the plane's proxy (soft bodies cannot rest on a half-space), which reads as
   // the plane.
   bool touching = false;
   for (const auto& c : world.contacts()) {

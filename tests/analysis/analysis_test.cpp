@@ -27,8 +27,8 @@ namespace {
 
 using analysis::Quantity;
 
-std::vector<analysis::PlatformProfile> defaultProfiles() {
-  return analysis::readProfiles(analysis::defaultProfilesFile());
+std::vector<analysis::RecordingSource> defaultProfiles() {
+  return analysis::readRecordingSources(analysis::defaultRecordingSourcesFile());
 }
 
 /// Writes an rs file of `rows` rows, 50 Hz, whose jpos column c is value(row, c) (rad, m).
@@ -281,14 +281,14 @@ TEST(Analysis, ProfilesFileErrorsNameTheKey) {
                               "platforms:\n  - name: sim\n    role: simulation\n"
                               "    position offsets: {jpos16: 1.0}\n");
   try {
-    analysis::readProfiles(file);
+    analysis::readRecordingSources(file);
     FAIL() << "accepted jpos16";
   } catch (const common::LoadError& e) {
     EXPECT_NE(std::string(e.what()).find("jpos16"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("p.yaml"), std::string::npos) << e.what();
   }
   const auto bad_role = dir.write("r.yaml", "platforms:\n  - {name: x, role: robot}\n");
-  EXPECT_THROW(analysis::readProfiles(bad_role), common::LoadError);
+  EXPECT_THROW(analysis::readRecordingSources(bad_role), common::LoadError);
 }
 
 TEST(Analysis, ResamplingOnTimeAlignsTrialsRecordedAtDifferentRates) {
@@ -313,9 +313,9 @@ TEST(Analysis, ResamplingOnTimeAlignsTrialsRecordedAtDifferentRates) {
 }
 
 TEST(Profiles, ThePapersDatasetNamesAreRecognised) {
-  const auto profiles = analysis::readProfiles(analysis::defaultProfilesFile());
+  const auto profiles = analysis::readRecordingSources(analysis::defaultRecordingSourcesFile());
   auto platformOf = [&](const std::string& name) -> std::string {
-    const auto* p = analysis::profileFor(profiles, name, {});
+    const auto* p = analysis::sourceOf(profiles, name, {});
     return p ? p->name : "none";
   };
   EXPECT_EQ(platformOf("m1left_p1.csv"), "physical");

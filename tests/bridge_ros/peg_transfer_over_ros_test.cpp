@@ -28,17 +28,17 @@ TEST(PegTransferOverRos, PlacesAllSixAndItsTableIsTheInProcessRuns) {
   for (std::size_t i = 0; i < in_process.pegs.size(); ++i) {
     const auto& a = over_ros.pegs[i];
     const auto& b = in_process.pegs[i];
-    EXPECT_EQ(a.peg, b.peg);
-    EXPECT_EQ(a.grasped, b.grasped) << a.peg;
-    EXPECT_EQ(a.placed, b.placed) << a.peg;
-    EXPECT_EQ(a.regrasps, b.regrasps) << a.peg;
-    EXPECT_EQ(a.lost, b.lost) << a.peg;
-    EXPECT_LT((a.final_centre - b.final_centre).norm(), 1e-5) << a.peg;
-    EXPECT_NEAR(a.lift, b.lift, 1e-5) << a.peg;
-    EXPECT_NEAR(a.miss, b.miss, 1e-5) << a.peg;
+    EXPECT_EQ(a.ring, b.ring);
+    EXPECT_EQ(a.grasped, b.grasped) << a.ring;
+    EXPECT_EQ(a.placed, b.placed) << a.ring;
+    EXPECT_EQ(a.regrasps, b.regrasps) << a.ring;
+    EXPECT_EQ(a.lost, b.lost) << a.ring;
+    EXPECT_LT((a.final_centre - b.final_centre).norm(), 1e-5) << a.ring;
+    EXPECT_NEAR(a.lift, b.lift, 1e-5) << a.ring;
+    EXPECT_NEAR(a.miss, b.miss, 1e-5) << a.ring;
     for (std::size_t jaw = 0; jaw < 2; ++jaw) {
       EXPECT_NEAR(a.carried_squeeze[jaw], b.carried_squeeze[jaw], 0.01 * b.carried_squeeze[jaw])
-          << a.peg;
+          << a.ring;
     }
     // The in-process world reports the rings' volumes; AMBF's topics do not.
     EXPECT_TRUE(b.volume_seen);

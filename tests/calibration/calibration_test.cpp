@@ -60,8 +60,8 @@ std::optional<Paper2arm> paper2arm() {
   std::vector<std::filesystem::path> files;
   for (int k = 1; k <= 3; ++k)
     files.push_back(dir / ("2arm_physical_" + std::to_string(k) + ".csv"));
-  const auto set =
-      analysis::loadTrials(files, analysis::readProfiles(analysis::defaultProfilesFile()));
+  const auto set = analysis::loadTrials(
+      files, analysis::readRecordingSources(analysis::defaultRecordingSourcesFile()));
   p.physical = set.find("physical")->trials;
   return p;
 }
@@ -218,7 +218,7 @@ TEST(ShippedCalibration, PutsThe2armReplaysWithinTheRobotsOwnSpread) {
   }
 }
 
-/// A stand-in robot whose friction the test knows and the fit does not: the starting values'
+/// A test robot whose friction the test knows and the fit does not: the starting values'
 /// Coulomb friction, 40 % more on every motor.
 twin::ArmsMechanics hiddenMechanics() {
   auto h = calibration::startingMechanics();
@@ -237,7 +237,7 @@ int motorsIdentified(const twin::ArmsMechanics& fitted, const twin::ArmsMechanic
   return n;
 }
 
-/// Records on the stand-in the motion each round's strategy picks among the same random
+/// Records on the test robot the motion each round's strategy picks among the same random
 /// candidates, refits the friction, and returns how many motors are identified after each round.
 std::vector<int> identify(bool proposed, int rounds) {
   const auto truth = hiddenMechanics();

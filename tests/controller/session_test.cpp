@@ -189,8 +189,8 @@ TEST(Replay, ThePapersInputsOnTheTwinLandWithinThePhysicalRobotsRepeatability) {
   std::vector<std::filesystem::path> files{twin_file};
   for (int k = 1; k <= 3; ++k)
     files.push_back(dir / ("2arm_physical_" + std::to_string(k) + ".csv"));
-  const auto set =
-      analysis::loadTrials(files, analysis::readProfiles(analysis::defaultProfilesFile()));
+  const auto set = analysis::loadTrials(
+      files, analysis::readRecordingSources(analysis::defaultRecordingSourcesFile()));
   ASSERT_NE(set.find("twin"), nullptr);
   ASSERT_NE(set.find("physical"), nullptr);
   const analysis::Comparison twin_vs_physical{set.find("twin"), set.find("physical")};

@@ -1,7 +1,7 @@
 // The checks a peg-transfer run is judged by, on the real scene and through the perception a run
 // sees it by: a ring's pose (its nodes' shape-matched frame) gives its extremes and whether a
 // post passes through its hole; a ring counts as placed only when threaded on its post and down
-// on the board; PegWatch calls a peg lost when its pose goes non-finite, its volume leaves the
+// on the board; RingWatch calls a peg lost when its pose goes non-finite, its volume leaves the
 // 20 % band, or it falls through the board.
 
 #include <BulletSoftBody/btSoftBody.h>
@@ -11,8 +11,8 @@
 #include <limits>
 
 #include "scenario/peg_layout.hpp"
-#include "scenario/peg_state.hpp"
-#include "scenario/peg_watch.hpp"
+#include "scenario/ring_nodes.hpp"
+#include "scenario/ring_watch.hpp"
 #include "twin/twin_platform.hpp"
 #include "twin/world_perception.hpp"
 
@@ -51,10 +51,10 @@ TEST(PegChecks, EveryRingIsThreadedOnItsStartPostAndOnNoOther) {
   const twin::WorldPerception scene(twin.world());
   const PegLayout layout = PegLayout::seen(scene);
   for (const auto& job : layout.jobs) {
-    const auto ring = seen(scene, job.peg);
-    EXPECT_TRUE(scenario::restsOn(ring, job.from, layout.geometry)) << job.peg;
-    EXPECT_FALSE(scenario::restsOn(ring, job.to, layout.geometry)) << job.peg;
-    EXPECT_LT(ring.postOffset(job.from), 1e-9) << job.peg;  // made centred on it
+    const auto ring = seen(scene, job.ring);
+    EXPECT_TRUE(scenario::restsOn(ring, job.from, layout.geometry)) << job.ring;
+    EXPECT_FALSE(scenario::restsOn(ring, job.to, layout.geometry)) << job.ring;
+    EXPECT_LT(ring.postOffset(job.from), 1e-9) << job.ring;  // made centred on it
   }
 }
 
@@ -115,16 +115,16 @@ TEST(PegChecks, ARingPerchedAboveItsPostOrBesideItIsNotPlaced) {
   const twin::WorldPerception scene(twin.world());
   const PegLayout layout;
   const auto& job = layout.jobs[0];
-  auto& peg = twin.world().softBody(job.peg);
+  auto& peg = twin.world().softBody(job.ring);
   translate(peg.bullet(), btVector3(0, 0, 0.03));  // held over the post, not on it
-  EXPECT_TRUE(seen(scene, job.peg).threadedOn(job.from));
-  EXPECT_FALSE(scenario::restsOn(seen(scene, job.peg), job.from, layout.geometry));
+  EXPECT_TRUE(seen(scene, job.ring).threadedOn(job.from));
+  EXPECT_FALSE(scenario::restsOn(seen(scene, job.ring), job.from, layout.geometry));
   translate(peg.bullet(), btVector3(0.012, 0, -0.03));  // down on the board, beside the post
-  EXPECT_FALSE(seen(scene, job.peg).threadedOn(job.from));
-  EXPECT_FALSE(scenario::restsOn(seen(scene, job.peg), job.from, layout.geometry));
+  EXPECT_FALSE(seen(scene, job.ring).threadedOn(job.from));
+  EXPECT_FALSE(scenario::restsOn(seen(scene, job.ring), job.from, layout.geometry));
   // Leaning on the post (its hole's edge 1 mm from the post's axis) it is still threaded.
   translate(peg.bullet(), btVector3(-0.012 + layout.ring.innerRadius() - 0.001, 0, 0));
-  EXPECT_TRUE(scenario::restsOn(seen(scene, job.peg), job.from, layout.geometry));
+  EXPECT_TRUE(scenario::restsOn(seen(scene, job.ring), job.from, layout.geometry));
 }
 
 TEST(PegChecks, TheVolumeFromTheNodesIsTheRingsPolyhedralVolume) {
@@ -135,17 +135,17 @@ TEST(PegChecks, TheVolumeFromTheNodesIsTheRingsPolyhedralVolume) {
   const double section = 2 * std::sqrt(2.0) * layout.ring.tube_half_width * layout.ring.half_height;
   const double perimeter = 16 * layout.ring.major_radius * std::sin(2 * M_PI / 16);
   for (const auto& job : layout.jobs) {
-    const auto& ring = twin.world().softBody(job.peg);
-    EXPECT_NEAR(ring.volume(), section * perimeter, 1e-6 * section * perimeter) << job.peg;
-    EXPECT_DOUBLE_EQ(ring.restVolume(), ring.volume()) << job.peg;
+    const auto& ring = twin.world().softBody(job.ring);
+    EXPECT_NEAR(ring.volume(), section * perimeter, 1e-6 * section * perimeter) << job.ring;
+    EXPECT_DOUBLE_EQ(ring.restVolume(), ring.volume()) << job.ring;
   }
 }
 
-TEST(PegWatch, CallsAPegLostForEachKindOfLoss) {
+TEST(RingWatch, CallsAPegLostForEachKindOfLoss) {
   twin::TwinPlatform twin(pegScene());
   auto& world = twin.world();
   const twin::WorldPerception scene(world);
-  scenario::PegWatch watch(PegLayout{});
+  scenario::RingWatch watch(PegLayout{});
   watch.observe(scene);
   EXPECT_EQ(watch.lost(), 0u);
 
@@ -163,7 +163,7 @@ TEST(PegWatch, CallsAPegLostForEachKindOfLoss) {
   EXPECT_EQ(outcomes[0].loss, "non-finite pose");
   EXPECT_NE(outcomes[1].loss.find("volume"), std::string::npos) << outcomes[1].loss;
   EXPECT_EQ(outcomes[3].loss, "fell through the board");
-  for (std::size_t i : {0u, 1u, 3u}) EXPECT_FALSE(outcomes[i].placed) << outcomes[i].peg;
+  for (std::size_t i : {0u, 1u, 3u}) EXPECT_FALSE(outcomes[i].placed) << outcomes[i].ring;
   EXPECT_FALSE(outcomes[2].lost);
 }
 

@@ -30,8 +30,8 @@ TEST(PegTransferBatch, TheNominalSceneIsPlacedWholeByFrictionAlone) {
   EXPECT_FALSE(result.timed_out);
   std::printf("%s", scenario::pegTable(result).c_str());
   for (const auto& p : result.pegs) {
-    EXPECT_TRUE(p.placed) << p.peg << " " << p.miss * 1e3 << " mm off";
-    EXPECT_FALSE(p.lost) << p.peg << ": " << p.loss;
+    EXPECT_TRUE(p.placed) << p.ring << " " << p.miss * 1e3 << " mm off";
+    EXPECT_FALSE(p.lost) << p.ring << ": " << p.loss;
     EXPECT_GT(p.min_volume_ratio, 0.8);
   }
 }
@@ -51,12 +51,13 @@ TEST(PegTransferBatch, NineteenOfTwentyRandomisedRunsPlaceAllSixPegsAndNoneIsLos
     EXPECT_FALSE(r.timed_out) << "seed " << r.variation.seed;
     EXPECT_EQ(r.refused, 0u) << "seed " << r.variation.seed;
     for (const auto& p : r.pegs) {
-      EXPECT_FALSE(p.lost) << "seed " << r.variation.seed << " " << p.peg << ": " << p.loss;
+      EXPECT_FALSE(p.lost) << "seed " << r.variation.seed << " " << p.ring << ": " << p.loss;
       EXPECT_GT(p.min_volume_ratio, 0.8);
       EXPECT_LT(p.max_volume_ratio, 1.2);
       if (!p.placed) {
         std::printf("seed %llu: %s not placed (%.1f mm from its post's axis)\n",
-                    static_cast<unsigned long long>(r.variation.seed), p.peg.c_str(), p.miss * 1e3);
+                    static_cast<unsigned long long>(r.variation.seed), p.ring.c_str(),
+                    p.miss * 1e3);
       }
     }
   }
@@ -68,9 +69,9 @@ void expectAllPlacedWhole(const scenario::PegTransferResult& r) {
   EXPECT_EQ(r.failure, "") << "seed " << r.variation.seed;
   EXPECT_TRUE(r.allPlaced()) << "seed " << r.variation.seed;
   for (const auto& p : r.pegs) {
-    EXPECT_FALSE(p.lost) << "seed " << r.variation.seed << " " << p.peg << ": " << p.loss;
-    EXPECT_GT(p.min_volume_ratio, 0.5) << "seed " << r.variation.seed << " " << p.peg;
-    EXPECT_LT(p.max_volume_ratio, 2.0) << "seed " << r.variation.seed << " " << p.peg;
+    EXPECT_FALSE(p.lost) << "seed " << r.variation.seed << " " << p.ring << ": " << p.loss;
+    EXPECT_GT(p.min_volume_ratio, 0.5) << "seed " << r.variation.seed << " " << p.ring;
+    EXPECT_LT(p.max_volume_ratio, 2.0) << "seed " << r.variation.seed << " " << p.ring;
   }
 }
 
@@ -101,7 +102,7 @@ TEST(PegTransferBatch, AnOperatorWhoseGripCannotHoldTriesEachRingThreeTimesAndMo
   EXPECT_FALSE(result.timed_out);
   EXPECT_EQ(result.placed(), 0u);
   EXPECT_EQ(result.regrasps(), 12u);
-  for (const auto& p : result.pegs) EXPECT_EQ(p.regrasps, 2) << p.peg;
+  for (const auto& p : result.pegs) EXPECT_EQ(p.regrasps, 2) << p.ring;
   EXPECT_EQ(result.json()["regrasps"], 12);
 }
 

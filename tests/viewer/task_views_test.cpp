@@ -98,8 +98,8 @@ TEST(TaskViews, TheOverviewShowsAllSixRings) {
   if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
   const Image image = scene.shoot("overview");
   const viewer::Camera camera = viewer::findView(scene.views, "overview").camera;
-  for (const scenario::PegJob& job : scenario::PegLayout{}.jobs) {
-    EXPECT_GT(ringShareAt(image, camera, job.from), 0.15) << job.peg << " on its start post";
+  for (const scenario::RingJob& job : scenario::PegLayout{}.jobs) {
+    EXPECT_GT(ringShareAt(image, camera, job.from), 0.15) << job.ring << " on its start post";
   }
 }
 
@@ -118,21 +118,21 @@ TEST(TaskViews, RingsOnTargetPostsAreToldFromRingsOnStartPosts) {
       for (int x = 0; x < kWidth; ++x) ring_pixels += isPegRed(image.at(x, y));
     }
     EXPECT_GT(ring_pixels, 3 * kMinRingPixels) << view;
-    for (const scenario::PegJob& job : layout.jobsOf(arm)) {
+    for (const scenario::RingJob& job : layout.jobsOf(arm)) {
       fewest = std::min(fewest, ringPixelsAt(image, camera, job.from));
-      EXPECT_GT(ringPixelsAt(image, camera, job.from), kMinRingPixels) << view << " " << job.peg;
-      EXPECT_LT(ringShareAt(image, camera, job.to), 0.01) << view << " " << job.peg;
+      EXPECT_GT(ringPixelsAt(image, camera, job.from), kMinRingPixels) << view << " " << job.ring;
+      EXPECT_LT(ringShareAt(image, camera, job.to), 0.01) << view << " " << job.ring;
     }
     // After: the same rings moved onto their target posts, as a finished transfer leaves them.
-    for (const scenario::PegJob& job : layout.jobsOf(arm)) {
+    for (const scenario::RingJob& job : layout.jobsOf(arm)) {
       const Eigen::Vector2d shift = job.to - job.from;
-      scene.world->softBody(job.peg).bullet().translate(btVector3(shift.x(), shift.y(), 0.0));
+      scene.world->softBody(job.ring).bullet().translate(btVector3(shift.x(), shift.y(), 0.0));
     }
     image = scene.shoot(view);
-    for (const scenario::PegJob& job : layout.jobsOf(arm)) {
-      EXPECT_LT(ringShareAt(image, camera, job.from), 0.01) << view << " " << job.peg;
+    for (const scenario::RingJob& job : layout.jobsOf(arm)) {
+      EXPECT_LT(ringShareAt(image, camera, job.from), 0.01) << view << " " << job.ring;
       fewest = std::min(fewest, ringPixelsAt(image, camera, job.to));
-      EXPECT_GT(ringPixelsAt(image, camera, job.to), kMinRingPixels) << view << " " << job.peg;
+      EXPECT_GT(ringPixelsAt(image, camera, job.to), kMinRingPixels) << view << " " << job.ring;
     }
   }
   RecordProperty("fewest_ring_pixels", fewest);

@@ -20,9 +20,9 @@ const CollisionTag* tagOf(const btBroadphaseProxy* proxy) {
 
 /// Whether `object` (tagged `tag`) may meet an object that is soft or not (`other_soft`).
 bool meetsSoftness(const btCollisionObject* object, const CollisionTag& tag, bool other_soft) {
-  if (tag.soft_stand_in == nullptr) return true;
-  const bool is_stand_in = object == tag.soft_stand_in;
-  return is_stand_in == other_soft;
+  if (tag.soft_proxy == nullptr) return true;
+  const bool is_proxy = object == tag.soft_proxy;
+  return is_proxy == other_soft;
 }
 
 /// Whether Bullet's collision handlers of a soft body with `modes` (btSoftBody::fCollision bits)

@@ -204,10 +204,10 @@ BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& 
     const bool half_spaces = has_plane && body.mass == 0.0;
     out.shape = primitivesShape(body, body_in_com, out.com_in_body, half_spaces, store);
     if (half_spaces) {
-      out.soft_stand_in = primitivesShape(body, body_in_com, out.com_in_body, false, store);
+      out.soft_proxy = primitivesShape(body, body_in_com, out.com_in_body, false, store);
     }
   }
-  if (out.soft_stand_in != nullptr) out.soft_stand_in->setMargin(collision.margin);
+  if (out.soft_proxy != nullptr) out.soft_proxy->setMargin(collision.margin);
   if (out.shape != nullptr) {
     out.shape->setMargin(collision.margin);
     if (auto* gimpact = dynamic_cast<btGImpactShapeInterface*>(out.shape)) gimpact->updateBound();

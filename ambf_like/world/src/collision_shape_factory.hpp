@@ -36,7 +36,7 @@ struct BodyShape {
   btCollisionShape* shape = nullptr;  ///< null when the body has no collision geometry
   /// What soft bodies meet instead of `shape`, when a static body's PLANE is a half-space in
   /// `shape` (see buildBodyShape); null otherwise.
-  btCollisionShape* soft_stand_in = nullptr;
+  btCollisionShape* soft_proxy = nullptr;
   Transform com_in_body = Transform::Identity();
   Vec3 local_inertia = Vec3::Zero();
   std::size_t vertex_count = 0;     ///< collision mesh vertices
@@ -45,7 +45,7 @@ struct BodyShape {
 
 /// A static body's PLANE is Bullet's half-space (btStaticPlaneShape, as AMBF makes it: contacts
 /// with it are a vertex-plane test, where a box costs GJK per pair), and soft bodies, which
-/// cannot rest on a half-space, meet a stand-in with the plane as the top face of a 1 km box. A
+/// cannot rest on a half-space, meet a proxy with the plane as the top face of a 1 km box. A
 /// moving body's PLANE is that box for everything.
 BodyShape buildBodyShape(const BodySpec& body, MeshLibrary& meshes, ShapeStore& store);
 

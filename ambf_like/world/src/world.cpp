@@ -96,7 +96,7 @@ World::Impl::~Impl() {
   }
   articulations.clear();
   for (auto& s : soft_bodies) bullet.removeSoftBody(s->bullet());
-  for (auto& o : soft_stand_ins) world.removeCollisionObject(o.get());
+  for (auto& o : soft_proxies) world.removeCollisionObject(o.get());
   for (auto& b : bodies) {
     // An articulation's link bodies are mirrors that never entered the world.
     if (b->bullet().getBroadphaseHandle()) world.removeRigidBody(&b->bullet());
@@ -128,19 +128,19 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
   auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name, model_index,
                                                      model.ignore_inter_collision, false, groups});
   rigid->setUserPointer(&tag);
-  if (shape.soft_stand_in != nullptr) {
-    auto& stand_in = soft_stand_ins.emplace_back(std::make_unique<btCollisionObject>());
-    stand_in->setCollisionShape(shape.soft_stand_in);
-    stand_in->setWorldTransform(rigid->getWorldTransform());
-    stand_in->setFriction(rigid->getFriction());
-    stand_in->setRollingFriction(rigid->getRollingFriction());
-    stand_in->setRestitution(rigid->getRestitution());
-    stand_in->setUserPointer(&tag);
+  if (shape.soft_proxy != nullptr) {
+    auto& proxy = soft_proxies.emplace_back(std::make_unique<btCollisionObject>());
+    proxy->setCollisionShape(shape.soft_proxy);
+    proxy->setWorldTransform(rigid->getWorldTransform());
+    proxy->setFriction(rigid->getFriction());
+    proxy->setRollingFriction(rigid->getRollingFriction());
+    proxy->setRestitution(rigid->getRestitution());
+    proxy->setUserPointer(&tag);
     // Asleep, as Bullet puts static rigid bodies: sleeping soft bodies are then not tested
     // against it (Bullet collides a pair only if one of them is awake).
-    stand_in->setActivationState(ISLAND_SLEEPING);
-    tag.soft_stand_in = stand_in.get();
-    world.addCollisionObject(stand_in.get(), btBroadphaseProxy::StaticFilter,
+    proxy->setActivationState(ISLAND_SLEEPING);
+    tag.soft_proxy = proxy.get();
+    world.addCollisionObject(proxy.get(), btBroadphaseProxy::StaticFilter,
                              btBroadphaseProxy::AllFilter ^ btBroadphaseProxy::StaticFilter);
     detail::keepBroadphaseBalanced(world);
   }

@@ -44,7 +44,7 @@ struct World::Impl {
   std::deque<detail::CollisionTag> tags;
   std::vector<std::unique_ptr<RigidBody>> bodies;
   /// What soft bodies meet instead of a static body's planes (see buildBodyShape).
-  std::vector<std::unique_ptr<btCollisionObject>> soft_stand_ins;
+  std::vector<std::unique_ptr<btCollisionObject>> soft_proxies;
   std::vector<std::unique_ptr<SoftBody>> soft_bodies;
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
   std::vector<std::unique_ptr<detail::Articulation>> articulations;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "analysis/actuator_signals.hpp"
-#include "analysis/platform_profile.hpp"
+#include "analysis/recording_source.hpp"
 
 namespace analysis {
 
@@ -26,7 +26,7 @@ struct Trial {
 
 /// The trials of one platform.
 struct PlatformTrials {
-  PlatformProfile profile;
+  RecordingSource profile;
   std::vector<Trial> trials;
 };
 
@@ -46,7 +46,7 @@ struct TrialSet {
 };
 
 /// One recording as a trial of `profile`'s platform (its offsets applied, time from row 0).
-Trial toTrial(const recording::RsRecording& rs, const PlatformProfile& profile);
+Trial toTrial(const recording::RsRecording& rs, const RecordingSource& profile);
 
 /// A run of at least this many rows with NaN in a joint column is reported.
 constexpr std::size_t kNanRunReported = 5;
@@ -56,7 +56,7 @@ constexpr std::size_t kNanRunReported = 5;
 /// to the first profile that claims it and checks it. Never throws for a bad file: the reason
 /// goes into `issues`.
 TrialSet loadTrials(const std::vector<std::filesystem::path>& inputs,
-                    const std::vector<PlatformProfile>& profiles);
+                    const std::vector<RecordingSource>& profiles);
 
 /// Resamples every trial onto one time grid (linear interpolation, `period` apart, up to the
 /// shortest trial), for aligning by time instead of by row index.

@@ -1,5 +1,5 @@
 #pragma once
-// An SDL virtual game controller (SDL_JoystickAttachVirtualEx): the stand-in for a physical
+// An SDL virtual game controller (SDL_JoystickAttachVirtualEx): in place of a physical
 // gamepad on machines without /dev/input. SDL's GameController API sees it as a real pad.
 
 #include <SDL2/SDL.h>

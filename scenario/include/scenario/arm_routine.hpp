@@ -28,7 +28,7 @@ class ArmRoutine {
  public:
   /// `squeeze`: how far (m) the closed jaws reach into the ring's wall (grip_geometry.hpp).
   ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile, const PegLayout& layout,
-             std::vector<PegJob> jobs, double squeeze = kDefaultSqueeze);
+             std::vector<RingJob> jobs, double squeeze = kDefaultSqueeze);
 
   /// 0.5 mm of the silicone ring's 4 mm wall: each jaw then presses on it with about 1-2 N, the
   /// force a real grasp of a peg-transfer ring takes (../shared/reference/soft-materials.md).
@@ -54,7 +54,7 @@ class ArmRoutine {
   /// the jaws, slipped out on the way, or landed off its target post (at most twice a peg, each
   /// time squeezing half the first squeeze harder).
   const std::vector<int>& regrasps() const { return regrasps_; }
-  const std::vector<PegJob>& jobs() const { return jobs_; }
+  const std::vector<RingJob>& jobs() const { return jobs_; }
 
  private:
   /// Where the grasp of the current job sits, measured from the peg when it starts.
@@ -83,7 +83,7 @@ class ArmRoutine {
   raven::PlatformProfile profile_;
   raven::ArmKinematics kinematics_;
   PegLayout layout_;
-  std::vector<PegJob> jobs_;
+  std::vector<RingJob> jobs_;
   std::size_t job_ = 0;
   std::vector<int> regrasps_;  ///< per job
   bool retrying_ = false;      ///< the current job starts again after the retreat

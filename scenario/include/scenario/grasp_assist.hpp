@@ -44,7 +44,7 @@ class GraspAssist {
  private:
   /// One arm's grasp.
   struct Hold {
-    ambf_like::SoftBody* peg = nullptr;
+    ambf_like::SoftBody* ring = nullptr;
     double opening = 0.0;  ///< the tightest commanded opening since the grasp
   };
   void release(raven::Arm arm);

@@ -15,9 +15,9 @@
 
 namespace scenario {
 
-/// One transfer: the ring named `peg` from post `from` to post `to`, by `arm`.
-struct PegJob {
-  std::string peg;
+/// One transfer: the ring `ring` from post `from` to post `to`, by `arm`.
+struct RingJob {
+  std::string ring;  ///< its soft body's name in the scene (peg1..peg6)
   raven::Arm arm;
   Eigen::Vector2d from, to;
 };
@@ -38,13 +38,13 @@ struct PegLayout {
   static constexpr const char* kBoard = "peg_board";
 
   RingDimensions ring;
-  PegGeometry geometry;
+  BoardGeometry geometry;
   /// Ring i (peg1..peg6) from start post i to target post i + 6, by the arm on its side of the
   /// board (x > 0: the left arm): from the start row straight back to the target row.
-  std::array<PegJob, 6> jobs;
+  std::array<RingJob, 6> jobs;
 
   /// The jobs of one arm, in order.
-  std::vector<PegJob> jobsOf(raven::Arm arm) const;
+  std::vector<RingJob> jobsOf(raven::Arm arm) const;
 };
 
 }  // namespace scenario

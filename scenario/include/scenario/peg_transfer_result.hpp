@@ -20,8 +20,8 @@ enum class AssistMode { Off, Contact };
 std::string_view assistName(AssistMode mode);
 
 /// One peg's transfer, as the run's ScenePerception showed it.
-struct PegOutcome {
-  std::string peg;
+struct RingOutcome {
+  std::string ring;  ///< its soft body's name in the scene (peg1..peg6)
   raven::Arm arm = raven::Arm::Left;
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
   bool grasped = false;  ///< the ring left the board (its bottom 5 mm above it)
@@ -44,7 +44,7 @@ struct PegTransferResult {
   SceneVariation variation;
   AssistMode assist = AssistMode::Off;
   bool motor_actuation = false;
-  std::array<PegOutcome, 6> pegs;
+  std::array<RingOutcome, 6> pegs;
   bool timed_out = false;  ///< the simulated time limit ended it
   bool stopped = false;    ///< asked to stop (PegTransferOptions::stop) before it was done
   /// Why the run failed (the world's guard: ambf_like::SimulationDiverged), or empty. A failed

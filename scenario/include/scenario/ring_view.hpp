@@ -21,7 +21,7 @@ struct RingDimensions {
 };
 
 /// The board and posts a check needs.
-struct PegGeometry {
+struct BoardGeometry {
   double board_top = 0.0;    ///< z of the board's surface (m)
   double post_radius = 0.0;  ///< the posts' radius (m)
   double lifted = 0.005;     ///< a ring whose bottom is this far above the board is off it
@@ -58,7 +58,7 @@ struct RingView {
 
 /// Threaded on the post at `post` and down on the board (its bottom within `tolerance` of the
 /// board top).
-bool restsOn(const RingView& ring, const Eigen::Vector2d& post, const PegGeometry& geometry,
+bool restsOn(const RingView& ring, const Eigen::Vector2d& post, const BoardGeometry& geometry,
              double tolerance = 0.001);
 
 }  // namespace scenario

@@ -79,7 +79,7 @@ PegTransferResult runPegTransferOverRos(const PegTransferOptions& options,
   seeing.topic_namespace = kSceneNamespace;
   seeing.lock_step = true;
   seeing.objects.push_back(PegLayout::kBoard);
-  for (const PegJob& job : PegLayout{}.jobs) seeing.objects.push_back(job.peg);
+  for (const RingJob& job : PegLayout{}.jobs) seeing.objects.push_back(job.ring);
   bridge::ros1::RosScenePerception scene(seeing);
 
   PegTransferResult result = runPegTransferOn(robot, scene, options);

@@ -19,13 +19,13 @@ struct CollisionTag {
   std::vector<int> groups;  ///< sorted; empty collides with every group
   /// The object soft bodies meet instead of this body (a plane's box, see buildBodyShape); it
   /// shares this tag, so contacts with either read as the body's.
-  const btCollisionObject* soft_stand_in = nullptr;
+  const btCollisionObject* soft_proxy = nullptr;
 };
 
 /// Two objects collide unless both are rigid bodies of a model that ignores inter-collision,
 /// or both have groups and share none, or one is a soft body whose collision modes make nothing
 /// of the other (no rigid-soft mode against a rigid object, no soft-soft mode in common with a
-/// soft one); a body with a soft stand-in meets soft bodies only through it, and the stand-in
+/// soft one); a body with a soft proxy meets soft bodies only through it, and the proxy
 /// meets nothing else. Pairs joined by a joint are excluded by Bullet itself.
 class CollisionFilter : public btOverlapFilterCallback {
  public:

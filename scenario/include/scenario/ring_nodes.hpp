@@ -10,13 +10,13 @@
 namespace scenario {
 
 /// A snapshot of one soft peg's nodes.
-struct PegState {
+struct RingNodes {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< mean of the nodes
   double bottom = 0.0;                               ///< lowest node z
   double speed = 0.0;                                ///< fastest node (m/s)
   bool finite = true;
 };
 
-PegState inspect(const ambf_like::SoftBody& peg);
+RingNodes inspect(const ambf_like::SoftBody& peg);
 
 }  // namespace scenario

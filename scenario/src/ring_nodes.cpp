@@ -1,4 +1,4 @@
-#include "scenario/peg_state.hpp"
+#include "scenario/ring_nodes.hpp"
 
 #include <BulletSoftBody/btSoftBody.h>
 
@@ -8,8 +8,8 @@
 
 namespace scenario {
 
-PegState inspect(const ambf_like::SoftBody& peg) {
-  PegState s;
+RingNodes inspect(const ambf_like::SoftBody& peg) {
+  RingNodes s;
   const btSoftBody& body = peg.bullet();
   s.bottom = std::numeric_limits<double>::infinity();
   for (int i = 0; i < body.m_nodes.size(); ++i) {

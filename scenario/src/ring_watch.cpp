@@ -1,27 +1,27 @@
-#include "scenario/peg_watch.hpp"
+#include "scenario/ring_watch.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace scenario {
 
-PegWatch::PegWatch(const PegLayout& layout, PegIntegrity limits)
+RingWatch::RingWatch(const PegLayout& layout, RingIntegrity limits)
     : layout_(layout), limits_(limits) {
   for (std::size_t i = 0; i < layout_.jobs.size(); ++i) {
-    const PegJob& job = layout_.jobs[i];
-    PegOutcome& o = outcomes_[i];
-    o.peg = job.peg;
+    const RingJob& job = layout_.jobs[i];
+    RingOutcome& o = outcomes_[i];
+    o.ring = job.ring;
     o.arm = job.arm;
     o.from = job.from;
     o.to = job.to;
   }
 }
 
-void PegWatch::observe(const bridge::ScenePerception& scene) {
+void RingWatch::observe(const bridge::ScenePerception& scene) {
   const double board = layout_.geometry.board_top;
-  for (PegOutcome& o : outcomes_) {
+  for (RingOutcome& o : outcomes_) {
     if (o.lost) continue;
-    const RingView ring(scene.sight(o.peg), layout_.ring);
+    const RingView ring(scene.sight(o.ring), layout_.ring);
     if (ring.volume_ratio) {
       o.volume_seen = true;
       o.min_volume_ratio = std::min(o.min_volume_ratio, *ring.volume_ratio);
@@ -43,10 +43,10 @@ void PegWatch::observe(const bridge::ScenePerception& scene) {
   }
 }
 
-std::array<PegOutcome, 6> PegWatch::finish(const bridge::ScenePerception& scene) const {
+std::array<RingOutcome, 6> RingWatch::finish(const bridge::ScenePerception& scene) const {
   auto outcomes = outcomes_;
-  for (PegOutcome& o : outcomes) {
-    const RingView ring(scene.sight(o.peg), layout_.ring);
+  for (RingOutcome& o : outcomes) {
+    const RingView ring(scene.sight(o.ring), layout_.ring);
     o.final_centre = ring.centre();
     o.miss = (ring.centre().head<2>() - o.to).norm();
     o.placed = !o.lost && restsOn(ring, o.to, layout_.geometry);
@@ -54,9 +54,9 @@ std::array<PegOutcome, 6> PegWatch::finish(const bridge::ScenePerception& scene)
   return outcomes;
 }
 
-std::size_t PegWatch::lost() const {
+std::size_t RingWatch::lost() const {
   return static_cast<std::size_t>(std::count_if(outcomes_.begin(), outcomes_.end(),
-                                                [](const PegOutcome& o) { return o.lost; }));
+                                                [](const RingOutcome& o) { return o.lost; }));
 }
 
 }  // namespace scenario

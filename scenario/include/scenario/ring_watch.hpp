@@ -12,25 +12,25 @@
 namespace scenario {
 
 /// The limits a peg must stay within to count as whole.
-struct PegIntegrity {
+struct RingIntegrity {
   double volume_tolerance = 0.20;  ///< |volume / rest volume - 1|
   double below_board = 0.003;      ///< its bottom this far under the board top: tunnelled
 };
 
 /// Tracks the pegs' outcomes; call observe() after every manual-loop iteration.
-class PegWatch {
+class RingWatch {
  public:
-  explicit PegWatch(const PegLayout& layout, PegIntegrity limits = {});
+  explicit RingWatch(const PegLayout& layout, RingIntegrity limits = {});
 
   void observe(const bridge::ScenePerception& scene);
   /// The final outcomes: each peg placed if whole and resting on its target post.
-  std::array<PegOutcome, 6> finish(const bridge::ScenePerception& scene) const;
+  std::array<RingOutcome, 6> finish(const bridge::ScenePerception& scene) const;
   std::size_t lost() const;
 
  private:
   PegLayout layout_;
-  PegIntegrity limits_;
-  std::array<PegOutcome, 6> outcomes_;
+  RingIntegrity limits_;
+  std::array<RingOutcome, 6> outcomes_;
 };
 
 }  // namespace scenario

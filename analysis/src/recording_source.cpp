@@ -1,10 +1,10 @@
-#include "analysis/platform_profile.hpp"
+#include "analysis/recording_source.hpp"
 
 #include "common/yaml_view.hpp"
 
 namespace analysis {
 
-bool PlatformProfile::claims(const std::filesystem::path& file,
+bool RecordingSource::claims(const std::filesystem::path& file,
                              const recording::RsVariant& variant) const {
   if (ambf_rows && variant.from_ambf) return true;
   const std::string file_name = file.filename().string();
@@ -17,16 +17,16 @@ bool PlatformProfile::claims(const std::filesystem::path& file,
   return false;
 }
 
-std::vector<PlatformProfile> readProfiles(const std::filesystem::path& file) {
+std::vector<RecordingSource> readRecordingSources(const std::filesystem::path& file) {
   const auto root = common::YamlView::parseFile(file);
   std::vector<common::LoadIssue> warnings;
   const common::KeyCheck strict{true, warnings};
   root.checkKeys({"platforms"}, strict);
-  std::vector<PlatformProfile> profiles;
+  std::vector<RecordingSource> profiles;
   for (const auto& entry : root["platforms"].elements()) {
     entry.checkKeys(
         {"name", "label", "role", "files", "file regex", "ambf rows", "position offsets"}, strict);
-    PlatformProfile p;
+    RecordingSource p;
     p.name = entry["name"].asString();
     p.label = entry.find("label") ? entry["label"].asString() : p.name;
     const auto role = entry["role"];
@@ -67,13 +67,13 @@ std::vector<PlatformProfile> readProfiles(const std::filesystem::path& file) {
   return profiles;
 }
 
-std::filesystem::path defaultProfilesFile() {
+std::filesystem::path defaultRecordingSourcesFile() {
   return RAVEN_ANALYSIS_PROFILES;
 }
 
-const PlatformProfile* profileFor(const std::vector<PlatformProfile>& profiles,
-                                  const std::filesystem::path& file,
-                                  const recording::RsVariant& variant) {
+const RecordingSource* sourceOf(const std::vector<RecordingSource>& profiles,
+                                const std::filesystem::path& file,
+                                const recording::RsVariant& variant) {
   for (const auto& p : profiles) {
     if (p.claims(file, variant)) return &p;
   }

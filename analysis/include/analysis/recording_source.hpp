@@ -1,6 +1,7 @@
 #pragma once
-// Platform profiles: which recordings belong to a platform and how its recorded joint columns
-// map onto the physical Raven-II's convention (analysis/profiles/platforms.yaml).
+// Recording sources: which recordings belong to a platform and how its recorded joint columns
+// map onto the physical Raven-II's convention (analysis/profiles/platforms.yaml). Not a
+// raven::PlatformProfile, which is a platform's kinematics (R_P, R_S).
 
 #include <array>
 #include <filesystem>
@@ -22,7 +23,7 @@ using JointRow = std::array<double, kJointColumns>;
 enum class Role { Physical, Simulation };
 
 /// One platform's recordings and conventions.
-struct PlatformProfile {
+struct RecordingSource {
   std::string name;   ///< short key used in reports ("ambf")
   std::string label;  ///< for figures ("AMBF")
   Role role = Role::Simulation;
@@ -36,14 +37,14 @@ struct PlatformProfile {
   bool claims(const std::filesystem::path& file, const recording::RsVariant& variant) const;
 };
 
-/// Reads a profiles file. Throws common::LoadError naming the file, line and key.
-std::vector<PlatformProfile> readProfiles(const std::filesystem::path& file);
+/// Reads a recording sources file. Throws common::LoadError naming the file, line and key.
+std::vector<RecordingSource> readRecordingSources(const std::filesystem::path& file);
 /// analysis/profiles/platforms.yaml of this source tree.
-std::filesystem::path defaultProfilesFile();
+std::filesystem::path defaultRecordingSourcesFile();
 
-/// The first profile claiming the file, if any.
-const PlatformProfile* profileFor(const std::vector<PlatformProfile>& profiles,
-                                  const std::filesystem::path& file,
-                                  const recording::RsVariant& variant);
+/// The first source claiming the file, if any.
+const RecordingSource* sourceOf(const std::vector<RecordingSource>& profiles,
+                                const std::filesystem::path& file,
+                                const recording::RsVariant& variant);
 
 }  // namespace analysis
