@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -96,12 +97,11 @@ ambf_like::SceneSpec ravenWithCloth(const std::filesystem::path& root) {
   return spec;
 }
 
-/// One row of the section: a scene as loaded, how it is stepped, and AMBF's figure if it is
-/// held to one.
+/// One row of the section: a scene as loaded with its world settings, and AMBF's figure if it
+/// is held to one.
 struct Run {
   std::string name;
   ambf_like::SceneSpec spec;
-  ambf_like::WorldOptions options;
   std::optional<double> bound;
   std::string note;
 };
@@ -109,43 +109,51 @@ struct Run {
 /// Steps per second of `run`, from its first step.
 double rate(const Run& run) {
   ambf_like::MeshLibrary meshes;
-  ambf_like::World world(run.spec, meshes, run.options);
+  ambf_like::World world(run.spec, meshes);
   return stepsPerSecond(world, kSteps, [](int) {});
 }
 
-/// `run` once more, stepped with `options`: its name followed by `how`.
-Run variant(const Run& run, const std::string& how, const ambf_like::WorldOptions& options,
-            std::optional<double> bound, std::string note) {
-  return {run.name + ", " + how, run.spec, options, bound, std::move(note)};
+/// `run` once more, its world settings changed by `change`: its name followed by `how`.
+Run variant(const Run& run, const std::string& how,
+            const std::function<void(ambf_like::WorldSpec&)>& change, std::optional<double> bound,
+            std::string note) {
+  Run changed{run.name + ", " + how, run.spec, bound, std::move(note)};
+  change(changed.spec.world);
+  return changed;
+}
+
+/// AMBF steps every soft body at every step.
+ambf_like::SceneSpec asAmbf(ambf_like::SceneSpec spec) {
+  spec.world.soft_body_sleep.enabled = false;
+  return spec;
 }
 
 /// The rows: AMBF's scenes stepped as AMBF steps them (no soft body ever sleeps there), then
 /// this simulator's own defaults and fast path beside them.
 std::vector<Run> runs(const std::filesystem::path& root) {
-  ambf_like::WorldOptions as_ambf;
-  as_ambf.soft_body_sleep = false;
   std::vector<Run> all;
   for (const AmbfScene& scene : scenes()) {
-    all.push_back({scene.name, load(root, scene), as_ambf, scene.ambf_steps_per_second,
+    all.push_back({scene.name, asAmbf(load(root, scene)), scene.ambf_steps_per_second,
                    fmt::format("20 s of 1 ms steps from load, no soft-body sleep; the bound is "
                                "AMBF's {:.0f} on the same files (issue 26, this machine class, "
                                "not this run)",
                                scene.ambf_steps_per_second)});
   }
   all.push_back({"the Raven with the cloth (scaled 0.1) hanging at its left grasper",
-                 ravenWithCloth(root), as_ambf, kAmbfRavenWithCloth,
+                 asAmbf(ravenWithCloth(root)), kAmbfRavenWithCloth,
                  "composed from AMBF's files as docs/ambf-scenes.md says (no file describes it), "
                  "no soft-body sleep; the bound is issue 26's AMBF figure"});
   const Run raven = all.front();
   const Run cloth = all[scenes().size() - 1];  // the last of AMBF's scenes
   const Run raven_with_cloth = all.back();
   const std::string sleep_on = "soft-body sleep on (our default)";
-  const ambf_like::WorldOptions defaults;
-  all.push_back(variant(cloth, sleep_on, defaults, std::nullopt,
+  auto sleep = [](ambf_like::WorldSpec& world) { world.soft_body_sleep.enabled = true; };
+  all.push_back(variant(cloth, sleep_on, sleep, std::nullopt,
                         "the cloth sleeps once it stops moving; AMBF has no such thing"));
-  all.push_back(variant(raven_with_cloth, sleep_on, defaults, std::nullopt, "the same"));
-  ambf_like::WorldOptions reduced;
-  reduced.articulation = ambf_like::Articulation::Reduced;
+  all.push_back(variant(raven_with_cloth, sleep_on, sleep, std::nullopt, "the same"));
+  auto reduced = [](ambf_like::WorldSpec& world) {
+    world.articulation = ambf_like::Articulation::Reduced;
+  };
   all.push_back(variant(raven, "articulation: reduced", reduced, 2.0 * *raven.bound,
                         "each arm one articulation (0_link, welded between the two static "
                         "bases, stays a rigid body); the bound is 2x AMBF's"));

@@ -23,11 +23,10 @@ const char* kSection = "loop frequency";
 
 /// Our Raven-II alone (`scene`), both arms following a slow sine around home, gravity on, its
 /// arms in the given formulation (the model's own is reduced coordinates).
-double ravenAloneMoving(const ambf_like::SceneSpec& scene, ambf_like::Articulation articulation) {
+double ravenAloneMoving(ambf_like::SceneSpec scene, ambf_like::Articulation articulation) {
   ambf_like::MeshLibrary meshes;
-  ambf_like::WorldOptions options;
-  options.articulation = articulation;
-  ambf_like::World world(scene, meshes, options);
+  scene.world.articulation = articulation;
+  ambf_like::World world(scene, meshes);
   twin::TwinArms arms(world, twin::ArmBindings::ourRaven());
   const auto home = raven::builtinProfile("physical").home;
   for (auto arm : raven::kArms) arms.command(arm, home);

@@ -57,7 +57,7 @@ void ArmRoutine::plan(const bridge::ScenePerception& scene) {
   const RingView peg = ring(scene);
   const Eigen::Vector2d centre = peg.centre().head<2>();
   // The station: the tube's centre line on the ring's -y side, away from the target row.
-  const Eigen::Vector3d station = peg.centreLineToward(-Eigen::Vector2d::UnitY());
+  const Eigen::Vector3d station = peg.stationToward(-Eigen::Vector2d::UnitY());
   const Eigen::Vector2d inward = (centre - station.head<2>()).normalized();
   // Jaws down; jaw 1 (the inner one) swings towards grasp_scale's side of the tool's y axis.
   const double side = profile_.arm(arm_).grasp_scale > 0 ? 1.0 : -1.0;

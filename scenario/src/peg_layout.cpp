@@ -13,7 +13,8 @@ PegLayout::PegLayout(const raven::design::PegSceneDesign& design,
   };
   ring = {.major_radius = design.peg_major_radius,
           .tube_half_width = design.peg_minor_radius,
-          .half_height = design.peg_half_height};
+          .half_height = design.peg_half_height,
+          .stations = design.peg_ring_segments};
   geometry.board_top = at.translation().z();
   geometry.post_radius = design.post_radius;
   for (std::size_t i = 0; i < jobs.size(); ++i) {

@@ -27,10 +27,16 @@ double RingView::top() const {
   return centre().z() + halfExtent(size, axis().z());
 }
 
-Eigen::Vector3d RingView::centreLineToward(const Eigen::Vector2d& toward) const {
+Eigen::Vector3d RingView::stationToward(const Eigen::Vector2d& toward) const {
   const Eigen::Vector3d d(toward.x(), toward.y(), 0.0);
-  const Eigen::Vector3d in_plane = d - d.dot(axis()) * axis();
-  return centre() + size.major_radius * in_plane.normalized();
+  Eigen::Vector3d radial = (d - d.dot(axis()) * axis()).normalized();
+  if (size.stations > 0) {  // the vertex of the centre line nearest that side
+    const Eigen::Vector3d local = pose.linear().transpose() * radial;
+    const double step = 2.0 * M_PI / size.stations;
+    const double u = step * std::round(std::atan2(local.y(), local.x()) / step);
+    radial = pose.linear() * Eigen::Vector3d(std::cos(u), std::sin(u), 0.0);
+  }
+  return centre() + size.major_radius * radial;
 }
 
 double RingView::postOffset(const Eigen::Vector2d& post) const {

@@ -82,8 +82,7 @@ TEST(AdfSemantics, MeshBodyWithoutInertialOffsetUsesTheVertexMean) {
                 "bodies: [BODY cube]\n"
                 "BODY cube: {mass: 1, mesh: cube.obj, collision mesh type: CONVEX_HULL,"
                 " location: {position: {x: 0, y: 0, z: 10}}}\n");
-  ambf_like::WorldOptions options;
-  auto sim = test_support::simulate({file}, options);
+  auto sim = test_support::simulate({file});
   const auto& cube = sim->world->body("cube");
   EXPECT_TRUE(
       cube.centerOfMassPose().translation().isApprox(ambf_like::Vec3(1.5, 1.5, 11.5), 1e-12));

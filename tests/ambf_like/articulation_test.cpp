@@ -52,10 +52,10 @@ std::filesystem::path doublePendulum(const test_support::TempDir& dir,
 
 std::unique_ptr<test_support::Simulation> load(const std::filesystem::path& model,
                                                Articulation articulation) {
-  ambf_like::WorldOptions options;
-  options.articulation = articulation;
-  options.solver_iterations = 50;  // the constraint formulation as tight as it gets
-  return test_support::simulate({model}, options);
+  return test_support::simulate({model}, [articulation](ambf_like::WorldSpec& world) {
+    world.articulation = articulation;
+    world.solver_iterations = 50;  // the constraint formulation as tight as it gets
+  });
 }
 
 /// Steps all three `steps` times; the largest distance between the tip of `reduced` and that of

@@ -338,12 +338,16 @@ TEST(BadInput, SoftBodyContactFrictionModel) {
       dir.write("a.yaml", model("1.0", "  damping: {linear: 0, angular: 0}\n") +
                               "soft bodies: [BODY blob]\n" + blob +
                               "coulomb, location: " + "{position: {x: 0, y: 0, z: 1}}}\n");
-  ambf_like::WorldOptions options;
-  options.articulation = ambf_like::Articulation::Reduced;
-  EXPECT_THAT(loadErrorOf([&] { test_support::simulate({articulated}, options); }),
+  auto articulation = [](ambf_like::Articulation a) {
+    return [a](ambf_like::WorldSpec& world) { world.articulation = a; };
+  };
+  EXPECT_THAT(loadErrorOf([&] {
+                test_support::simulate({articulated},
+                                       articulation(ambf_like::Articulation::Reduced));
+              }),
               AllOf(HasSubstr("BODY blob/contact friction"), HasSubstr("articulation: maximal")));
-  options.articulation = ambf_like::Articulation::Maximal;
-  EXPECT_NO_THROW(test_support::simulate({articulated}, options));
+  EXPECT_NO_THROW(
+      test_support::simulate({articulated}, articulation(ambf_like::Articulation::Maximal)));
 }
 
 TEST(BadInput, SoftBodySubsteps) {

@@ -68,9 +68,7 @@ struct Scene {
   explicit Scene(const std::string& adf) {
     dir.write("cube.obj", subdividedCubeObj(4));
     // Awake throughout: a sleeping body has no contacts to read.
-    ambf_like::WorldOptions options;
-    options.soft_body_sleep = false;
-    sim = test_support::simulate({dir.write("scene.yaml", adf)}, options);
+    sim = test_support::simulate({dir.write("scene.yaml", adf)}, test_support::noSoftBodySleep);
   }
   ambf_like::World& world() { return *sim->world; }
 };

@@ -88,7 +88,7 @@ TEST_F(Loop, AStepOutsideAMicrosecondToATenthOfASecondIsRefused) {
     SCOPED_TRACE(step);
     ambf_like::WorldOptions options;
     options.step_size = step;
-    EXPECT_THROW(test_support::simulate({test_support::exampleFile("floor.yaml")}, options),
+    EXPECT_THROW(test_support::simulate({test_support::exampleFile("floor.yaml")}, {}, options),
                  std::invalid_argument);
   }
 }

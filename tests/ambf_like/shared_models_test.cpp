@@ -282,9 +282,9 @@ TEST_F(SharedModels, RavenInReducedCoordinatesMovesAsWithConstraints) {
                                 descriptions / "world/raven_world.yaml");
   ambf_like::MeshLibrary meshes;
   auto make = [&](ambf_like::Articulation articulation) {
-    ambf_like::WorldOptions options;
-    options.articulation = articulation;
-    return std::make_unique<ambf_like::World>(scene.spec, meshes, options);
+    ambf_like::SceneSpec spec = scene.spec;
+    spec.world.articulation = articulation;
+    return std::make_unique<ambf_like::World>(spec, meshes);
   };
   auto reduced = make(ambf_like::Articulation::Reduced);
   auto maximal = make(ambf_like::Articulation::Maximal);

@@ -24,11 +24,10 @@ std::filesystem::path writeBallOnGround(const TempDir& dir, const std::string& e
                        extra);
 }
 
-std::unique_ptr<test_support::Simulation> ballOnGround(const TempDir& dir,
-                                                       const std::string& extra_names = "",
-                                                       const std::string& extra = "",
-                                                       ambf_like::WorldOptions options = {}) {
-  return test_support::simulate({writeBallOnGround(dir, extra_names, extra)}, options);
+std::unique_ptr<test_support::Simulation> ballOnGround(
+    const TempDir& dir, const std::string& extra_names = "", const std::string& extra = "",
+    const test_support::WorldSettings& settings = {}) {
+  return test_support::simulate({writeBallOnGround(dir, extra_names, extra)}, settings);
 }
 
 /// ADF text of a dynamic box `name` with its own gravity along z, at `location` (an ADF
@@ -66,11 +65,9 @@ TEST(SoftBodySleep, ARestingBodyFallsAsleepAndThenStaysExactlyWhereItWas) {
   EXPECT_EQ(world.contacts().size(), contacts) << "contacts must not pile up while it sleeps";
 }
 
-TEST(SoftBodySleep, TheWorldFileAndTheWorldOptionsCanTurnItOff) {
+TEST(SoftBodySleep, TheWorldFileAndTheWorldSpecCanTurnItOff) {
   TempDir dir;
-  ambf_like::WorldOptions off;
-  off.soft_body_sleep = false;
-  auto sim = ballOnGround(dir, "", "", off);
+  auto sim = ballOnGround(dir, "", "", test_support::noSoftBodySleep);
   // With sleep on, this ball sleeps after about 2.7 s (the first test).
   EXPECT_LT(stepUntilAsleep(*sim->world, sim->world->softBody("blob"), 5.0), 0.0);
 

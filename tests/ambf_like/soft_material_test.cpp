@@ -66,12 +66,17 @@ std::string materialCube(const std::string& config) {
 }
 
 /// A world of `step` whose soft bodies never sleep and whose contacts see millimetres.
-ambf_like::WorldOptions contactWorld(double step) {
+std::unique_ptr<test_support::Simulation> contactWorld(const std::filesystem::path& file,
+                                                       double step) {
   ambf_like::WorldOptions options;
   options.step_size = step;
-  options.soft_body_sleep = false;
-  options.sdf_voxel_size = 0.001;
-  return options;
+  return test_support::simulate(
+      {file},
+      [](ambf_like::WorldSpec& world) {
+        world.soft_body_sleep.enabled = false;
+        world.sdf_voxel_size = 0.001;
+      },
+      options);
 }
 
 /// A static body turned into Bullet's kinematic one: placed by the test every step, its
@@ -115,8 +120,7 @@ std::string compressionScene(const Solver& solver) {
 Compression compress(double strain, const Solver& solver) {
   TempDir dir;
   dir.write("cube.vtk", boxVtk(3, 3, 3, kSide / 3));
-  auto sim = test_support::simulate({dir.write("scene.yaml", compressionScene(solver))},
-                                    contactWorld(solver.step));
+  auto sim = contactWorld(dir.write("scene.yaml", compressionScene(solver)), solver.step);
   auto& world = *sim->world;
   auto& cube = world.softBody("cube");
   KinematicBody press(world.body("press").bullet());
@@ -278,7 +282,7 @@ TEST(SoftMaterial, AMaterialFarStifferThanTheStepCouldFollowRestsStillOnAPlate) 
       << "  location: {position: {x: -0.005, y: -0.005, z: " << kMargin << "}}\n"
       << "  collision margin: " << kMargin << "\n  config: {kDF: 0.8, kDP: 0.02}\n";
   for (double step : {0.001, 0.01}) {
-    auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, contactWorld(step));
+    auto sim = contactWorld(dir.write("scene.yaml", adf.str()), step);
     auto& cube = sim->world->softBody("cube");
     const auto rest = cube.nodePositions();
     sim->world->step(500);
@@ -334,7 +338,7 @@ Pinch pinch(double squeeze, double step) {
         << x << ", y: 0, z: 0.012}}}\n";
   }
   adf << materialCube("config: {kDF: 0.8, kDP: 0.02}");
-  auto sim = test_support::simulate({dir.write("scene.yaml", adf.str())}, contactWorld(step));
+  auto sim = contactWorld(dir.write("scene.yaml", adf.str()), step);
   auto& world = *sim->world;
   auto& cube = world.softBody("cube");
   KinematicBody left(world.body("left").bullet()), right(world.body("right").bullet());

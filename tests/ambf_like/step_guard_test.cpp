@@ -57,7 +57,7 @@ TEST(StepGuard, ItsLimitsComeFromTheScenesSizeAndStep) {
   auto coarse =
       test_support::simulate({dir.write("again.yaml", "bodies: [BODY base, BODY box]\n" +
                                                           box("base", 0, 0) + box("box", 0.1, 3))},
-                             slow);
+                             {}, slow);
   EXPECT_NEAR(coarse->world->guard().speedLimit(), std::sqrt(2 * 9.81 * 63), 1e-9);
 }
 

@@ -55,10 +55,9 @@ std::filesystem::path writeScene(const TempDir& dir) {
           "  joint limits: {low: -1.5, high: 1.5}\n  controller: {P: 200, I: 40, D: 10}\n");
 }
 
-ambf_like::WorldOptions options() {
-  ambf_like::WorldOptions o;
-  o.sdf_voxel_size = 0.001;
-  return o;
+/// Contacts that see millimetres.
+void options(ambf_like::WorldSpec& world) {
+  world.sdf_voxel_size = 0.001;
 }
 
 /// Every coordinate of the world's motion as raw doubles: the bodies' poses and velocities, the
@@ -100,7 +99,7 @@ std::vector<std::vector<double>> run(ambf_like::World& world, int steps) {
 
 TEST(WorldState, StepsAfterARestoreRepeatTheStepsAfterTheSaveBitForBit) {
   TempDir dir;
-  auto sim = test_support::simulate({writeScene(dir)}, options());
+  auto sim = test_support::simulate({writeScene(dir)}, options);
   ambf_like::World& world = *sim->world;
   world.joint("base-link").commandPosition(0.7);
   world.step(400);  // the boxes settle on each other, the ball and the cube land
@@ -129,8 +128,8 @@ TEST(WorldState, SavingKeepsTheContactsAndTheirWarmStart) {
   // did not save, bit for bit; but they keep every contact point and its impulse. Without them
   // the stack loses half its points for a step and its top box drops 8 um.
   TempDir dir;
-  auto saving = test_support::simulate({writeScene(dir)}, options());
-  auto plain = test_support::simulate({writeScene(dir)}, options());
+  auto saving = test_support::simulate({writeScene(dir)}, options);
+  auto plain = test_support::simulate({writeScene(dir)}, options);
   for (auto* world : {saving->world.get(), plain->world.get()}) {
     world->joint("base-link").commandPosition(0.7);
     world->step(400);
@@ -147,16 +146,18 @@ TEST(WorldState, SavingKeepsTheContactsAndTheirWarmStart) {
 
 TEST(WorldState, AStateBelongsToItsWorld) {
   TempDir dir;
-  auto one = test_support::simulate({writeScene(dir)}, options());
-  auto other = test_support::simulate({writeScene(dir)}, options());
+  auto one = test_support::simulate({writeScene(dir)}, options);
+  auto other = test_support::simulate({writeScene(dir)}, options);
   const auto state = one->world->saveState();
   EXPECT_THROW(other->world->restoreState(*state), std::invalid_argument);
 }
 
 TEST(WorldState, AWorldWithArticulationsIsRefusedByName) {
   TempDir dir;
-  auto o = options();
-  o.articulation = ambf_like::Articulation::Reduced;
+  auto o = [](ambf_like::WorldSpec& world) {
+    options(world);
+    world.articulation = ambf_like::Articulation::Reduced;
+  };
   auto sim = test_support::simulate(
       {dir.write("arm.yaml",
                  "bodies: [BODY base, BODY link]\njoints: [JOINT base-link]\n"

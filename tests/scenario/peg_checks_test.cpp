@@ -110,6 +110,26 @@ TEST(PegChecks, ARingsPoseFollowsItsNodesAndGivesTheirExtremes) {
   EXPECT_LT(ring.top(), nodeExtremes().second + 0.0005);
 }
 
+TEST(PegChecks, TheStationTowardASideIsTheRingsNearestStationNode) {
+  // The mesh (raven_description's solidRing): per station its centre-line node, then 8 around
+  // the tube; station i at 2 pi i / 16 about the ring's axis. -y is station 12's side.
+  twin::TwinPlatform twin(pegScene());
+  auto& world = twin.world();
+  const twin::WorldPerception scene(world);
+  const auto& body = world.softBody("peg1");
+  const std::size_t per_station = 9;
+  const Eigen::Vector2d minus_y(0, -1);
+  EXPECT_LT(
+      (seen(scene, "peg1").stationToward(minus_y) - body.nodePosition(12 * per_station)).norm(),
+      1e-9);
+  // Turned by 0.3 rad (more than half a station, 0.196 rad): station 11 faces -y now.
+  rotate(world.softBody("peg1").bullet(),
+         Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix());
+  EXPECT_LT(
+      (seen(scene, "peg1").stationToward(minus_y) - body.nodePosition(11 * per_station)).norm(),
+      1e-9);
+}
+
 TEST(PegChecks, ARingPerchedAboveItsPostOrBesideItIsNotPlaced) {
   twin::TwinPlatform twin(pegScene());
   const twin::WorldPerception scene(twin.world());

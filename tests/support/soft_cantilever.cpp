@@ -29,9 +29,8 @@ CantileverSag settleCantilever(const CantileverSpec& spec) {
       << "  substeps: " << spec.substeps << "\n  config: {kDP: " << spec.damping
       << ", fixed nodes: [" << fixed.str() << "]}\n";
   ambf_like::WorldOptions options;
-  options.soft_body_sleep = false;
   options.step_size = spec.step;
-  auto sim = simulate({dir.write("scene.yaml", adf.str())}, options);
+  auto sim = simulate({dir.write("scene.yaml", adf.str())}, noSoftBodySleep, options);
   auto& beam = sim->world->softBody("beam");
   const auto rest = beam.nodePositions();
   const auto steps = static_cast<std::uint64_t>(std::lround(spec.duration / spec.step));

@@ -47,9 +47,11 @@ std::string softBallBody(double margin) {
 }
 
 std::unique_ptr<Simulation> simulate(const std::vector<std::filesystem::path>& model_files,
+                                     const WorldSettings& settings,
                                      ambf_like::WorldOptions options) {
   auto sim = std::make_unique<Simulation>();
   sim->scene = ambf_like::loadModelFiles(model_files);
+  if (settings) settings(sim->scene.spec.world);
   sim->world = std::make_unique<ambf_like::World>(sim->scene.spec, sim->meshes, options);
   return sim;
 }

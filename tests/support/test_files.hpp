@@ -3,6 +3,7 @@
 // reference data lives.
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "ambf_like/scene_loader.hpp"
@@ -43,9 +44,19 @@ struct Simulation {
   std::unique_ptr<ambf_like::World> world;
 };
 
-/// Loads model files (default world) and builds a World; throws what the loader throws.
+/// A test's changes to the world file's settings (WorldSpec: sleep, articulation, solver).
+using WorldSettings = std::function<void(ambf_like::WorldSpec&)>;
+
+/// Loads model files (default world), changes its settings and builds a World; throws what the
+/// loader throws.
 std::unique_ptr<Simulation> simulate(const std::vector<std::filesystem::path>& model_files,
+                                     const WorldSettings& settings = {},
                                      ambf_like::WorldOptions options = {});
+
+/// The world settings with soft-body sleep off.
+inline void noSoftBodySleep(ambf_like::WorldSpec& world) {
+  world.soft_body_sleep.enabled = false;
+}
 
 /// Runs `call` and returns the LoadError message it threw ("" when it did not throw one).
 template <typename Call>

@@ -45,9 +45,8 @@ std::string scene(const std::string& resting) {
 /// The jaw's forces on the resting thing, averaged over 200 steps after 1 s of settling.
 bridge::JawForces forcesOnRestingThing(const std::string& kind) {
   test_support::TempDir dir;
-  ambf_like::WorldOptions options;
-  options.soft_body_sleep = false;
-  auto sim = test_support::simulate({dir.write("s.yaml", scene(kind))}, options);
+  auto sim =
+      test_support::simulate({dir.write("s.yaml", scene(kind))}, test_support::noSoftBodySleep);
   auto& world = *sim->world;
   world.step(1000);
   bridge::JawForces mean;

@@ -72,14 +72,12 @@ World::Impl::Impl(const SceneSpec& scene, const WorldOptions& opts)
   btGImpactCollisionAlgorithm::registerAlgorithm(&bullet.dispatcher());
   world.getPairCache()->setOverlapFilterCallback(&filter);
   world.setGravity(toBt(settings.gravity));
-  world.getSolverInfo().m_numIterations =
-      options.solver_iterations.value_or(settings.solver_iterations.value_or(10));
+  world.getSolverInfo().m_numIterations = settings.solver_iterations.value_or(10);
   auto& info = bullet.softBodyInfo();
   info.m_gravity = toBt(settings.gravity);
   info.air_density = 1.2;
   info.m_sparsesdf.Initialize(kSdfHashBuckets);
-  info.m_sparsesdf.setDefaultVoxelsz(
-      options.sdf_voxel_size.value_or(settings.sdf_voxel_size.value_or(0.01)));
+  info.m_sparsesdf.setDefaultVoxelsz(settings.sdf_voxel_size.value_or(0.01));
   info.m_sparsesdf.Reset();
 }
 
@@ -283,8 +281,7 @@ World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
     for (const Vec3& node : soft->nodePositions()) scene_points.push_back(node);
   }
   impl_->guard.emplace(scene_points, options.step_size, impl_->settings.gravity);
-  if (options.soft_body_sleep.value_or(scene.world.soft_body_sleep.enabled) &&
-      !impl_->soft_bodies.empty()) {
+  if (scene.world.soft_body_sleep.enabled && !impl_->soft_bodies.empty()) {
     impl_->sleeper.emplace(scene.world.soft_body_sleep, impl_->world, impl_->soft_bodies.size());
   }
 }

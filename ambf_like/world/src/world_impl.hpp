@@ -65,7 +65,7 @@ struct World::Impl {
 
   std::vector<detail::ArticulationPlan> planEach(const std::vector<ModelSpec>& models) const {
     std::vector<detail::ArticulationPlan> out(models.size());
-    if (options.articulation.value_or(settings.articulation) == Articulation::Reduced) {
+    if (settings.articulation == Articulation::Reduced) {
       std::transform(models.begin(), models.end(), out.begin(), detail::planArticulations);
     }
     return out;

@@ -15,6 +15,9 @@ struct RingDimensions {
   double major_radius = 0.0;     ///< centre line of the tube
   double tube_half_width = 0.0;  ///< radially
   double half_height = 0.0;      ///< along the ring's axis
+  /// Stations around the ring (the design's peg_ring_segments): its centre line is a polygon
+  /// with a vertex at each, the first on the ring frame's x axis; 0 for a smooth ring.
+  int stations = 0;
 
   double innerRadius() const { return major_radius - tube_half_width; }
   double outerRadius() const { return major_radius + tube_half_width; }
@@ -45,8 +48,9 @@ struct RingView {
   /// The lowest and highest z of its surface, tilted as seen.
   double bottom() const;
   double top() const;
-  /// The point of its centre line on the side `toward` (a horizontal direction) points to.
-  Eigen::Vector3d centreLineToward(const Eigen::Vector2d& toward) const;
+  /// The point of its centre line on the side `toward` (a horizontal direction) points to: the
+  /// station nearest that side (a smooth ring: that side's point).
+  Eigen::Vector3d stationToward(const Eigen::Vector2d& toward) const;
   /// How far from its centre the vertical line through `post` crosses its mid-plane (m;
   /// infinite when the ring stands on edge).
   double postOffset(const Eigen::Vector2d& post) const;

@@ -52,9 +52,12 @@ struct WorldSpec {
   std::string name_space = "/ambf/env/";
   Vec3 gravity{0.0, 0.0, -9.81};
   int max_iterations = 10;  ///< Bullet max sub-steps per outer iteration
-  /// This simulator's own settings (an `ambf_like:` block AMBF ignores); WorldOptions given in
-  /// code take precedence.
+  /// This simulator's own settings (an `ambf_like:` block AMBF ignores); a program changes them
+  /// here, on the spec, before it builds the World (their one home).
+  /// Sequential-impulse iterations per step; unset: Bullet's 10.
   std::optional<int> solver_iterations;
+  /// Soft-vs-rigid signed-distance grid (m); unset: 0.01. Bullet's own 0.25 m cannot represent
+  /// rigid parts thinner than a few voxels (a 10 mm board lets soft bodies sink through it).
   std::optional<double> sdf_voxel_size;
   SoftBodySleep soft_body_sleep;
   Articulation articulation = Articulation::Maximal;

@@ -23,19 +23,10 @@ namespace ambf_like {
 /// AMBF's fixed internal physics step (s): 1 ms (reference/adf-format.md, the `-t` flag).
 inline constexpr double kAmbfStepSize = 0.001;
 
-/// World settings that are not part of the model files.
+/// How a World is run, which no file says: AMBF takes its step from the command line (`-t`).
+/// Every physics setting lives in the SceneSpec's WorldSpec (the world file's, or set there).
 struct WorldOptions {
   double step_size = kAmbfStepSize;  ///< fixed internal step (s)
-  /// Sequential-impulse iterations per step; unset: the world file's, else Bullet's 10.
-  std::optional<int> solver_iterations;
-  /// Soft-vs-rigid signed-distance grid (m); unset: the world file's, else 0.01. Bullet's own
-  /// 0.25 m cannot represent rigid parts thinner than a few voxels (a 10 mm board lets soft
-  /// bodies sink through it).
-  std::optional<double> sdf_voxel_size;
-  /// Overrides the world file's `soft body sleep: {enabled}` (benchmarks compare both).
-  std::optional<bool> soft_body_sleep;
-  /// Overrides the world file's `articulation` (benchmarks and tests compare both).
-  std::optional<Articulation> articulation;
 };
 
 /// One contact point between two bodies after the last step.
