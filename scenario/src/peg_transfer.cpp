@@ -200,11 +200,7 @@ PegTransferResult runPegTransferOn(bridge::RavenPlatform& platform, bridge::Scen
   PegTransferResult result;
   result.variation.seed = options.seed;
   const double sim_start = platform.now();
-  try {
-    bridge::enableAndHome(platform, options.time_limit - platform.now());
-  } catch (const std::runtime_error& e) {
-    throw std::runtime_error(std::string("the platform ") + e.what());
-  }
+  bridge::enableAndHome(platform, options.time_limit - platform.now());
   controller::DualPlatformController controller(
       {{"robot", &platform, controller::CommandStyle::ServoJr}}, {});
   controller.readPose();

@@ -63,7 +63,7 @@ PegTransferResult runPegTransferOverRos(const PegTransferOptions& options,
   if (ns.empty()) {
     ns = "/peg_transfer_run_" + std::to_string(::getpid());
     const auto log = ros.node_log.empty() ? std::filesystem::temp_directory_path() /
-                                                ("raven_twin" + ns.substr(1) + ".log")
+                                                ("raven_twin_" + ns.substr(1) + ".log")
                                           : ros.node_log;
     const auto argv =
         twinNodeCommand(ros.twin_node.empty() ? builtTwinNode() : ros.twin_node, ns, options);
