@@ -14,11 +14,11 @@
 #include <memory>
 #include <vector>
 
-#include "ambf_like/dynamics/coulomb_contact_solver.hpp"
+#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 
 namespace {
 
-using ambf_like::detail::CoulombContactSolver;
+using ambf_like::detail::SoftBodyStepSolver;
 using ambf_like::detail::faceTreeIsRead;
 using ambf_like::detail::normalsAreRead;
 using Collision = btSoftBody::fCollision;
@@ -89,7 +89,7 @@ void expectSameNodes(const btSoftBody& ours, const btSoftBody& bullets) {
 }
 
 TEST(SoftBodyUpkeep, ALoneClothKeepsNoFaceTreeAndMovesExactlyAsWithBulletsSolver) {
-  SoftWorld ours(std::make_unique<CoulombContactSolver>());
+  SoftWorld ours(std::make_unique<SoftBodyStepSolver>());
   SoftWorld bullets(std::make_unique<btDefaultSoftBodySolver>());
   ours.addCloth(0.0, -1);
   bullets.addCloth(0.0, -1);
@@ -103,7 +103,7 @@ TEST(SoftBodyUpkeep, ALoneClothKeepsNoFaceTreeAndMovesExactlyAsWithBulletsSolver
 }
 
 TEST(SoftBodyUpkeep, TwoClothsThatCollideKeepTheirTreesAndMoveExactlyAsWithBulletsSolver) {
-  SoftWorld ours(std::make_unique<CoulombContactSolver>());
+  SoftWorld ours(std::make_unique<SoftBodyStepSolver>());
   SoftWorld bullets(std::make_unique<btDefaultSoftBodySolver>());
   for (SoftWorld* world : {&ours, &bullets}) {
     world->addCloth(0.0, -1);   // swings down from its -y edge...
@@ -123,7 +123,7 @@ TEST(SoftBodyUpkeep, TwoClothsThatCollideKeepTheirTreesAndMoveExactlyAsWithBulle
 }
 
 TEST(SoftBodyUpkeep, AFaceTreeIsBuiltAgainWhenASecondBodyCouldReadIt) {
-  SoftWorld ours(std::make_unique<CoulombContactSolver>());
+  SoftWorld ours(std::make_unique<SoftBodyStepSolver>());
   const btSoftBody& first = ours.addCloth(0.0, -1);
   ours.step(10);
   EXPECT_TRUE(first.m_fdbvt.empty());

@@ -9,7 +9,7 @@
 
 #include <stdexcept>
 
-#include "ambf_like/dynamics/coulomb_contact_solver.hpp"
+#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 #include "ambf_like/dynamics/dynamics_world.hpp"
 #include "ambf_like/dynamics/sequential_impulse_solver.hpp"
 
@@ -20,7 +20,7 @@ struct BulletWorld::Impl {
   btCollisionDispatcher dispatcher{&collision_config};
   btDbvtBroadphase broadphase;
   std::unique_ptr<btConstraintSolver> solver;
-  CoulombContactSolver soft_solver;  ///< outlives the world that uses it
+  SoftBodyStepSolver soft_solver;  ///< outlives the world that uses it
   std::unique_ptr<btDiscreteDynamicsWorld> world;
   btSoftRigidDynamicsWorld* soft_rigid = nullptr;      ///< world, when without articulations
   ArticulatedDynamicsWorld* soft_multibody = nullptr;  ///< world, when with them
@@ -88,7 +88,7 @@ const std::vector<NodeContactImpulse>& BulletWorld::coulombImpulses() const {
   return impl_->soft_solver.lastImpulses();
 }
 
-CoulombContactSolver& BulletWorld::softBodySolver() {
+SoftBodyStepSolver& BulletWorld::softBodySolver() {
   return impl_->soft_solver;
 }
 

@@ -190,7 +190,7 @@ SoftBodySpec readSoftBody(const YamlView& node, const std::string& identifier,
     }
   }
   if (soft.material) {
-    // A material's forces are the solver's own contacts' business (CoulombContactSolver).
+    // A material's forces are the solver's own contacts' business (SoftBodyStepSolver).
     if (auto friction = node.find("contact friction");
         friction && soft.contact_friction != SoftContactFriction::Coulomb) {
       friction->fail("a soft body with a material takes 'contact friction: coulomb'");

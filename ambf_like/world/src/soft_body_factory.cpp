@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "ambf_like/dynamics/coulomb_contact_solver.hpp"
+#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 
 namespace ambf_like::detail {
 

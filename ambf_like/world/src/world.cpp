@@ -16,7 +16,7 @@
 #include "ambf_like/dynamics/bullet_world.hpp"
 #include "ambf_like/dynamics/collision_filter.hpp"
 #include "ambf_like/dynamics/constraint_joint.hpp"
-#include "ambf_like/dynamics/coulomb_contact_solver.hpp"
+#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 #include "articulation.hpp"
 #include "collision_shape_factory.hpp"
 #include "constraint_factory.hpp"
@@ -287,29 +287,6 @@ World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
 }
 
 World::~World() = default;
-
-void World::step() {
-  const double h = impl_->options.step_size;
-  for (auto& j : impl_->joints) j->joint->applyControl(h);
-  for (auto& a : impl_->articulations) a->beforeStep(h);
-  if (impl_->sleeper) impl_->sleeper->beforeStep(impl_->soft_bodies, impl_->bodies);
-  impl_->world.stepSimulation(h, 0, h);
-  for (auto& a : impl_->articulations) a->afterStep();
-  for (auto& s : impl_->sensors) {
-    if (s->active()) s->sense(impl_->world);
-  }
-  if (impl_->sleeper) impl_->sleeper->afterStep(impl_->soft_bodies, h);
-  for (auto& j : impl_->joints) j->joint->updateCoordinate();
-  // The sparse SDF frees the cells unused for a number of collections; a collection walks every
-  // hash bucket (1.4 % of the peg scene's step when run every 64 steps), so it runs every 256
-  // steps and frees cells unused for 64 of them: 16k steps, as before.
-  if (!impl_->soft_bodies.empty() && impl_->steps % 256 == 0) {
-    impl_->bullet.softBodyInfo().m_sparsesdf.GarbageCollect(64);
-  }
-  ++impl_->steps;
-  impl_->time = static_cast<double>(impl_->steps) * h;
-  impl_->guard->check(impl_->bodies, impl_->soft_bodies, impl_->steps, impl_->time);
-}
 
 void World::step(std::uint64_t count) {
   for (std::uint64_t i = 0; i < count; ++i) step();

@@ -86,6 +86,19 @@ struct World::Impl {
       const JointSpec& spec, const std::map<std::string, detail::PlacedBody>& by_name);
   void addJoint(const ModelSpec& model, const JointSpec& spec,
                 std::unique_ptr<detail::JointDynamics> dynamics);
+
+  // The stages of one step, in the order World::step runs them (world_step.cpp).
+  void driveJoints(double h);
+  void loadArticulations(double h);
+  void wakeOrSleepSoftBodies();
+  void advanceBullet(double h);
+  void readArticulations();
+  void castSensors();
+  void putRestedSoftBodiesToSleep(double h);
+  void readJointCoordinates();
+  void collectSdfCells();
+  void advanceClock(double h);
+  void guardAgainstDivergence();
 };
 
 }  // namespace ambf_like

@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "ambf_like/dynamics/coulomb_contact_solver.hpp"
+#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 #include "world_impl.hpp"
 
 namespace ambf_like {
@@ -153,7 +153,7 @@ class WorldState {
   std::vector<Joint::State> joints;
   std::vector<SoftState> soft;
   std::vector<ManifoldState> manifolds;
-  std::shared_ptr<const detail::CoulombContactSolver::State> soft_solver;
+  std::shared_ptr<const detail::SoftBodyStepSolver::State> soft_solver;
   std::vector<detail::SoftBodySleeper::Rest> sleep;
   std::vector<ConstraintActuator::Hold> holds;
   std::vector<ProximitySensor::State> sensors;

@@ -29,7 +29,7 @@ struct SoftBodyConfig {
 /// How a soft body's nodes take friction from rigid bodies.
 enum class SoftContactFriction {
   Bullet,   ///< Bullet's rigid-contact projection, as AMBF has it (sticks regardless of load)
-  Coulomb,  ///< |friction impulse| <= mu x normal impulse per node (CoulombContactSolver)
+  Coulomb,  ///< |friction impulse| <= mu x normal impulse per node (SoftBodyStepSolver)
 };
 
 /// What a soft body is made of: an isotropic hyperelastic (Neo-Hookean) solid. Its tetrahedra,

@@ -19,7 +19,7 @@ struct btSoftBodyWorldInfo;
 namespace ambf_like::detail {
 
 struct NodeContactImpulse;
-class CoulombContactSolver;
+class SoftBodyStepSolver;
 
 /// Bullet's soft-rigid world with its solver, or, when articulations are to be stepped too,
 /// its soft-multibody world. The soft-rigid one is kept whenever it suffices: the two differ in
@@ -36,14 +36,14 @@ class BulletWorld {
   const btCollisionDispatcher& dispatcher() const;
   btSoftBodyWorldInfo& softBodyInfo();
   /// With `coulomb_substeps` set, its rigid contacts get Coulomb friction and its step that
-  /// many substeps (CoulombContactSolver), its tetrahedra the `material`'s elasticity if given.
+  /// many substeps (SoftBodyStepSolver), its tetrahedra the `material`'s elasticity if given.
   void addSoftBody(btSoftBody& body, std::optional<int> coulomb_substeps,
                    const std::optional<SoftMaterial>& material);
   void removeSoftBody(btSoftBody& body);
   /// The impulses of the last step's Coulomb contacts.
   const std::vector<NodeContactImpulse>& coulombImpulses() const;
   /// The soft bodies' solver (its state goes into World::saveState).
-  CoulombContactSolver& softBodySolver();
+  SoftBodyStepSolver& softBodySolver();
   /// What the implicit steps of `body` (with a material) took so far.
   ElasticSolveStats elasticStats(const btSoftBody& body) const;
   /// The world articulations go into; only when built with articulations.

@@ -1,5 +1,6 @@
 #pragma once
-// Bullet's default soft-body solver, with Coulomb friction for the soft bodies that ask for it.
+// The soft bodies' step: Bullet's default solver, with substeps, Coulomb contacts and an implicit
+// elastic solve for the soft bodies that ask for them.
 
 #include <BulletSoftBody/btDefaultSoftBodySolver.h>
 
@@ -60,7 +61,7 @@ struct NodeContactImpulse {
 ///
 /// Every other body gets Bullet's own solve, on packed arrays when its step is only links
 /// (PackedLinkSolver).
-class CoulombContactSolver final : public btDefaultSoftBodySolver {
+class SoftBodyStepSolver final : public btDefaultSoftBodySolver {
  public:
   /// `body` gets Coulomb contacts and `substeps` (>= 1) substeps of `piterations` iterations;
   /// Bullet's own rigid-contact projection is taken out of it. With a `material`, its

@@ -1,4 +1,4 @@
-#include "ambf_like/dynamics/coulomb_contact_solver.hpp"
+#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <BulletSoftBody/btSoftBody.h>
@@ -28,8 +28,8 @@ bool isCoulombContact(const btSoftBody::RContact& contact) {
 
 }  // namespace
 
-void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps,
-                                              const std::optional<SoftMaterial>& material) {
+void SoftBodyStepSolver::useCoulombContacts(btSoftBody& body, int substeps,
+                                            const std::optional<SoftMaterial>& material) {
   auto& sequence = body.m_cfg.m_psequence;
   for (int i = sequence.size() - 1; i >= 0; --i) {
     // A body with a material solves its links' work and its anchors (as pins) in its step.
@@ -43,21 +43,21 @@ void CoulombContactSolver::useCoulombContacts(btSoftBody& body, int substeps,
   if (material) registered.elasticity.emplace(body, *material);
 }
 
-ElasticSolveStats CoulombContactSolver::elasticStats(const btSoftBody& body) const {
+ElasticSolveStats SoftBodyStepSolver::elasticStats(const btSoftBody& body) const {
   const auto it = coulomb_.find(&body);
   return it == coulomb_.end() ? ElasticSolveStats{} : it->second.stats;
 }
 
-struct CoulombContactSolver::State {
+struct SoftBodyStepSolver::State {
   std::unordered_map<const btSoftBody*, Registered> bodies;
   std::vector<NodeContactImpulse> impulses;
 };
 
-std::shared_ptr<const CoulombContactSolver::State> CoulombContactSolver::state() const {
+std::shared_ptr<const SoftBodyStepSolver::State> SoftBodyStepSolver::state() const {
   return std::make_shared<const State>(State{coulomb_, impulses_});
 }
 
-void CoulombContactSolver::restore(const State& state) {
+void SoftBodyStepSolver::restore(const State& state) {
   const auto same_body = [&](const auto& entry) {
     const auto it = state.bodies.find(entry.first);
     return it != state.bodies.end() &&
@@ -71,11 +71,11 @@ void CoulombContactSolver::restore(const State& state) {
   impulses_ = state.impulses;
 }
 
-void CoulombContactSolver::forget(const btSoftBody& body) {
+void SoftBodyStepSolver::forget(const btSoftBody& body) {
   coulomb_.erase(&body);
 }
 
-void CoulombContactSolver::predictMotion(btScalar solver_dt) {
+void SoftBodyStepSolver::predictMotion(btScalar solver_dt) {
   for (auto& [body, registered] : coulomb_) {
     if (!body->isActive()) continue;
     registered.start_velocity.resize(static_cast<std::size_t>(body->m_nodes.size()));
@@ -88,7 +88,7 @@ void CoulombContactSolver::predictMotion(btScalar solver_dt) {
   emptyUnreadFaceTrees(m_softBodySet);
 }
 
-void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
+void SoftBodyStepSolver::solveConstraints(btScalar /*solver_dt*/) {
   impulses_.clear();
   for (int i = 0; i < m_softBodySet.size(); ++i) {
     btSoftBody& body = *m_softBodySet[i];
@@ -103,14 +103,14 @@ void CoulombContactSolver::solveConstraints(btScalar /*solver_dt*/) {
   }
 }
 
-void CoulombContactSolver::updateSoftBodies() {
+void SoftBodyStepSolver::updateSoftBodies() {
   for (int i = 0; i < m_softBodySet.size(); ++i) {
     btSoftBody& body = *m_softBodySet[i];
     if (body.isActive() && normalsAreRead(body)) body.integrateMotion();
   }
 }
 
-void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
+void SoftBodyStepSolver::solve(btSoftBody& body, Registered& registered) {
   prepareWithBullet(body);
   const btScalar h = body.m_sst.sdt;
   step_size_ = h;
@@ -133,7 +133,7 @@ void CoulombContactSolver::solve(btSoftBody& body, Registered& registered) {
   applyToRigidBodies(body);
 }
 
-void CoulombContactSolver::prepareWithBullet(btSoftBody& body) {
+void SoftBodyStepSolver::prepareWithBullet(btSoftBody& body) {
   // Bullet prepares links and anchors and runs any velocity iterations; the position
   // iterations and the contacts are left to the substeps. What it prepares of a link is read
   // by its velocity iterations only: without those, anchors or clusters it does nothing used.
@@ -148,8 +148,8 @@ void CoulombContactSolver::prepareWithBullet(btSoftBody& body) {
   cfg.diterations = drift_iterations;
 }
 
-void CoulombContactSolver::rewindPrediction(btSoftBody& body, const Registered& registered,
-                                            int substeps) {
+void SoftBodyStepSolver::rewindPrediction(btSoftBody& body, const Registered& registered,
+                                          int substeps) {
   // Bullet predicted x = lerp(q + (v0 + a h) h, pose goal, kMT) for the whole step: keep its
   // acceleration and its pose-matching pull, and go back to the step's start.
   const auto count = static_cast<std::size_t>(body.m_nodes.size());
@@ -169,7 +169,7 @@ void CoulombContactSolver::rewindPrediction(btSoftBody& body, const Registered& 
   }
 }
 
-void CoulombContactSolver::substep(btSoftBody& body, btScalar hs, btScalar elapsed) {
+void SoftBodyStepSolver::substep(btSoftBody& body, btScalar hs, btScalar elapsed) {
   for (std::size_t k = 0; k < acceleration_.size(); ++k) {
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
     n.m_q = n.m_x;
@@ -190,8 +190,8 @@ void CoulombContactSolver::substep(btSoftBody& body, btScalar hs, btScalar elaps
   }
 }
 
-void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& registered, btScalar hs,
-                                          btScalar elapsed) {
+void SoftBodyStepSolver::elasticSubstep(btSoftBody& body, Registered& registered, btScalar hs,
+                                        btScalar elapsed) {
   std::vector<ElasticContact> contacts;
   std::vector<std::size_t> source;  // each one's index in m_rcontacts
   const btScalar kdf = body.m_cfg.kDF;
@@ -251,8 +251,8 @@ void CoulombContactSolver::elasticSubstep(btSoftBody& body, Registered& register
   }
 }
 
-ElasticContact CoulombContactSolver::pinOf(const btSoftBody& body, const btSoftBody::Anchor& anchor,
-                                           btScalar hs, btScalar elapsed) const {
+ElasticContact SoftBodyStepSolver::pinOf(const btSoftBody& body, const btSoftBody::Anchor& anchor,
+                                         btScalar hs, btScalar elapsed) const {
   // The rigid body has been moved to the step's end: its point `h - elapsed` earlier is where
   // the pin is `elapsed` into the step.
   const btVector3 arm = anchor.m_body->getWorldTransform().getBasis() * anchor.m_local;
@@ -266,7 +266,7 @@ ElasticContact CoulombContactSolver::pinOf(const btSoftBody& body, const btSoftB
   return pin;
 }
 
-void CoulombContactSolver::runBulletSolvers(btSoftBody& body) {
+void SoftBodyStepSolver::runBulletSolvers(btSoftBody& body) {
   const auto& sequence = body.m_cfg.m_psequence;
   if (sequence.size() == 0) return;
   for (int q = 0; q < sequence.size(); ++q) btSoftBody::getSolver(sequence[q])(&body, 1.0, 0.0);
@@ -277,7 +277,7 @@ void CoulombContactSolver::runBulletSolvers(btSoftBody& body) {
   }
 }
 
-void CoulombContactSolver::finishStep(btSoftBody& body) {
+void SoftBodyStepSolver::finishStep(btSoftBody& body) {
   for (std::size_t k = 0; k < step_start_.size(); ++k) {
     btSoftBody::Node& n = body.m_nodes[static_cast<int>(k)];
     n.m_v *= 1.0 - body.m_cfg.kDP;  // Bullet's damping, once per step
@@ -286,7 +286,7 @@ void CoulombContactSolver::finishStep(btSoftBody& body) {
   }
 }
 
-void CoulombContactSolver::startContacts(btSoftBody& body, bool elastic) {
+void SoftBodyStepSolver::startContacts(btSoftBody& body, bool elastic) {
   contacts_.assign(static_cast<std::size_t>(body.m_rcontacts.size()), Accumulated{});
   pin_impulses_.assign(static_cast<std::size_t>(body.m_anchors.size()), btVector3(0, 0, 0));
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
@@ -307,13 +307,13 @@ void CoulombContactSolver::startContacts(btSoftBody& body, bool elastic) {
   }
 }
 
-btScalar CoulombContactSolver::surfaceAdvance(const btSoftBody::RContact& contact,
-                                              std::size_t index, btScalar elapsed) const {
+btScalar SoftBodyStepSolver::surfaceAdvance(const btSoftBody::RContact& contact, std::size_t index,
+                                            btScalar elapsed) const {
   const Accumulated& state = contacts_[index];
   return state.placed ? 0.0 : contact.m_cti.m_normal.dot(state.surface_velocity) * elapsed;
 }
 
-void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
+void SoftBodyStepSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
   const btScalar kdf = body.m_cfg.kDF;
   const btScalar hs = body.m_sst.sdt;
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
@@ -342,7 +342,7 @@ void CoulombContactSolver::projectContacts(btSoftBody& body, btScalar elapsed) {
   }
 }
 
-void CoulombContactSolver::applyToRigidBodies(const btSoftBody& body) {
+void SoftBodyStepSolver::applyToRigidBodies(const btSoftBody& body) {
   if (coulomb_.at(&body).elasticity) {
     for (int a = 0; a < body.m_anchors.size(); ++a) {
       const btSoftBody::Anchor& anchor = body.m_anchors[a];
