@@ -21,6 +21,17 @@ SoftBodySleep readSoftBodySleep(const YamlView& node, LoadContext& context) {
   return sleep;
 }
 
+RigidBodySleep readRigidBodySleep(const YamlView& node, LoadContext& context) {
+  node.checkKeys({"enabled", "linear speed", "angular speed"}, context.keyCheck());
+  RigidBodySleep sleep;
+  sleep.enabled = node.getBool("enabled", sleep.enabled);
+  sleep.linear_speed = node.getDouble("linear speed", sleep.linear_speed);
+  sleep.angular_speed = node.getDouble("angular speed", sleep.angular_speed);
+  if (!(sleep.linear_speed >= 0.0)) node["linear speed"].fail("the speed must not be negative");
+  if (!(sleep.angular_speed >= 0.0)) node["angular speed"].fail("the speed must not be negative");
+  return sleep;
+}
+
 }  // namespace
 
 namespace {
@@ -224,7 +235,8 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
   }
   if (auto own = root.find("ambf_like")) {
     own->checkKeys(
-        {"solver iterations", "soft body sdf voxel size", "soft body sleep", "articulation"},
+        {"solver iterations", "soft body sdf voxel size", "soft body sleep", "rigid body sleep",
+         "articulation"},
         context.keyCheck());
     if (auto v = own->find("solver iterations")) {
       world.solver_iterations = v->asInt();
@@ -238,6 +250,8 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
     }
     if (auto v = own->find("soft body sleep"))
       world.soft_body_sleep = readSoftBodySleep(*v, context);
+    if (auto v = own->find("rigid body sleep"))
+      world.rigid_body_sleep = readRigidBodySleep(*v, context);
     if (auto v = own->find("articulation")) {
       const std::string mode = v->asString();
       if (mode == "maximal") {

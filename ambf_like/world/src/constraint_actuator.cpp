@@ -50,6 +50,7 @@ void ConstraintActuator::actuate(RigidBody& body, const Vec3& offset) {
   const btVector3 point = toBt(body.pose() * offset);
   btRigidBody& a = parent_.bullet();
   btRigidBody& b = body.bullet();
+  b.activate(true);  // a resting free body may be asleep (RigidBodySleep)
   constraint_ = std::make_unique<btPoint2PointConstraint>(
       a, b, a.getCenterOfMassTransform().inverse() * point,
       b.getCenterOfMassTransform().inverse() * point);

@@ -43,4 +43,9 @@ bool RigidBody::isFinite() const {
   return std::isfinite(sum.x()) && std::isfinite(sum.y()) && std::isfinite(sum.z());
 }
 
+bool RigidBody::isAsleep() const {
+  // Bullet keeps static bodies in the sleeping state too; they are never stepped at all.
+  return !isStatic() && body_->getActivationState() == ISLAND_SLEEPING;
+}
+
 }  // namespace ambf_like

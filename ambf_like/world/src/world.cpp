@@ -281,12 +281,31 @@ World::World(const SceneSpec& scene, MeshLibrary& meshes, WorldOptions options)
     for (const Vec3& node : soft->nodePositions()) scene_points.push_back(node);
   }
   impl_->guard.emplace(scene_points, options.step_size, impl_->settings.gravity);
+  impl_->letFreeBodiesSleep();
   if (scene.world.soft_body_sleep.enabled && !impl_->soft_bodies.empty()) {
     impl_->sleeper.emplace(scene.world.soft_body_sleep, impl_->world, impl_->soft_bodies.size());
   }
 }
 
 World::~World() = default;
+
+void World::Impl::letFreeBodiesSleep() {
+  const RigidBodySleep& sleep = settings.rigid_body_sleep;
+  if (!sleep.enabled) return;
+  std::set<const btRigidBody*> jointed;
+  for (int i = 0; i < world.getNumConstraints(); ++i) {
+    jointed.insert(&world.getConstraint(i)->getRigidBodyA());
+    jointed.insert(&world.getConstraint(i)->getRigidBodyB());
+  }
+  for (auto& body : bodies) {
+    btRigidBody& rigid = body->bullet();
+    // Articulations' link bodies mirror their links and never enter the world.
+    if (rigid.isStaticOrKinematicObject() || !rigid.getBroadphaseHandle()) continue;
+    if (jointed.count(&rigid) > 0) continue;
+    rigid.forceActivationState(ACTIVE_TAG);
+    rigid.setSleepingThresholds(sleep.linear_speed, sleep.angular_speed);
+  }
+}
 
 void World::step(std::uint64_t count) {
   for (std::uint64_t i = 0; i < count; ++i) step();

@@ -87,6 +87,9 @@ struct World::Impl {
   void addJoint(const ModelSpec& model, const JointSpec& spec,
                 std::unique_ptr<detail::JointDynamics> dynamics);
 
+  /// Lets the free dynamic bodies sleep, as the world's RigidBodySleep says.
+  void letFreeBodiesSleep();
+
   // The stages of one step, in the order World::step runs them (world_step.cpp).
   void driveJoints(double h);
   void loadArticulations(double h);

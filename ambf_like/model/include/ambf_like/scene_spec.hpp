@@ -39,6 +39,17 @@ struct SoftBodySleep {
   double wake_distance = 0.01;
 };
 
+/// When resting free rigid bodies (those no joint holds) stop being simulated: Bullet's own
+/// island deactivation, at speeds 160 times below Bullet's defaults (0.8 m/s, 1 rad/s). A body whose speeds stay below these
+/// for 2 s (Bullet's deactivation time) sleeps with its island; a moving body that touches it
+/// or an awake soft body in contact with it (both Bullet's), or an actuator that takes it wakes it.
+/// Jointed bodies never sleep: a command can come at any step.
+struct RigidBodySleep {
+  bool enabled = true;
+  double linear_speed = 0.005;   ///< m/s
+  double angular_speed = 0.05;   ///< rad/s
+};
+
 /// How jointed models are simulated. Maximal: every body is a rigid body and every joint a
 /// constraint the solver iterates on (AMBF's way). Reduced: each branch of joints hanging from a
 /// static body (revolute, continuous, prismatic or fixed, each body the child of one joint)
@@ -60,6 +71,7 @@ struct WorldSpec {
   /// rigid parts thinner than a few voxels (a 10 mm board lets soft bodies sink through it).
   std::optional<double> sdf_voxel_size;
   SoftBodySleep soft_body_sleep;
+  RigidBodySleep rigid_body_sleep;
   Articulation articulation = Articulation::Maximal;
 };
 

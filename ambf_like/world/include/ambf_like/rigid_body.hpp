@@ -34,6 +34,9 @@ class RigidBody {
   bool isStatic() const { return spec_.mass == 0.0; }
   std::size_t collisionVertexCount() const { return collision_vertices_; }
   bool isFinite() const;
+  /// A dynamic body Bullet deactivated with its resting island (RigidBodySleep): not stepped
+  /// until woken. Never a static body.
+  bool isAsleep() const;
 
   /// The Bullet body. For a link of an articulation (reduced coordinates) it is a mirror outside
   /// the Bullet world, updated after every step: read it, do not push it.
