@@ -51,7 +51,8 @@ void DualPlatformController::clamp(ArmPair& joints, IterationReport& report) con
   }
 }
 
-IterationReport DualPlatformController::execute(const ArmPair& next, int most) {
+IterationReport DualPlatformController::execute(const ArmPair& next, int most,
+                                                const std::function<bool()>& stop) {
   const InterpolationPlan plan = planMove(commanded_, next, options_.caps, period());
   const ArmPair increment = plan.increment();
   IterationReport report;
@@ -72,6 +73,10 @@ IterationReport DualPlatformController::execute(const ArmPair& next, int most) {
       }
     }
     for (const PlatformSlot& slot : platforms_) slot.platform->advance(period());
+    if (k < report.steps && stop && stop()) {
+      report.steps = k;
+      report.cut_short = true;
+    }
   }
   commanded_ = report.steps == plan.steps ? next : plan.at(report.steps);
   return report;
@@ -84,7 +89,8 @@ IterationReport DualPlatformController::home() {
   return report;
 }
 
-IterationReport DualPlatformController::manual(const recording::GamepadState& pad) {
+IterationReport DualPlatformController::manual(const recording::GamepadState& pad,
+                                               const LivePad& live) {
   const ArmPair now = measured(platforms_.front());
   // A re-reads the pose: this iteration's move starts where the arms are, so a re-read alone
   // sends no motion (servo_jr increments are taken from the re-read joints, as the released
@@ -94,7 +100,14 @@ IterationReport DualPlatformController::manual(const recording::GamepadState& pa
   ArmPair next = mapped.joints;
   IterationReport clamp_report;
   clamp(next, clamp_report);
-  IterationReport report = execute(next);
+  const auto changed = [&] {
+    const auto now_read = live();
+    return !now_read || !(*now_read == pad);
+  };
+  IterationReport report = live ? execute(next, std::numeric_limits<int>::max(), changed)
+                                : execute(next);
+  // Cut short, the targets are part-way: the mapping continues from them.
+  if (report.cut_short) mapping_.reset(commanded_);
   report.clamped = mapped.clamped || clamp_report.clamped;
   if (options_.iteration_overhead > 0.0) {
     for (const PlatformSlot& slot : platforms_) slot.platform->advance(options_.iteration_overhead);

@@ -147,8 +147,12 @@ bool ControllerSession::turn() {
       mode_ = Mode::Idle;
       break;
     case Mode::Manual: {
-      auto pad = inputs_.gamepad ? inputs_.gamepad->read() : std::nullopt;
-      if (pad && options_.gate) pad = options_.gate(*pad);
+      const auto read_pad = [this]() -> std::optional<recording::GamepadState> {
+        auto reading = inputs_.gamepad ? inputs_.gamepad->read() : std::nullopt;
+        if (reading && options_.gate) reading = options_.gate(*reading);
+        return reading;
+      };
+      const auto pad = read_pad();
       if (!pad) {  // unplugged (or never there): no motion, and say so once
         if (!warned_padless_) spdlog::warn("O2: no gamepad connected; holding still");
         warned_padless_ = true;
@@ -159,7 +163,7 @@ bool ControllerSession::turn() {
       if (warned_padless_) controller_.readPose();  // back from an unplug: from where we are
       warned_padless_ = false;
       record(pad);
-      report(controller_.manual(*pad));
+      report(controller_.manual(*pad, read_pad));
       break;
     }
     case Mode::ReplayInputs:

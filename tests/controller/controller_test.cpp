@@ -93,6 +93,46 @@ TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
   EXPECT_GT(clamped, 0u) << "the adversarial pads should have hit a limit";
 }
 
+// The live pad is read after every command step: a new reading ends the iteration there, so the
+// next command already follows it; a steady pad runs the same whole iterations as without it.
+TEST(LivePad, ANewReadingEndsTheIterationAndTheNextCommandFollowsIt) {
+  auto steady_twin = test_support::readyTwin();
+  auto live_twin = test_support::readyTwin();
+  CommandLog steady_log(*steady_twin), live_log(*live_twin);
+  controller::DualPlatformController steady({{"twin", &steady_log}}, {});
+  controller::DualPlatformController live({{"twin", &live_log}}, {});
+  GamepadState idle;
+  GamepadState pushed;
+  pushed.left_x = 1.0;
+  // A steady live pad: the same iterations, command for command.
+  const controller::LivePad same = [&] { return std::optional<GamepadState>(idle); };
+  for (int i = 0; i < 3; ++i) {
+    const auto whole = steady.manual(idle);
+    const auto read_every_step = live.manual(idle, same);
+    EXPECT_EQ(read_every_step.steps, whole.steps);
+    EXPECT_FALSE(read_every_step.cut_short);
+  }
+  ASSERT_EQ(live_log.servo_jr.size(), steady_log.servo_jr.size());
+  // The stick is pushed after the third step of an idle iteration of ten.
+  int reads = 0;
+  const controller::LivePad pushed_after_three = [&] {
+    return std::optional<GamepadState>(++reads >= 3 ? pushed : idle);
+  };
+  const auto cut = live.manual(idle, pushed_after_three);
+  EXPECT_TRUE(cut.cut_short);
+  EXPECT_EQ(cut.steps, 3);
+  const std::size_t before = live_log.servo_jr.size();
+  const auto next = live.manual(pushed, [&] { return std::optional<GamepadState>(pushed); });
+  EXPECT_GE(next.steps, 10) << "a steady pad's iteration runs whole, under C_V";
+  ASSERT_GT(live_log.servo_jr.size(), before);
+  EXPECT_FALSE(live_log.servo_jr[before].increment.isZero())
+      << "the first command after the push moves";
+  // An unplugged pad ends the iteration too.
+  const auto unplugged = live.manual(pushed, [] { return std::optional<GamepadState>(); });
+  EXPECT_TRUE(unplugged.cut_short);
+  EXPECT_EQ(unplugged.steps, 1);
+}
+
 TEST(ControllerProperty, UnderM1NoCommandMovesTheOtherArm) {
   for (Arm selected : raven::kArms) {
     auto twin = test_support::readyTwin();

@@ -4,8 +4,10 @@
 // Modes O1 (homing), O2/O3 (manual: a live pad or replayed inputs), O4 (joint replay) and O5
 // (sine dance) each produce targets; execute() turns them into commands.
 
+#include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,7 @@ struct ControllerOptions {
 /// What one iteration did.
 struct IterationReport {
   int steps = 0;            ///< command steps (each 1/rate s)
+  bool cut_short = false;   ///< a new pad reading ended a manual iteration early
   bool clamped = false;     ///< a target hit a joint limit (the pad rumbles)
   std::size_t refused = 0;  ///< commands a platform refused
   std::string refusal;      ///< the first refusal's reason
@@ -56,6 +59,9 @@ struct SineDance {
   double ramp_per_call = 0.5 / 500.0;
 };
 
+/// The live pad, read after every command period of a manual iteration (empty: unplugged).
+using LivePad = std::function<std::optional<recording::GamepadState>()>;
+
 /// Sends one target stream to every platform. Not thread-safe: one command thread owns it.
 class DualPlatformController {
  public:
@@ -67,8 +73,12 @@ class DualPlatformController {
   /// O1: from the current targets to the controller's home under the caps, then the stored
   /// wrist values are reset.
   IterationReport home();
-  /// O2 / O3: one manual-loop iteration from a pad reading.
-  IterationReport manual(const recording::GamepadState& pad);
+  /// O2 / O3: one manual-loop iteration from a pad reading: the mapping's move, split under
+  /// the caps into at least man_steps command steps. With `live`, the pad is read again after
+  /// every step, and a reading that differs from `pad` ends the iteration there (the targets
+  /// where its interpolation got to): the next iteration, one period later, starts from it.
+  /// A steady pad runs whole iterations as without `live`.
+  IterationReport manual(const recording::GamepadState& pad, const LivePad& live = {});
   /// O4: one recorded joint row, reached under the caps; then the platforms' clocks run on to
   /// `due` seconds after the replay began (the recording's own timing).
   IterationReport replayJoints(const ArmPair& joints, double due);
@@ -111,8 +121,10 @@ class DualPlatformController {
 
  private:
   /// C_V: moves every platform from the current targets to `next` in capped steps, at most
-  /// `most` of them (the targets are then where the interpolation got to).
-  IterationReport execute(const ArmPair& next, int most = std::numeric_limits<int>::max());
+  /// `most` of them, ending early once `stop` says so after a step (the targets are then where
+  /// the interpolation got to).
+  IterationReport execute(const ArmPair& next, int most = std::numeric_limits<int>::max(),
+                          const std::function<bool()>& stop = {});
   /// moveTo / moveFor: clamped to the limits, at most `most` steps, the mapping following.
   IterationReport scriptedMove(const ArmPair& joints, int most);
   ArmPair measured(const PlatformSlot& slot) const;
