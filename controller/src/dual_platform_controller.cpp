@@ -104,8 +104,8 @@ IterationReport DualPlatformController::manual(const recording::GamepadState& pa
     const auto now_read = live();
     return !now_read || !(*now_read == pad);
   };
-  IterationReport report = live ? execute(next, std::numeric_limits<int>::max(), changed)
-                                : execute(next);
+  IterationReport report =
+      live ? execute(next, std::numeric_limits<int>::max(), changed) : execute(next);
   // Cut short, the targets are part-way: the mapping continues from them.
   if (report.cut_short) mapping_.reset(commanded_);
   report.clamped = mapped.clamped || clamp_report.clamped;

@@ -254,12 +254,12 @@ TEST_F(SharedModels, AmbfsPuzzlesSleepWhereTheyCameToRest) {
   const auto floor = test_support::exampleFile("ambf_checkered_floor.yaml");
   // The free pieces: peg_and_base's torus (its base is static); puzzle2's two balls, boxes,
   // cylinders and triangles (its mould's jointed pieces never sleep).
-  const std::vector<std::pair<const char*, std::size_t>> puzzles{
-      {"puzzles/peg_and_base.yaml", 1}, {"puzzles/puzzle2.yaml", 8}};
+  const std::vector<std::pair<const char*, std::size_t>> puzzles{{"puzzles/peg_and_base.yaml", 1},
+                                                                 {"puzzles/puzzle2.yaml", 8}};
   for (const auto& [puzzle, free_pieces] : puzzles) {
     SCOPED_TRACE(puzzle);
-    auto scene = ambf_like::loadModelFiles({models() / puzzle, floor},
-                                           descriptions / "world/world.yaml");
+    auto scene =
+        ambf_like::loadModelFiles({models() / puzzle, floor}, descriptions / "world/world.yaml");
     ambf_like::MeshLibrary meshes;
     ambf_like::World sleeping(scene.spec, meshes);
     scene.spec.world.rigid_body_sleep.enabled = false;
@@ -270,8 +270,7 @@ TEST_F(SharedModels, AmbfsPuzzlesSleepWhereTheyCameToRest) {
     for (std::size_t b = 0; b < sleeping.bodyCount(); ++b) {
       const auto& body = sleeping.body(b);
       SCOPED_TRACE(body.name());
-      const ambf_like::Vec3 gap =
-          body.pose().translation() - awake.body(b).pose().translation();
+      const ambf_like::Vec3 gap = body.pose().translation() - awake.body(b).pose().translation();
       EXPECT_LT(std::abs(gap.z()), 1e-4);
       EXPECT_LT(gap.head<2>().norm(), 5e-3);
       asleep += body.isAsleep() ? 1 : 0;

@@ -18,9 +18,9 @@
 
 namespace {
 
-using ambf_like::detail::SoftBodyStepSolver;
 using ambf_like::detail::faceTreeIsRead;
 using ambf_like::detail::normalsAreRead;
+using ambf_like::detail::SoftBodyStepSolver;
 using Collision = btSoftBody::fCollision;
 
 /// A Bullet soft-rigid world around the given soft-body solver.

@@ -9,9 +9,9 @@
 
 #include <stdexcept>
 
-#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 #include "ambf_like/dynamics/dynamics_world.hpp"
 #include "ambf_like/dynamics/sequential_impulse_solver.hpp"
+#include "ambf_like/dynamics/soft_body_step_solver.hpp"
 
 namespace ambf_like::detail {
 

@@ -234,10 +234,9 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
     }
   }
   if (auto own = root.find("ambf_like")) {
-    own->checkKeys(
-        {"solver iterations", "soft body sdf voxel size", "soft body sleep", "rigid body sleep",
-         "articulation"},
-        context.keyCheck());
+    own->checkKeys({"solver iterations", "soft body sdf voxel size", "soft body sleep",
+                    "rigid body sleep", "articulation"},
+                   context.keyCheck());
     if (auto v = own->find("solver iterations")) {
       world.solver_iterations = v->asInt();
       if (*world.solver_iterations < 1 || *world.solver_iterations > 1000) {

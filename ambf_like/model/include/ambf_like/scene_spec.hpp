@@ -40,14 +40,14 @@ struct SoftBodySleep {
 };
 
 /// When resting free rigid bodies (those no joint holds) stop being simulated: Bullet's own
-/// island deactivation, at speeds 160 times below Bullet's defaults (0.8 m/s, 1 rad/s). A body whose speeds stay below these
-/// for 2 s (Bullet's deactivation time) sleeps with its island; a moving body that touches it
-/// or an awake soft body in contact with it (both Bullet's), or an actuator that takes it wakes it.
-/// Jointed bodies never sleep: a command can come at any step.
+/// island deactivation, at speeds 160 times below Bullet's defaults (0.8 m/s, 1 rad/s). A body
+/// whose speeds stay below these for 2 s (Bullet's deactivation time) sleeps with its island; a
+/// moving body that touches it or an awake soft body in contact with it (both Bullet's), or an
+/// actuator that takes it wakes it. Jointed bodies never sleep: a command can come at any step.
 struct RigidBodySleep {
   bool enabled = true;
-  double linear_speed = 0.005;   ///< m/s
-  double angular_speed = 0.05;   ///< rad/s
+  double linear_speed = 0.005;  ///< m/s
+  double angular_speed = 0.05;  ///< rad/s
 };
 
 /// How jointed models are simulated. Maximal: every body is a rigid body and every joint a
