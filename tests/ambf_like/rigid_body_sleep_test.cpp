@@ -27,14 +27,10 @@ std::filesystem::path writeBoxAndBall(const TempDir& dir) {
                        "  config: {kDF: 0.8, kVC: 20, piterations: 4, bending constraint: 2}\n");
 }
 
-void noRigidBodySleep(ambf_like::WorldSpec& world) {
-  world.rigid_body_sleep.enabled = false;
-}
-
 TEST(RigidBodySleep, AFreeBoxSleepsWhereItCameToRest) {
   TempDir dir;
   auto sleeping = test_support::simulate({writeBoxAndBall(dir)});
-  auto awake = test_support::simulate({writeBoxAndBall(dir)}, noRigidBodySleep);
+  auto awake = test_support::simulate({writeBoxAndBall(dir)}, test_support::noRigidBodySleep);
   const auto& box = sleeping->world->body("box");
   EXPECT_FALSE(box.isAsleep());
   sleeping->world->step(4000);

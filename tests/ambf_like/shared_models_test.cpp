@@ -205,9 +205,6 @@ TEST_F(SharedModels, AmbfsRigidScenesEndWhereTheyEndedBeforeTheSpeedWork) {
 // as it did then (RigidBodySleep off).
 TEST_F(SharedModels, AmbfsPuzzlesOnItsFloorEndWhereTheyEnded) {
   constexpr double kLandedTolerance = 1e-4;
-  const test_support::WorldSettings awake = [](ambf_like::WorldSpec& world) {
-    world.rigid_body_sleep.enabled = false;
-  };
   const auto descriptions = data_ / "ambf/ambf_models/descriptions";
   const auto floor = test_support::exampleFile("ambf_checkered_floor.yaml");
   expectFinalPositions(descriptions / "world/world.yaml",
@@ -217,7 +214,7 @@ TEST_F(SharedModels, AmbfsPuzzlesOnItsFloorEndWhereTheyEnded) {
                            {"Torus", -0.000050507, 0.000943096, -1.464669253},
                            {"Plane", 0.000000000, 0.000000000, -1.500000000},
                        },
-                       kLandedTolerance, awake);
+                       kLandedTolerance, test_support::noRigidBodySleep);
   expectFinalPositions(descriptions / "world/world.yaml",
                        {descriptions / "multi-bodies/puzzles/puzzle2.yaml", floor},
                        {
@@ -242,7 +239,7 @@ TEST_F(SharedModels, AmbfsPuzzlesOnItsFloorEndWhereTheyEnded) {
                            {"LightSphere", -0.874000000, 0.051000000, 1.040970287},
                            {"Plane", 0.000000000, 0.000000000, -1.500000000},
                        },
-                       kLandedTolerance, awake);
+                       kLandedTolerance, test_support::noRigidBodySleep);
 }
 
 // With the default RigidBodySleep the puzzles' free pieces fall, land and sleep where they came
@@ -262,7 +259,7 @@ TEST_F(SharedModels, AmbfsPuzzlesSleepWhereTheyCameToRest) {
         ambf_like::loadModelFiles({models() / puzzle, floor}, descriptions / "world/world.yaml");
     ambf_like::MeshLibrary meshes;
     ambf_like::World sleeping(scene.spec, meshes);
-    scene.spec.world.rigid_body_sleep.enabled = false;
+    test_support::noRigidBodySleep(scene.spec.world);
     ambf_like::World awake(scene.spec, meshes);
     sleeping.step(20000);
     awake.step(20000);

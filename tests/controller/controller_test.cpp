@@ -113,6 +113,10 @@ TEST(LivePad, ANewReadingEndsTheIterationAndTheNextCommandFollowsIt) {
     EXPECT_FALSE(read_every_step.cut_short);
   }
   ASSERT_EQ(live_log.servo_jr.size(), steady_log.servo_jr.size());
+  for (std::size_t i = 0; i < live_log.servo_jr.size(); ++i) {
+    EXPECT_EQ(live_log.servo_jr[i].arm, steady_log.servo_jr[i].arm) << i;
+    EXPECT_EQ(live_log.servo_jr[i].increment, steady_log.servo_jr[i].increment) << i;
+  }
   // The stick is pushed after the third step of an idle iteration of ten.
   int reads = 0;
   const controller::LivePad pushed_after_three = [&] {

@@ -58,6 +58,11 @@ inline void noSoftBodySleep(ambf_like::WorldSpec& world) {
   world.soft_body_sleep.enabled = false;
 }
 
+/// The world settings with every dynamic rigid body kept awake (AMBF's way).
+inline void noRigidBodySleep(ambf_like::WorldSpec& world) {
+  world.rigid_body_sleep.enabled = false;
+}
+
 /// Runs `call` and returns the LoadError message it threw ("" when it did not throw one).
 template <typename Call>
 std::string loadErrorOf(Call&& call) {

@@ -48,8 +48,8 @@ void World::Impl::wakeOrSleepSoftBodies() {
 ///  5. constraints: the free motion is applied to the articulations first, and their servos told
 ///     (ArticulatedDynamicsWorld), then contacts, joints and limits by sequential impulses;
 ///  6. integrate the rigid bodies and articulations;
-///  7. soft bodies: substeps, Coulomb contacts, elastic solve, or Bullet's own
-///  (SoftBodyStepSolver);
+///  7. soft bodies: substeps, Coulomb contacts, elastic solve, or Bullet's own solve
+///     (SoftBodyStepSolver);
 ///  8. soft bodies' normals, only where something reads them.
 void World::Impl::advanceBullet(double h) {
   world.stepSimulation(h, 0, h);
