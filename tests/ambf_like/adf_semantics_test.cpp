@@ -243,14 +243,18 @@ TEST(AdfSemantics, WorldFileCarriesThisSimulatorsOwnSettings) {
   EXPECT_THAT(
       test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}, {.strict = true}); }),
       testing::HasSubstr("did you mean 'solver iterations'"));
-  EXPECT_EQ(scene.spec.world.articulation, ambf_like::Articulation::Maximal);  // AMBF's way
-  dir.write("world.yaml", "ambf_like: {articulation: reduced}\n");
-  EXPECT_EQ(ambf_like::loadLaunchFile(launch, {}).spec.world.articulation,
-            ambf_like::Articulation::Reduced);
+  EXPECT_EQ(scene.spec.world.articulation, ambf_like::Articulation::Automatic);
+  for (const auto& [word, mode] : std::vector<std::pair<std::string, ambf_like::Articulation>>{
+           {"maximal", ambf_like::Articulation::Maximal},  // AMBF's way
+           {"reduced", ambf_like::Articulation::Reduced},
+           {"automatic", ambf_like::Articulation::Automatic}}) {
+    dir.write("world.yaml", "ambf_like: {articulation: " + word + "}\n");
+    EXPECT_EQ(ambf_like::loadLaunchFile(launch, {}).spec.world.articulation, mode) << word;
+  }
   dir.write("world.yaml", "ambf_like:\n  articulation: sideways\n");
   const auto error = test_support::loadErrorOf([&] { ambf_like::loadLaunchFile(launch, {}); });
   EXPECT_THAT(error, testing::HasSubstr("world.yaml:2"));
-  EXPECT_THAT(error, testing::HasSubstr("'maximal' or 'reduced', not 'sideways'"));
+  EXPECT_THAT(error, testing::HasSubstr("'automatic', 'maximal' or 'reduced', not 'sideways'"));
 }
 
 TEST(AdfSemantics, ModelAndBodyGravityOverrideTheWorld) {

@@ -141,8 +141,9 @@ void expectFinalPositions(const std::filesystem::path& world,
 
 // Positions taken once the packed link solve and the articulations' damping were in, neither of
 // which touches a scene of rigid bodies in maximal coordinates: what commit 3ba261f did, before
-// the speed work. world.yaml's floor file is missing from ../shared/data: the puzzles fall (as
-// far as their damping lets them).
+// the speed work. The Raven in maximal coordinates, as then (its default is now reduced: see
+// RavenInReducedCoordinatesMovesAsWithConstraints). world.yaml's floor file is missing from
+// ../shared/data: the puzzles fall (as far as their damping lets them).
 TEST_F(SharedModels, AmbfsRigidScenesEndWhereTheyEndedBeforeTheSpeedWork) {
   const auto descriptions = data_ / "ambf/ambf_models/descriptions";
   expectFinalPositions(descriptions / "world/raven_world.yaml",
@@ -165,7 +166,8 @@ TEST_F(SharedModels, AmbfsRigidScenesEndWhereTheyEndedBeforeTheSpeedWork) {
                            {"wrist_R", -0.000003540, -0.703002673, 0.000000250},
                            {"grasper1_R", -0.009799523, -0.710084059, -0.000944578},
                            {"grasper2_R", -0.009799523, -0.710084059, -0.000944578},
-                       });
+                       },
+                       1e-6, test_support::maximalArticulation);
   expectFinalPositions(descriptions / "world/world.yaml",
                        {descriptions / "multi-bodies/puzzles/peg_and_base.yaml"},
                        {
@@ -313,7 +315,8 @@ TEST_F(SharedModels, AmbfsClothEndsInTheShapeItHadBeforeTheSpeedWork) {
 
 // AMBF's Raven in reduced coordinates: its two arms become articulations (the 0.1 kg 0_link,
 // welded between the two static bases by fixed joints, stays a rigid body), and under the same
-// position commands every joint ends where the constraint formulation puts it.
+// position commands every joint ends where the constraint formulation puts it. Reduced is what
+// the default (Articulation::Automatic) makes of it.
 TEST_F(SharedModels, RavenInReducedCoordinatesMovesAsWithConstraints) {
   const auto descriptions = data_ / "ambf/ambf_models/descriptions";
   const auto scene =
@@ -328,6 +331,7 @@ TEST_F(SharedModels, RavenInReducedCoordinatesMovesAsWithConstraints) {
   auto reduced = make(ambf_like::Articulation::Reduced);
   auto maximal = make(ambf_like::Articulation::Maximal);
   EXPECT_EQ(reduced->articulationCount(), 2u);
+  EXPECT_EQ(make(ambf_like::Articulation::Automatic)->articulationCount(), 2u);
   ASSERT_EQ(reduced->warnings().size(), 1u);
   EXPECT_THAT(reduced->warnings()[0], HasSubstr("'0_link'"));
   // Each commandable joint a tenth of its range (or 0.1 rad / 10 mm) from where it starts.

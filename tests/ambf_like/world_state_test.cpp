@@ -1,7 +1,8 @@
 // World::saveState and World::restoreState: after a restore the world steps exactly as it did
 // after the save (stacked boxes in contact, a soft ball and a material cube with Coulomb contacts
 // on the ground, a joint under control), whatever it did in between; saving keeps the contacts'
-// warm start; a state belongs to its world; a world with articulations is refused.
+// warm start; a state belongs to its world; an articulated arm (reduced coordinates) against
+// its limits and the ground repeats too.
 
 #include <BulletSoftBody/btSoftBody.h>
 #include <btBulletDynamicsCommon.h>
@@ -152,30 +153,85 @@ TEST(WorldState, AStateBelongsToItsWorld) {
   EXPECT_THROW(other->world->restoreState(*state), std::invalid_argument);
 }
 
-TEST(WorldState, AWorldWithArticulationsIsRefusedByName) {
+/// An arm in reduced coordinates: a shoulder under a PID from a static base, an elbow with
+/// limits it falls against, the forearm sweeping a box on the ground, a soft ball dropped on the
+/// upper arm.
+std::filesystem::path writeArm(const TempDir& dir) {
+  auto link = [](const std::string& name, double x) {
+    return "BODY " + name + ":\n  name: " + name +
+           "\n  mass: 0.5\n  collision shape: BOX\n"
+           "  collision geometry: {x: 0.2, y: 0.03, z: 0.03}\n"
+           "  location: {position: {x: " +
+           std::to_string(x) + ", y: 0, z: 0.15}}\n";
+  };
+  auto revolute = [](const std::string& name, const std::string& parent, const std::string& child,
+                     double pivot_x, const std::string& extra) {
+    return "JOINT " + name + ":\n  name: " + name + "\n  parent: BODY " + parent +
+           "\n  child: BODY " + child + "\n  parent pivot: {x: " + std::to_string(pivot_x) +
+           ", y: 0, z: 0}\n  child pivot: {x: -0.1, y: 0, z: 0}\n"
+           "  parent axis: {x: 0, y: 1, z: 0}\n  child axis: {x: 0, y: 1, z: 0}\n"
+           "  type: revolute\n" +
+           extra;
+  };
+  return dir.write(
+      "arm.yaml",
+      "bodies: [BODY ground, BODY base, BODY upper, BODY fore, BODY box1]\n"
+      "soft bodies: [BODY blob]\njoints: [JOINT shoulder, JOINT elbow]\n" +
+          test_support::groundPlaneBody() +
+          "BODY base: {name: base, mass: 0, collision shape: BOX, collision geometry: {x: 0.05, "
+          "y: 0.05, z: 0.05}, location: {position: {x: 0, y: 0, z: 0.15}}}\n" +
+          link("upper", 0.125) + link("fore", 0.325) + box("box1", 0.0205) +
+          test_support::softBallBody(0.002) +
+          "  location: {position: {x: 0.15, y: 0, z: 0.3}}\n"
+          "  config: {kDF: 0.8, kVC: 20, piterations: 4, bending constraint: 2}\n" +
+          revolute("shoulder", "base", "upper", 0.025,
+                   "  joint limits: {low: -1.5, high: 1.5}\n  controller: {P: 30, I: 5, D: 2}\n") +
+          revolute("elbow", "upper", "fore", 0.1, "  joint limits: {low: -0.4, high: 0.4}\n"));
+}
+
+/// The arm's motion: its joints, its links' poses and velocities, the ball's nodes, the
+/// contacts.
+std::vector<double> armMotionOf(const ambf_like::World& world) {
+  auto out = motionOf(world);
+  for (std::size_t i = 0; i < world.jointCount(); ++i) {
+    out.insert(out.end(),
+               {world.joint(i).position(), world.joint(i).velocity(), world.joint(i).effort()});
+  }
+  return out;
+}
+
+TEST(WorldState, AnArticulatedArmRepeatsItsStepsAfterARestoreBitForBit) {
   TempDir dir;
-  auto o = [](ambf_like::WorldSpec& world) {
+  auto reduced = [](ambf_like::WorldSpec& world) {
     options(world);
     world.articulation = ambf_like::Articulation::Reduced;
   };
-  auto sim = test_support::simulate(
-      {dir.write("arm.yaml",
-                 "bodies: [BODY base, BODY link]\njoints: [JOINT base-link]\n"
-                 "BODY base: {name: base, mass: 0, collision shape: BOX, collision geometry: "
-                 "{x: 0.05, y: 0.05, z: 0.05}}\n"
-                 "BODY link: {name: link, mass: 1.0, collision shape: BOX, collision geometry: "
-                 "{x: 0.2, y: 0.04, z: 0.04}, location: {position: {x: 0, y: 0, z: 0.2}}}\n"
-                 "JOINT base-link: {name: base-link, parent: BODY base, child: BODY link, "
-                 "parent pivot: {x: 0, y: 0, z: 0.1}, parent axis: {x: 0, y: 1, z: 0}, "
-                 "child axis: {x: 0, y: 1, z: 0}, type: revolute}\n")},
-      o);
-  ASSERT_GT(sim->world->articulationCount(), 0u);
-  try {
-    sim->world->saveState();
-    FAIL() << "saved";
-  } catch (const std::logic_error& e) {
-    EXPECT_THAT(e.what(), testing::HasSubstr("articulation"));
-  }
+  auto sim = test_support::simulate({writeArm(dir)}, reduced);
+  ambf_like::World& world = *sim->world;
+  ASSERT_EQ(world.articulationCount(), 1u);
+  world.joint("shoulder").commandPosition(0.5);  // the forearm down onto the box
+  world.step(400);
+  ASSERT_FALSE(world.contacts("fore").empty()) << "the forearm touches the box";
+  ASSERT_GT(std::abs(world.joint("elbow").effort()), 0.0) << "the elbow rests on its limit";
+
+  const auto state = world.saveState();
+  auto run_arm = [&](int steps) {
+    std::vector<std::vector<double>> out;
+    for (int i = 0; i < steps; ++i) {
+      if (i == steps / 2) world.joint("shoulder").commandPosition(-0.3);  // and up again
+      world.step();
+      out.push_back(armMotionOf(world));
+    }
+    return out;
+  };
+  const auto at_save = armMotionOf(world);
+  const auto after_save = run_arm(300);
+  world.step(500);
+  ASSERT_NE(armMotionOf(world), at_save);
+
+  world.restoreState(*state);
+  EXPECT_EQ(armMotionOf(world), at_save);
+  EXPECT_EQ(run_arm(300), after_save);
 }
 
 }  // namespace

@@ -63,6 +63,11 @@ inline void noRigidBodySleep(ambf_like::WorldSpec& world) {
   world.rigid_body_sleep.enabled = false;
 }
 
+/// The world settings with every joint a constraint (AMBF's way).
+inline void maximalArticulation(ambf_like::WorldSpec& world) {
+  world.articulation = ambf_like::Articulation::Maximal;
+}
+
 /// Runs `call` and returns the LoadError message it threw ("" when it did not throw one).
 template <typename Call>
 std::string loadErrorOf(Call&& call) {

@@ -70,6 +70,10 @@ bool CollisionFilter::needBroadphaseCollision(btBroadphaseProxy* a, btBroadphase
   if (!meetsSoftness(objectOf(a), *ta, tb->soft) || !meetsSoftness(objectOf(b), *tb, ta->soft)) {
     return false;
   }
+  if (std::find(ta->jointed.begin(), ta->jointed.end(), tb) != ta->jointed.end() ||
+      std::find(tb->jointed.begin(), tb->jointed.end(), ta) != tb->jointed.end()) {
+    return false;
+  }
   if (ta->model == tb->model && ta->model_ignores_inter_collision && !ta->soft && !tb->soft) {
     return false;
   }

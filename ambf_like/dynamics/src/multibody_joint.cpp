@@ -17,6 +17,13 @@ namespace {
 /// its bound is far (Bullet makes its rows only once the bound is reached).
 constexpr double kLimitWatchBand = 1e-3;
 
+/// A MultiBodyJoint's memory.
+struct LimitMemory final : JointDynamicsMemory {
+  bool limit_engaged = false;
+  double last_step = 0.0;
+  double lower_impulse = 0.0, upper_impulse = 0.0;
+};
+
 }  // namespace
 
 MultiBodyJoint::MultiBodyJoint(JointType type, JointSpaceServo& servo,
@@ -54,6 +61,27 @@ void MultiBodyJoint::actuate(const JointActuation& actuation, double dt) {
   servo_.request(dof_, actuation);
   if (limit_) watchLimit(dt);
   last_step_ = dt;
+}
+
+std::shared_ptr<const JointDynamicsMemory> MultiBodyJoint::memory() const {
+  auto memory = std::make_shared<LimitMemory>();
+  memory->limit_engaged = limit_engaged_;
+  memory->last_step = last_step_;
+  if (limit_) {
+    memory->lower_impulse = limit_->getAppliedImpulse(0);
+    memory->upper_impulse = limit_->getAppliedImpulse(1);
+  }
+  return memory;
+}
+
+void MultiBodyJoint::recall(const JointDynamicsMemory* memory) {
+  const auto& saved = dynamic_cast<const LimitMemory&>(*memory);
+  limit_engaged_ = saved.limit_engaged;
+  last_step_ = saved.last_step;
+  if (limit_) {
+    limit_->internalSetAppliedImpulse(0, saved.lower_impulse);
+    limit_->internalSetAppliedImpulse(1, saved.upper_impulse);
+  }
 }
 
 void MultiBodyJoint::watchLimit(double dt) {

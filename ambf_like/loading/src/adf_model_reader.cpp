@@ -253,12 +253,14 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
       world.rigid_body_sleep = readRigidBodySleep(*v, context);
     if (auto v = own->find("articulation")) {
       const std::string mode = v->asString();
-      if (mode == "maximal") {
+      if (mode == "automatic") {
+        world.articulation = Articulation::Automatic;
+      } else if (mode == "maximal") {
         world.articulation = Articulation::Maximal;
       } else if (mode == "reduced") {
         world.articulation = Articulation::Reduced;
       } else {
-        v->fail("articulation must be 'maximal' or 'reduced', not '" + mode + "'");
+        v->fail("articulation must be 'automatic', 'maximal' or 'reduced', not '" + mode + "'");
       }
     }
   }

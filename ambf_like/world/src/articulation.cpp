@@ -11,6 +11,7 @@
 
 #include "ambf_like/bullet_conversions.hpp"
 #include "ambf_like/dynamics/bullet_world.hpp"
+#include "ambf_like/dynamics/collision_filter.hpp"
 #include "ambf_like/dynamics/multibody_joint.hpp"
 
 namespace ambf_like::detail {
@@ -112,6 +113,52 @@ ArticulationPlan planArticulations(const ModelSpec& model) {
   return plan;
 }
 
+namespace {
+
+/// The qualified names of the bodies the models' actuators may hang from: a body of the
+/// actuator's own model by its name, or any model's by its qualified or plain name (as World
+/// resolves them; every body that could be meant).
+std::set<std::string> actuatorParents(const std::vector<ModelSpec>& models) {
+  std::set<std::string> out;
+  for (const auto& model : models) {
+    for (const auto& actuator : model.actuators) {
+      if (findBody(model, actuator.parent) != nullptr) {
+        out.insert(model.name_space + actuator.parent);
+        continue;
+      }
+      out.insert(actuator.parent);
+      for (const auto& other : models) {
+        if (findBody(other, actuator.parent) != nullptr)
+          out.insert(other.name_space + actuator.parent);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ArticulationPlan> planAutomatically(const std::vector<ModelSpec>& models) {
+  std::vector<ArticulationPlan> plans(models.size());
+  const bool coulomb = std::any_of(models.begin(), models.end(), [](const ModelSpec& m) {
+    return std::any_of(m.soft_bodies.begin(), m.soft_bodies.end(), [](const auto& soft) {
+      return soft.contact_friction == SoftContactFriction::Coulomb;
+    });
+  });
+  if (coulomb) return plans;
+  const auto held = actuatorParents(models);
+  for (std::size_t i = 0; i < models.size(); ++i) {
+    const ModelSpec& model = models[i];
+    for (auto& tree : planArticulations(model).trees) {
+      const bool holds = std::any_of(tree.joints.begin(), tree.joints.end(), [&](std::size_t j) {
+        return held.contains(model.name_space + model.joints[j].child);
+      });
+      if (!holds) plans[i].trees.push_back(std::move(tree));
+    }
+  }
+  return plans;
+}
+
 struct Articulation::Link {
   RigidBody* body = nullptr;
   /// Bullet's rigid-body damping as rates (1/s): see applyDampingAndOwnGravity.
@@ -153,6 +200,11 @@ Articulation::Articulation(const ModelSpec& model, const JointTree& tree,
     const auto frames = computeJointFrames(joint, parent.com_in_body, parent.body->spec().scale,
                                            child.com_in_body, child.body->spec().scale);
     addLink(link_of_joint_[j], joint, frames, parent, child, link_of_body.at(joint.parent));
+    if (joint.parent == tree.root && joint.ignore_inter_collision) {
+      // Bullet keeps a link from its parent link only; the root is no link.
+      static_cast<CollisionTag*>(child.body->bullet().getUserPointer())
+          ->jointed.push_back(static_cast<const CollisionTag*>(root.bullet().getUserPointer()));
+    }
     if (const auto gravity =
             child.body->spec().gravity ? child.body->spec().gravity : model.gravity) {
       // Bullet pulls every link down by the world's gravity; this makes up the difference.
@@ -171,6 +223,12 @@ Articulation::Articulation(const ModelSpec& model, const JointTree& tree,
   multibody_->setLinearDamping(0.0);
   multibody_->setAngularDamping(0.0);
   multibody_->setHasSelfCollision(!model.ignore_inter_collision);
+  // Jointed bodies never sleep (a command can come at any step), and a sleeping multibody is
+  // not woken by its joints' torques.
+  multibody_->setCanSleep(false);
+  // Bullet clamps a multibody's coordinate speeds at 100 (rad/s or m/s), which would hide a
+  // runaway joint from the StepGuard; its rigid bodies' clamp (a quarter turn a step) instead.
+  multibody_->setMaxCoordinateVelocity(M_PI_2 / step_size_);
   world_.addMultiBody(multibody_.get());
 
   for (std::size_t i = 0; i < links_.size(); ++i) addCollider(static_cast<int>(i));
@@ -322,6 +380,49 @@ std::unique_ptr<JointDynamics> Articulation::jointDynamics(std::size_t index) {
   auto& l = links_[static_cast<std::size_t>(link)];
   return std::make_unique<MultiBodyJoint>(l.type, servo_, world_, *multibody_, link,
                                           l.coordinate_at_load, l.limit.get());
+}
+
+Articulation::State Articulation::state() const {
+  State s{{}, {}, {}, servo_, inverse_inertia_, steps_since_refresh_};
+  for (int i = 0; i < multibody_->getNumLinks(); ++i) s.links.push_back(multibody_->getLink(i));
+  const btScalar* velocities = multibody_->getVelocityVector();
+  s.velocities.assign(velocities, velocities + 6 + multibody_->getNumDofs());
+  for (const auto& link : links_) {
+    const btCollisionObject& c = *link.collider;
+    s.colliders.push_back({c.getWorldTransform(), c.getInterpolationWorldTransform(),
+                           c.getInterpolationLinearVelocity(), c.getInterpolationAngularVelocity(),
+                           c.getActivationState(), c.getDeactivationTime(), c.getHitFraction()});
+  }
+  return s;
+}
+
+void Articulation::restore(const State& s) {
+  for (int i = 0; i < multibody_->getNumLinks(); ++i) {
+    multibody_->getLink(i) = s.links[static_cast<std::size_t>(i)];
+  }
+  multibody_->setBaseOmega({s.velocities[0], s.velocities[1], s.velocities[2]});
+  multibody_->setBaseVel({s.velocities[3], s.velocities[4], s.velocities[5]});
+  for (int i = 0; i < multibody_->getNumLinks(); ++i) {
+    const auto& link = multibody_->getLink(i);
+    if (link.m_dofCount > 0) {
+      multibody_->setJointVelMultiDof(
+          i, &s.velocities[static_cast<std::size_t>(6 + link.m_dofOffset)]);
+    }
+  }
+  for (std::size_t i = 0; i < links_.size(); ++i) {
+    btCollisionObject& c = *links_[i].collider;
+    const ColliderState& saved = s.colliders[i];
+    c.setWorldTransform(saved.pose);
+    c.setInterpolationWorldTransform(saved.interpolation_pose);
+    c.setInterpolationLinearVelocity(saved.interpolation_linear);
+    c.setInterpolationAngularVelocity(saved.interpolation_angular);
+    c.forceActivationState(saved.activation);
+    c.setDeactivationTime(saved.deactivation_time);
+    c.setHitFraction(saved.hit_fraction);
+  }
+  servo_ = s.servo;
+  inverse_inertia_ = s.inverse_inertia;
+  steps_since_refresh_ = s.steps_since_refresh;
 }
 
 void Articulation::afterStep() {

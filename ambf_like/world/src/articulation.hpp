@@ -1,6 +1,7 @@
 #pragma once
 // A model's joint tree in reduced coordinates: one Featherstone btMultiBody on its static root.
 
+#include <BulletDynamics/Featherstone/btMultiBodyLink.h>
 #include <LinearMath/btAlignedObjectArray.h>
 #include <LinearMath/btVector3.h>
 
@@ -44,6 +45,10 @@ struct ArticulationPlan {
   std::vector<std::string> left_out;
 };
 ArticulationPlan planArticulations(const ModelSpec& model);
+/// Articulation::Automatic: each model's trees of planArticulations but those that hold a body
+/// a constraint actuator hangs from, and none in a scene with Coulomb soft bodies; what stays
+/// maximal is no warning.
+std::vector<ArticulationPlan> planAutomatically(const std::vector<ModelSpec>& models);
 
 /// One joint tree as a btMultiBody with a fixed base at its static root body. The joints are its
 /// degrees of freedom (no constraint rows), so a step costs one articulated-body pass instead
@@ -72,6 +77,27 @@ class Articulation {
   void afterFreeMotion();
   /// Copies the links' poses and velocities to their bodies; refreshes the inverse inertia.
   void afterStep();
+
+  /// A link collider's motion, as the broadphase and the contacts read it.
+  struct ColliderState {
+    btTransform pose, interpolation_pose;
+    btVector3 interpolation_linear, interpolation_angular;
+    int activation = 0;
+    btScalar deactivation_time = 0, hit_fraction = 1;
+  };
+  /// What the articulation's next steps depend on (World::saveState): Bullet's links (their
+  /// coordinates and the frames cached from them), the joint velocities, the colliders' motion,
+  /// the servo and the inverse inertia it uses.
+  struct State {
+    std::vector<btMultibodyLink> links;
+    std::vector<btScalar> velocities;  ///< the base's six, then the joints'
+    std::vector<ColliderState> colliders;
+    JointSpaceServo servo;
+    Eigen::MatrixXd inverse_inertia;
+    int steps_since_refresh = 0;
+  };
+  State state() const;
+  void restore(const State& state);
 
  private:
   struct Link;

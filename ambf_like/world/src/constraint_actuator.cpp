@@ -40,6 +40,11 @@ void ConstraintActuator::actuate(RigidBody& body, const Vec3& offset) {
     throw std::invalid_argument("actuator '" + spec_.name + "': '" + body.qualifiedName() +
                                 "' is static; only a dynamic body can be attached");
   }
+  if (body.bullet().getBroadphaseHandle() == nullptr) {
+    throw std::invalid_argument("actuator '" + spec_.name + "': '" + body.qualifiedName() +
+                                "' is a link of an articulation (reduced coordinates); give its "
+                                "world 'articulation: maximal' to attach it");
+  }
   // The attachment point is a point of the body: a far or non-finite one would fling it.
   constexpr double kFarthestOffset = 10.0;  // m
   if (!offset.allFinite() || offset.norm() > kFarthestOffset) {

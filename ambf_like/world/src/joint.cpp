@@ -166,7 +166,12 @@ void Joint::applyControl(double dt) {
   dynamics_->actuate(actuation, dt);
 }
 
+Joint::State Joint::state() const {
+  return {pid_, drive_, target_, position_, last_raw_, dynamics_->memory()};
+}
+
 void Joint::restore(const State& state) {
+  if (state.dynamics) dynamics_->recall(state.dynamics.get());
   pid_ = state.pid;
   drive_ = state.drive;
   target_ = state.target;

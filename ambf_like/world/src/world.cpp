@@ -59,10 +59,25 @@ std::size_t requireByName(const Items& items, std::string_view name, const char*
 
 }  // namespace
 
+std::vector<detail::ArticulationPlan> World::Impl::planEach(const SceneSpec& scene) const {
+  std::vector<detail::ArticulationPlan> each(scene.models.size());
+  switch (settings.articulation) {
+    case Articulation::Maximal:
+      return each;
+    case Articulation::Reduced:
+      std::transform(scene.models.begin(), scene.models.end(), each.begin(),
+                     detail::planArticulations);
+      return each;
+    case Articulation::Automatic:
+      return detail::planAutomatically(scene.models);
+  }
+  return each;
+}
+
 World::Impl::Impl(const SceneSpec& scene, const WorldOptions& opts)
     : settings(scene.world),
       options(opts),
-      plans(planEach(scene.models)),
+      plans(planEach(scene)),
       articulated(std::any_of(plans.begin(), plans.end(),
                               [](const auto& plan) { return !plan.trees.empty(); })),
       bullet(articulated),
@@ -123,8 +138,13 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
 
   auto groups = spec.collision.groups;
   std::sort(groups.begin(), groups.end());
-  auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name, model_index,
-                                                     model.ignore_inter_collision, false, groups});
+  auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name,
+                                                     model_index,
+                                                     model.ignore_inter_collision,
+                                                     false,
+                                                     groups,
+                                                     nullptr,
+                                                     {}});
   rigid->setUserPointer(&tag);
   if (shape.soft_proxy != nullptr) {
     auto& proxy = soft_proxies.emplace_back(std::make_unique<btCollisionObject>());
@@ -223,8 +243,13 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     where.key_path += "/mesh";
     const auto mesh = meshes.load(spec.mesh, where);
     auto soft = detail::makeSoftBody(spec, *mesh, bullet.softBodyInfo());
-    auto& tag = tags.emplace_back(detail::CollisionTag{
-        model.name_space + spec.name, model_index, model.ignore_inter_collision, true, {}});
+    auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name,
+                                                       model_index,
+                                                       model.ignore_inter_collision,
+                                                       true,
+                                                       {},
+                                                       nullptr,
+                                                       {}});
     soft->setUserPointer(&tag);
     bullet.addSoftBody(*soft, coulomb ? std::optional<int>(spec.substeps) : std::nullopt,
                        spec.material);

@@ -33,7 +33,7 @@ struct NamedJoint {
 struct World::Impl {
   WorldSpec settings;
   WorldOptions options;
-  /// Per model, its joint trees to be simulated in reduced coordinates (none unless asked).
+  /// Per model, its joint trees to be simulated in reduced coordinates.
   std::vector<detail::ArticulationPlan> plans;
   bool articulated;  ///< some model is simulated in reduced coordinates
   detail::BulletWorld bullet;
@@ -63,13 +63,8 @@ struct World::Impl {
   Impl(const SceneSpec& scene, const WorldOptions& opts);
   ~Impl();
 
-  std::vector<detail::ArticulationPlan> planEach(const std::vector<ModelSpec>& models) const {
-    std::vector<detail::ArticulationPlan> out(models.size());
-    if (settings.articulation == Articulation::Reduced) {
-      std::transform(models.begin(), models.end(), out.begin(), detail::planArticulations);
-    }
-    return out;
-  }
+  /// Per model, the joint trees its world's Articulation setting puts in reduced coordinates.
+  std::vector<detail::ArticulationPlan> planEach(const SceneSpec& scene) const;
   void addModel(const ModelSpec& model, int model_index, MeshLibrary& meshes);
   /// Refuses a soft body whose material needs more substeps than kMaxSoftSubsteps at this
   /// world's step: one step would take as long as thousands.

@@ -3,6 +3,7 @@
 // bit for bit.
 
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletSoftBody/btSoftBody.h>
 #include <btBulletDynamicsCommon.h>
 
@@ -151,6 +152,9 @@ class WorldState {
   std::uint64_t steps = 0;
   std::vector<RigidState> rigid;
   std::vector<Joint::State> joints;
+  std::vector<detail::Articulation::State> articulations;
+  /// The joint limits in the world, in the solver's order.
+  std::vector<btMultiBodyConstraint*> limits;
   std::vector<SoftState> soft;
   std::vector<ManifoldState> manifolds;
   std::shared_ptr<const detail::SoftBodyStepSolver::State> soft_solver;
@@ -194,6 +198,18 @@ void rebuildCollisionCaches(btDiscreteDynamicsWorld& world) {
                                        world.getDispatchInfo(), &dispatcher);
 }
 
+/// The articulations' constraints in the world, in its order (empty: no articulations).
+std::vector<btMultiBodyConstraint*> multiBodyConstraintsOf(detail::BulletWorld& bullet,
+                                                           bool articulated) {
+  std::vector<btMultiBodyConstraint*> out;
+  if (!articulated) return out;
+  btMultiBodyDynamicsWorld& world = bullet.articulations();
+  for (int i = 0; i < world.getNumMultiBodyConstraints(); ++i) {
+    out.push_back(world.getMultiBodyConstraint(i));
+  }
+  return out;
+}
+
 /// Puts the saved points into the manifolds the narrowphase just made (matched by their bodies,
 /// in order), and empties those it made anew.
 void restoreManifolds(btDispatcher& dispatcher, const std::vector<ManifoldState>& saved) {
@@ -235,17 +251,14 @@ void rebuildCaches(btDiscreteDynamicsWorld& world,
 
 std::shared_ptr<const WorldState> World::saveState() {
   Impl& w = *impl_;
-  if (!w.articulations.empty()) {
-    throw std::logic_error(
-        "World::saveState: a world with articulations (reduced coordinates) is not captured; "
-        "give its models 'articulation: maximal'");
-  }
   auto state = std::make_shared<WorldState>();
   state->world = w.id;
   state->time = w.time;
   state->steps = w.steps;
   for (const auto& b : w.bodies) state->rigid.push_back(rigidStateOf(b->bullet()));
   for (const auto& j : w.joints) state->joints.push_back(j->joint->state());
+  for (const auto& a : w.articulations) state->articulations.push_back(a->state());
+  state->limits = multiBodyConstraintsOf(w.bullet, w.articulated);
   for (const auto& s : w.soft_bodies) state->soft.push_back(softStateOf(s->bullet()));
   btDispatcher& dispatcher = *w.world.getDispatcher();
   for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
@@ -280,6 +293,16 @@ void World::restoreState(const WorldState& state) {
     restoreRigid(w.bodies[i]->bullet(), state.rigid[i]);
   }
   for (std::size_t i = 0; i < w.joints.size(); ++i) w.joints[i]->joint->restore(state.joints[i]);
+  for (std::size_t i = 0; i < w.articulations.size(); ++i) {
+    w.articulations[i]->restore(state.articulations[i]);
+  }
+  if (w.articulated) {  // the limits in the world, in the saved order
+    btMultiBodyDynamicsWorld& world = w.bullet.articulations();
+    for (btMultiBodyConstraint* c : multiBodyConstraintsOf(w.bullet, true)) {
+      world.removeMultiBodyConstraint(c);
+    }
+    for (btMultiBodyConstraint* c : state.limits) world.addMultiBodyConstraint(c);
+  }
   for (std::size_t i = 0; i < w.soft_bodies.size(); ++i) {
     restoreSoft(w.soft_bodies[i]->bullet(), state.soft[i]);
   }

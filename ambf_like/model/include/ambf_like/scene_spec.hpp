@@ -54,8 +54,11 @@ struct RigidBodySleep {
 /// constraint the solver iterates on (AMBF's way). Reduced: each branch of joints hanging from a
 /// static body (revolute, continuous, prismatic or fixed, each body the child of one joint)
 /// becomes a Featherstone articulation whose joints are its coordinates; the rest stays maximal,
-/// and the World says why (World::warnings).
-enum class Articulation { Maximal, Reduced };
+/// and the World says why (World::warnings). Automatic (the default): reduced wherever it is the
+/// same physics, maximal where reduced coordinates cannot carry the scene: every model of a
+/// scene with Coulomb soft bodies (their contacts act on rigid bodies only), and each branch
+/// holding a body a constraint actuator hangs from (it attaches bodies to rigid bodies).
+enum class Articulation { Automatic, Maximal, Reduced };
 
 /// World-file settings that matter to the physics.
 struct WorldSpec {
@@ -72,7 +75,7 @@ struct WorldSpec {
   std::optional<double> sdf_voxel_size;
   SoftBodySleep soft_body_sleep;
   RigidBodySleep rigid_body_sleep;
-  Articulation articulation = Articulation::Maximal;
+  Articulation articulation = Articulation::Automatic;
 };
 
 /// Everything needed to build a simulation.

@@ -11,6 +11,7 @@ namespace ambf_like {
 
 namespace detail {
 class JointDynamics;
+class JointDynamicsMemory;
 struct JointActuation;
 }  // namespace detail
 
@@ -58,8 +59,9 @@ class Joint {
     PidController pid;
     JointDrive drive = JointDrive::Free;
     double target = 0.0, position = 0.0, last_raw = 0.0;
+    std::shared_ptr<const detail::JointDynamicsMemory> dynamics;  ///< its formulation's
   };
-  State state() const { return {pid_, drive_, target_, position_, last_raw_}; }
+  State state() const;
   void restore(const State& state);
 
  private:

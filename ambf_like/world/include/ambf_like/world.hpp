@@ -73,13 +73,12 @@ class World {
   void step(std::uint64_t count);
 
   /// Everything the next steps depend on: the rigid bodies' poses and velocities, the joints'
-  /// commands and controllers, the soft bodies' nodes, faces, anchors and contacts, the contact
-  /// manifolds with their impulses (the solver's warm start), the soft-body solvers' warm starts,
-  /// sleep, the sensors' readings and the clock. Saving also rebuilds the collision caches
-  /// (broadphase trees and pairs, the soft bodies' trees) in a canonical order, as restoring
-  /// does, so the steps after a save and after any restore of it are the same, bit for bit.
-  /// Throws std::logic_error for a world with articulations (reduced coordinates), which it
-  /// does not capture yet.
+  /// commands and controllers, the articulations' coordinates, velocities, servos and engaged
+  /// limits, the soft bodies' nodes, faces, anchors and contacts, the contact manifolds with
+  /// their impulses (the solver's warm start), the soft-body solvers' warm starts, sleep, the
+  /// sensors' readings and the clock. Saving also rebuilds the collision caches (broadphase
+  /// trees and pairs, the soft bodies' trees) in a canonical order, as restoring does, so the
+  /// steps after a save and after any restore of it are the same, bit for bit.
   std::shared_ptr<const WorldState> saveState();
   /// Puts the world back to `state`. Throws std::invalid_argument for a state of another world,
   /// std::logic_error when a constraint actuator holds otherwise than it did then.

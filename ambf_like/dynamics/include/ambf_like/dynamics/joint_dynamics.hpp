@@ -1,6 +1,8 @@
 #pragma once
 // How a Joint reads and actuates its coordinate in one Bullet formulation.
 
+#include <memory>
+
 namespace ambf_like::detail {
 
 /// What a joint's drive asks of the physics for the next step.
@@ -9,6 +11,12 @@ struct JointActuation {
   double motor_velocity = 0.0;     ///< rad/s or m/s, already within the joint's speed limit
   double motor_max_impulse = 0.0;  ///< N m s or N s per step
   double effort = 0.0;             ///< N m or N, on top of the motor
+};
+
+/// What a formulation's next steps and readings depend on beyond its bodies (World::saveState).
+class JointDynamicsMemory {
+ public:
+  virtual ~JointDynamicsMemory() = default;
 };
 
 /// A joint's coordinate as the physics sees it: maximal coordinates (a constraint between two
@@ -23,6 +31,9 @@ class JointDynamics {
   virtual double effort() const = 0;
   /// Sets the motor and applies the effort for the coming step.
   virtual void actuate(const JointActuation& actuation, double dt) = 0;
+  /// Its memory (null: it keeps none), and taking a saved one back.
+  virtual std::shared_ptr<const JointDynamicsMemory> memory() const { return nullptr; }
+  virtual void recall(const JointDynamicsMemory* /*memory*/) {}
 };
 
 }  // namespace ambf_like::detail

@@ -26,6 +26,10 @@ class MultiBodyJoint final : public JointDynamics {
   double velocity() const override;
   double effort() const override;
   void actuate(const JointActuation& actuation, double dt) override;
+  /// Whether its limit is in the world, and the limit's last impulses; World::restoreState puts
+  /// the limits back into the world in their saved order.
+  std::shared_ptr<const JointDynamicsMemory> memory() const override;
+  void recall(const JointDynamicsMemory* memory) override;
 
  private:
   bool hasCoordinate() const { return type_ != JointType::Fixed; }
