@@ -310,4 +310,64 @@ TEST(Articulation, JointsThatAreNoTreeOnAStaticBodyStayInMaximalCoordinatesSayin
   EXPECT_TRUE(load(spring, Articulation::Maximal)->world->warnings().empty());
 }
 
+TEST(Articulation, TheDefaultIsReducedWhereverReducedCarriesTheScene) {
+  test_support::TempDir dir;
+  const auto pendulum = doublePendulum(dir);
+  auto by_default = [](const std::vector<std::filesystem::path>& models) {
+    return test_support::simulate(models);  // Articulation::Automatic
+  };
+  auto alone = by_default({pendulum});
+  EXPECT_EQ(alone->world->articulationCount(), 1u);
+  EXPECT_TRUE(alone->world->warnings().empty()) << "maximal where needed says nothing";
+  // A soft body with Coulomb contacts acts on rigid bodies only: the whole scene stays maximal.
+  dir.write("cube.vtk", test_support::boxVtk(2, 2, 2, 0.01));
+  const auto coulomb =
+      dir.write("cube.yaml",
+                "namespace: /cube/\nsoft bodies: [BODY cube]\n"
+                "BODY cube: {name: cube, mass: 0.05, mesh: cube.vtk, contact friction: coulomb, "
+                "location: {position: {x: 0, y: 0.5, z: 0}}}\n");
+  EXPECT_EQ(by_default({pendulum, coulomb})->world->articulationCount(), 0u);
+  // An actuator hanging from the lower link attaches bodies by constraints between rigid bodies:
+  // that branch stays maximal, and the actuator takes a free box.
+  const auto hand = dir.write(
+      "hand.yaml",
+      "namespace: /hand/\nbodies: [BODY box]\nactuators: [ACTUATOR hand]\n"
+      "BODY box: {name: box, mass: 0.1, collision shape: BOX, collision geometry: {x: 0.02, y: "
+      "0.02, z: 0.02}, location: {position: {x: 0.3, y: 0, z: -0.05}}}\n"
+      "ACTUATOR hand: {name: hand, type: CONSTRAINT, parent: BODY /ambf/env/lower}\n");
+  auto held = by_default({pendulum, hand});
+  EXPECT_EQ(held->world->articulationCount(), 0u);
+  EXPECT_NO_THROW(held->world->actuator("hand").actuate(held->world->body("box")));
+}
+
+TEST(Articulation, AnActuatorRefusesToAttachALinkNamingWhy) {
+  test_support::TempDir dir;
+  const auto pendulum = doublePendulum(dir);
+  const auto hand = dir.write("hand.yaml",
+                              "namespace: /hand/\nactuators: [ACTUATOR hand]\n"
+                              "ACTUATOR hand: {name: hand, type: CONSTRAINT, parent: BODY "
+                              "/ambf/env/anchor}\n");
+  auto sim = test_support::simulate({pendulum, hand}, [](ambf_like::WorldSpec& world) {
+    world.articulation = Articulation::Reduced;
+  });
+  ASSERT_EQ(sim->world->articulationCount(), 1u);
+  try {
+    sim->world->actuator("hand").actuate(sim->world->body("lower"));
+    FAIL() << "attached a link";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_THAT(e.what(), testing::HasSubstr("link of an articulation"));
+  }
+}
+
+TEST(Articulation, ARunawayJointIsNotClampedBelowWhatRigidBodiesReach) {
+  test_support::TempDir dir;
+  // Bullet clamps a multibody's joint speeds at 100 rad/s; a rigid body turns up to a quarter
+  // turn a step (1571 rad/s at 1 ms), and so does a link here.
+  auto sim = load(doublePendulum(dir), Articulation::Reduced);
+  sim->world->joint("shoulder").commandEffort(50.0);
+  sim->world->step(150);  // the tip, 0.4 m out, stays below the StepGuard's 100 m/s
+  EXPECT_GT(std::abs(sim->world->joint("shoulder").velocity()),
+            120.0);  // Bullet would stop it at 100
+}
+
 }  // namespace

@@ -1,5 +1,5 @@
-// The packed link solve is Bullet's own position solve, bit for bit, on the bodies it takes; the
-// others stay with Bullet.
+// The packed link solve is Bullet's own position solve, bit for bit, on the bodies it takes, also
+// once their links' constants change; the others stay with Bullet.
 
 #include "ambf_like/dynamics/packed_link_solver.hpp"
 
@@ -40,6 +40,13 @@ TEST(PackedLinkSolver, MovesEveryNodeExactlyAsBulletsOwnSolveDoes) {
   PackedLinkSolver solver;
   const btScalar start_z = packed->m_nodes[packed->m_nodes.size() - 1].m_x.z();
   for (int step = 0; step < 500; ++step) {
+    if (step == 250) {  // stiffer midway: Bullet refreshes the links' constants
+      for (btSoftBody* cloth : {by_bullet.get(), packed.get()}) {
+        cloth->m_materials[0]->m_kLST = 0.2;
+        cloth->m_bUpdateRtCst = true;
+      }
+    }
+    if (packed->m_bUpdateRtCst) solver.forget(*packed);  // as SoftBodyStepSolver does
     by_bullet->predictMotion(0.001);
     packed->predictMotion(0.001);
     ASSERT_TRUE(PackedLinkSolver::handles(*packed));

@@ -1,7 +1,5 @@
 #include "ambf_like/dynamics/packed_link_solver.hpp"
 
-#include <BulletSoftBody/btSoftBody.h>
-
 namespace ambf_like::detail {
 
 bool PackedLinkSolver::handles(const btSoftBody& body) {
@@ -13,7 +11,7 @@ bool PackedLinkSolver::handles(const btSoftBody& body) {
          body.m_cfg.viterations <= 0 && body.m_cfg.diterations <= 0 && body.m_cfg.piterations > 0;
 }
 
-void PackedLinkSolver::pack(const btSoftBody& body) {
+const std::vector<PackedLinkSolver::Link>& PackedLinkSolver::pack(const btSoftBody& body) {
   const btSoftBody::Node* first = &body.m_nodes[0];
   const auto count = static_cast<std::size_t>(body.m_nodes.size());
   positions_.resize(count);
@@ -23,23 +21,27 @@ void PackedLinkSolver::pack(const btSoftBody& body) {
     positions_[i] = Position{n.m_x.x(), n.m_x.y(), n.m_x.z(), 0.0};
     inverse_masses_[i] = n.m_im;
   }
-  // Packed afresh every step: masses, stiffness, rest lengths and the links' order may all have
-  // been changed since (one streaming pass, a small fraction of one iteration's cost).
-  links_.clear();
+  // The nodes' masses are read every step; the links' constants only change with Bullet's
+  // refresh of them (forget), and their order with the array.
+  PackedLinks& packed = packed_[&body];
+  const btSoftBody::Link* from = body.m_links.size() > 0 ? &body.m_links[0] : nullptr;
+  if (packed.from == from && packed.count == body.m_links.size()) return packed.links;
+  packed = {from, body.m_links.size(), {}};
   for (int i = 0; i < body.m_links.size(); ++i) {
     const btSoftBody::Link& l = body.m_links[i];
     if (l.m_c0 > 0) {
-      links_.push_back(
+      packed.links.push_back(
           {static_cast<int>(l.m_n[0] - first), static_cast<int>(l.m_n[1] - first), l.m_c0, l.m_c1});
     }
   }
+  return packed.links;
 }
 
-void PackedLinkSolver::solveLinksOnce() {
+void PackedLinkSolver::solveLinksOnce(const std::vector<Link>& links) {
   // btSoftBody::PSolve_Links with kst = 1 in Bullet's order of operations (this file is built
   // without floating-point contraction): lane by lane the same IEEE operations, so the same bits.
   // The fourth lane is 0 and stays 0.
-  for (const Link& l : links_) {
+  for (const Link& l : links) {
     const auto ia = static_cast<std::size_t>(l.a);
     const auto ib = static_cast<std::size_t>(l.b);
     const Position a = positions_[ia];
@@ -56,11 +58,11 @@ void PackedLinkSolver::solveLinksOnce() {
 }
 
 void PackedLinkSolver::solve(btSoftBody& body) {
-  pack(body);
+  const std::vector<Link>& links = pack(body);
   const auto& sequence = body.m_cfg.m_psequence;
   for (int iteration = 0; iteration < body.m_cfg.piterations; ++iteration) {
     for (int s = 0; s < sequence.size(); ++s) {
-      if (sequence[s] == btSoftBody::ePSolver::Linear) solveLinksOnce();
+      if (sequence[s] == btSoftBody::ePSolver::Linear) solveLinksOnce(links);
     }
   }
   // Bullet's end of the position solve: velocities from the moves, damped by kDP.

@@ -69,10 +69,12 @@ void SoftBodyStepSolver::restore(const State& state) {
   }
   for (auto& [body, registered] : coulomb_) registered = state.bodies.at(body);
   impulses_ = state.impulses;
+  packed_links_.forgetAll();  // the restored links' constants may be others
 }
 
 void SoftBodyStepSolver::forget(const btSoftBody& body) {
   coulomb_.erase(&body);
+  packed_links_.forget(body);
 }
 
 void SoftBodyStepSolver::predictMotion(btScalar solver_dt) {
@@ -82,6 +84,10 @@ void SoftBodyStepSolver::predictMotion(btScalar solver_dt) {
     for (int i = 0; i < body->m_nodes.size(); ++i) {
       registered.start_velocity[static_cast<std::size_t>(i)] = body->m_nodes[i].m_v;
     }
+  }
+  for (int i = 0; i < m_softBodySet.size(); ++i) {
+    // Bullet refreshes the links' constants in this prediction.
+    if (m_softBodySet[i]->m_bUpdateRtCst) packed_links_.forget(*m_softBodySet[i]);
   }
   rebuildReadableFaceTrees(m_softBodySet);
   btDefaultSoftBodySolver::predictMotion(solver_dt);
