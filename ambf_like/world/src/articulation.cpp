@@ -387,12 +387,7 @@ Articulation::State Articulation::state() const {
   for (int i = 0; i < multibody_->getNumLinks(); ++i) s.links.push_back(multibody_->getLink(i));
   const btScalar* velocities = multibody_->getVelocityVector();
   s.velocities.assign(velocities, velocities + 6 + multibody_->getNumDofs());
-  for (const auto& link : links_) {
-    const btCollisionObject& c = *link.collider;
-    s.colliders.push_back({c.getWorldTransform(), c.getInterpolationWorldTransform(),
-                           c.getInterpolationLinearVelocity(), c.getInterpolationAngularVelocity(),
-                           c.getActivationState(), c.getDeactivationTime(), c.getHitFraction()});
-  }
+  for (const auto& link : links_) s.colliders.push_back(motionOf(*link.collider));
   return s;
 }
 
@@ -409,17 +404,8 @@ void Articulation::restore(const State& s) {
           i, &s.velocities[static_cast<std::size_t>(6 + link.m_dofOffset)]);
     }
   }
-  for (std::size_t i = 0; i < links_.size(); ++i) {
-    btCollisionObject& c = *links_[i].collider;
-    const ColliderState& saved = s.colliders[i];
-    c.setWorldTransform(saved.pose);
-    c.setInterpolationWorldTransform(saved.interpolation_pose);
-    c.setInterpolationLinearVelocity(saved.interpolation_linear);
-    c.setInterpolationAngularVelocity(saved.interpolation_angular);
-    c.forceActivationState(saved.activation);
-    c.setDeactivationTime(saved.deactivation_time);
-    c.setHitFraction(saved.hit_fraction);
-  }
+  for (std::size_t i = 0; i < links_.size(); ++i)
+    restoreMotion(*links_[i].collider, s.colliders[i]);
   servo_ = s.servo;
   inverse_inertia_ = s.inverse_inertia;
   steps_since_refresh_ = s.steps_since_refresh;

@@ -16,6 +16,7 @@
 #include "ambf_like/dynamics/joint_space_servo.hpp"
 #include "ambf_like/rigid_body.hpp"
 #include "ambf_like/scene_spec.hpp"
+#include "collision_object_motion.hpp"
 
 class btMultiBody;
 class btMultiBodyDynamicsWorld;
@@ -78,20 +79,13 @@ class Articulation {
   /// Copies the links' poses and velocities to their bodies; refreshes the inverse inertia.
   void afterStep();
 
-  /// A link collider's motion, as the broadphase and the contacts read it.
-  struct ColliderState {
-    btTransform pose, interpolation_pose;
-    btVector3 interpolation_linear, interpolation_angular;
-    int activation = 0;
-    btScalar deactivation_time = 0, hit_fraction = 1;
-  };
   /// What the articulation's next steps depend on (World::saveState): Bullet's links (their
   /// coordinates and the frames cached from them), the joint velocities, the colliders' motion,
   /// the servo and the inverse inertia it uses.
   struct State {
     std::vector<btMultibodyLink> links;
     std::vector<btScalar> velocities;  ///< the base's six, then the joints'
-    std::vector<ColliderState> colliders;
+    std::vector<CollisionObjectMotion> colliders;
     JointSpaceServo servo;
     Eigen::MatrixXd inverse_inertia;
     int steps_since_refresh = 0;

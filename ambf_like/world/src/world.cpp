@@ -138,13 +138,11 @@ RigidBody& World::Impl::addBody(const BodySpec& spec, const ModelSpec& model, in
 
   auto groups = spec.collision.groups;
   std::sort(groups.begin(), groups.end());
-  auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name,
-                                                     model_index,
-                                                     model.ignore_inter_collision,
-                                                     false,
-                                                     groups,
-                                                     nullptr,
-                                                     {}});
+  auto& tag = tags.emplace_back();
+  tag.name = model.name_space + spec.name;
+  tag.model = model_index;
+  tag.model_ignores_inter_collision = model.ignore_inter_collision;
+  tag.groups = std::move(groups);
   rigid->setUserPointer(&tag);
   if (shape.soft_proxy != nullptr) {
     auto& proxy = soft_proxies.emplace_back(std::make_unique<btCollisionObject>());
@@ -243,13 +241,11 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
     where.key_path += "/mesh";
     const auto mesh = meshes.load(spec.mesh, where);
     auto soft = detail::makeSoftBody(spec, *mesh, bullet.softBodyInfo());
-    auto& tag = tags.emplace_back(detail::CollisionTag{model.name_space + spec.name,
-                                                       model_index,
-                                                       model.ignore_inter_collision,
-                                                       true,
-                                                       {},
-                                                       nullptr,
-                                                       {}});
+    auto& tag = tags.emplace_back();
+    tag.name = model.name_space + spec.name;
+    tag.model = model_index;
+    tag.model_ignores_inter_collision = model.ignore_inter_collision;
+    tag.soft = true;
     soft->setUserPointer(&tag);
     bullet.addSoftBody(*soft, coulomb ? std::optional<int>(spec.substeps) : std::nullopt,
                        spec.material);

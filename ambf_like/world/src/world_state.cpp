@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "ambf_like/dynamics/soft_body_step_solver.hpp"
+#include "collision_object_motion.hpp"
 #include "world_impl.hpp"
 
 namespace ambf_like {
@@ -20,10 +21,8 @@ namespace {
 
 /// A rigid body's motion.
 struct RigidState {
-  btTransform pose, interpolation_pose;
-  btVector3 linear, angular, interpolation_linear, interpolation_angular;
-  int activation = 0;
-  btScalar deactivation_time = 0, hit_fraction = 1;
+  detail::CollisionObjectMotion object;
+  btVector3 linear, angular;
 };
 
 /// A soft body's members its next steps depend on, named as Bullet names them (copyMembers
@@ -56,27 +55,14 @@ struct ManifoldState {
 };
 
 RigidState rigidStateOf(const btRigidBody& b) {
-  return {b.getWorldTransform(),
-          b.getInterpolationWorldTransform(),
-          b.getLinearVelocity(),
-          b.getAngularVelocity(),
-          b.getInterpolationLinearVelocity(),
-          b.getInterpolationAngularVelocity(),
-          b.getActivationState(),
-          b.getDeactivationTime(),
-          b.getHitFraction()};
+  return {detail::motionOf(b), b.getLinearVelocity(), b.getAngularVelocity()};
 }
 
 void restoreRigid(btRigidBody& b, const RigidState& s) {
-  b.setCenterOfMassTransform(s.pose);  // and the inertia tensor in the world frame
-  b.setInterpolationWorldTransform(s.interpolation_pose);
+  b.setCenterOfMassTransform(s.object.pose);  // and the inertia tensor in the world frame
+  detail::restoreMotion(b, s.object);
   b.setLinearVelocity(s.linear);
   b.setAngularVelocity(s.angular);
-  b.setInterpolationLinearVelocity(s.interpolation_linear);
-  b.setInterpolationAngularVelocity(s.interpolation_angular);
-  b.forceActivationState(s.activation);
-  b.setDeactivationTime(s.deactivation_time);
-  b.setHitFraction(s.hit_fraction);
   b.clearForces();
 }
 
