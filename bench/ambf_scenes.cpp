@@ -2,10 +2,15 @@
 // who brings an AMBF scene gets.
 
 #include <fmt/format.h>
+#include <spdlog/spdlog.h>
 
 #include <exception>
+#include <fstream>
 #include <functional>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,52 +29,90 @@ const char* kSection = "AMBF's scenes";
 /// Simulated seconds of each run, as AMBF's figures were taken: 20 s of 1 ms steps.
 constexpr int kSteps = 20000;
 
-/// One of AMBF's scenes: its world file and models (under AMBF's descriptions folder), whether
-/// the world file's floor is in it, and AMBF's own rate on them.
+/// One of AMBF's scenes: its id (for AMBF's rate on it), its world file and models (under AMBF's
+/// descriptions folder), and whether the world file's floor is in it.
 struct AmbfScene {
+  std::string id;
   std::string name;
   std::string world;
   std::vector<std::string> models;
   bool floor;
-  double ambf_steps_per_second;
 };
 
 /// AMBF's floor (world.yaml's environment), which ../shared/data does not ship.
 const std::filesystem::path kAmbfFloor =
     std::filesystem::path(AMBF_LIKE_EXAMPLES_DIR) / "ambf_checkered_floor.yaml";
 
-/// AMBF (branch ambf-2.0 built headless with its bundled Bullet at -O3 -march=native) on the same
-/// files on this host, from issue 50: its ratios ours/AMBF (medians of 3 alternating runs, both
-/// without soft-body sleep) applied to this bench's medians of 2026-11-27, the same day (57136,
-/// 310185, 35211, 13176 and 10870 steps/s). Not measured in this run.
 const std::vector<AmbfScene>& scenes() {
   static const std::vector<AmbfScene> all{
-      {"raven_world + blender-raven2 (zero gravity, idle)",
+      {"raven",
+       "raven_world + blender-raven2 (zero gravity, idle)",
        "world/raven_world.yaml",
        {"multi-bodies/robots/blender-raven2.yaml"},
-       false,
-       57136 / 1.05},
-      {"world + puzzles/peg_and_base, on AMBF's floor",
+       false},
+      {"peg_and_base",
+       "world + puzzles/peg_and_base, on AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/puzzles/peg_and_base.yaml"},
-       true,
-       310185 / 1.02},
-      {"world + puzzles/puzzle2, on AMBF's floor",
+       true},
+      {"puzzle2",
+       "world + puzzles/puzzle2, on AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/puzzles/puzzle2.yaml"},
-       true,
-       35211 / 1.07},
-      {"world + sb/cloth (386-node soft body), AMBF's floor",
+       true},
+      {"cloth",
+       "world + sb/cloth (386-node soft body), AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/sb/cloth.yaml"},
-       true,
-       13176 / 1.51},
+       true},
   };
   return all;
 }
 
-/// AMBF's rate on issue 26's Raven with the cloth on this host, as above.
-constexpr double kAmbfRavenWithCloth = 10870 / 1.49;
+/// AMBF's rate on each scene (by id; "raven_with_cloth" for issue 26's Raven with the cloth) on
+/// one host, and which host that is.
+struct AmbfRates {
+  std::map<std::string, double> steps_per_second;
+  std::string host;  ///< for the rows' notes
+};
+
+/// AMBF (branch ambf-2.0 built headless with its bundled Bullet at -O3 -march=native) on the same
+/// files on issue 50's host (an Intel Xeon, 2 cores): its ratios ours/AMBF (medians of 3
+/// alternating runs, both without soft-body sleep) applied to this bench's medians of 2026-11-27
+/// there. Not measured in this run.
+AmbfRates issue50Host() {
+  return {{{"raven", 57136 / 1.05},
+           {"peg_and_base", 310185 / 1.02},
+           {"puzzle2", 35211 / 1.07},
+           {"cloth", 13176 / 1.51},
+           {"raven_with_cloth", 10870 / 1.49}},
+          "issue 50's host, an Intel Xeon; not this run"};
+}
+
+/// AMBF's rates on this host when scripts/ambf-on-this-host.sh has written them into the build
+/// directory on a machine with this CPU; issue 50's host's otherwise. A file that cannot be read
+/// is an error naming it.
+AmbfRates ambfRates(const BenchSettings& s) {
+  const auto file = s.programs / "ambf_on_this_host.json";
+  if (!std::filesystem::exists(file)) return issue50Host();
+  try {
+    const auto j = nlohmann::json::parse(std::ifstream(file));
+    if (j.at("cpu").get<std::string>() != s.cpu) {
+      spdlog::warn("{} was written on a {}, not this {}: AMBF's rates of issue 50's host apply",
+                   file.string(), j.at("cpu").get<std::string>(), s.cpu);
+      return issue50Host();
+    }
+    AmbfRates here{{},
+                   fmt::format("this host, from scripts/ambf-on-this-host.sh of {}; not this run",
+                               j.at("date").get<std::string>())};
+    for (const auto& [id, rate] : issue50Host().steps_per_second) {
+      here.steps_per_second[id] = j.at("steps_per_second").at(id).get<double>();
+    }
+    return here;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": " + e.what());
+  }
+}
 
 /// The lead over AMBF every scene is held to (issue 50; its goal is 2).
 constexpr double kLeadOverAmbf = 1.5;
@@ -133,23 +176,23 @@ ambf_like::SceneSpec asAmbf(ambf_like::SceneSpec spec) {
   return spec;
 }
 
-/// The rows: AMBF's scenes stepped as AMBF steps them (no soft body ever sleeps there), then
-/// this simulator's own defaults and fast path beside them.
-std::vector<Run> runs(const std::filesystem::path& root) {
+/// The rows: AMBF's scenes stepped as AMBF steps them (no soft body ever sleeps there), held to
+/// 1.5x AMBF's `rates`, then this simulator's own defaults and fast path beside them.
+std::vector<Run> runs(const std::filesystem::path& root, const AmbfRates& rates) {
   std::vector<Run> all;
   for (const AmbfScene& scene : scenes()) {
-    all.push_back({scene.name, asAmbf(load(root, scene)),
-                   kLeadOverAmbf * scene.ambf_steps_per_second,
+    const double ambf = rates.steps_per_second.at(scene.id);
+    all.push_back({scene.name, asAmbf(load(root, scene)), kLeadOverAmbf * ambf,
                    fmt::format("20 s of 1 ms steps from load, no soft-body sleep; the bound is "
-                               "1.5x AMBF's {:.0f} on the same files on this host (issue 50, "
-                               "not this run)",
-                               scene.ambf_steps_per_second)});
+                               "1.5x AMBF's {:.0f} on the same files on {}",
+                               ambf, rates.host)});
   }
+  const double ambf = rates.steps_per_second.at("raven_with_cloth");
   all.push_back({"the Raven with the cloth (scaled 0.1) hanging at its left grasper",
-                 asAmbf(ravenWithCloth(root)), kLeadOverAmbf * kAmbfRavenWithCloth,
+                 asAmbf(ravenWithCloth(root)), kLeadOverAmbf * ambf,
                  fmt::format("composed from AMBF's files as docs/ambf-scenes.md says, no "
-                             "soft-body sleep; the bound is 1.5x AMBF's {:.0f} (issue 50)",
-                             kAmbfRavenWithCloth)});
+                             "soft-body sleep; the bound is 1.5x AMBF's {:.0f} on {}",
+                             ambf, rates.host)});
   const Run raven = all.front();
   const Run peg_and_base = all[1];
   const Run puzzle2 = all[2];
@@ -187,7 +230,7 @@ void measureAmbfScenes(const BenchSettings& s, Report& report) {
   }
   std::vector<Run> all;
   try {
-    all = runs(root);
+    all = runs(root, ambfRates(s));
   } catch (const std::exception& e) {
     report.skip(kSection, "AMBF's scenes", e.what());
     return;

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Builds everything, runs raven_bench (every section, 3 repetitions) and rewrites the results
 # with the date and the machine: every row in docs/benchmarks.md (bench:begin / bench:end
-# markers), the rows with a target in README.md (bench-headline:begin / end). Takes about 5 minutes on 2 cores. Extra flags go to raven_bench.
+# markers), the rows with a target in README.md (bench-headline:begin / end). Takes about 85
+# minutes on 2 cores, 70 of them the training section (both policies retrained from scratch).
+# Extra flags go to raven_bench.
 #   scripts/bench.sh [--repeat N] [--only loop ...]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
