@@ -32,14 +32,25 @@ const char* kSection = "AMBF's scenes";
 /// Simulated seconds of each run, as AMBF's figures were taken: 20 s of 1 ms steps.
 constexpr int kSteps = 20000;
 
-/// One of AMBF's scenes: its id (for AMBF's rate on it), its world file and models (under AMBF's
-/// descriptions folder), and whether the world file's floor is in it.
+/// Issue 50's comparison with AMBF (ambf-2.0 built headless with its bundled Bullet at -O3
+/// -march=native) on one scene, on that issue's host (an Intel Xeon, 2 cores): this bench's
+/// median there at commit a514963 (2026-11-27) and the ratio ours/AMBF the issue measured (3
+/// alternating runs, both without soft-body sleep). AMBF is not built here.
+struct Issue50 {
+  double ours;
+  double ratio;
+  /// AMBF's rate on issue 50's host.
+  double ambf() const { return ours / ratio; }
+};
+
+/// One of AMBF's scenes: its world file and models (under AMBF's descriptions folder), whether
+/// the world file's floor is in it, and issue 50's comparison on it.
 struct AmbfScene {
-  std::string id;
   std::string name;
   std::string world;
   std::vector<std::string> models;
   bool floor;
+  Issue50 issue50;
 };
 
 /// AMBF's floor (world.yaml's environment), which ../shared/data does not ship.
@@ -48,122 +59,68 @@ const std::filesystem::path kAmbfFloor =
 
 const std::vector<AmbfScene>& scenes() {
   static const std::vector<AmbfScene> all{
-      {"raven",
-       "raven_world + blender-raven2 (zero gravity, idle)",
+      {"raven_world + blender-raven2 (zero gravity, idle)",
        "world/raven_world.yaml",
        {"multi-bodies/robots/blender-raven2.yaml"},
-       false},
-      {"peg_and_base",
-       "world + puzzles/peg_and_base, on AMBF's floor",
+       false,
+       {57136, 1.05}},
+      {"world + puzzles/peg_and_base, on AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/puzzles/peg_and_base.yaml"},
-       true},
-      {"puzzle2",
-       "world + puzzles/puzzle2, on AMBF's floor",
+       true,
+       {310185, 1.02}},
+      {"world + puzzles/puzzle2, on AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/puzzles/puzzle2.yaml"},
-       true},
-      {"cloth",
-       "world + sb/cloth (386-node soft body), AMBF's floor",
+       true,
+       {35211, 1.07}},
+      {"world + sb/cloth (386-node soft body), AMBF's floor",
        "world/world.yaml",
        {"multi-bodies/sb/cloth.yaml"},
-       true},
+       true,
+       {13176, 1.51}},
   };
   return all;
 }
 
-/// The commit issue 50 compared with AMBF, built on this host: its bench, issue 50's ratio
-/// ours/AMBF on each scene (by id) and the start of that scene's row in its table.
-struct Baseline {
-  std::filesystem::path bench;
-  std::map<std::string, double> ratio;
-  std::map<std::string, std::string> row;
-};
-
-/// AMBF's rate on each scene (by id; "raven_with_cloth" for issue 26's Raven with the cloth) on
-/// one host, and which host that is; with a baseline, re-taken in every repetition instead.
-struct AmbfRates {
-  std::map<std::string, double> steps_per_second;
-  std::string host;  ///< for the rows' notes
-  std::optional<Baseline> baseline;
-};
-
-/// AMBF (branch ambf-2.0 built headless with its bundled Bullet at -O3 -march=native) on the same
-/// files on issue 50's host (an Intel Xeon, 2 cores): its ratios ours/AMBF (medians of 3
-/// alternating runs, both without soft-body sleep) applied to this bench's medians of 2026-11-27
-/// there. Not measured in this run.
-AmbfRates issue50Host() {
-  return {{{"raven", 57136 / 1.05},
-           {"peg_and_base", 310185 / 1.02},
-           {"puzzle2", 35211 / 1.07},
-           {"cloth", 13176 / 1.51},
-           {"raven_with_cloth", 10870 / 1.49}},
-          "issue 50's host, an Intel Xeon; not this run",
-          std::nullopt};
-}
-
-/// AMBF's rates on this host when scripts/ambf-on-this-host.sh has written them into the build
-/// directory on a machine with this CPU; issue 50's host's otherwise. A file that cannot be read
-/// is an error naming it.
-AmbfRates ambfRates(const BenchSettings& s) {
-  const auto file = s.programs / "ambf_on_this_host.json";
-  if (!std::filesystem::exists(file)) return issue50Host();
-  try {
-    const auto j = nlohmann::json::parse(std::ifstream(file));
-    if (j.at("cpu").get<std::string>() != s.cpu) {
-      spdlog::warn("{} was written on a {}, not this {}: AMBF's rates of issue 50's host apply",
-                   file.string(), j.at("cpu").get<std::string>(), s.cpu);
-      return issue50Host();
-    }
-    AmbfRates here{{},
-                   fmt::format("this host, from scripts/ambf-on-this-host.sh of {}; not this run",
-                               j.at("date").get<std::string>()),
-                   std::nullopt};
-    for (const auto& [id, rate] : issue50Host().steps_per_second) {
-      here.steps_per_second[id] = j.at("steps_per_second").at(id).get<double>();
-    }
-    if (j.contains("baseline")) {
-      const auto& b = j.at("baseline");
-      here.baseline = Baseline{b.at("bench").get<std::string>(),
-                               b.at("ratio").get<std::map<std::string, double>>(),
-                               b.at("row").get<std::map<std::string, std::string>>()};
-      if (!std::filesystem::exists(here.baseline->bench)) {
-        spdlog::warn("{}: the baseline's bench {} is gone; its rates of {} apply", file.string(),
-                     here.baseline->bench.string(), j.at("date").get<std::string>());
-        here.baseline.reset();
-      }
-    }
-    return here;
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(file.string() + ": " + e.what());
-  }
-}
+/// Issue 50's comparison on issue 26's Raven with the cloth.
+constexpr Issue50 kRavenWithClothIssue50{10870, 1.49};
 
 /// The lead over AMBF every scene is held to (issue 50; its goal is 2).
 constexpr double kLeadOverAmbf = 1.5;
 
-/// AMBF's rate on each scene here from one run of the baseline's AMBF section: its median over
-/// issue 50's ratio. Throws, naming the program, if it fails or lacks a row.
-std::map<std::string, double> ambfFromBaseline(const Baseline& baseline) {
+/// a514963's raven_bench built on this machine, when scripts/ambf-on-this-host.sh has named it
+/// in the build directory and it is still there. A file that cannot be read is an error naming it.
+std::optional<std::filesystem::path> baselineBench(const BenchSettings& s) {
+  const auto file = s.programs / "ambf_baseline.json";
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  std::filesystem::path bench;
+  try {
+    bench = nlohmann::json::parse(std::ifstream(file)).at("bench").get<std::string>();
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": " + e.what());
+  }
+  if (std::filesystem::exists(bench)) return bench;
+  spdlog::warn("{} names {}, which is gone: AMBF's rates of issue 50's host apply", file.string(),
+               bench.string());
+  return std::nullopt;
+}
+
+/// The medians of one run of `bench`'s AMBF section, by row name. Throws, naming the program, if
+/// it fails.
+std::map<std::string, double> baselineRates(const std::filesystem::path& bench) {
   harness::TempDir dir;
   const auto out = dir.path() / "baseline.json";
-  if (!outputLinesOf(
-          {baseline.bench.string(), "--only", "ambf", "--repeat", "1", "--out", out.string()},
-          600.0)) {
-    throw std::runtime_error(baseline.bench.string() + " failed");
+  if (!outputLinesOf({bench.string(), "--only", "ambf", "--repeat", "1", "--out", out.string()},
+                     600.0)) {
+    throw std::runtime_error(bench.string() + " failed");
   }
-  const auto rows = nlohmann::json::parse(std::ifstream(out)).at("rows");
-  std::map<std::string, double> ambf;
-  for (const auto& [id, start] : baseline.row) {
-    for (const auto& row : rows) {
-      if (row.at("item").get<std::string>().rfind(start, 0) == 0 && row.contains("median")) {
-        ambf[id] = row.at("median").get<double>() / baseline.ratio.at(id);
-        break;
-      }
-    }
-    if (!ambf.count(id)) throw std::runtime_error(baseline.bench.string() + " has no row " + start);
+  const auto results = nlohmann::json::parse(std::ifstream(out));
+  std::map<std::string, double> medians;
+  for (const auto& row : results.at("rows")) {
+    if (row.contains("median")) medians[row.at("item").get<std::string>()] = row.at("median");
   }
-  return ambf;
+  return medians;
 }
 
 /// `scene` loaded from `root`.
@@ -194,12 +151,12 @@ ambf_like::SceneSpec ravenWithCloth(const std::filesystem::path& root) {
   return spec;
 }
 
-/// One row of the section: a scene as loaded with its world settings, and the id of AMBF's rate
-/// it is held to 1.5x of, if it is.
+/// One row of the section: a scene as loaded with its world settings, and issue 50's comparison
+/// if it is held to 1.5x AMBF.
 struct Run {
   std::string name;
   ambf_like::SceneSpec spec;
-  std::optional<std::string> ambf_id;
+  std::optional<Issue50> issue50;
   std::string note;
 };
 
@@ -229,11 +186,11 @@ ambf_like::SceneSpec asAmbf(ambf_like::SceneSpec spec) {
 std::vector<Run> runs(const std::filesystem::path& root) {
   std::vector<Run> all;
   for (const AmbfScene& scene : scenes()) {
-    all.push_back({scene.name, asAmbf(load(root, scene)), scene.id,
+    all.push_back({scene.name, asAmbf(load(root, scene)), scene.issue50,
                    "20 s of 1 ms steps from load, no soft-body sleep"});
   }
   all.push_back({"the Raven with the cloth (scaled 0.1) hanging at its left grasper",
-                 asAmbf(ravenWithCloth(root)), "raven_with_cloth",
+                 asAmbf(ravenWithCloth(root)), kRavenWithClothIssue50,
                  "composed from AMBF's files as docs/ambf-scenes.md says, no soft-body sleep"});
   const Run raven = all.front();
   const Run peg_and_base = all[1];
@@ -271,48 +228,47 @@ void measureAmbfScenes(const BenchSettings& s, Report& report) {
     return;
   }
   std::vector<Run> all;
-  AmbfRates ambf;
+  std::optional<std::filesystem::path> baseline;
   try {
     all = runs(root);
-    ambf = ambfRates(s);
+    baseline = baselineBench(s);
   } catch (const std::exception& e) {
     report.skip(kSection, "AMBF's scenes", e.what());
     return;
   }
-  // Row by row within each repetition, so a slow spell of the machine hits all of them; the
-  // baseline's rows too, when it is there, so AMBF's rate here is taken beside ours, on the
-  // same CPU.
+  // Row by row within each repetition, so a slow spell of the machine hits all of them; and,
+  // with the baseline, its rows beside ours on the same CPU: AMBF's rate here is its rate over
+  // issue 50's ratio.
   const OneCpu pinned;
-  std::vector<std::vector<double>> rates(all.size());
-  std::map<std::string, std::vector<double>> ambf_here;
+  std::vector<std::vector<double>> rates(all.size()), ambf_here(all.size());
   for (int i = 0; i < s.repeat; ++i) {
     for (std::size_t k = 0; k < all.size(); ++k) rates[k].push_back(rate(all[k]));
-    if (!ambf.baseline) continue;
-    try {
-      for (const auto& [id, r] : ambfFromBaseline(*ambf.baseline)) ambf_here[id].push_back(r);
-    } catch (const std::exception& e) {
-      spdlog::warn("{}; AMBF's rates of {} apply", e.what(), ambf.host);
-      ambf.baseline.reset();
-      ambf_here.clear();
+    if (!baseline) continue;
+    const auto old = baselineRates(*baseline);
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      if (!all[k].issue50) continue;
+      const auto row = old.find(all[k].name);
+      if (row == old.end())
+        throw std::runtime_error(baseline->string() + " has no row " + all[k].name);
+      ambf_here[k].push_back(row->second / all[k].issue50->ratio);
     }
-  }
-  if (!ambf_here.empty()) {
-    for (auto& [id, r] : ambf_here) ambf.steps_per_second[id] = Spread::of(r).median;
-    ambf.host = fmt::format(
-        "this host: a514963's rate in this run, beside ours on CPU {}, over issue 50's ratio",
-        pinned.cpu());
   }
   for (std::size_t k = 0; k < all.size(); ++k) {
     const Run& run = all[k];
     const Spread value = Spread::of(rates[k]);
-    if (!run.ambf_id) {
+    if (!run.issue50) {
       report.add(measured(kSection, run.name, value, "steps/s", run.note));
       continue;
     }
-    const double rate_of_ambf = ambf.steps_per_second.at(*run.ambf_id);
-    report.add(atLeast(kSection, run.name, value, "steps/s", kLeadOverAmbf * rate_of_ambf,
+    const double ambf = baseline ? Spread::of(ambf_here[k]).median : run.issue50->ambf();
+    const std::string where =
+        baseline ? fmt::format("this host (a514963 beside us on CPU {}, over issue 50's ratio)",
+                               pinned.cpu())
+                 : "issue 50's host, an Intel Xeon (not this run; scripts/ambf-on-this-host.sh "
+                   "for this one)";
+    report.add(atLeast(kSection, run.name, value, "steps/s", kLeadOverAmbf * ambf,
                        fmt::format("{}; the bound is 1.5x AMBF's {:.0f} on the same files on {}",
-                                   run.note, rate_of_ambf, ambf.host)));
+                                   run.note, ambf, where)));
   }
 }
 

@@ -17,19 +17,18 @@
 
 namespace {
 
-/// The CPU's model name from /proc/cpuinfo ("unknown" without one).
-std::string cpuModel() {
-  std::ifstream info("/proc/cpuinfo");
-  for (std::string line; std::getline(info, line);) {
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  }
-  return "unknown";
-}
-
 /// Date, kernel, CPU model and core count, compiler: the "machine" of the results.
-nlohmann::json machine(const std::string& cpu) {
+nlohmann::json machine() {
   utsname u{};
   uname(&u);
+  std::string cpu = "unknown";
+  std::ifstream info("/proc/cpuinfo");
+  for (std::string line; std::getline(info, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      cpu = line.substr(line.find(':') + 2);
+      break;
+    }
+  }
   char date[32];
   const std::time_t now = std::time(nullptr);
   std::strftime(date, sizeof date, "%Y-%m-%d", std::gmtime(&now));
@@ -47,7 +46,6 @@ int main(int argc, char** argv) {
   settings.shared_data = RAVEN_SHARED_DATA_DIR;
   settings.dense_models = RAVEN_DENSE_MODELS_DIR;
   settings.programs = RAVEN_BUILD_DIR;
-  settings.cpu = cpuModel();
   std::string out = "bench_results.json", markdown;
   std::vector<std::string> only;
   using Section = void (*)(const bench::BenchSettings&, bench::Report&);
@@ -87,7 +85,7 @@ int main(int argc, char** argv) {
   }
   const auto table = report.markdown();
   std::fputs(table.c_str(), stdout);
-  std::ofstream(out) << report.json(machine(settings.cpu)).dump(2) << '\n';
+  std::ofstream(out) << report.json(machine()).dump(2) << '\n';
   if (!markdown.empty()) std::ofstream(markdown) << table;
   spdlog::info("wrote {}", out);
   return 0;

@@ -2,7 +2,6 @@
 // The benchmark's sections; each measures one part of the pipeline and adds rows to a Report.
 
 #include <filesystem>
-#include <string>
 
 #include "report.hpp"
 
@@ -15,7 +14,6 @@ struct BenchSettings {
   std::filesystem::path shared_data;   ///< ../shared/data (may be absent)
   std::filesystem::path dense_models;  ///< the build's dense-collision models
   std::filesystem::path programs;      ///< the build directory (main job, twin node, micro bench)
-  std::string cpu;                     ///< this machine's CPU model, as /proc/cpuinfo names it
 };
 
 /// Dynamic loop frequency: the moving peg scene (simplified vs dense collision, free-running and
