@@ -115,11 +115,13 @@ void measureLoopFrequency(const BenchSettings& s, Report& report) {
                         free_dense, "steps/s", "the same segment; 1 run"));
     report.add(measured(kSection, "simplified / dense ratio",
                         Spread::of({free_simplified.median / free_dense.median}), "x", "medians"));
-    report.add(
-        atLeast(kSection, "peg scene, dense, paced at 1 kHz",
-                Spread::of(wholeRates(pegScene(
-                    {.launch = dense, .clock = bridge::ClockKind::Wall, .seconds = 10.0}, 1))),
-                "steps/s", 990, "first 10 s on the wall clock"));
+    // The paper's "before" (reference/paper.md: the visual mesh as collision dropped AMBF's
+    // loop from 200 Hz to about 40 Hz on contact): a report beside the simplified row's target.
+    report.add(measured(
+        kSection, "peg scene, dense, paced at 1 kHz",
+        Spread::of(wholeRates(
+            pegScene({.launch = dense, .clock = bridge::ClockKind::Wall, .seconds = 10.0}, 1))),
+        "steps/s", "first 10 s on the wall clock; the paper's dense collision, not held to 1 kHz"));
   } else {
     report.skip(kSection, "peg scene, dense collision", "not built: " + dense.string());
   }

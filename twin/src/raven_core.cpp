@@ -113,6 +113,7 @@ ArmJoints RavenCore::servoBase(Arm arm) const {
 std::string RavenCore::clampToLimits(ArmJoints& q) const {
   const ArmJoints before = q;
   q = q.cwiseMax(profile_.limits.low).cwiseMin(profile_.limits.high);
+  if (q == before) return {};  // every command in range: no stream built on the command path
   std::ostringstream note;
   for (int i = 0; i < kJointCount; ++i) {
     if (q(i) != before(i)) {
