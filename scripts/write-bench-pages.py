@@ -66,7 +66,7 @@ def main(root, results, table):
         older = [(c, [r for r in rows if has_target(r)]) for c, rows in tables[1:]]
         older = [(c, rows) for c, rows in older if rows]
         rows = [r for r in fresh if has_target(r)] + [r for _, kept in older for r in kept]
-        notes = [f"Rows of {', '.join(sorted({section(r) for r in kept}))}: "
+        notes = [f"- Rows of {', '.join(sorted({section(r) for r in kept}))}: "
                  + c.removesuffix(KEPT).replace("Measured", "measured", 1) for c, kept in older]
         return "\n".join([caption, "", *header, *rows] + (["", *notes] if notes else []))
 
