@@ -148,6 +148,9 @@ bool leftArmQuiet(const std::vector<StampingPlatform::Stamp>& stamps, int count)
   return still == count;
 }
 
+/// How long one push waits for its command; a push that never arrives counts as this long.
+constexpr auto kWait = std::chrono::milliseconds(500);
+
 /// One run of pushes: each push's latency, and how many never reached the arms.
 struct LatencyRun {
   std::vector<double> latency_ms;
@@ -178,7 +181,6 @@ LatencyRun latencyRun(harness::VirtualGamepad& device, double rate, int man_step
   });
 
   const auto poll = std::chrono::microseconds(100);
-  constexpr auto kWait = std::chrono::milliseconds(500);  // for one push's command
   std::mt19937 random(1);
   std::uniform_int_distribution<int> phase_us(0, static_cast<int>(2e6 * man_steps / rate));
   LatencyRun run;
@@ -233,7 +235,8 @@ void inputLatency(double rate, int man_steps, int pushes, int repeat, Report& re
       "{} runs of {} pushes from idle; SDL polled every {} us; the pad read after every command "
       "period (iterations of at least {} periods){}",
       repeat, pushes, controller::SdlGamepad::kPollPeriod.count(), man_steps,
-      missed ? fmt::format(", {} never arrived (each counted as 500 ms)", missed) : std::string());
+      missed ? fmt::format(", {} never arrived (each counted as {} ms)", missed, kWait.count())
+             : std::string());
   // Issue 50's 2 ms, except where the command grid itself forbids it: a command can change only
   // at a period's start, so an event waits up to one period plus one SDL poll (2.5 ms at 500 Hz).
   const double poll_ms = 1e-3 * static_cast<double>(controller::SdlGamepad::kPollPeriod.count());

@@ -22,7 +22,8 @@ def has_target(row):
 
 
 def groups(block):
-    """(caption, rows) for each table of a block: each table follows its "Measured" line."""
+    """(caption, rows) for each table of a block: each table follows its "Measured" line (read
+    without the suffix a kept table's line carries)."""
     found = []
     for line in block.split("\n"):
         if line.startswith("Measured "):
@@ -48,36 +49,32 @@ def main(root, results, table):
     header, fresh = lines[:2], lines[2:]
     run = {section(row) for row in fresh}
 
-    page = f"{root}/docs/benchmarks.md"
-    text = open(page).read()
-    start, stop = between(text, "bench", page)
-    tables = [(caption, fresh)]
-    for old_caption, rows in groups(text[start:stop]):
-        kept = [row for row in rows if section(row) not in run]
-        if kept:
-            tables.append((old_caption + KEPT, kept))
+    page, readme = f"{root}/docs/benchmarks.md", f"{root}/README.md"
+    texts = {path: open(path).read() for path in (page, readme)}
+    # Both pages' markers are checked before either page is written.
+    spans = {page: between(texts[page], "bench", page),
+             readme: between(texts[readme], "bench-headline", readme)}
+    start, stop = spans[page]
+    older = [(old_caption, kept) for old_caption, rows in groups(texts[page][start:stop])
+             if (kept := [row for row in rows if section(row) not in run])]
 
     def block():
         """Every table under its own line (docs/benchmarks.md)."""
+        tables = [(caption, fresh)] + [(c + KEPT, rows) for c, rows in older]
         return "\n\n".join("\n".join([c, "", *header, *rows]) for c, rows in tables)
 
     def headline():
         """One table of the rows with a target, the older ones' line under it (README.md)."""
-        older = [(c, [r for r in rows if has_target(r)]) for c, rows in tables[1:]]
-        older = [(c, rows) for c, rows in older if rows]
-        rows = [r for r in fresh if has_target(r)] + [r for _, kept in older for r in kept]
+        targets = [(c, kept) for c, rows in older if (kept := [r for r in rows if has_target(r)])]
+        rows = [r for r in fresh if has_target(r)] + [r for _, kept in targets for r in kept]
         notes = [f"- Rows of {', '.join(sorted({section(r) for r in kept}))}: "
-                 + c.removesuffix(KEPT).replace("Measured", "measured", 1) for c, kept in older]
+                 + c.replace("Measured", "measured", 1) for c, kept in targets]
         return "\n".join([caption, "", *header, *rows] + (["", *notes] if notes else []))
 
-    # Both pages' markers are checked before either page is written.
-    readme = f"{root}/README.md"
-    pages = [(path, open(path).read(), marker, write) for path, marker, write in
-             ((page, "bench", block), (readme, "bench-headline", headline))]
-    edits = [(path, text, between(text, marker, path), write) for path, text, marker, write in pages]
-    for path, text, (start, stop), write in edits:
-        open(path, "w").write(text[:start] + write() + "\n" + text[stop:])
-    kept = sorted({section(r) for _, rows in tables[1:] for r in rows})
+    for path, write in ((page, block), (readme, headline)):
+        start, stop = spans[path]
+        open(path, "w").write(texts[path][:start] + write() + "\n" + texts[path][stop:])
+    kept = sorted({section(r) for _, rows in older for r in rows})
     print(f"docs/benchmarks.md and README.md: results of {m['date']} written"
           + (f"; earlier rows kept for {', '.join(kept)}" if kept else ""))
 
