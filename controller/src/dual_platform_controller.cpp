@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -51,34 +52,59 @@ void DualPlatformController::clamp(ArmPair& joints, IterationReport& report) con
   }
 }
 
-IterationReport DualPlatformController::execute(const ArmPair& next, int most,
-                                                const std::function<bool()>& stop) {
-  const InterpolationPlan plan = planMove(commanded_, next, options_.caps, period());
-  const ArmPair increment = plan.increment();
-  IterationReport report;
-  report.steps = std::min(plan.steps, most);
-  for (int k = 1; k <= report.steps; ++k) {
-    const ArmPair positions = plan.at(k);
-    for (const PlatformSlot& slot : platforms_) {
-      for (Arm arm : raven::kArms) {
-        const auto a = static_cast<std::size_t>(raven::index(arm));
-        const bridge::PlatformCommand command =
-            slot.style == CommandStyle::ServoJr
-                ? bridge::PlatformCommand{bridge::ServoJr{arm, increment[a]}}
-                : bridge::PlatformCommand{bridge::ServoJp{arm, positions[a]}};
-        const bridge::CommandResult result = slot.platform->send(command);
-        if (!result) {
-          if (report.refused++ == 0) report.refusal = slot.name + ": " + result.note;
-        }
+void DualPlatformController::send(const InterpolationPlan& plan, int k, IterationReport& report) {
+  const ArmPair positions = plan.at(k);
+  const ArmPair increment = plan.increment(k);
+  for (const PlatformSlot& slot : platforms_) {
+    for (Arm arm : raven::kArms) {
+      const auto a = static_cast<std::size_t>(raven::index(arm));
+      const bridge::PlatformCommand command =
+          slot.style == CommandStyle::ServoJr
+              ? bridge::PlatformCommand{bridge::ServoJr{arm, increment[a]}}
+              : bridge::PlatformCommand{bridge::ServoJp{arm, positions[a]}};
+      const bridge::CommandResult result = slot.platform->send(command);
+      if (!result) {
+        if (report.refused++ == 0) report.refusal = slot.name + ": " + result.note;
       }
     }
-    for (const PlatformSlot& slot : platforms_) slot.platform->advance(period());
-    if (k < report.steps && stop && stop()) {
+  }
+  since_command_ = 0.0;
+}
+
+void DualPlatformController::advanceAll(double seconds) {
+  for (const PlatformSlot& slot : platforms_) slot.platform->advance(seconds);
+  since_command_ += seconds;
+}
+
+bool DualPlatformController::waitPeriod(const std::function<bool()>& stop, bool final) {
+  const int cycles = stop ? cyclesPerPeriod() : 1;
+  for (int c = 1; c <= cycles; ++c) {
+    advanceAll(period() / cycles);
+    if (c == cycles) since_command_ = period();  // (the slices' sum, exactly)
+    if ((c < cycles || !final) && stop && stop()) return true;
+  }
+  return false;
+}
+
+int DualPlatformController::cyclesPerPeriod() const {
+  return std::max(1, static_cast<int>(std::lround(period() / raven::kControlCycle)));
+}
+
+IterationReport DualPlatformController::execute(const ArmPair& next, int most,
+                                                const std::function<bool()>& stop) {
+  const double lead = std::min(since_command_ / period(), 1.0);
+  const InterpolationPlan plan = planMove(commanded_, next, options_.caps, period(), lead);
+  IterationReport report;
+  report.capped = plan.steps > options_.caps.min_steps;
+  report.steps = std::min(plan.commands(), most);
+  for (int k = 1; k <= report.steps; ++k) {
+    send(plan, k, report);
+    if (waitPeriod(stop, k == report.steps)) {
+      report.cut_short = k < plan.commands();
       report.steps = k;
-      report.cut_short = true;
     }
   }
-  commanded_ = report.steps == plan.steps ? next : plan.at(report.steps);
+  commanded_ = report.steps == plan.commands() ? next : plan.at(report.steps);
   return report;
 }
 
@@ -110,7 +136,7 @@ IterationReport DualPlatformController::manual(const recording::GamepadState& pa
   if (report.cut_short) mapping_.reset(commanded_);
   report.clamped = mapped.clamped || clamp_report.clamped;
   if (options_.iteration_overhead > 0.0) {
-    for (const PlatformSlot& slot : platforms_) slot.platform->advance(options_.iteration_overhead);
+    advanceAll(options_.iteration_overhead);
   }
   return report;
 }
@@ -166,7 +192,7 @@ IterationReport DualPlatformController::moveFor(const ArmPair& joints, int steps
 }
 
 void DualPlatformController::idle() {
-  for (const PlatformSlot& slot : platforms_) slot.platform->advance(period());
+  advanceAll(period());
 }
 
 double DualPlatformController::divergence() const {

@@ -3,22 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/wrap_angle.hpp"
+
 namespace raven {
 
 namespace {
 
+using common::wrapToPi;
 using Eigen::AngleAxisd;
 using Eigen::Isometry3d;
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
-double wrap(double angle) {
-  return std::remainder(angle, 2.0 * M_PI);
-}
-
 /// `angle` moved by whole turns to lie within pi of `near`.
 double nearestTurn(double angle, double near) {
-  return near + wrap(angle - near);
+  return near + wrapToPi(angle - near);
 }
 
 Matrix3d rotX(double a) {
@@ -52,8 +51,9 @@ ArmKinematics ArmKinematics::of(const PlatformProfile& profile, Arm arm) {
 DhValues ArmKinematics::toDh(const ArmJoints& q) const {
   const auto& o = c_.theta_offset;
   DhValues dh;
-  dh << wrap(q(kShoulder) + o[0]), wrap(q(kElbow) + o[1]), q(kInsertion), wrap(q(kRoll) + o[3]),
-      wrap(q(kWrist) + o[4]), wrap(c_.grasp_scale * (q(kJaw1) - q(kJaw2)));
+  dh << wrapToPi(q(kShoulder) + o[0]), wrapToPi(q(kElbow) + o[1]), q(kInsertion),
+      wrapToPi(q(kRoll) + o[3]), wrapToPi(q(kWrist) + o[4]),
+      wrapToPi(c_.grasp_scale * (q(kJaw1) - q(kJaw2)));
   return dh;
 }
 
@@ -122,7 +122,7 @@ std::vector<std::array<double, 2>> ArmKinematics::aimShaft(const Vector3d& axis)
     if (!out.empty() && std::abs(elbow - out.front()[1]) < 1e-15) break;
     const double xp = s2 * std::sin(elbow);
     const double yp = -c1 * s2 * std::cos(elbow) - s1 * c2;
-    out.push_back({wrap(std::atan2(w.y(), w.x()) - std::atan2(yp, xp)), elbow});
+    out.push_back({wrapToPi(std::atan2(w.y(), w.x()) - std::atan2(yp, xp)), elbow});
   }
   return out;
 }
@@ -158,9 +158,9 @@ std::vector<ArmJoints> ArmKinematics::inverseCandidates(const Isometry3d& tool, 
   for (double root : {(-qb + std::sqrt(disc)) / (2 * qa), (-qb - std::sqrt(disc)) / (2 * qa)}) {
     if (std::abs(root) > 1.0 + 1e-9) continue;
     const double psi = std::acos(std::clamp(root, -1.0, 1.0));
-    for (double t6 : {wrap(psi - beta), wrap(-psi - beta)}) {
+    for (double t6 : {wrapToPi(psi - beta), wrapToPi(-psi - beta)}) {
       const bool seen = std::any_of(t6s.begin(), t6s.end(),
-                                    [&](double s) { return std::abs(wrap(s - t6)) < 1e-12; });
+                                    [&](double s) { return std::abs(wrapToPi(s - t6)) < 1e-12; });
       if (!seen) t6s.push_back(t6);
     }
   }
@@ -193,7 +193,7 @@ std::vector<ArmJoints> ArmKinematics::inverseCandidates(const Isometry3d& tool, 
           t4 = ca4 * (combined - t5);
         }
         DhValues dh;
-        dh << t1, t2, r - c_.d4, wrap(t4), wrap(t5), t6;
+        dh << t1, t2, r - c_.d4, wrapToPi(t4), wrapToPi(t5), t6;
         out.push_back(fromDh(dh, grasp, near));
       }
     }

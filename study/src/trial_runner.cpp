@@ -74,7 +74,6 @@ TrialRun runTrial(const TrialSettings& s) {
 
   EventLog events(s.dir / "events.csv");
   bool first = true, clamped = false, capped = false;
-  const int min_steps = s.condition.man_steps;
   controller::SessionOptions options;
   options.out_dir = s.dir;
   options.record_name = "trial";
@@ -86,10 +85,9 @@ TrialRun runTrial(const TrialSettings& s) {
   options.on_iteration = [&](const controller::IterationReport& r) {
     const double t = twin.now() - start;
     if (r.clamped && !clamped) events.add(t, "joint_limit");
-    const bool stretched = r.steps > min_steps;
-    if (stretched && !capped) events.add(t, "velocity_cap");
+    if (r.capped && !capped) events.add(t, "velocity_cap");
     clamped = r.clamped;
-    capped = stretched;
+    capped = r.capped;
   };
   controller::ControllerSession session(control, {s.pad, {}, std::nullopt}, options);
 

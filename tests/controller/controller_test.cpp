@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <optional>
 #include <random>
 
 #include "controller/dual_platform_controller.hpp"
@@ -22,7 +24,10 @@ class CommandLog final : public bridge::RavenPlatform {
  public:
   explicit CommandLog(bridge::RavenPlatform& inner) : inner_(inner) {}
   bridge::CommandResult send(const bridge::PlatformCommand& c) override {
-    if (const auto* jr = std::get_if<bridge::ServoJr>(&c)) servo_jr.push_back(*jr);
+    if (const auto* jr = std::get_if<bridge::ServoJr>(&c)) {
+      servo_jr.push_back(*jr);
+      sent_at.push_back(inner_.now());
+    }
     return inner_.send(c);
   }
   bridge::OperatingStatus operatingStatus() const override { return inner_.operatingStatus(); }
@@ -38,6 +43,7 @@ class CommandLog final : public bridge::RavenPlatform {
   void advance(double s) override { inner_.advance(s); }
 
   std::vector<bridge::ServoJr> servo_jr;
+  std::vector<double> sent_at;  ///< each servo_jr's platform time
 
  private:
   bridge::RavenPlatform& inner_;
@@ -53,9 +59,33 @@ TEST(VelocityCap, AtLeastTenStepsMoreWhenAJointWouldExceedItsCap) {
   const auto plan = controller::planMove(start, next, caps, 0.002);
   EXPECT_EQ(plan.steps, 51);
   EXPECT_EQ(plan.at(plan.steps)[1], next[1]);
-  EXPECT_LE(plan.increment()[1](raven::kInsertion), 4e-5);
+  EXPECT_LE(plan.increment(1)[1](raven::kInsertion), 4e-5);
   // At 1 kHz the same speed caps give twice the steps.
   EXPECT_EQ(controller::planMove(start, next, caps, 0.001).steps, 101);
+}
+
+// A move whose first command comes half a period after the previous one: that command carries
+// half a step, one more command ends the move, and the commands add up to the move.
+TEST(VelocityCap, AShortFirstCommandCarriesItsShareAndOneMoreFinishes) {
+  const controller::VelocityCaps caps;
+  const ArmPair start{ArmJoints::Zero(), ArmJoints::Zero()};
+  ArmPair next = start;
+  next[0](raven::kInsertion) = 0.002;
+  const auto whole = controller::planMove(start, next, caps, 0.002);
+  const auto plan = controller::planMove(start, next, caps, 0.002, 0.5);
+  EXPECT_EQ(plan.steps, whole.steps);
+  EXPECT_EQ(plan.commands(), whole.commands() + 1);
+  EXPECT_DOUBLE_EQ(plan.increment(1)[0](raven::kInsertion),
+                   0.5 * whole.increment(1)[0](raven::kInsertion));
+  EXPECT_DOUBLE_EQ(plan.increment(2)[0](raven::kInsertion),
+                   whole.increment(1)[0](raven::kInsertion));
+  EXPECT_DOUBLE_EQ(plan.increment(plan.commands())[0](raven::kInsertion),
+                   0.5 * whole.increment(1)[0](raven::kInsertion));
+  ArmJoints sum = ArmJoints::Zero();
+  for (int k = 1; k <= plan.commands(); ++k) sum += plan.increment(k)[0];
+  EXPECT_NEAR(sum(raven::kInsertion), 0.002, 1e-15);
+  EXPECT_EQ(plan.at(plan.commands())[0], next[0]);
+  EXPECT_THROW(controller::planMove(start, next, caps, 0.002, 0.0), std::invalid_argument);
 }
 
 TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
@@ -93,14 +123,35 @@ TEST(ControllerProperty, NoCommandStreamExceedsACapOrALimitWhateverThePadDoes) {
   EXPECT_GT(clamped, 0u) << "the adversarial pads should have hit a limit";
 }
 
-// The live pad is read after every command step: a new reading ends the iteration there, so the
-// next command already follows it; a steady pad runs the same whole iterations as without it.
+/// Every servo_jr in `log` moved no joint faster than the caps over the time since that arm's
+/// previous command (a period, or one robot cycle after a pad change cut a period short).
+void expectWithinCapsOverTheirOwnTime(const CommandLog& log) {
+  const raven::ArmJoints per_second = controller::VelocityCaps{}.per_second;
+  std::array<std::optional<double>, 2> previous;
+  for (std::size_t i = 0; i < log.servo_jr.size(); ++i) {
+    auto& last = previous[static_cast<std::size_t>(raven::index(log.servo_jr[i].arm))];
+    if (last) {
+      const ArmJoints cap = per_second * (log.sent_at[i] - *last);
+      ASSERT_TRUE(
+          (log.servo_jr[i].increment.cwiseAbs().array() <= cap.array() * (1.0 + 1e-9) + 1e-15)
+              .all())
+          << "command " << i << " at " << log.sent_at[i] << " s, " << log.sent_at[i] - *last
+          << " s after the previous: " << log.servo_jr[i].increment.transpose();
+    }
+    last = log.sent_at[i];
+  }
+}
+
+// The live pad is read after every robot cycle: a new reading ends the iteration there, even
+// mid-period, so the next command already follows it; a steady pad runs the same whole
+// iterations as without it.
 TEST(LivePad, ANewReadingEndsTheIterationAndTheNextCommandFollowsIt) {
   auto steady_twin = test_support::readyTwin();
   auto live_twin = test_support::readyTwin();
   CommandLog steady_log(*steady_twin), live_log(*live_twin);
   controller::DualPlatformController steady({{"twin", &steady_log}}, {});
   controller::DualPlatformController live({{"twin", &live_log}}, {});
+  ASSERT_DOUBLE_EQ(live.period(), 0.002) << "the paper's 500 Hz: two robot cycles a period";
   GamepadState idle;
   GamepadState pushed;
   pushed.left_x = 1.0;
@@ -108,33 +159,73 @@ TEST(LivePad, ANewReadingEndsTheIterationAndTheNextCommandFollowsIt) {
   const controller::LivePad same = [&] { return std::optional<GamepadState>(idle); };
   for (int i = 0; i < 3; ++i) {
     const auto whole = steady.manual(idle);
-    const auto read_every_step = live.manual(idle, same);
-    EXPECT_EQ(read_every_step.steps, whole.steps);
-    EXPECT_FALSE(read_every_step.cut_short);
+    const auto read_every_cycle = live.manual(idle, same);
+    EXPECT_EQ(read_every_cycle.steps, whole.steps);
+    EXPECT_FALSE(read_every_cycle.cut_short);
   }
   ASSERT_EQ(live_log.servo_jr.size(), steady_log.servo_jr.size());
   for (std::size_t i = 0; i < live_log.servo_jr.size(); ++i) {
     EXPECT_EQ(live_log.servo_jr[i].arm, steady_log.servo_jr[i].arm) << i;
     EXPECT_EQ(live_log.servo_jr[i].increment, steady_log.servo_jr[i].increment) << i;
   }
-  // The stick is pushed after the third step of an idle iteration of ten.
+  EXPECT_DOUBLE_EQ(live_twin->now(), steady_twin->now());
+  // The stick is pushed before the third read of an idle iteration: one cycle into its
+  // second period.
   int reads = 0;
-  const controller::LivePad pushed_after_three = [&] {
+  const controller::LivePad pushed_at_third_read = [&] {
     return std::optional<GamepadState>(++reads >= 3 ? pushed : idle);
   };
-  const auto cut = live.manual(idle, pushed_after_three);
+  const double cut_from = live_twin->now();
+  const auto cut = live.manual(idle, pushed_at_third_read);
   EXPECT_TRUE(cut.cut_short);
-  EXPECT_EQ(cut.steps, 3);
+  EXPECT_EQ(cut.steps, 2);
+  EXPECT_NEAR(live_twin->now() - cut_from, 0.003, 1e-12) << "a period and one cycle";
   const std::size_t before = live_log.servo_jr.size();
   const auto next = live.manual(pushed, [&] { return std::optional<GamepadState>(pushed); });
-  EXPECT_GE(next.steps, 10) << "a steady pad's iteration runs whole, under C_V";
-  ASSERT_GT(live_log.servo_jr.size(), before);
-  EXPECT_FALSE(live_log.servo_jr[before].increment.isZero())
-      << "the first command after the push moves";
-  // An unplugged pad ends the iteration too.
+  EXPECT_GE(next.steps, 11) << "at least ten whole steps under C_V, the first in two halves";
+  ASSERT_EQ(live_log.servo_jr.size(), before + 2 * static_cast<std::size_t>(next.steps));
+  // (each command: the left arm's, then the right arm's)
+  const ArmJoints first = live_log.servo_jr[before].increment;
+  const ArmJoints whole = live_log.servo_jr[before + 2].increment;
+  const ArmJoints last = live_log.servo_jr[live_log.servo_jr.size() - 2].increment;
+  EXPECT_FALSE(first.isZero()) << "the first command after the push moves";
+  EXPECT_TRUE(first.isApprox(0.5 * whole)) << "one cycle after the last: half a step\n"
+                                           << first.transpose() << "\n"
+                                           << whole.transpose();
+  EXPECT_TRUE(last.isApprox(0.5 * whole)) << "and the other half ends the move";
+  expectWithinCapsOverTheirOwnTime(live_log);
+  // An unplugged pad ends the iteration too, one cycle in.
   const auto unplugged = live.manual(pushed, [] { return std::optional<GamepadState>(); });
   EXPECT_TRUE(unplugged.cut_short);
   EXPECT_EQ(unplugged.steps, 1);
+}
+
+// Pads that change at random cycles, at the paper's 500 Hz and at 1 kHz, saturated and
+// slammed: no command moves a joint faster than C_V over the time since the one before.
+TEST(ControllerProperty, ALivePadChangingMidPeriodNeverExceedsTheCaps) {
+  for (double rate : {500.0, 1000.0}) {
+    auto twin = test_support::readyTwin();
+    CommandLog log(*twin);
+    controller::ControllerOptions options;
+    options.rate = rate;
+    controller::DualPlatformController control({{"twin", &log}}, options);
+    std::mt19937_64 random(11);
+    std::bernoulli_distribution changes(0.2);
+    GamepadState pad = test_support::randomPad(random, true);
+    int cut = 0;
+    const controller::LivePad live = [&] {
+      if (changes(random)) pad = test_support::randomPad(random, true);
+      return std::optional<GamepadState>(pad);
+    };
+    for (int i = 0; i < 300; ++i) {
+      const GamepadState reading = pad;  // (the live pad moves on while the iteration runs)
+      const auto report = control.manual(reading, live);
+      ASSERT_EQ(report.refused, 0u) << report.refusal;
+      cut += report.cut_short;
+    }
+    EXPECT_GT(cut, 100) << "most iterations were cut short, at " << rate << " Hz";
+    expectWithinCapsOverTheirOwnTime(log);
+  }
 }
 
 TEST(ControllerProperty, UnderM1NoCommandMovesTheOtherArm) {

@@ -5,14 +5,11 @@
 #include <stdexcept>
 
 #include "ambf_like/dynamics/joint_dynamics.hpp"
+#include "common/wrap_angle.hpp"
 
 namespace ambf_like {
 
 namespace {
-
-double wrapToPi(double angle) {
-  return std::remainder(angle, 2.0 * M_PI);
-}
 
 const char* typeName(JointType type) {
   switch (type) {
@@ -60,7 +57,7 @@ bool Joint::isControllable() const {
 void Joint::updateCoordinate() {
   const double raw = dynamics_->coordinate();
   if (spec_.isAngular()) {
-    position_ += wrapToPi(raw - last_raw_);
+    position_ += common::wrapToPi(raw - last_raw_);
   } else {
     position_ = raw;
   }

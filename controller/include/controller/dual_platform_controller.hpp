@@ -44,8 +44,9 @@ struct ControllerOptions {
 
 /// What one iteration did.
 struct IterationReport {
-  int steps = 0;            ///< command steps (each 1/rate s)
+  int steps = 0;            ///< commands sent (each followed by 1/rate s, or less when cut)
   bool cut_short = false;   ///< a new pad reading ended a manual iteration early
+  bool capped = false;      ///< the velocity caps stretched the move past man_steps
   bool clamped = false;     ///< a target hit a joint limit (the pad rumbles)
   std::size_t refused = 0;  ///< commands a platform refused
   std::string refusal;      ///< the first refusal's reason
@@ -75,9 +76,11 @@ class DualPlatformController {
   IterationReport home();
   /// O2 / O3: one manual-loop iteration from a pad reading: the mapping's move, split under
   /// the caps into at least man_steps command steps. With `live`, the pad is read again after
-  /// every step, and a reading that differs from `pad` ends the iteration there (the targets
-  /// where its interpolation got to): the next iteration, one period later, starts from it.
-  /// A steady pad runs whole iterations as without `live`.
+  /// every robot cycle (1 ms; twice a period at 500 Hz), and a reading that differs from `pad`
+  /// ends the iteration there (the targets where its interpolation got to): the next
+  /// iteration starts at once from it, its first command carrying only the share of a step
+  /// that the time since the last command allows. A steady pad runs whole iterations as
+  /// without `live`.
   IterationReport manual(const recording::GamepadState& pad, const LivePad& live = {});
   /// O4: one recorded joint row, reached under the caps; then the platforms' clocks run on to
   /// `due` seconds after the replay began (the recording's own timing).
@@ -110,21 +113,32 @@ class DualPlatformController {
     GamepadMapping mapping;
     long dance_count;
     double mode_start;
+    double since_command;
   };
-  State state() const { return {commanded_, mapping_, dance_count_, mode_start_}; }
+  State state() const { return {commanded_, mapping_, dance_count_, mode_start_, since_command_}; }
   void restore(const State& state) {
     commanded_ = state.commanded;
     mapping_ = state.mapping;
     dance_count_ = state.dance_count;
     mode_start_ = state.mode_start;
+    since_command_ = state.since_command;
   }
 
  private:
   /// C_V: moves every platform from the current targets to `next` in capped steps, at most
   /// `most` of them, ending early once `stop` says so after a step (the targets are then where
-  /// the interpolation got to).
+  /// the interpolation got to). A stop mid-period ends the period there.
   IterationReport execute(const ArmPair& next, int most = std::numeric_limits<int>::max(),
                           const std::function<bool()>& stop = {});
+  /// Sends command k of `plan` to every platform.
+  void send(const InterpolationPlan& plan, int k, IterationReport& report);
+  /// One command period on every platform; with `stop`, in robot cycles, asking it after each
+  /// (but the last of a `final` period): true when it said stop, the period cut there.
+  bool waitPeriod(const std::function<bool()>& stop, bool final);
+  /// Robot cycles in one command period (at least one).
+  int cyclesPerPeriod() const;
+  /// Lets `seconds` pass on every platform.
+  void advanceAll(double seconds);
   /// moveTo / moveFor: clamped to the limits, at most `most` steps, the mapping following.
   IterationReport scriptedMove(const ArmPair& joints, int most);
   ArmPair measured(const PlatformSlot& slot) const;
@@ -138,6 +152,8 @@ class DualPlatformController {
   SineDance dance_;
   long dance_count_ = 0;
   double mode_start_ = 0.0;
+  /// Platform time since the last command (a period or more: the next may carry a whole step).
+  double since_command_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace controller
