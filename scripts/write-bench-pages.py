@@ -2,7 +2,8 @@
 """Writes a raven_bench run into the pages: every row into docs/benchmarks.md (between its
 bench:begin / bench:end markers), the rows with a target into README.md (bench-headline:begin /
 end), under a line saying when and where they were measured. Sections left out of the run
-(raven_bench --only) keep their rows from earlier runs, each group under its own such line.
+(raven_bench --only) keep their rows from earlier runs, each group under its own such line (rows
+measured the same day on the same machine as this run join its table).
 
     write-bench-pages.py ROOT RESULTS_JSON RESULTS_MARKDOWN
 """
@@ -55,8 +56,13 @@ def main(root, results, table):
     spans = {page: between(texts[page], "bench", page),
              readme: between(texts[readme], "bench-headline", readme)}
     start, stop = spans[page]
-    older = [(old_caption, kept) for old_caption, rows in groups(texts[page][start:stop])
-             if (kept := [row for row in rows if section(row) not in run])]
+    # Kept rows under a line the same as this run's (same day, same machine) join its table; kept
+    # rows under one older line share one table.
+    tables = {caption: list(fresh)}
+    for old_caption, rows in groups(texts[page][start:stop]):
+        tables.setdefault(old_caption, []).extend(row for row in rows if section(row) not in run)
+    fresh = tables.pop(caption)
+    older = [(old_caption, rows) for old_caption, rows in tables.items() if rows]
 
     def block():
         """Every table under its own line (docs/benchmarks.md)."""

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """scripts/write-bench-pages.py: a run's rows replace their sections' rows, sections left out of
-the run keep theirs under the line of the run that measured them, the README shows the rows with a
-target, writing twice changes nothing, and a page without markers is refused by name."""
+the run keep theirs under the line of the run that measured them (one line for a day and a
+machine), the README shows the rows with a target, writing twice changes nothing, and a page without markers is refused by name."""
 import json
 import pathlib
 import subprocess
@@ -71,6 +71,19 @@ class WriteBenchPages(unittest.TestCase):
         second = (self.root / "docs/benchmarks.md").read_text(), (self.root / "README.md").read_text()
         self.assertEqual(first, second)
         self.assertEqual(first[0].count("Sections not in the run above"), 1)
+
+    def test_rows_of_the_same_day_and_machine_share_its_line(self):
+        self.write()
+        (self.root / "results.md").write_text(
+            HEADER + "| controller | jitter p99 | 0.1 ms | < 0.2 ms (met) | new |\n")
+        self.assertEqual(self.write().returncode, 0)
+        for name in ("docs/benchmarks.md", "README.md"):
+            text = (self.root / name).read_text()
+            self.assertEqual(text.count("2026-11-28 on New CPU"), 1, name)
+            self.assertIn("| controller | jitter p99 | 0.1 ms", text)
+            self.assertIn("| replay | 2arm | 101 x", text)
+            self.assertLess(text.index("| controller | jitter"), text.index("| replay | 2arm"))
+            self.assertIn(OLD_CAPTION.replace("Measured ", "", 1), text)  # the older line stays
 
     def test_a_page_without_markers_is_named(self):
         (self.root / "README.md").write_text("# no markers\n")
