@@ -4,9 +4,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
+#include "common/wrap_angle.hpp"
 #include "raven/arm_kinematics.hpp"
 #include "twin_fixtures.hpp"
 
@@ -17,6 +21,35 @@ using Eigen::Vector3d;
 using raven::Arm;
 using raven::ArmJoints;
 using raven::ArmKinematics;
+
+// The joint readings' and the kinematics' angle folding: std::remainder(angle, 2 pi), bit for bit
+// (signed zeros, pi itself, angles just past it, whole turns, NaN), with its shortcut for
+// angles already in [-pi, pi].
+TEST(WrapToPi, GivesStdRemaindersBits) {
+  const double pi_up = std::nextafter(M_PI, 4.0);
+  std::vector<double> angles = {0.0,
+                                -0.0,
+                                1e-300,
+                                M_PI,
+                                -M_PI,
+                                pi_up,
+                                -pi_up,
+                                3.0 * M_PI,
+                                -5.0 * M_PI,
+                                2.0 * M_PI,
+                                1e6,
+                                -1e12,
+                                std::numeric_limits<double>::infinity()};
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> any(-20.0, 20.0);
+  for (int i = 0; i < 10000; ++i) angles.push_back(any(random));
+  for (double a : angles) {
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(common::wrapToPi(a)),
+              std::bit_cast<std::uint64_t>(std::remainder(a, 2.0 * M_PI)))
+        << a;
+  }
+  EXPECT_TRUE(std::isnan(common::wrapToPi(std::numeric_limits<double>::quiet_NaN())));
+}
 
 const raven::PlatformProfile& ambf() {
   static const auto profile = raven::builtinProfile("ambf");
