@@ -144,3 +144,55 @@ TEST(ArmDrive, PlacedAtARecordedStateItsFirstCycleGivesThatStatesTorque) {
 }
 
 }  // namespace
+
+namespace {
+
+/// One encoder count of `joint` in joint units: how far past a stop a reading may land.
+double countInJoint(const twin::DriveTrain& drive, int joint) {
+  return 1.0 / drive.countsPerMotorRadian() / drive.transmission(joint);
+}
+
+TEST(ArmDrive, AJointDrivenPastItsHardStopRestsOnItAndSoDoItsMotors) {
+  const auto drive = twin::DriveTrain::raven2();
+  twin::HardStops stops;
+  stops.low(raven::kShoulder) = 0.0;
+  stops.high(raven::kShoulder) = M_PI / 2;
+  ArmJoints start = home();
+  start(raven::kShoulder) = M_PI / 2 - 0.01;
+  twin::ArmDrive arm(Arm::Left, drive, frictionless(2e-4), 0.001, start, stops);
+  ArmJoints setpoint = start;
+  // 0.05 rad past the stop, from 0.01 rad before it: the PD asks up to 2.4 N m, the amplifiers
+  // give their clip (0.68 N m), short of the overdrive that would e-stop the robot (5.4 N m).
+  setpoint(raven::kShoulder) = M_PI / 2 + 0.05;
+  double highest = 0.0;
+  for (int k = 0; k < 1500; ++k) highest = std::max(highest, arm.cycle(setpoint).position(0));
+  EXPECT_LE(highest, M_PI / 2 + countInJoint(drive, raven::kShoulder));
+  EXPECT_NEAR(arm.readings().position(raven::kShoulder), M_PI / 2,
+              countInJoint(drive, raven::kShoulder));
+  EXPECT_EQ(arm.readings().motor_velocity(raven::kShoulder), 0.0) << "resting on the stop";
+  EXPECT_TRUE(arm.fault().empty());
+  EXPECT_GT(arm.readings().torque(raven::kShoulder), 1.0) << "its motor keeps pushing";
+}
+
+TEST(ArmDrive, AfterTheSoftEStopTheAmplifiersStayOffUntilTheFaultIsCleared) {
+  const auto drive = twin::DriveTrain::raven2();
+  twin::ArmDrive arm(Arm::Right, drive, frictionless(2e-4), 0.001, home());
+  twin::ArmStart start;
+  start.motor_position = drive.toMotor(Arm::Right, home());
+  start.integrators(raven::kRoll) = 100.0;  // KI 0.05: Tau 5 N m, 137k counts, past 20000
+  arm.place(start);
+  arm.cycle(home());
+  ASSERT_FALSE(arm.fault().empty());
+  for (int k = 0; k < 5; ++k) {
+    const auto& r = arm.cycle(home());
+    EXPECT_GT(std::abs(r.torque(raven::kRoll)), 1.0) << "the law still computes its torque";
+    for (int c : r.dac) EXPECT_EQ(c, 0) << "but the amplifiers get nothing";
+  }
+  arm.clearFault();
+  start.integrators(raven::kRoll) = 0.02;  // Tau 0.001 N m: 27 counts
+  arm.place(start);
+  EXPECT_NE(arm.cycle(home()).dac[raven::kRoll], 0) << "enabled again: powered";
+  EXPECT_TRUE(arm.fault().empty());
+}
+
+}  // namespace

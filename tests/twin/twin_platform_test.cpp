@@ -81,6 +81,59 @@ TEST(TwinPlatform, FollowsAServoJrStreamOnTheSimulatedClock) {
   }
 }
 
+TEST(TwinPlatform, NoJointOfTheMotorTwinPassesItsHardStopPoweredOrNot) {
+  // Every joint of both arms pushed toward its upper, then its lower limit by legal servo_jr
+  // increments at 1 kHz, 0.3 rad/s and 3 cm/s (the robot clamps each setpoint to its limits),
+  // then an e-stop with the arms resting on their stops: the amplifiers go off and gravity takes
+  // the arms.
+  TwinPlatform twin(withMotors());
+  makeReady(twin);
+  const auto& limits = test_support::physicalProfile().limits;
+  ArmJoints furthest_past = ArmJoints::Constant(-1.0);
+  auto watch = [&] {
+    for (Arm arm : raven::kArms) {
+      const ArmJoints q = twin.measuredJs(arm).position;
+      furthest_past = furthest_past.cwiseMax(q - limits.high).cwiseMax(limits.low - q);
+    }
+  };
+  for (const double sign : {1.0, -1.0}) {
+    ArmJoints increment = ArmJoints::Constant(sign * 3e-4);
+    increment(raven::kInsertion) = sign * 3e-5;
+    for (int k = 0; k < 6000; ++k) {
+      for (Arm arm : raven::kArms) ASSERT_TRUE(twin.send(bridge::ServoJr{arm, increment}));
+      twin.advance(0.001);
+      watch();
+    }
+  }
+  ASSERT_EQ(twin.operatingStatus().state, bridge::OperatingState::Enabled);
+  twin::ArmStart overdriven;
+  overdriven.motor_position =
+      twin::DriveTrain::raven2().toMotor(Arm::Left, twin.measuredJs(Arm::Left).position);
+  overdriven.integrators(raven::kRoll) = 100.0;
+  twin.place(Arm::Left, overdriven);
+  for (int k = 0; k < 3000; ++k) {
+    twin.advance(0.001);
+    watch();
+  }
+  EXPECT_EQ(twin.operatingStatus().state, bridge::OperatingState::Fault);
+  // A reading lands at most a count or two of its motors past a stop (a jaw's joint angle
+  // combines its motor's count, 0.18 mrad, with half the wrist's).
+  const auto drive = twin::DriveTrain::raven2();
+  for (int j = 0; j < raven::kJointCount; ++j) {
+    EXPECT_LT(furthest_past(j), 2.0 / drive.countsPerMotorRadian() / drive.transmission(j))
+        << raven::kJointNames[static_cast<std::size_t>(j)];
+  }
+  // Enabled again with the integrator that tripped it emptied (the firmware never empties it:
+  // the real robot would trip again at once), the amplifiers take commands.
+  EXPECT_TRUE(twin.send(bridge::StateCommand::Enable));
+  overdriven.motor_position = drive.toMotor(Arm::Left, twin.measuredJs(Arm::Left).position);
+  overdriven.integrators.setZero();
+  twin.place(Arm::Left, overdriven);
+  twin.advance(0.01);
+  EXPECT_EQ(twin.operatingStatus().state, bridge::OperatingState::Enabled);
+  EXPECT_NE(twin.ravenState()->dac_val[0], 0) << "the amplifiers take commands again";
+}
+
 TEST(TwinPlatform, RavenStateIsInDegreesAndMicronsInTheRobotsLayout) {
   TwinPlatform twin;
   makeReady(twin);

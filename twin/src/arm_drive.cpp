@@ -1,5 +1,6 @@
 #include "twin/arm_drive.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace twin {
@@ -17,10 +18,11 @@ const MotorMechanics& checked(Arm arm, const MotorMechanics& mechanics) {
 }  // namespace
 
 ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
-                   const ArmJoints& joints)
+                   const ArmJoints& joints, const HardStops& stops)
     : arm_(arm),
       drive_(drive),
       cycle_(cycle),
+      stops_(stops),
       motors_(checked(arm, mechanics)),
       controller_(arm, drive) {
   for (int j = 0; j < kJointCount; ++j) coupling_.col(j) = drive_.toMotor(arm, ArmJoints::Unit(j));
@@ -55,17 +57,38 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
   sense();
   ActuatorReadings& r = readings_;
   r.motor_setpoint = drive_.toMotor(arm_, setpoint, r.motor_position(raven::kInsertion));
-  const MotorCommand command =
+  MotorCommand command =
       controller_.cycle(r.motor_setpoint, r.motor_position, r.motor_velocity, r.position);
   if (command.overdrive && fault_.empty()) {
     fault_ = "the " + std::string(armName(arm_)) +
              " arm's amplifier command passed the overdrive threshold (soft e-stop)";
   }
+  if (!fault_.empty()) {  // the soft e-stop keeps the amplifiers off until the robot is enabled
+    command.dac.fill(0);
+    command.applied.setZero();
+  }
   r.torque = command.torque;
   r.dac = command.dac;
   r.effort = coupling_.transpose() * command.applied.cwiseQuotient(drive_.gearbox);
   motors_.step(command.applied, command.gravity, cycle_);
+  holdAtStops();
   return r;
+}
+
+void ArmDrive::holdAtStops() {
+  ArmJoints q = drive_.toJoints(arm_, motors_.position());
+  if ((q.array() >= stops_.low.array() && q.array() <= stops_.high.array()).all()) return;
+  ArmJoints v = drive_.toJoints(arm_, motors_.velocity());  // linear: velocities map alike
+  for (int j = 0; j < kJointCount; ++j) {
+    if (q(j) < stops_.low(j)) {
+      q(j) = stops_.low(j);
+      v(j) = std::max(v(j), 0.0);
+    } else if (q(j) > stops_.high(j)) {
+      q(j) = stops_.high(j);
+      v(j) = std::min(v(j), 0.0);
+    }
+  }
+  motors_.place(drive_.toMotor(arm_, q), drive_.toMotor(arm_, v));
 }
 
 }  // namespace twin

@@ -5,8 +5,10 @@ namespace twin {
 MotorActuation::MotorActuation(TwinArms& arms, const DriveTrain& drive,
                                const ArmsMechanics& mechanics, double cycle)
     : arms_(arms),
-      drives_{ArmDrive(Arm::Left, drive, mechanics[0], cycle, arms.measured(Arm::Left)),
-              ArmDrive(Arm::Right, drive, mechanics[1], cycle, arms.measured(Arm::Right))} {}
+      drives_{ArmDrive(Arm::Left, drive, mechanics[0], cycle, arms.measured(Arm::Left),
+                       arms.hardStops(Arm::Left)),
+              ArmDrive(Arm::Right, drive, mechanics[1], cycle, arms.measured(Arm::Right),
+                       arms.hardStops(Arm::Right))} {}
 
 void MotorActuation::drive(Arm arm, const ArmJoints& setpoint, const ArmJoints& /*velocity*/) {
   ArmDrive& d = drives_[index(arm)];

@@ -96,6 +96,20 @@ ArmJoints TwinArms::measured(Arm arm) const {
   return read(arm, [](const Bound& b) { return (b.joint->position() - b.offset) / b.scale; });
 }
 
+HardStops TwinArms::hardStops(Arm arm) const {
+  HardStops stops;
+  for (std::size_t i = 0; i < kJointCount; ++i) {
+    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    const auto& limits = b.joint->spec().limits;
+    if (!limits) continue;
+    const double a = (limits->low - b.offset) / b.scale;
+    const double c = (limits->high - b.offset) / b.scale;
+    stops.low(static_cast<int>(i)) = std::min(a, c);
+    stops.high(static_cast<int>(i)) = std::max(a, c);
+  }
+  return stops;
+}
+
 ArmJoints TwinArms::velocities(Arm arm) const {
   return read(arm, [](const Bound& b) { return b.joint->velocity() / b.scale; });
 }

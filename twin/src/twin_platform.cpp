@@ -56,6 +56,13 @@ TwinPlatform::TwinPlatform(const TwinOptions& options)
       clock_(options.clock),
       after_step_(options.after_step) {}
 
+CommandResult TwinPlatform::send(const PlatformCommand& command) {
+  const bool faulted = core_.status().state == OperatingState::Fault;
+  CommandResult result = core_.apply(command);
+  if (faulted && core_.status().state != OperatingState::Fault) actuation_->clearFault();
+  return result;
+}
+
 ArmPair TwinPlatform::measuredPositions() const {
   return {readings_[0].position, readings_[1].position};
 }

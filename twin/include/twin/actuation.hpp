@@ -45,6 +45,8 @@ class Actuation {
   virtual void place(raven::Arm arm, const ArmStart& start) = 0;
   /// Why the robot must stop (its amplifiers' soft e-stop), or empty.
   virtual std::string fault() const { return {}; }
+  /// The robot was enabled again after a fault: its amplifiers take commands.
+  virtual void clearFault() {}
   /// What its next cycles depend on beyond the World (TwinPlatform::saveState), restored only
   /// into an actuation of the same kind.
   virtual std::any state() const = 0;

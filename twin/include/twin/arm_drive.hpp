@@ -5,6 +5,7 @@
 // commands, and the motors (MotorAxes) move under the amplified torque.
 
 #include <Eigen/Core>
+#include <limits>
 #include <string>
 
 #include "twin/actuation.hpp"
@@ -15,13 +16,20 @@
 
 namespace twin {
 
+/// Where each joint's mechanical stop is (rad, m; infinite where it has none): the motors move
+/// the joints through stiff cables, so a joint at its stop stops its motors too.
+struct HardStops {
+  ArmJoints low = ArmJoints::Constant(-std::numeric_limits<double>::infinity());
+  ArmJoints high = ArmJoints::Constant(std::numeric_limits<double>::infinity());
+};
+
 /// One arm's motors, encoders and motor-level control.
 class ArmDrive {
  public:
-  /// At rest at `joints` with empty integrators. Throws std::invalid_argument naming the arm
-  /// and field of invalid mechanics.
+  /// At rest at `joints` with empty integrators, the joints held within `stops`. Throws
+  /// std::invalid_argument naming the arm and field of invalid mechanics.
   ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
-           const ArmJoints& joints);
+           const ArmJoints& joints, const HardStops& stops = {});
 
   /// One control cycle toward `setpoint` (joints); the readings are this cycle's.
   const ActuatorReadings& cycle(const ArmJoints& setpoint);
@@ -32,15 +40,22 @@ class ArmDrive {
   /// Where the links are: the motors' exact angles through the cables.
   ArmJoints linkPosition() const { return drive_.toJoints(arm_, motors_.position()); }
   const MotorController& controller() const { return controller_; }
-  /// Why the robot must stop (the amplifiers' soft e-stop), or empty.
+  /// Why the robot must stop (the amplifiers' soft e-stop), or empty. While set, the
+  /// amplifiers get nothing.
   const std::string& fault() const { return fault_; }
+  /// Powers the amplifiers again (the robot was enabled after its e-stop).
+  void clearFault() { fault_.clear(); }
 
  private:
   void sense();
+  /// A joint that passed its stop is put back on it, its speed into the stop gone (an
+  /// inelastic stop), and the motors with it.
+  void holdAtStops();
 
   Arm arm_;
   DriveTrain drive_;
   double cycle_;
+  HardStops stops_;
   MotorAxes motors_;
   MotorController controller_;
   /// d(motor)/d(joint): joint loads are its transpose times motor torques.

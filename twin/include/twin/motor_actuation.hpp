@@ -26,6 +26,9 @@ class MotorActuation final : public Actuation {
   void drive(Arm arm, const ArmJoints& setpoint, const ArmJoints& setpoint_velocity) override;
   ActuatorReadings read(Arm arm) const override { return drives_[index(arm)].readings(); }
   std::string fault() const override;
+  void clearFault() override {
+    for (ArmDrive& d : drives_) d.clearFault();
+  }
 
   void place(Arm arm, const ArmStart& start) override;
   /// Both arms' drives: motors, controllers, encoders.

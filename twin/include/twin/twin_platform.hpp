@@ -49,7 +49,8 @@ class TwinPlatform final : public RavenPlatform {
   /// that name joints the model lacks.
   explicit TwinPlatform(const TwinOptions& options = {});
 
-  CommandResult send(const PlatformCommand& command) override { return core_.apply(command); }
+  /// Enabling after a fault powers the amplifiers again.
+  CommandResult send(const PlatformCommand& command) override;
   OperatingStatus operatingStatus() const override { return core_.status(); }
   JointSample measuredJs(Arm arm) const override;
   JointSample setpointJs(Arm arm) const override;
