@@ -154,7 +154,7 @@ double countInJoint(const twin::DriveTrain& drive, int joint) {
 
 TEST(ArmDrive, AJointDrivenPastItsHardStopRestsOnItAndSoDoItsMotors) {
   const auto drive = twin::DriveTrain::raven2();
-  twin::HardStops stops;
+  raven::JointLimits stops{ArmJoints::Constant(-10.0), ArmJoints::Constant(10.0)};
   stops.low(raven::kShoulder) = 0.0;
   stops.high(raven::kShoulder) = M_PI / 2;
   ArmJoints start = home();

@@ -89,6 +89,7 @@ TEST(TwinPlatform, NoJointOfTheMotorTwinPassesItsHardStopPoweredOrNot) {
   TwinPlatform twin(withMotors());
   makeReady(twin);
   const auto& limits = test_support::physicalProfile().limits;
+  const auto drive = twin::DriveTrain::raven2();
   ArmJoints furthest_past = ArmJoints::Constant(-1.0);
   auto watch = [&] {
     for (Arm arm : raven::kArms) {
@@ -107,8 +108,7 @@ TEST(TwinPlatform, NoJointOfTheMotorTwinPassesItsHardStopPoweredOrNot) {
   }
   ASSERT_EQ(twin.operatingStatus().state, bridge::OperatingState::Enabled);
   twin::ArmStart overdriven;
-  overdriven.motor_position =
-      twin::DriveTrain::raven2().toMotor(Arm::Left, twin.measuredJs(Arm::Left).position);
+  overdriven.motor_position = drive.toMotor(Arm::Left, twin.measuredJs(Arm::Left).position);
   overdriven.integrators(raven::kRoll) = 100.0;
   twin.place(Arm::Left, overdriven);
   for (int k = 0; k < 3000; ++k) {
@@ -118,7 +118,6 @@ TEST(TwinPlatform, NoJointOfTheMotorTwinPassesItsHardStopPoweredOrNot) {
   EXPECT_EQ(twin.operatingStatus().state, bridge::OperatingState::Fault);
   // A reading lands at most a count or two of its motors past a stop (a jaw's joint angle
   // combines its motor's count, 0.18 mrad, with half the wrist's).
-  const auto drive = twin::DriveTrain::raven2();
   for (int j = 0; j < raven::kJointCount; ++j) {
     EXPECT_LT(furthest_past(j), 2.0 / drive.countsPerMotorRadian() / drive.transmission(j))
         << raven::kJointNames[static_cast<std::size_t>(j)];

@@ -18,7 +18,7 @@ const MotorMechanics& checked(Arm arm, const MotorMechanics& mechanics) {
 }  // namespace
 
 ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
-                   const ArmJoints& joints, const HardStops& stops)
+                   const ArmJoints& joints, const std::optional<raven::JointLimits>& stops)
     : arm_(arm),
       drive_(drive),
       cycle_(cycle),
@@ -76,15 +76,17 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
 }
 
 void ArmDrive::holdAtStops() {
+  if (!stops_) return;
+  const raven::JointLimits& stops = *stops_;
   ArmJoints q = drive_.toJoints(arm_, motors_.position());
-  if ((q.array() >= stops_.low.array() && q.array() <= stops_.high.array()).all()) return;
+  if ((q.array() >= stops.low.array() && q.array() <= stops.high.array()).all()) return;
   ArmJoints v = drive_.toJoints(arm_, motors_.velocity());  // linear: velocities map alike
   for (int j = 0; j < kJointCount; ++j) {
-    if (q(j) < stops_.low(j)) {
-      q(j) = stops_.low(j);
+    if (q(j) < stops.low(j)) {
+      q(j) = stops.low(j);
       v(j) = std::max(v(j), 0.0);
-    } else if (q(j) > stops_.high(j)) {
-      q(j) = stops_.high(j);
+    } else if (q(j) > stops.high(j)) {
+      q(j) = stops.high(j);
       v(j) = std::min(v(j), 0.0);
     }
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace twin {
@@ -96,8 +97,9 @@ ArmJoints TwinArms::measured(Arm arm) const {
   return read(arm, [](const Bound& b) { return (b.joint->position() - b.offset) / b.scale; });
 }
 
-HardStops TwinArms::hardStops(Arm arm) const {
-  HardStops stops;
+raven::JointLimits TwinArms::hardStops(Arm arm) const {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  raven::JointLimits stops{ArmJoints::Constant(-kNone), ArmJoints::Constant(kNone)};
   for (std::size_t i = 0; i < kJointCount; ++i) {
     const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
     const auto& limits = b.joint->spec().limits;

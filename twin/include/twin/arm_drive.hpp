@@ -5,9 +5,10 @@
 // commands, and the motors (MotorAxes) move under the amplified torque.
 
 #include <Eigen/Core>
-#include <limits>
+#include <optional>
 #include <string>
 
+#include "raven/platform_profile.hpp"
 #include "twin/actuation.hpp"
 #include "twin/drive_train.hpp"
 #include "twin/motor_controller.hpp"
@@ -16,20 +17,15 @@
 
 namespace twin {
 
-/// Where each joint's mechanical stop is (rad, m; infinite where it has none): the motors move
-/// the joints through stiff cables, so a joint at its stop stops its motors too.
-struct HardStops {
-  ArmJoints low = ArmJoints::Constant(-std::numeric_limits<double>::infinity());
-  ArmJoints high = ArmJoints::Constant(std::numeric_limits<double>::infinity());
-};
-
 /// One arm's motors, encoders and motor-level control.
 class ArmDrive {
  public:
-  /// At rest at `joints` with empty integrators, the joints held within `stops`. Throws
-  /// std::invalid_argument naming the arm and field of invalid mechanics.
+  /// At rest at `joints` with empty integrators, the joints held within `stops`, their
+  /// mechanical stops (the motors move the joints through stiff cables, so a joint at its stop
+  /// stops its motors too); none without. Throws std::invalid_argument naming the arm and field
+  /// of invalid mechanics.
   ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
-           const ArmJoints& joints, const HardStops& stops = {});
+           const ArmJoints& joints, const std::optional<raven::JointLimits>& stops = {});
 
   /// One control cycle toward `setpoint` (joints); the readings are this cycle's.
   const ActuatorReadings& cycle(const ArmJoints& setpoint);
@@ -55,7 +51,7 @@ class ArmDrive {
   Arm arm_;
   DriveTrain drive_;
   double cycle_;
-  HardStops stops_;
+  std::optional<raven::JointLimits> stops_;
   MotorAxes motors_;
   MotorController controller_;
   /// d(motor)/d(joint): joint loads are its transpose times motor torques.

@@ -8,7 +8,7 @@
 
 #include "ambf_like/world.hpp"
 #include "raven/arm.hpp"
-#include "twin/arm_drive.hpp"
+#include "raven/platform_profile.hpp"
 #include "twin/vocabulary.hpp"
 
 namespace twin {
@@ -41,8 +41,9 @@ class TwinArms {
   /// Throws std::invalid_argument, before moving anything, if a value is NaN or infinite.
   void command(Arm arm, const ArmJoints& joints);
   ArmJoints measured(Arm arm) const;
-  /// The model's joint limits of `arm` in the arm's convention: its joints' mechanical stops.
-  HardStops hardStops(Arm arm) const;
+  /// The model's joint limits of `arm` in the arm's convention: its joints' mechanical stops
+  /// (infinite for a joint without limits).
+  raven::JointLimits hardStops(Arm arm) const;
   ArmJoints velocities(Arm arm) const;
   /// Joint torques (N m) and the insertion force (N) the drives exert, in the arm's sense.
   ArmJoints efforts(Arm arm) const;
