@@ -118,7 +118,7 @@ std::size_t writeModel(const ModelDraft& model, Collision collision,
     b["name"] = body.name;
     b["mass"] = number(body.mass);
     const auto box = bounds(body);
-    const Vector3d com = body.hull.empty() ? centreOfPrimitives(body) : box.center();
+    const Vector3d com = centreOfMass(body);
     if (body.mass > 0.0) {
       // A box of the body's extent: what Bullet itself would estimate for a compound, given
       // explicitly so both collision variants share the same mass properties.

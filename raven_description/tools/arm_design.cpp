@@ -1,6 +1,9 @@
 #include "arm_design.hpp"
 
 #include <cmath>
+#include <stdexcept>
+
+#include "raven/design/firmware_links.hpp"
 
 namespace raven::model {
 
@@ -21,6 +24,45 @@ std::vector<Primitive> arc(const Vector3d& from, const Vector3d& to, double radi
   };
   for (int k = 1; k <= pieces; ++k) out.push_back(capsuleBetween(at(k - 1), at(k), thickness));
   return out;
+}
+
+/// The robot's frame 0 of `arm` in {B}: the controller chain's base before its Rz(+25 deg left,
+/// -25 deg right) (raven2-kinematics.md §B), where the firmware's gravity is -x (§3 of
+/// raven2-actuation.md).
+Isometry3d firmwareFrame0(const ArmConvention& c, Arm arm) {
+  const double rz = (arm == Arm::Left ? 25.0 : -25.0) * M_PI / 180.0;
+  return c.base * AngleAxisd(-rz, Vector3d::UnitZ());
+}
+
+/// Gives links 1, 2 and the carriage the robot's own masses and centres (FirmwareLinks): link
+/// 3's mass, which the firmware puts at frame 3's origin, is the carriage's and the instrument's
+/// together, so the carriage takes what the instrument leaves, placed to keep that centre.
+void weighAsTheRobot(const PlatformProfile& profile, Arm arm, const ArmJoints& home,
+                     BodyDraft& link1, BodyDraft& link2, BodyDraft& carriage,
+                     const std::vector<const BodyDraft*>& instrument) {
+  if (!profile.firmware_kinematics) {
+    throw std::invalid_argument(
+        "profile '" + profile.name +
+        "' has no firmware_kinematics: the links' weights are in its frames");
+  }
+  const auto& firmware_chain = (*profile.firmware_kinematics)[static_cast<std::size_t>(index(arm))];
+  const auto firmware = ArmKinematics(firmware_chain, profile.limits).frames(home);
+  const Isometry3d frame0 = firmwareFrame0(ArmKinematics::of(profile, arm).convention(), arm);
+  const auto links = design::FirmwareLinks::of(arm);
+  std::array<BodyDraft*, 3> bodies{&link1, &link2, &carriage};
+  for (std::size_t k = 0; k < 2; ++k) {
+    bodies[k]->mass = links.mass[k];
+    bodies[k]->centre_of_mass = bodies[k]->pose.inverse() * frame0 * firmware[k] * links.centre[k];
+  }
+  Vector3d moment = links.mass[2] * (frame0 * firmware[2] * links.centre[2]);
+  double rest = links.mass[2];
+  for (const BodyDraft* b : instrument) {
+    moment -= b->mass * (b->pose * centreOfMass(*b));
+    rest -= b->mass;
+  }
+  if (rest <= 0.0) throw std::invalid_argument("the instrument outweighs the robot's link 3");
+  carriage.mass = rest;
+  carriage.centre_of_mass = carriage.pose.inverse() * (moment / rest);
 }
 
 Primitive box(const Vector3d& size, const Vector3d& centre) {
@@ -55,18 +97,18 @@ ModelDraft designArm(const PlatformProfile& profile, Arm arm, const ArmDesign& d
 
   // Links 1 and 2 are arcs around the remote centre (the origin of their frames).
   const Vector3d elbow_axis = AngleAxisd(c.alpha[1], Vector3d::UnitX()) * Vector3d::UnitZ();
-  BodyDraft link1{.name = "link1", .pose = f[0], .mass = d.link1_mass};
+  BodyDraft link1{.name = "link1", .pose = f[0]};
   link1.primitives = arc(Vector3d::UnitZ(), elbow_axis, d.link1_radius, d.link_radius, 3);
 
   const Vector3d insertion_axis = AngleAxisd(c.alpha[2], Vector3d::UnitX()) * Vector3d::UnitZ();
-  BodyDraft link2{.name = "link2", .pose = f[1], .mass = d.link2_mass};
+  BodyDraft link2{.name = "link2", .pose = f[1]};
   link2.primitives = arc(Vector3d::UnitZ(), insertion_axis, d.link2_radius, d.link_radius, 4);
   link2.primitives.push_back(capsuleBetween(d.link1_radius * Vector3d::UnitZ(),
                                             d.link2_radius * Vector3d::UnitZ(), d.link_radius));
   link2.primitives.push_back(capsuleBetween(d.rail_near * insertion_axis,
                                             d.rail_far * insertion_axis, 0.6 * d.link_radius));
 
-  BodyDraft carriage{.name = "carriage", .pose = f[2], .mass = d.carriage_mass};
+  BodyDraft carriage{.name = "carriage", .pose = f[2]};
   carriage.primitives.push_back(box(d.carriage_size, Vector3d::Zero()));
 
   // The instrument: its frame is at the wrist point, the shaft runs up to the carriage.
@@ -99,6 +141,8 @@ ModelDraft designArm(const PlatformProfile& profile, Arm arm, const ArmDesign& d
                  .hull = jawHullPoints(d.jaw_length, d.jaw_width, d.jaw_thickness, -int(side)),
                  .hull_mesh = "jaw2_" + name + ".obj",
                  .friction = d.jaw_friction};
+
+  weighAsTheRobot(profile, arm, home, link1, link2, carriage, {&shaft, &wrist, &jaw1, &jaw2});
 
   const Vector3d z = Vector3d::UnitZ();
   auto joint = [&](const char* joint_name, const BodyDraft& parent, const BodyDraft& child,

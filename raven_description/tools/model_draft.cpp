@@ -46,7 +46,13 @@ JointDraft connect(const std::string& name, const BodyDraft& parent, const BodyD
   return j;
 }
 
-Vector3d centreOfPrimitives(const BodyDraft& body) {
+Vector3d centreOfMass(const BodyDraft& body) {
+  if (body.centre_of_mass) return *body.centre_of_mass;
+  if (!body.hull.empty()) {
+    Eigen::AlignedBox3d box;
+    for (const auto& v : body.hull) box.extend(v);
+    return box.center();
+  }
   Vector3d sum = Vector3d::Zero();
   double volume = 0.0;
   for (const auto& p : body.primitives) {

@@ -23,6 +23,8 @@ struct BodyDraft {
   std::vector<Eigen::Vector3d> hull{};  ///< or a convex hull point set (the jaws)
   std::string hull_mesh{};              ///< file name for the hull mesh
   double friction = 0.0;                ///< ADF `friction: {static}`; 0: AMBF's default
+  /// Centre of mass in the body frame when known (the robot's own); else the geometry's.
+  std::optional<Eigen::Vector3d> centre_of_mass{};
 };
 
 /// A joint between two drafted bodies, in ADF terms.
@@ -55,7 +57,8 @@ JointDraft connect(const std::string& name, const BodyDraft& parent, const BodyD
                    const Eigen::Vector3d& axis_in_child, const Eigen::Vector3d& pivot_in_child,
                    double position_now, bool prismatic);
 
-/// Centre of mass of a body's primitives (volume-weighted), in the body frame.
-Eigen::Vector3d centreOfPrimitives(const BodyDraft& body);
+/// A body's centre of mass in its frame: the given one, else its geometry's (the hull's bounding
+/// box centre, or its primitives' volume-weighted centre).
+Eigen::Vector3d centreOfMass(const BodyDraft& body);
 
 }  // namespace raven::model

@@ -4,9 +4,10 @@
 // Both models are chains of joint axes. A link with an axis in and a non-parallel axis out
 // (link1, link2, the shaft, the wrist) has one frame built from those two lines in each model;
 // the mesh goes where that frame says, the axis directions' signs picked so that the mesh's
-// centroid lands nearest our link's centre of mass. The carriage (in and out axes are one line)
-// takes its turn from link 2 (it only slides) and its place on the axis from the shaft; the jaws
-// hang off the wrist through AMBF's own wrist-to-grasper joints, turned about their axis to
+// centroid lands nearest the centre of our link's drawn shapes (not its centre of mass: the
+// robot's own puts link 1's on the far side of its axis). The carriage (in and out axes are one
+// line) takes its turn from link 2 (it only slides) and its place on the axis from the shaft; the
+// jaws hang off the wrist through AMBF's own wrist-to-grasper joints, turned about their axis to
 // point where our jaws point. So a grasper mesh's pivot lands where AMBF's geometry puts it, and
 // how far that is from our kinematics' tool point is a measured check, not a fit.
 
@@ -99,6 +100,17 @@ Vec3 centroid(const std::vector<Vec3>& points) {
   return c / static_cast<double>(points.size());
 }
 
+/// Where a body's collision primitives sit on average (body frame); its centre of mass without.
+Vec3 drawnCentre(const ambf_like::BodySpec& body) {
+  Vec3 sum = Vec3::Zero();
+  int placed = 0;
+  for (const auto& p : body.collision.primitives) {
+    if (p.offset) sum += p.offset->translation(), ++placed;
+  }
+  if (placed > 0) return sum / placed;
+  return body.inertial_offset ? Vec3(body.inertial_offset->translation()) : Vec3::Zero();
+}
+
 /// The offset of AMBF body `theirs` in our body `ours` from their in and out axes. Where AMBF's
 /// body carries several joints (the wrist: two jaws), the one whose angle to the in axis is
 /// ours counts (AMBF's right grasper1 axis is 11 degrees off its grasper2's).
@@ -106,8 +118,7 @@ Transform fitByAxes(Chain& our, const std::string& ours, Chain& ambf, const std:
   const Line a_in = ambf.in(theirs);
   const Vec3 mesh_centre = centroid(ambf.vertices(theirs));
   const auto& spec = our.bodies.at(ours);
-  const Vec3 our_centre =
-      spec.inertial_offset ? Vec3(spec.inertial_offset->translation()) : Vec3::Zero();
+  const Vec3 our_centre = drawnCentre(spec);
   Transform best = Transform::Identity();
   double best_gap = INFINITY;
   for (const Line& a_out : ambf.out(theirs)) {

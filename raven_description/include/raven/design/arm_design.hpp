@@ -19,9 +19,9 @@ struct ArmDesign {
   double shaft_radius = 0.0042;  ///< 8.4 mm instrument shaft
   double wrist_radius = 0.0025;
   double jaw_length = 0.011, jaw_width = 0.0022, jaw_thickness = 0.005;
-  // Masses (kg): plausible for an aluminium arm and a laparoscopic instrument.
-  double link1_mass = 0.9, link2_mass = 0.7, carriage_mass = 0.35, shaft_mass = 0.08;
-  double wrist_mass = 0.006, jaw_mass = 0.003;
+  // The instrument's masses (kg), plausible for a laparoscopic one. Links 1 and 2, and the
+  // carriage with the instrument, weigh what the robot's own gravity model says (FirmwareLinks).
+  double shaft_mass = 0.08, wrist_mass = 0.006, jaw_mass = 0.003;
   /// Serrated grasper jaws: about 3 N of pinch holds a 5 N pull (Heijnsdijk et al. 2004, Surg
   /// Endosc 18:974-979), mu ~ 0.8; the ring's kDF (0.8) times this friction gives it.
   double jaw_friction = 1.0;
