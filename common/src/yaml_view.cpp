@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 
+#include "common/farthest.hpp"
 #include "common/lower_case.hpp"
 
 namespace common {
@@ -183,8 +184,16 @@ Eigen::Isometry3d YamlView::asPose() const {
   if (!node_.IsMap()) fail("expected {position, orientation}");
   const Eigen::Vector3d position =
       has("position") ? (*this)["position"].asXyz() : Eigen::Vector3d::Zero();
+  if (position.cwiseAbs().maxCoeff() > kFarthestCoordinate) {
+    (*this)["position"].fail("position lies beyond +-1e5 m of the origin");
+  }
   const Eigen::Vector3d rpy =
       has("orientation") ? (*this)["orientation"].asRpy() : Eigen::Vector3d::Zero();
+  // Beyond this an angle (rad) keeps no digit of its turn.
+  constexpr double kLargestAngle = 1e6;
+  if (rpy.cwiseAbs().maxCoeff() > kLargestAngle) {
+    (*this)["orientation"].fail("an angle lies beyond +-1e6 rad");
+  }
   Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
   pose.linear() = (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
                    Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *

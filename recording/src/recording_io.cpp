@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "recording/csv_text.hpp"
@@ -198,14 +199,23 @@ RsRecording readRs(const std::filesystem::path& path, NonFiniteJoints non_finite
   rec.variant.legacy = !has("mpos_d0") && has("grasp_d15");
   rec.rows = readNumberRows(path, lines, rec.names);
   if (rec.rows.empty()) throw RecordingError(path.string() + ": no rows after the header");
+  // No joint of any robot reads beyond this (rad or m: 160 turns, a kilometre); a value past it
+  // is a broken sample, and sums over it overflow.
+  constexpr double kLargestJoint = 1e3;
   for (const auto& name : required) {
-    if (non_finite == NonFiniteJoints::Keep && name != "time") continue;
+    const bool joint = name != "time";
     const std::size_t c = rec.column(name);
     for (std::size_t r = 0; r < rec.rows.size(); ++r) {
-      if (!std::isfinite(rec.rows[r][c])) {
-        throw RecordingError(rowWhere(path, r + 2) + ", column '" + name +
-                             "': not a finite number");
+      double& value = rec.rows[r][c];
+      const bool broken = !std::isfinite(value) || (joint && std::abs(value) > kLargestJoint);
+      if (!broken) continue;
+      if (joint && non_finite == NonFiniteJoints::Keep) {
+        value = std::numeric_limits<double>::quiet_NaN();  // reported and skipped as NaN
+        continue;
       }
+      throw RecordingError(rowWhere(path, r + 2) + ", column '" + name + "': " +
+                           (std::isfinite(value) ? std::to_string(value) + " is beyond +-1e3"
+                                                 : std::string("not a finite number")));
     }
   }
   if (non_finite == NonFiniteJoints::Refuse) {

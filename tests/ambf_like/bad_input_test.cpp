@@ -111,6 +111,49 @@ TEST(BadInput, NegativeMass) {
                                      HasSubstr("must not be negative")));
 }
 
+TEST(BadInput, ABodyWithMassAndAZeroMomentOfInertiaIsRefusedByLine) {
+  // Bullet takes a zero moment as an axis that never turns; a joint then tore the body apart and
+  // the world turned NaN at step 240.
+  TempDir dir;
+  const auto file = dir.write("m.yaml", model("1.0", "  inertia: {ix: 0, iy: 0, iz: 0}\n"));
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr(file.string() + ":13"), HasSubstr("BODY box/inertia"),
+                    HasSubstr("every principal moment (ix, iy, iz) above zero")));
+  EXPECT_EQ(loadError(dir.write("static.yaml", model("0.0", "  inertia: {ix: 0, iy: 0, iz: 0}\n"))),
+            "")
+      << "a static body needs no inertia";
+  const auto urdf =
+      dir.write("flat.urdf",
+                "<robot name='r'><link name='base'/><link name='l'><inertial><mass value='1'/>"
+                "<inertia ixx='1e-3' iyy='1e-3' izz='0' ixy='0' ixz='0' iyz='0'/></inertial></link>"
+                "<joint name='j' type='revolute'><parent link='base'/><child link='l'/>"
+                "<limit lower='-1' upper='1' effort='1' velocity='1'/></joint></robot>");
+  EXPECT_THAT(loadError(urdf), AllOf(HasSubstr("flat.urdf"), HasSubstr("link[l]/inertial"),
+                                     HasSubstr("positive definite inertia")));
+}
+
+TEST(BadInput, APoseFarBeyondAnyWorldIsRefusedByLine) {
+  // A collision offset of 1.7e308 m (1.8e308 is past the largest double: not a number at all)
+  // was taken and the world turned NaN at its first step.
+  TempDir dir;
+  const auto file = dir.write(
+      "m.yaml", model("1.0", "  collision offset: {position: {x: 1.7e308, y: 0, z: 0}}\n"));
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr(file.string() + ":13"), HasSubstr("collision offset/position"),
+                    HasSubstr("beyond +-1e5 m")));
+  const auto turned =
+      dir.write("t.yaml", model("1.0", "  location: {orientation: {r: 1e300, p: 0, y: 0}}\n"));
+  EXPECT_THAT(loadError(turned), AllOf(HasSubstr("location/orientation"), HasSubstr("1e6 rad")));
+  const auto urdf = dir.write(
+      "far.urdf",
+      "<robot name='r'><link name='base'/><link name='l'><inertial><mass value='1'/>"
+      "<inertia ixx='1e-3' iyy='1e-3' izz='1e-3' ixy='0' ixz='0' iyz='0'/></inertial></link>"
+      "<joint name='j' type='fixed'><origin xyz='1e300 0 0'/><parent link='base'/>"
+      "<child link='l'/></joint></robot>");
+  EXPECT_THAT(loadError(urdf), AllOf(HasSubstr("far.urdf"), HasSubstr("joint[j]/origin"),
+                                     HasSubstr("beyond +-1e5 m")));
+}
+
 TEST(BadInput, NanMass) {
   TempDir dir;
   const auto file = dir.write("m.yaml", model(".nan"));

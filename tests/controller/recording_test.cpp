@@ -241,3 +241,25 @@ TEST(Recording, AReplayRefusesTimesThatDoNotMoveOnOrJumpAway) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Recording, AJointBeyondAnyRobotsReachIsRefusedForAReplayAndSkippedForAnalysis) {
+  // A jpos of 1e300 passed as finite, and the analysis' sums over it overflowed to inf.
+  test_support::TempDir dir;
+  const auto rs = rsFileAt(dir, {10.0, 10.001, 10.002});
+  auto lines = test_support::readFile(rs);
+  // Row 3 of the file (the second sample): its first jpos field after the index and time.
+  const auto second = lines.find('\n', lines.find('\n') + 1) + 1;
+  const auto jpos0 = lines.find(',', lines.find(',', second) + 1) + 1;
+  lines.replace(jpos0, lines.find(',', jpos0) - jpos0, "1e300");
+  const auto broken = dir.write("broken_rs.csv", lines);
+  const std::string error = rsErrorOf(broken);
+  EXPECT_NE(error.find("row 3, column 'jpos0'"), std::string::npos) << error;
+  EXPECT_NE(error.find("beyond +-1e3"), std::string::npos) << error;
+  const auto kept = recording::readRs(broken, recording::NonFiniteJoints::Keep);
+  EXPECT_TRUE(std::isnan(kept.rows[1][kept.column("jpos0")]));
+  EXPECT_TRUE(std::isfinite(kept.rows[0][kept.column("jpos0")]));
+}
+
+}  // namespace

@@ -96,6 +96,10 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
     body.inertia = Vec3(nonNegative((*inertia)["ix"], 1e6, " kg m^2"),
                         nonNegative((*inertia)["iy"], 1e6, " kg m^2"),
                         nonNegative((*inertia)["iz"], 1e6, " kg m^2"));
+    // Bullet takes a zero moment as an axis that never turns, which its joints then tear at.
+    if (body.mass > 0.0 && (body.inertia->array() <= 0.0).any()) {
+      inertia->fail("a body with mass needs every principal moment (ix, iy, iz) above zero");
+    }
   }
   if (auto offset = node.find("inertial offset")) body.inertial_offset = offset->asPose();
   if (auto location = node.find("location")) body.location = location->asPose();

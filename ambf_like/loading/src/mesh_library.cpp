@@ -12,6 +12,7 @@
 #include <unordered_map>
 
 #include "ambf_like/mesh.hpp"
+#include "common/farthest.hpp"
 #include "common/xml_nesting.hpp"
 #include "vtk_tet_mesh.hpp"
 
@@ -62,10 +63,9 @@ void dropUnreferencedVertices(Mesh& mesh) {
   mesh.vertices = std::move(kept);
 }
 
-/// Refuses a vertex that is not finite or lies beyond +-1e5 (metres, or millimetres before a
-/// scale): Bullet's bounds, contacts and inertia lose every digit past it.
+/// Refuses a vertex that is not finite or lies beyond common::kFarthestCoordinate.
 void checkVertices(const Mesh& mesh, const SourceRef& referenced_from) {
-  constexpr double kFarthest = 1e5;
+  constexpr double kFarthest = common::kFarthestCoordinate;
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const Vec3& v = mesh.vertices[i];
     if (!v.allFinite() || v.cwiseAbs().maxCoeff() > kFarthest) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/farthest.hpp"
 #include "common/utf8.hpp"
 #include "common/xml_nesting.hpp"
 
@@ -35,14 +36,6 @@ class CapturedConsole : public console_bridge::OutputHandler {
   std::string messages_;
 };
 
-Transform toTransform(const urdf::Pose& pose) {
-  Transform t = Transform::Identity();
-  const auto& r = pose.rotation;
-  t.linear() = Quat(r.w, r.x, r.y, r.z).normalized().toRotationMatrix();
-  t.translation() = Vec3(pose.position.x, pose.position.y, pose.position.z);
-  return t;
-}
-
 Vec3 toVec(const urdf::Vector3& v) {
   return Vec3(v.x, v.y, v.z);
 }
@@ -55,6 +48,24 @@ struct UrdfContext {
     throw LoadError(at(path), message);
   }
 };
+
+/// An <origin>'s transform; refused (naming `path`) when its position is not finite or lies
+/// beyond common::kFarthestCoordinate, or its rotation is not finite.
+Transform toTransform(const urdf::Pose& pose, const std::string& path, const UrdfContext& ctx) {
+  Transform t = Transform::Identity();
+  const auto& r = pose.rotation;
+  const Quat rotation(r.w, r.x, r.y, r.z);
+  if (!rotation.coeffs().allFinite() || rotation.norm() == 0.0) {
+    ctx.fail(path + "/origin", "rpy is not finite");
+  }
+  t.linear() = rotation.normalized().toRotationMatrix();
+  t.translation() = Vec3(pose.position.x, pose.position.y, pose.position.z);
+  if (!t.translation().allFinite() ||
+      t.translation().cwiseAbs().maxCoeff() > common::kFarthestCoordinate) {
+    ctx.fail(path + "/origin", "xyz is not finite or lies beyond +-1e5 m of the origin");
+  }
+  return t;
+}
 
 std::filesystem::path resolveMeshFile(const std::string& filename, const std::string& path,
                                       const UrdfContext& ctx) {
@@ -82,7 +93,7 @@ std::optional<PrimitiveShape> readGeometry(const urdf::Geometry& geometry, const
                                            const std::string& path, const UrdfContext& ctx,
                                            std::filesystem::path& mesh) {
   PrimitiveShape shape;
-  shape.offset = toTransform(origin);
+  shape.offset = toTransform(origin, path, ctx);
   switch (geometry.type) {
     case urdf::Geometry::BOX:
       shape.type = PrimitiveType::Box;
@@ -104,7 +115,7 @@ std::optional<PrimitiveShape> readGeometry(const urdf::Geometry& geometry, const
       if ((toVec(m.scale) - Vec3::Ones()).norm() > 1e-12) {
         ctx.fail(path, "scaled meshes are not supported");
       }
-      if (!toTransform(origin).isApprox(Transform::Identity())) {
+      if (!toTransform(origin, path, ctx).isApprox(Transform::Identity())) {
         ctx.fail(path, "a mesh with an origin offset is not supported; bake it into the mesh");
       }
       mesh = resolveMeshFile(m.filename, path, ctx);
@@ -130,10 +141,14 @@ void readInertial(const urdf::Link& link, bool is_root, BodySpec& body, const Ur
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(tensor);
   Eigen::Matrix3d axes = solver.eigenvectors();
   if (axes.determinant() < 0.0) axes.col(2) = -axes.col(2);
-  Transform offset = toTransform(in.origin);
+  Transform offset = toTransform(in.origin, path, ctx);
   offset.linear() = offset.linear() * axes;
   body.inertial_offset = offset;
-  body.inertia = solver.eigenvalues().cwiseMax(0.0);
+  body.inertia = solver.eigenvalues();
+  if (in.mass > 0.0 && (body.inertia->array() <= 0.0).any()) {
+    ctx.fail(path, "a link with mass needs a positive definite inertia (a principal moment is " +
+                       std::to_string(body.inertia->minCoeff()) + ")");
+  }
 }
 
 BodySpec readLink(const urdf::Link& link, bool is_root, const Transform& location,
@@ -182,7 +197,7 @@ JointSpec readUrdfJoint(const urdf::Joint& joint, const UrdfContext& ctx) {
   spec.parent = joint.parent_link_name;
   spec.child = joint.child_link_name;
   spec.where = ctx.at(path);
-  const Transform origin = toTransform(joint.parent_to_joint_origin_transform);
+  const Transform origin = toTransform(joint.parent_to_joint_origin_transform, path, ctx);
   Vec3 axis = toVec(joint.axis);
   if (axis.norm() < 1e-12) axis = Vec3::UnitX();  // URDF's default axis
   spec.parent_pivot = origin.translation();
@@ -257,7 +272,13 @@ ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context)
     for (const auto& joint : link->child_joints) {
       model.joints.push_back(readUrdfJoint(*joint, ctx));
       const auto child = urdf->getLink(joint->child_link_name);
-      pending.emplace_back(child, location * toTransform(joint->parent_to_joint_origin_transform));
+      const Transform placed = location * toTransform(joint->parent_to_joint_origin_transform,
+                                                      "joint[" + joint->name + "]", ctx);
+      if (placed.translation().cwiseAbs().maxCoeff() > common::kFarthestCoordinate) {
+        ctx.fail("link[" + joint->child_link_name + "]",
+                 "its joints place it beyond +-1e5 m of the origin");
+      }
+      pending.emplace_back(child, placed);
     }
   }
   return model;

@@ -107,8 +107,9 @@ struct RsRecording {
   ArmSignals signals(std::size_t row, raven::Arm arm) const;
 };
 
-/// What readRs does with a NaN or infinite joint position: refuse the file (anything that will
-/// command a robot) or keep it as NaN (analysis, which reports and skips such rows).
+/// What readRs does with a NaN, infinite or impossible (beyond +-1e3 rad or m) joint position:
+/// refuse the file (anything that will command a robot) or keep it as NaN (analysis, which
+/// reports and skips such rows).
 enum class NonFiniteJoints { Refuse, Keep };
 
 /// Reads any rs variant. Throws RecordingError with the file and row on bad input (the time
