@@ -3,7 +3,7 @@
 # records the twin, and writes the disparity report of the twin, AMBF and the physical robot
 # (raven_analyze: ../shared/reference/recordings.md's figures per joint, correlating factors and
 # figures) to $OUT_DIR/report (default build/replay/report).
-#   scripts/replay-paper.sh [raven_controller flags, e.g. --ideal-servos, --start-from
+#   scripts/replay-paper.sh [raven_controller flags, e.g. --actuation ideal, --start-from
 #     ../shared/data/recordings/paper_2arm/2arm_physical_1.csv, or
 #     --calibration twin/config/raven2_calibration.yaml (the recording controller's timing too)]
 # Needs a build (scripts/build.sh) and ../shared/data.

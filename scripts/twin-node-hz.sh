@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Shows the twin node publishing the robot's topics at 1 kHz: starts a private rosmaster on a free
 # port, raven_twin_node on the wall clock, and runs `rostopic hz` on one of its topics.
-#   scripts/twin-node-hz.sh [seconds] [topic] [-- raven_twin_node flags, e.g. --ideal-servos]
+#   scripts/twin-node-hz.sh [seconds] [topic] [-- raven_twin_node flags, e.g. --actuation ideal]
 # Needs a build (scripts/build.sh). Everything it starts is stopped on exit.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"

@@ -18,6 +18,7 @@
 #include "calibration/excitation.hpp"
 #include "calibration/replay_score.hpp"
 #include "calibration/replay_timing.hpp"
+#include "common/actuation_flag.hpp"
 #include "raven/control_cycle.hpp"
 #include "recording/recording_io.hpp"
 
@@ -290,7 +291,7 @@ struct ScoreSettings {
   std::vector<std::filesystem::path> physical;
   ReplayFlags replay;
   std::filesystem::path calibration;
-  bool ideal = false;
+  common::ActuationKind actuation = common::ActuationKind::Motors;
   std::filesystem::path write;  ///< directory for the twin's replays, or none
 };
 
@@ -300,9 +301,10 @@ int runScore(const ScoreSettings& s) {
                                                ? twin::CalibrationProfile::shipped()
                                                : twin::CalibrationProfile::load(s.calibration);
   calibration::ReplaySetup setup = s.replay.setup(profile.iteration_overhead);
-  if (!s.ideal) profile.applyTo(setup.twin);
+  const bool motors = s.actuation == common::ActuationKind::Motors;
+  if (motors) profile.applyTo(setup.twin);
   std::printf("raven_calibrate score: %zu physical trial(s), %s, %s\n", physical.size(),
-              s.ideal ? "ideal servos" : "motor-level actuation",
+              motors ? "motor-level actuation" : "ideal servos",
               s.calibration.empty() ? twin::CalibrationProfile::shippedFile().c_str()
                                     : s.calibration.c_str());
   const auto score = calibration::scoreReplays(setup, physical);
@@ -412,8 +414,7 @@ int main(int argc, char** argv) {
       ->add_option("--calibration", score.calibration,
                    "profile to score (default: the shipped one)")
       ->check(CLI::ExistingFile);
-  score_cmd->add_flag("--ideal-servos", score.ideal,
-                      "the twin's ideal servos instead of the motor model");
+  common::addActuationFlag(*score_cmd, score.actuation);
   score_cmd->add_option("--write", score.write,
                         "directory to write the twin's replays to (rs files)");
 

@@ -42,7 +42,7 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
   twin::TwinOptions options;
   if (!settings.launch_file.empty()) options.launch_file = settings.launch_file;
   options.clock = settings.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
-  if (!settings.ideal_servos) {
+  if (settings.actuation == common::ActuationKind::Motors) {
     (settings.calibration ? settings.calibration->twin_actuation->profile
                           : twin::CalibrationProfile::shipped())
         .applyTo(options);

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "bridge/raven_platform.hpp"
+#include "common/actuation_flag.hpp"
 #include "common/video_flags.hpp"
 
 namespace controller_app {
@@ -23,9 +24,9 @@ struct ControllerCalibration {
 
 /// What the command line asks of the in-process twin.
 struct InProcessTwinSettings {
-  std::string launch_file;    ///< empty: our Raven-II alone
-  bool lock_step = false;     ///< simulated clock
-  bool ideal_servos = false;  ///< the twin's ideal servos instead of the motor-level actuation
+  std::string launch_file;  ///< empty: our Raven-II alone
+  bool lock_step = false;   ///< simulated clock
+  common::ActuationKind actuation = common::ActuationKind::Motors;
   /// From --calibration; null: the shipped calibration's actuation.
   const ControllerCalibration* calibration = nullptr;
   common::VideoFlags video;  ///< of the twin; no file: none

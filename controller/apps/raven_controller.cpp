@@ -16,6 +16,7 @@
 #include "bridge/ros/master_watch.hpp"
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_runtime.hpp"
+#include "common/actuation_flag.hpp"
 #include "controller/session.hpp"
 #include "controller/terminal_keys.hpp"
 #include "in_process_twin.hpp"
@@ -33,7 +34,7 @@ struct Settings {
   bool twin_over_ros = false;
   std::string twin_ns = "/twin";
   std::string physical_ns;
-  bool ideal_servos = false;
+  common::ActuationKind actuation = common::ActuationKind::Motors;  ///< of the in-process twin
   std::string start_from;
   std::string calibration_file;
   std::string twin_launch;
@@ -91,7 +92,7 @@ Platforms makePlatforms(const Settings& s,
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
     p.twin = controller_app::makeInProcessTwin(
-        {s.twin_launch, s.lock_step, s.ideal_servos, calibration, s.video, s.start_from});
+        {s.twin_launch, s.lock_step, s.actuation, calibration, s.video, s.start_from});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -257,9 +258,7 @@ int main(int argc, char** argv) {
   app.add_option("--twin-ns", s.twin_ns, "the twin node's ROS namespace (--twin-over-ros)");
   app.add_option("--physical-ns", s.physical_ns, "the physical robot's ROS namespace");
   app.add_flag("--no-arm-swap", s.no_arm_swap, "the robot publishes each arm on its own topic");
-  app.add_flag("--ideal-servos", s.ideal_servos,
-               "in-process twin with ideal joint servos instead of the Raven-II's motor-level "
-               "actuation");
+  common::addActuationFlag(app, s.actuation);
   app.add_option("--calibration", s.calibration_file,
                  "a profile fitted by raven_calibrate (YAML): the in-process twin's actuation "
                  "(default: twin/config/raven2_calibration.yaml), and replays timed as the "

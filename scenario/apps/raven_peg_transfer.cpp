@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "bridge/ros/ros_runtime.hpp"
+#include "common/actuation_flag.hpp"
 #include "harness/ros_master.hpp"
 #include "raven/design/arm_design.hpp"
 #include "recording/cf_recording.hpp"
@@ -52,7 +53,9 @@ struct Settings {
   std::string out_dir = "peg_transfer_results";
   std::string record = "auto";
   std::string jsonl;
-  bool motor_actuation = false;
+  /// Ideal servos until the scripted operator closes its loop on what it sees (issue 64): open
+  /// loop on joints, the robot's friction band costs it rings.
+  common::ActuationKind actuation = common::ActuationKind::Ideal;
   double time_limit = 240.0;
   double squeeze_mm = scenario::ArmRoutine::kDefaultSqueeze * 1e3;
   double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
@@ -116,7 +119,7 @@ int runPegTransfers(const Settings& s) {
   options.randomize = s.randomize;
   options.assist =
       s.assist == "contact" ? scenario::AssistMode::Contact : scenario::AssistMode::Off;
-  options.motor_actuation = s.motor_actuation;
+  options.motor_actuation = s.actuation == common::ActuationKind::Motors;
   options.launch_file = s.launch;
   options.time_limit = s.time_limit;
   options.squeeze = s.squeeze_mm * 1e-3;
@@ -151,7 +154,7 @@ int runPegTransfers(const Settings& s) {
                                            shard.count, s.seed + shard.index - 1)
                              : "",
              s.randomize ? "randomised" : "nominal", s.assist,
-             s.motor_actuation ? ", motor-level actuation" : "");
+             s.actuation == common::ActuationKind::Motors ? ", motor-level actuation" : "");
   std::fflush(stdout);
 
   scenario::ProgressBar bar(stderr, single ? "transfers" : "runs");
@@ -221,7 +224,7 @@ int runRectangleTask(const Settings& s) {
   const fs::path out(s.out_dir);
   fs::create_directories(out);
   scenario::RectangleOptions options;
-  options.motor_actuation = s.motor_actuation;
+  options.motor_actuation = s.actuation == common::ActuationKind::Motors;
   if (s.rect_width_mm > 0) options.width = s.rect_width_mm * 1e-3;
   if (s.rect_depth_mm > 0) options.depth = s.rect_depth_mm * 1e-3;
   if (s.record != "no") {
@@ -278,9 +281,7 @@ int main(int argc, char** argv) {
   app.add_option("--record", s.record, "write rs files: auto (a single run only), yes or no")
       ->check(CLI::IsMember({"auto", "yes", "no"}));
   app.add_option("--jsonl", s.jsonl, "JSON-lines file, one line per run (default: in --out)");
-  app.add_flag(
-      "--motor-actuation", s.motor_actuation,
-      "the Raven-II's motor-level actuation (shipped calibration) instead of ideal servos");
+  common::addActuationFlag(app, s.actuation);
   app.add_option("--time-limit", s.time_limit, "simulated seconds a run may take")
       ->check(CLI::PositiveNumber);
   app.add_option("--rect-width", s.rect_width_mm, "rectangle task: the side along x (mm)")

@@ -24,7 +24,7 @@ namespace ros_test {
 /// raven_twin_node in its own namespace, logging to a temp file.
 class TwinNode {
  public:
-  /// `ns` like "/t3"; `args` are extra command-line flags (--lock-step, --ideal-servos, ...).
+  /// `ns` like "/t3"; `args` are extra command-line flags (--lock-step, --actuation ideal, ...).
   TwinNode(const std::string& ns, const std::vector<std::string>& args);
   const std::string& ns() const { return ns_; }
   /// Stops the node (SIGINT) and returns what it logged.

@@ -168,7 +168,7 @@ class StandardCrtkFace(unittest.TestCase):
         # Ideal servos: the face's semantics are checked to tight tolerances; the robot's own
         # friction band (the node's default actuation) would leave joints a few mrad short.
         cls.node = TwinNode(MASTER.dir.name, "/s1", "--crtk-arms", "PSM1", "PSM2",
-                            "--ideal-servos")
+                            "--actuation", "ideal")
         cls.arm = CrtkArm(rospy, "/s1/crtk/PSM1")
         cls.other = CrtkArm(rospy, "/s1/crtk/PSM2")
         cls.refusals = Latest(rospy, "/s1/raven_twin/refusals", String, cls.arm.changed)
@@ -344,7 +344,7 @@ class LockStepCrtk(unittest.TestCase):
         import rospy
         from raven_twin.msg import Step, StepDone
         from sensor_msgs.msg import JointState
-        node = TwinNode(MASTER.dir.name, "/s2", "--lock-step", "--ideal-servos")
+        node = TwinNode(MASTER.dir.name, "/s2", "--lock-step", "--actuation", "ideal")
         try:
             arm = CrtkArm(rospy, "/s2/crtk/arm1")
             done = Latest(rospy, "/s2/raven_twin/step_done", StepDone, arm.changed)

@@ -48,7 +48,7 @@ double maxAbs(const ArmJoints& q) {
 
 /// The node on ideal servos: these tests are about the ROS edge, and measure positions exactly;
 /// the motor-level actuation over ROS is TheMotorLevelActuationGivesTheSameTrajectory's.
-const std::vector<std::string> kIdealServos{"--ideal-servos"};
+const std::vector<std::string> kIdealServos{"--actuation", "ideal"};
 
 TEST(TwinOverRos, EnableHomeAndAServoJrStreamIsFollowed) {
   Rig rig(kIdealServos);
@@ -198,8 +198,8 @@ TEST(TwinOverRos, ArmsAreSwappedOnMeasuredJsUnlessSwitchedOff) {
   for (bool swap : {true, false}) {
     bridge::ros1::RosClientOptions options;
     options.arm_swap = swap;
-    Rig rig(swap ? kIdealServos : std::vector<std::string>{"--ideal-servos", "--no-arm-swap"}, true,
-            options);
+    Rig rig(swap ? kIdealServos : std::vector<std::string>{"--actuation", "ideal", "--no-arm-swap"},
+            true, options);
     auto& robot = rig.client;
     makeReady(robot);
     // Tell the arms apart: move the left (gold) shoulder only.
@@ -275,7 +275,7 @@ void expectSameTrajectory(const std::vector<std::string>& node_args,
 }
 
 TEST(TwinOverRos, SameCommandsGiveTheSameTrajectoryInProcessAndOverRos) {
-  expectSameTrajectory({"--ideal-servos"}, twin::TwinOptions{});
+  expectSameTrajectory(kIdealServos, twin::TwinOptions{});
 }
 
 TEST(TwinOverRos, TheMotorLevelActuationGivesTheSameTrajectoryInProcessAndOverRos) {

@@ -50,7 +50,8 @@ std::vector<std::string> twinNodeCommand(const std::filesystem::path& program,
       (options.launch_file.empty() ? raven::modelDirectory() / "peg_transfer" / "launch.yaml"
                                    : options.launch_file)
           .string()};
-  if (!options.motor_actuation) argv.push_back("--ideal-servos");
+  argv.push_back("--actuation");
+  argv.push_back(options.motor_actuation ? "motors" : "ideal");
   if (options.soft_body_sleep) argv.push_back("--soft-body-sleep");
   return argv;
 }

@@ -12,6 +12,7 @@
 #include "bridge/ros/master_watch.hpp"
 #include "bridge/ros/raven_ros_server.hpp"
 #include "bridge/ros/ros_runtime.hpp"
+#include "common/actuation_flag.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/ros/ambf_object_topics.hpp"
 #include "twin/twin_platform.hpp"
@@ -30,10 +31,9 @@ int main(int argc, char** argv) {
                "the launch file holds AMBF's blender-raven2.yaml (AMBF joint names)");
   app.add_flag("--strict", twin.load.strict,
                "refuse model files AMBF would load with warnings (unknown keys, missing meshes)");
-  bool ideal_servos = false;
-  app.add_flag("--ideal-servos", ideal_servos,
-               "ideal joint servos instead of the Raven-II's motor-level actuation (always with "
-               "AMBF's model)");
+  common::ActuationKind actuation =
+      common::ActuationKind::Motors;  // ideal always with AMBF's model
+  common::addActuationFlag(app, actuation);
   std::string calibration;
   app.add_option("--calibration", calibration,
                  "the actuation fitted by raven_calibrate (YAML; default: "
@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
       };
     }
     // The motor model is the cable-driven robot's: in its joint convention, on our model.
-    if (!ideal_servos && !ambf_model && twin.profile == "physical") {
+    if (actuation == common::ActuationKind::Motors && !ambf_model && twin.profile == "physical") {
       (calibration.empty() ? twin::CalibrationProfile::shipped()
                            : twin::CalibrationProfile::load(calibration))
           .applyTo(twin);

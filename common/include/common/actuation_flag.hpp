@@ -1,0 +1,32 @@
+#pragma once
+// The --actuation flag of every program that builds a twin: one spelling and one meaning
+// everywhere (raven_sim's Twin(actuation=...) takes the same two words).
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+namespace common {
+
+/// What drives a twin's joints.
+enum class ActuationKind {
+  Motors,  ///< the Raven-II's motor-level actuation (motors, cables, its control software)
+  Ideal,   ///< ideal joint servos
+};
+
+/// Adds `--actuation motors|ideal`; `kind` holds the program's default, named in the help.
+inline CLI::Option* addActuationFlag(CLI::App& app, ActuationKind& kind) {
+  const std::string fallback = kind == ActuationKind::Motors ? "motors" : "ideal";
+  return app
+      .add_option_function<std::string>(
+          "--actuation",
+          [&kind](const std::string& word) {
+            kind = word == "motors" ? ActuationKind::Motors : ActuationKind::Ideal;
+          },
+          "what drives the twin's joints: motors (the Raven-II's motor-level actuation, fitted "
+          "by raven_calibrate) or ideal (ideal joint servos); default " +
+              fallback)
+      ->check(CLI::IsMember({"motors", "ideal"}))
+      ->type_name("motors|ideal");
+}
+
+}  // namespace common
