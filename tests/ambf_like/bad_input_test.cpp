@@ -111,6 +111,16 @@ TEST(BadInput, NegativeMass) {
                                      HasSubstr("must not be negative")));
 }
 
+/// A URDF with one 1 kg link `l` below a base: its `<inertia>` attributes and its joint's type
+/// and extra elements.
+std::string oneLinkUrdf(const std::string& inertia, const std::string& joint_type,
+                        const std::string& joint_extra) {
+  return "<robot name='r'><link name='base'/><link name='l'><inertial><mass value='1'/>"
+         "<inertia " +
+         inertia + " ixy='0' ixz='0' iyz='0'/></inertial></link><joint name='j' type='" +
+         joint_type + "'>" + joint_extra + "<parent link='base'/><child link='l'/></joint></robot>";
+}
+
 TEST(BadInput, ABodyWithMassAndAZeroMomentOfInertiaIsRefusedByLine) {
   // Bullet takes a zero moment as an axis that never turns; a joint then tore the body apart and
   // the world turned NaN at step 240.
@@ -123,11 +133,8 @@ TEST(BadInput, ABodyWithMassAndAZeroMomentOfInertiaIsRefusedByLine) {
             "")
       << "a static body needs no inertia";
   const auto urdf =
-      dir.write("flat.urdf",
-                "<robot name='r'><link name='base'/><link name='l'><inertial><mass value='1'/>"
-                "<inertia ixx='1e-3' iyy='1e-3' izz='0' ixy='0' ixz='0' iyz='0'/></inertial></link>"
-                "<joint name='j' type='revolute'><parent link='base'/><child link='l'/>"
-                "<limit lower='-1' upper='1' effort='1' velocity='1'/></joint></robot>");
+      dir.write("flat.urdf", oneLinkUrdf("ixx='1e-3' iyy='1e-3' izz='0'", "revolute",
+                                         "<limit lower='-1' upper='1' effort='1' velocity='1'/>"));
   EXPECT_THAT(loadError(urdf), AllOf(HasSubstr("flat.urdf"), HasSubstr("link[l]/inertial"),
                                      HasSubstr("positive definite inertia")));
 }
@@ -144,12 +151,8 @@ TEST(BadInput, APoseFarBeyondAnyWorldIsRefusedByLine) {
   const auto turned =
       dir.write("t.yaml", model("1.0", "  location: {orientation: {r: 1e300, p: 0, y: 0}}\n"));
   EXPECT_THAT(loadError(turned), AllOf(HasSubstr("location/orientation"), HasSubstr("1e6 rad")));
-  const auto urdf = dir.write(
-      "far.urdf",
-      "<robot name='r'><link name='base'/><link name='l'><inertial><mass value='1'/>"
-      "<inertia ixx='1e-3' iyy='1e-3' izz='1e-3' ixy='0' ixz='0' iyz='0'/></inertial></link>"
-      "<joint name='j' type='fixed'><origin xyz='1e300 0 0'/><parent link='base'/>"
-      "<child link='l'/></joint></robot>");
+  const auto urdf = dir.write("far.urdf", oneLinkUrdf("ixx='1e-3' iyy='1e-3' izz='1e-3'", "fixed",
+                                                      "<origin xyz='1e300 0 0'/>"));
   EXPECT_THAT(loadError(urdf), AllOf(HasSubstr("far.urdf"), HasSubstr("joint[j]/origin"),
                                      HasSubstr("beyond +-1e5 m")));
 }

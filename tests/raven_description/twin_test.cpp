@@ -195,10 +195,11 @@ TEST(Twin, HeldStillItsLinksWeighOnTheirJointsAsTheRobotsFirmwareExpects) {
                                      .cwiseProduct(drive.transmission)
                                      .cwiseQuotient(drive.gearbox) *
                                  world_over_firmware_g;
+      const double instrument_moment = hanging();
       for (int i = 0; i < 3; ++i) {
         // 1 % of the load, or 2 mN m (2 mN on the insertion) where it nearly vanishes; the
         // insertion carries the whole link-3 weight either way.
-        const double where_it_hangs = i == raven::kInsertion ? 0.0 : hanging();
+        const double where_it_hangs = i == raven::kInsertion ? 0.0 : instrument_moment;
         EXPECT_NEAR(held(i), firmware(i), 0.01 * std::abs(firmware(i)) + 2e-3 + where_it_hangs)
             << raven::armName(arm) << " joint " << i << " at " << q.head<3>().transpose();
         worst = std::max(worst, std::abs(held(i) - firmware(i)));

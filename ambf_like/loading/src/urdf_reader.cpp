@@ -115,7 +115,7 @@ std::optional<PrimitiveShape> readGeometry(const urdf::Geometry& geometry, const
       if ((toVec(m.scale) - Vec3::Ones()).norm() > 1e-12) {
         ctx.fail(path, "scaled meshes are not supported");
       }
-      if (!toTransform(origin, path, ctx).isApprox(Transform::Identity())) {
+      if (!shape.offset->isApprox(Transform::Identity())) {
         ctx.fail(path, "a mesh with an origin offset is not supported; bake it into the mesh");
       }
       mesh = resolveMeshFile(m.filename, path, ctx);
