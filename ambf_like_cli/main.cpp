@@ -81,6 +81,7 @@ nlohmann::json summarize(const ambf_like::LoadedScene& scene, const ambf_like::W
       {"soft_bodies", world.softBodyCount()},
       {"joints", world.jointCount()},
       {"controllable_joints", controllable},
+      {"articulations", world.articulationCount()},
       {"collision_vertices", world.collisionVertexCount()},
       {"collision_primitives", world.collisionPrimitiveCount()},
       {"warnings", scene.warnings.size()},
@@ -113,6 +114,8 @@ void printSummary(const nlohmann::json& s) {
               s["collision_primitives"].get<std::size_t>());
   std::printf("  joints            : %zu (%zu take commands)\n", s["joints"].get<std::size_t>(),
               s["controllable_joints"].get<std::size_t>());
+  std::printf("  articulations     : %zu in reduced coordinates\n",
+              s["articulations"].get<std::size_t>());
   std::printf("  simulated         : %llu steps of %.3f ms = %.3f s\n",
               static_cast<unsigned long long>(s["steps"].get<std::uint64_t>()),
               s["step_size_s"].get<double>() * 1e3, s["sim_time_s"].get<double>());

@@ -9,6 +9,25 @@ namespace {
 
 /// Gauss-Seidel sweeps over the motors once a bound is hit, from the unbounded solution.
 constexpr int kSweeps = 8;
+/// The same for a transmission's rows, whose friction rows couple through its cables.
+constexpr int kRowSweeps = 32;
+
+/// Impulses p, each within |p_i| <= bound_i, for rows of effective mass `k` (R W R^T) that
+/// bring the rows' speeds `rhs` further: directly, then by projected Gauss-Seidel from the
+/// clamped solution when a bound binds.
+Eigen::VectorXd boundedImpulses(const Eigen::MatrixXd& k, const Eigen::VectorXd& rhs,
+                                const Eigen::VectorXd& bound) {
+  Eigen::VectorXd p = k.ldlt().solve(rhs);
+  if ((p.array().abs() <= bound.array()).all()) return p;
+  p = p.cwiseMax(-bound).cwiseMin(bound);
+  for (int sweep = 0; sweep < kRowSweeps; ++sweep) {
+    for (Eigen::Index i = 0; i < p.size(); ++i) {
+      const double residual = rhs(i) - k.row(i).dot(p);
+      p(i) = std::clamp(p(i) + residual / k(i, i), -bound(i), bound(i));
+    }
+  }
+  return p;
+}
 
 }  // namespace
 
@@ -26,6 +45,27 @@ JointSpaceServo::JointSpaceServo(int dofs)
 void JointSpaceServo::setInverseInertia(const Eigen::MatrixXd& inverse_inertia) {
   inverse_inertia_ = inverse_inertia;
   factored_.clear();
+  if (transmission_) refreshReflectedInertia();
+}
+
+void JointSpaceServo::setTransmission(Transmission transmission) {
+  transmission_ = std::move(transmission);
+  transmitted_ = Eigen::VectorXd::Zero(torque_.size());
+  refreshReflectedInertia();
+}
+
+void JointSpaceServo::driveTransmission(const Eigen::VectorXd& torque,
+                                        const Eigen::VectorXd& coulomb) {
+  transmission_->torque = torque;
+  transmission_->coulomb = coulomb;
+}
+
+void JointSpaceServo::refreshReflectedInertia() {
+  const auto dofs = inverse_inertia_.rows();
+  const Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(dofs, dofs);
+  inertia_ = inverse_inertia_.llt().solve(identity);
+  const Transmission& t = *transmission_;
+  reflected_inverse_ = (inertia_ + t.armature + t.step * t.damping).llt().solve(identity);
 }
 
 void JointSpaceServo::request(int dof, const JointActuation& actuation) {
@@ -36,6 +76,7 @@ void JointSpaceServo::request(int dof, const JointActuation& actuation) {
 
 const Eigen::VectorXd& JointSpaceServo::torques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
                                                 double dt) {
+  if (transmission_) return reflectedTorques(velocity, dt);
   // What the motors must add to where the joints coast: velocity + dt (a + M^-1 effort).
   velocity_change_.noalias() = motor_velocity_ - velocity - dt * free_acceleration_;
   velocity_change_.noalias() -= dt * inverse_inertia_ * effort_;
@@ -80,6 +121,52 @@ void JointSpaceServo::boundMotors(double dt) {
           std::clamp(motor_torque_(i) + residual / inverse_inertia_(i, i), -cap, cap);
     }
   }
+}
+
+const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
+    const Eigen::Ref<const Eigen::VectorXd>& velocity, double dt) {
+  const Transmission& t = *transmission_;
+  const Eigen::MatrixXd& w = reflected_inverse_;
+  const Eigen::VectorXd effort =
+      effort_ + t.coupling.transpose() * t.torque - t.damping * velocity;
+  // Where links and rotors coast to with these torques: f = M a is what Bullet adds itself.
+  const Eigen::VectorXd coasting = dt * w * (effort + inertia_ * free_acceleration_);
+  // The rows: each joint motor (a unit row toward its speed), each motor's Coulomb friction
+  // (its coupling row, toward rest).
+  std::vector<Eigen::Index> frictional;
+  for (Eigen::Index m = 0; m < t.coulomb.size(); ++m) {
+    if (t.coulomb(m) > 0.0) frictional.push_back(m);
+  }
+  std::vector<Eigen::Index> motors;
+  for (Eigen::Index i = 0; i < motor_impulse_.size(); ++i) {
+    if (motor_impulse_(i) > 0.0) motors.push_back(i);
+  }
+  const auto rows = static_cast<Eigen::Index>(motors.size() + frictional.size());
+  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(rows, velocity.size());
+  Eigen::VectorXd target = Eigen::VectorXd::Zero(rows);
+  Eigen::VectorXd bound(rows);
+  Eigen::Index row = 0;
+  for (const auto i : motors) {
+    r(row, i) = 1.0;
+    target(row) = motor_velocity_(i);
+    bound(row++) = motor_impulse_(i);
+  }
+  for (const auto m : frictional) {
+    r.row(row) = t.coupling.row(m);
+    bound(row++) = dt * t.coulomb(m);
+  }
+  Eigen::VectorXd change = coasting;
+  Eigen::VectorXd impulse = Eigen::VectorXd::Zero(rows);
+  if (rows > 0) {
+    const Eigen::MatrixXd wrt = w * r.transpose();
+    impulse = boundedImpulses(r * wrt, target - r * (velocity + coasting), bound);
+    change.noalias() += wrt * impulse;
+  }
+  torque_ = inertia_ * (change / dt - free_acceleration_);
+  transmitted_ = effort + r.transpose() * impulse / dt;
+  velocity_before_ = velocity;
+  step_ = dt;
+  return torque_;
 }
 
 }  // namespace ambf_like::detail

@@ -63,6 +63,21 @@ void MultiBodyJoint::actuate(const JointActuation& actuation, double dt) {
   last_step_ = dt;
 }
 
+JointDynamics::ServoDof MultiBodyJoint::servoDof() {
+  if (!hasCoordinate()) return {};
+  return {&servo_, dof_};
+}
+
+bool MultiBodyJoint::place(double coordinate, double velocity) {
+  if (!hasCoordinate()) return false;
+  multibody_.setJointPos(link_, coordinate - coordinate_at_load_);
+  multibody_.setJointVel(link_, velocity);
+  btAlignedObjectArray<btQuaternion> rotations;
+  btAlignedObjectArray<btVector3> offsets;
+  multibody_.updateCollisionObjectWorldTransforms(rotations, offsets);
+  return true;
+}
+
 std::shared_ptr<const JointDynamicsMemory> MultiBodyJoint::memory() const {
   auto memory = std::make_shared<LimitMemory>();
   memory->limit_engaged = limit_engaged_;

@@ -54,6 +54,21 @@ bool Joint::isControllable() const {
   return commandable_type && !spec_.passive && spec_.enable_motor;
 }
 
+void Joint::place(double position, double velocity) {
+  if (!std::isfinite(position) || !std::isfinite(velocity)) {
+    throw std::invalid_argument("joint '" + spec_.name + "': cannot be placed at " +
+                                std::to_string(position) + " moving at " +
+                                std::to_string(velocity));
+  }
+  if (!spec_.isSingleAxis() || !dynamics_->place(position, velocity)) {
+    throw std::invalid_argument("joint '" + spec_.name + "' (" + typeName(spec_.type) +
+                                ") cannot be placed: only a joint of an articulation (reduced "
+                                "coordinates) can");
+  }
+  position_ = position;
+  last_raw_ = dynamics_->coordinate();
+}
+
 void Joint::updateCoordinate() {
   const double raw = dynamics_->coordinate();
   if (spec_.isAngular()) {

@@ -49,10 +49,15 @@ class Joint {
   void commandEffort(double effort);
   /// Stops driving the joint (motor off, no effort).
   void release();
+  /// Puts the joint at `position` moving at `velocity` (a replay's start), in reduced
+  /// coordinates. Throws std::invalid_argument for NaN/inf, a joint without a coordinate or one
+  /// in maximal coordinates (two free bodies, placed by their poses).
+  void place(double position, double velocity);
 
   /// World internals: apply the controller before a step, read the coordinate after it.
   void applyControl(double dt);
   void updateCoordinate();
+  detail::JointDynamics& dynamics() { return *dynamics_; }
 
   /// What the joint's next steps depend on beyond its bodies (World::saveState).
   struct State {

@@ -17,6 +17,7 @@
 #include "ambf_like/scene_spec.hpp"
 #include "ambf_like/soft_body.hpp"
 #include "ambf_like/step_guard.hpp"
+#include "ambf_like/transmission.hpp"
 
 namespace ambf_like {
 
@@ -136,6 +137,12 @@ class World {
   /// Joint trees simulated in reduced coordinates, one per branch from a static body (see
   /// Articulation).
   std::size_t articulationCount() const;
+  /// Puts motors behind joints of one articulation (see TransmissionSpec); the World keeps it.
+  /// Throws std::invalid_argument naming the field or joint when the sizes disagree, a value is
+  /// not finite, an inertia is not positive, a joint is not of one articulation's coordinates
+  /// (maximal coordinates, a fixed joint, another articulation) or that articulation already has
+  /// a transmission; std::out_of_range for an unknown joint.
+  Transmission& addTransmission(const TransmissionSpec& spec);
   /// What the world built otherwise than its files asked, and why (e.g. a model asked to be
   /// articulated that stays in maximal coordinates).
   const std::vector<std::string>& warnings() const;

@@ -5,6 +5,8 @@
 
 namespace ambf_like::detail {
 
+class JointSpaceServo;
+
 /// What a joint's drive asks of the physics for the next step.
 struct JointActuation {
   bool motor_on = false;
@@ -31,6 +33,16 @@ class JointDynamics {
   virtual double effort() const = 0;
   /// Sets the motor and applies the effort for the coming step.
   virtual void actuate(const JointActuation& actuation, double dt) = 0;
+  /// Where its torques are solved in joint space: its articulation's servo and its degree of
+  /// freedom there; none in maximal coordinates.
+  struct ServoDof {
+    JointSpaceServo* servo = nullptr;
+    int dof = -1;
+  };
+  virtual ServoDof servoDof() { return {}; }
+  /// Puts the coordinate at `coordinate` moving at `velocity`; false where the formulation
+  /// cannot (a constraint between two free bodies).
+  virtual bool place(double /*coordinate*/, double /*velocity*/) { return false; }
   /// Its memory (null: it keeps none), and taking a saved one back.
   virtual std::shared_ptr<const JointDynamicsMemory> memory() const { return nullptr; }
   virtual void recall(const JointDynamicsMemory* /*memory*/) {}

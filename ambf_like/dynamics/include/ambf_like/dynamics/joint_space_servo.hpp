@@ -2,6 +2,7 @@
 // The motors of one articulation, solved together in joint space.
 
 #include <Eigen/Dense>
+#include <optional>
 #include <vector>
 
 #include "ambf_like/dynamics/joint_dynamics.hpp"
@@ -18,7 +19,28 @@ namespace ambf_like::detail {
 /// limits act) beyond what the torques explain.
 class JointSpaceServo {
  public:
+  /// Motors behind the joints through a linear transmission, in this articulation's degrees of
+  /// freedom (see ambf_like::TransmissionSpec): their rotors' inertia and viscous friction are
+  /// reflected onto the joints and solved with them, their Coulomb friction is a bounded row
+  /// per motor, their torques act through the coupling's transpose.
+  struct Transmission {
+    Eigen::MatrixXd coupling;  ///< motors x dofs: motor velocity = coupling * joint velocity
+    Eigen::MatrixXd armature;  ///< dofs x dofs: coupling^T diag(rotor inertia) coupling
+    Eigen::MatrixXd damping;   ///< dofs x dofs: coupling^T diag(viscous) coupling
+    Eigen::VectorXd torque;    ///< per motor, for the coming steps
+    Eigen::VectorXd coulomb;   ///< per motor, >= 0
+    double step = 0.0;         ///< the world's fixed step: the damping is implicit over it
+  };
+
   explicit JointSpaceServo(int dofs);
+
+  /// Puts motors behind the joints (see Transmission); one per articulation.
+  void setTransmission(Transmission transmission);
+  bool hasTransmission() const { return transmission_.has_value(); }
+  /// The transmission's torques and Coulomb friction for the coming steps.
+  void driveTransmission(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb);
+  /// The joint-space inverse inertia of the links alone (no rotors).
+  const Eigen::MatrixXd& inverseInertia() const { return inverse_inertia_; }
 
   /// Sets the joint-space inverse inertia (refreshed as the articulation moves).
   void setInverseInertia(const Eigen::MatrixXd& inverse_inertia);
@@ -28,12 +50,21 @@ class JointSpaceServo {
   const Eigen::VectorXd& torques(const Eigen::Ref<const Eigen::VectorXd>& velocity, double dt);
   /// The joints' velocities once the step's free motion has been applied.
   void observeFreeMotion(const Eigen::Ref<const Eigen::VectorXd>& velocity);
-  /// Torque given to `dof` for the last step (motor plus effort).
-  double appliedTorque(int dof) const { return torque_(dof); }
+  /// Torque given to `dof` for the last step (motor plus effort; with a transmission, its
+  /// torque and friction, not the part that accelerates its rotors).
+  double appliedTorque(int dof) const {
+    return transmission_ ? transmitted_(dof) : torque_(dof);
+  }
 
  private:
   void solveMotors(double dt);
   void boundMotors(double dt);
+  /// torques() with a transmission: the joints move as links and rotors together, (M + A + h D)
+  /// dv = h (tau + f - D v), within the motors' and friction's bounded rows; Bullet, which knows
+  /// only M, gets the torque that makes it move so.
+  const Eigen::VectorXd& reflectedTorques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                                          double dt);
+  void refreshReflectedInertia();
 
   Eigen::MatrixXd inverse_inertia_;
   Eigen::VectorXd free_acceleration_;
@@ -49,6 +80,10 @@ class JointSpaceServo {
   Eigen::VectorXd velocity_change_;  ///< what the motors must add to the coasting velocities
   Eigen::VectorXd velocity_before_;  ///< at the start of the step under way
   double step_ = 0.0;
+  std::optional<Transmission> transmission_;
+  Eigen::MatrixXd inertia_;            ///< M, with a transmission
+  Eigen::MatrixXd reflected_inverse_;  ///< (M + A + h D)^-1, with a transmission
+  Eigen::VectorXd transmitted_;        ///< with a transmission: see appliedTorque
 };
 
 }  // namespace ambf_like::detail

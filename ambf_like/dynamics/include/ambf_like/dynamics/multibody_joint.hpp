@@ -26,6 +26,10 @@ class MultiBodyJoint final : public JointDynamics {
   double velocity() const override;
   double effort() const override;
   void actuate(const JointActuation& actuation, double dt) override;
+  ServoDof servoDof() override;
+  /// Sets the coordinate and its speed; the links' colliders move with it at once, their
+  /// bodies (mirrors) after the next step.
+  bool place(double coordinate, double velocity) override;
   /// Whether its limit is in the world, and the limit's last impulses; World::restoreState puts
   /// the limits back into the world in their saved order.
   std::shared_ptr<const JointDynamicsMemory> memory() const override;

@@ -1,0 +1,110 @@
+#include "ambf_like/transmission.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "ambf_like/dynamics/joint_space_servo.hpp"
+#include "ambf_like/world.hpp"
+#include "world_impl.hpp"
+
+namespace ambf_like {
+
+Transmission::Transmission(detail::JointSpaceServo& servo, std::vector<int> dofs,
+                           Eigen::MatrixXd coupling)
+    : servo_(servo), dofs_(std::move(dofs)), coupling_(std::move(coupling)) {}
+
+void Transmission::drive(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb) {
+  if (torque.size() != motorCount() || coulomb.size() != motorCount()) {
+    throw std::invalid_argument("transmission: " + std::to_string(motorCount()) +
+                                " motors, given " + std::to_string(torque.size()) +
+                                " torques and " + std::to_string(coulomb.size()) + " frictions");
+  }
+  for (int m = 0; m < motorCount(); ++m) {
+    if (!std::isfinite(torque(m)) || !std::isfinite(coulomb(m)) || coulomb(m) < 0.0) {
+      throw std::invalid_argument("transmission: motor " + std::to_string(m) + ": torque " +
+                                  std::to_string(torque(m)) + ", friction " +
+                                  std::to_string(coulomb(m)) +
+                                  " (finite, friction >= 0); nothing applied");
+    }
+  }
+  servo_.driveTransmission(torque, coulomb);
+}
+
+Eigen::MatrixXd Transmission::linkInertia() const {
+  const Eigen::MatrixXd& inverse = servo_.inverseInertia();
+  Eigen::MatrixXd joints(dofs_.size(), dofs_.size());
+  for (std::size_t i = 0; i < dofs_.size(); ++i) {
+    for (std::size_t j = 0; j < dofs_.size(); ++j) joints(i, j) = inverse(dofs_[i], dofs_[j]);
+  }
+  const Eigen::MatrixXd mobility = coupling_ * joints * coupling_.transpose();
+  return mobility.llt().solve(Eigen::MatrixXd::Identity(motorCount(), motorCount()));
+}
+
+}  // namespace ambf_like
+
+namespace ambf_like {
+
+namespace {
+
+void requireShape(const TransmissionSpec& spec) {
+  const auto motors = spec.coupling.rows();
+  const auto joints = static_cast<Eigen::Index>(spec.joints.size());
+  if (joints == 0 || spec.coupling.cols() != joints || motors == 0) {
+    throw std::invalid_argument("transmission: coupling is " + std::to_string(motors) + " x " +
+                                std::to_string(spec.coupling.cols()) + " for " +
+                                std::to_string(joints) + " joints");
+  }
+  if (spec.rotor_inertia.size() != motors || spec.viscous.size() != motors) {
+    throw std::invalid_argument("transmission: " + std::to_string(motors) + " motors, " +
+                                std::to_string(spec.rotor_inertia.size()) + " rotor_inertia, " +
+                                std::to_string(spec.viscous.size()) + " viscous");
+  }
+  if (!spec.coupling.allFinite()) throw std::invalid_argument("transmission: coupling not finite");
+  for (Eigen::Index m = 0; m < motors; ++m) {
+    if (!(spec.rotor_inertia(m) > 0.0) || !std::isfinite(spec.rotor_inertia(m))) {
+      throw std::invalid_argument("transmission: rotor_inertia of motor " + std::to_string(m) +
+                                  " must be finite and > 0");
+    }
+    if (!(spec.viscous(m) >= 0.0) || !std::isfinite(spec.viscous(m))) {
+      throw std::invalid_argument("transmission: viscous of motor " + std::to_string(m) +
+                                  " must be finite and >= 0");
+    }
+  }
+}
+
+}  // namespace
+
+Transmission& World::addTransmission(const TransmissionSpec& spec) {
+  requireShape(spec);
+  detail::JointSpaceServo* servo = nullptr;
+  std::vector<int> dofs;
+  for (const auto& name : spec.joints) {
+    const auto at = joint(name).dynamics().servoDof();
+    if (at.servo == nullptr || (servo != nullptr && at.servo != servo)) {
+      throw std::invalid_argument(
+          "transmission: joint '" + name +
+          "' is not a coordinate of the articulation the others are in (a transmission needs "
+          "its joints in one articulation: 'articulation: reduced' in the world file)");
+    }
+    servo = at.servo;
+    dofs.push_back(at.dof);
+  }
+  if (servo->hasTransmission()) {
+    throw std::invalid_argument("transmission: joint '" + spec.joints.front() +
+                                "''s articulation already has a transmission");
+  }
+  const auto all = servo->inverseInertia().rows();
+  Eigen::MatrixXd coupling = Eigen::MatrixXd::Zero(spec.coupling.rows(), all);
+  for (std::size_t j = 0; j < dofs.size(); ++j) {
+    coupling.col(dofs[j]) = spec.coupling.col(static_cast<Eigen::Index>(j));
+  }
+  const auto motors = spec.coupling.rows();
+  servo->setTransmission({coupling, coupling.transpose() * spec.rotor_inertia.asDiagonal() * coupling,
+                          coupling.transpose() * spec.viscous.asDiagonal() * coupling,
+                          Eigen::VectorXd::Zero(motors), Eigen::VectorXd::Zero(motors),
+                          stepSize()});
+  return *impl_->transmissions.emplace_back(
+      std::make_unique<Transmission>(*servo, std::move(dofs), spec.coupling));
+}
+
+}  // namespace ambf_like
