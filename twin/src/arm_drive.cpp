@@ -5,36 +5,41 @@
 
 namespace twin {
 
-namespace {
-
-const MotorMechanics& checked(Arm arm, const MotorMechanics& mechanics) {
-  const std::string why = mechanics.invalidReason();
-  if (!why.empty()) {
-    throw std::invalid_argument("actuation of the " + std::string(armName(arm)) + " arm: " + why);
-  }
-  return mechanics;
-}
-
-}  // namespace
-
 ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
                    const ArmJoints& joints, const std::optional<raven::JointLimits>& stops)
-    : arm_(arm),
-      drive_(drive),
-      cycle_(cycle),
-      stops_(stops),
-      motors_(checked(arm, mechanics)),
-      controller_(arm, drive) {
-  for (int j = 0; j < kJointCount; ++j) coupling_.col(j) = drive_.toMotor(arm, ArmJoints::Unit(j));
+    : ArmDrive(arm, drive, cycle, stops, MotorAxes(mechanics.checked(arm))) {
   const ArmJoints motor = drive_.toMotor(arm, joints);
-  motors_.place(motor, ArmJoints::Zero());
+  std::get<MotorAxes>(motors_).place(motor, ArmJoints::Zero());
   last_count_ = drive_.quantise(motor);
   sense();
   readings_.motor_setpoint = readings_.motor_position;
 }
 
+ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, const WorldMotors& motors, double cycle)
+    : ArmDrive(arm, drive, cycle, std::nullopt, motors) {
+  last_count_ = drive_.quantise(motors.position());
+  sense();
+  readings_.motor_setpoint = readings_.motor_position;
+}
+
+ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, double cycle,
+                   std::optional<raven::JointLimits> stops,
+                   std::variant<MotorAxes, WorldMotors> motors)
+    : arm_(arm),
+      drive_(drive),
+      cycle_(cycle),
+      stops_(std::move(stops)),
+      motors_(std::move(motors)),
+      controller_(arm, drive) {
+  for (int j = 0; j < kJointCount; ++j) coupling_.col(j) = drive_.toMotor(arm, ArmJoints::Unit(j));
+}
+
+ArmJoints ArmDrive::linkPosition() const {
+  return drive_.toJoints(arm_, std::visit([](const auto& m) { return m.position(); }, motors_));
+}
+
 void ArmDrive::place(const ArmStart& start) {
-  motors_.place(start.motor_position, start.motor_velocity);
+  std::visit([&](auto& m) { m.place(start.motor_position, start.motor_velocity); }, motors_);
   last_count_ = drive_.quantise(start.motor_position - start.motor_velocity * cycle_);
   controller_.setIntegrators(start.integrators);
   readings_.motor_position = drive_.quantise(start.motor_position);
@@ -45,7 +50,8 @@ void ArmDrive::place(const ArmStart& start) {
 
 void ArmDrive::sense() {
   ActuatorReadings& r = readings_;
-  r.motor_position = drive_.quantise(motors_.position());
+  r.motor_position =
+      drive_.quantise(std::visit([](const auto& m) { return m.position(); }, motors_));
   r.motor_velocity = (r.motor_position - last_count_) / cycle_;
   last_count_ = r.motor_position;
   r.encoder = drive_.encoderCounts(r.motor_position);
@@ -70,17 +76,18 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
   r.torque = command.torque;
   r.dac = command.dac;
   r.effort = coupling_.transpose() * command.applied.cwiseQuotient(drive_.gearbox);
-  motors_.step(command.applied, command.gravity, cycle_);
+  std::visit([&](auto& m) { m.step(command.applied, command.gravity, cycle_); }, motors_);
   holdAtStops();
   return r;
 }
 
 void ArmDrive::holdAtStops() {
-  if (!stops_) return;
+  auto* motors = std::get_if<MotorAxes>(&motors_);
+  if (!stops_ || motors == nullptr) return;
   const raven::JointLimits& stops = *stops_;
-  ArmJoints q = drive_.toJoints(arm_, motors_.position());
+  ArmJoints q = drive_.toJoints(arm_, motors->position());
   if ((q.array() >= stops.low.array() && q.array() <= stops.high.array()).all()) return;
-  ArmJoints v = drive_.toJoints(arm_, motors_.velocity());  // linear: velocities map alike
+  ArmJoints v = drive_.toJoints(arm_, motors->velocity());  // linear: velocities map alike
   for (int j = 0; j < kJointCount; ++j) {
     if (q(j) < stops.low(j)) {
       q(j) = stops.low(j);
@@ -90,7 +97,7 @@ void ArmDrive::holdAtStops() {
       v(j) = std::min(v(j), 0.0);
     }
   }
-  motors_.place(drive_.toMotor(arm_, q), drive_.toMotor(arm_, v));
+  motors->place(drive_.toMotor(arm_, q), drive_.toMotor(arm_, v));
 }
 
 }  // namespace twin

@@ -2,24 +2,31 @@
 
 namespace twin {
 
-MotorActuation::MotorActuation(TwinArms& arms, const DriveTrain& drive,
+MotorActuation::MotorActuation(TwinArms& arms, ambf_like::World& world, const DriveTrain& drive,
                                const ArmsMechanics& mechanics, double cycle)
     : arms_(arms),
-      drives_{ArmDrive(Arm::Left, drive, mechanics[0], cycle, arms.measured(Arm::Left),
-                       arms.hardStops(Arm::Left)),
-              ArmDrive(Arm::Right, drive, mechanics[1], cycle, arms.measured(Arm::Right),
-                       arms.hardStops(Arm::Right))} {}
+      drives_{makeDrive(Arm::Left, arms, world, drive, mechanics[0], cycle),
+              makeDrive(Arm::Right, arms, world, drive, mechanics[1], cycle)} {}
+
+ArmDrive MotorActuation::makeDrive(Arm arm, TwinArms& arms, ambf_like::World& world,
+                                   const DriveTrain& drive, const MotorMechanics& mechanics,
+                                   double cycle) {
+  if (!arms.articulated(arm)) {
+    return ArmDrive(arm, drive, mechanics, cycle, arms.measured(arm), arms.hardStops(arm));
+  }
+  return ArmDrive(arm, drive, WorldMotors(arm, drive, mechanics.checked(arm), arms, world), cycle);
+}
 
 void MotorActuation::drive(Arm arm, const ArmJoints& setpoint, const ArmJoints& /*velocity*/) {
   ArmDrive& d = drives_[index(arm)];
   d.cycle(setpoint);
-  arms_.command(arm, d.linkPosition());
+  if (!d.movesTheLinks()) arms_.command(arm, d.linkPosition());
 }
 
 void MotorActuation::place(Arm arm, const ArmStart& start) {
   ArmDrive& d = drives_[index(arm)];
   d.place(start);
-  arms_.command(arm, d.linkPosition());
+  if (!d.movesTheLinks()) arms_.command(arm, d.linkPosition());
 }
 
 std::string MotorActuation::fault() const {

@@ -1,6 +1,7 @@
 #include "twin/motor_dynamics.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace twin {
 
@@ -47,6 +48,14 @@ std::string MotorMechanics::invalidReason() const {
     }
   }
   return {};
+}
+
+const MotorMechanics& MotorMechanics::checked(Arm arm) const {
+  const std::string why = invalidReason();
+  if (!why.empty()) {
+    throw std::invalid_argument("actuation of the " + std::string(armName(arm)) + " arm: " + why);
+  }
+  return *this;
 }
 
 void MotorAxes::step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds) {

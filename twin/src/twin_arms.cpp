@@ -61,7 +61,7 @@ TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings) {
     for (std::size_t i = 0; i < kJointCount; ++i) {
       const auto& b = bindings.joints[a][i];
       ambf_like::Joint& joint = world.joint(b.name);
-      bound_[a][i] = {&joint, b.scale, b.offset};
+      bound_[a][i] = {&joint, b.scale, b.offset, b.name};
       const std::string child = bodyOf(world, b.name, joint, joint.spec().child);
       for (const auto& name : {bodyOf(world, b.name, joint, joint.spec().parent), child}) {
         if (std::find(bodies_[a].begin(), bodies_[a].end(), name) == bodies_[a].end()) {
@@ -95,6 +95,30 @@ ArmJoints TwinArms::read(Arm arm, Read read) const {
 
 ArmJoints TwinArms::measured(Arm arm) const {
   return read(arm, [](const Bound& b) { return (b.joint->position() - b.offset) / b.scale; });
+}
+
+void TwinArms::place(Arm arm, const ArmJoints& joints, const ArmJoints& velocities) {
+  for (std::size_t i = 0; i < kJointCount; ++i) {
+    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    const auto j = static_cast<int>(i);
+    b.joint->place(b.scale * joints(j) + b.offset, b.scale * velocities(j));
+  }
+}
+
+std::vector<std::string> TwinArms::jointNames(Arm arm) const {
+  std::vector<std::string> names;
+  for (const auto& b : bound_[static_cast<std::size_t>(index(arm))]) names.push_back(b.name);
+  return names;
+}
+
+bool TwinArms::articulated(Arm arm) const {
+  const auto& arm_joints = bound_[static_cast<std::size_t>(index(arm))];
+  return std::all_of(arm_joints.begin(), arm_joints.end(),
+                     [](const Bound& b) { return b.joint->inArticulation(); });
+}
+
+ArmJoints TwinArms::scales(Arm arm) const {
+  return read(arm, [](const Bound& b) { return b.scale; });
 }
 
 raven::JointLimits TwinArms::hardStops(Arm arm) const {

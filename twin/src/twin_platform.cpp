@@ -24,10 +24,11 @@ ambf_like::WorldOptions worldOptions(const ServoLimits& limits) {
   return options;
 }
 
-std::unique_ptr<Actuation> makeActuation(twin::TwinArms& arms, const DriveTrain& drive,
-                                         const TwinOptions& options) {
+std::unique_ptr<Actuation> makeActuation(twin::TwinArms& arms, ambf_like::World& world,
+                                         const DriveTrain& drive, const TwinOptions& options) {
   if (options.motors) {
-    return std::make_unique<MotorActuation>(arms, drive, *options.motors, options.limits.cycle);
+    return std::make_unique<MotorActuation>(arms, world, drive, *options.motors,
+                                            options.limits.cycle);
   }
   return std::make_unique<IdealActuation>(arms, drive);
 }
@@ -49,7 +50,7 @@ TwinPlatform::TwinPlatform(const TwinOptions& options)
       world_(scene_.spec, meshes_, worldOptions(options.limits)),
       arms_(world_, options.bindings),
       drive_(DriveTrain::raven2()),
-      actuation_(makeActuation(arms_, drive_, options)),
+      actuation_(makeActuation(arms_, world_, drive_, options)),
       readings_(readAll(*actuation_)),
       previous_position_{readings_[0].position, readings_[1].position},
       core_(loadProfile(options.profile), options.limits, measuredPositions()),

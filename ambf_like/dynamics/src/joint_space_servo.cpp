@@ -54,6 +54,13 @@ void JointSpaceServo::setTransmission(Transmission transmission) {
   refreshReflectedInertia();
 }
 
+void JointSpaceServo::setRotors(const Eigen::VectorXd& inertia, const Eigen::VectorXd& viscous) {
+  Transmission& t = *transmission_;
+  t.armature = t.coupling.transpose() * inertia.asDiagonal() * t.coupling;
+  t.damping = t.coupling.transpose() * viscous.asDiagonal() * t.coupling;
+  refreshReflectedInertia();
+}
+
 void JointSpaceServo::driveTransmission(const Eigen::VectorXd& torque,
                                         const Eigen::VectorXd& coulomb) {
   transmission_->torque = torque;
@@ -127,8 +134,7 @@ const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
     const Eigen::Ref<const Eigen::VectorXd>& velocity, double dt) {
   const Transmission& t = *transmission_;
   const Eigen::MatrixXd& w = reflected_inverse_;
-  const Eigen::VectorXd effort =
-      effort_ + t.coupling.transpose() * t.torque - t.damping * velocity;
+  const Eigen::VectorXd effort = effort_ + t.coupling.transpose() * t.torque - t.damping * velocity;
   // Where links and rotors coast to with these torques: f = M a is what Bullet adds itself.
   const Eigen::VectorXd coasting = dt * w * (effort + inertia_ * free_acceleration_);
   // The rows: each joint motor (a unit row toward its speed), each motor's Coulomb friction

@@ -63,7 +63,7 @@ void MultiBodyJoint::actuate(const JointActuation& actuation, double dt) {
   last_step_ = dt;
 }
 
-JointDynamics::ServoDof MultiBodyJoint::servoDof() {
+JointDynamics::ServoDof MultiBodyJoint::servoDof() const {
   if (!hasCoordinate()) return {};
   return {&servo_, dof_};
 }

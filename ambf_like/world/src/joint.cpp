@@ -54,6 +54,10 @@ bool Joint::isControllable() const {
   return commandable_type && !spec_.passive && spec_.enable_motor;
 }
 
+bool Joint::inArticulation() const {
+  return dynamics_->servoDof().servo != nullptr;
+}
+
 void Joint::place(double position, double velocity) {
   if (!std::isfinite(position) || !std::isfinite(velocity)) {
     throw std::invalid_argument("joint '" + spec_.name + "': cannot be placed at " +

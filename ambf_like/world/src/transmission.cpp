@@ -9,6 +9,43 @@
 
 namespace ambf_like {
 
+namespace {
+
+/// Throws std::invalid_argument unless there are `motors` finite inertias (> 0) and viscous
+/// frictions (>= 0).
+void requireRotors(Eigen::Index motors, const Eigen::VectorXd& inertia,
+                   const Eigen::VectorXd& viscous) {
+  if (inertia.size() != motors || viscous.size() != motors) {
+    throw std::invalid_argument("transmission: " + std::to_string(motors) + " motors, " +
+                                std::to_string(inertia.size()) + " rotor_inertia, " +
+                                std::to_string(viscous.size()) + " viscous");
+  }
+  for (Eigen::Index m = 0; m < motors; ++m) {
+    if (!(inertia(m) > 0.0) || !std::isfinite(inertia(m))) {
+      throw std::invalid_argument("transmission: rotor_inertia of motor " + std::to_string(m) +
+                                  " must be finite and > 0");
+    }
+    if (!(viscous(m) >= 0.0) || !std::isfinite(viscous(m))) {
+      throw std::invalid_argument("transmission: viscous of motor " + std::to_string(m) +
+                                  " must be finite and >= 0");
+    }
+  }
+}
+
+void requireShape(const TransmissionSpec& spec) {
+  const auto motors = spec.coupling.rows();
+  const auto joints = static_cast<Eigen::Index>(spec.joints.size());
+  if (joints == 0 || spec.coupling.cols() != joints || motors == 0) {
+    throw std::invalid_argument("transmission: coupling is " + std::to_string(motors) + " x " +
+                                std::to_string(spec.coupling.cols()) + " for " +
+                                std::to_string(joints) + " joints");
+  }
+  if (!spec.coupling.allFinite()) throw std::invalid_argument("transmission: coupling not finite");
+  requireRotors(motors, spec.rotor_inertia, spec.viscous);
+}
+
+}  // namespace
+
 Transmission::Transmission(detail::JointSpaceServo& servo, std::vector<int> dofs,
                            Eigen::MatrixXd coupling)
     : servo_(servo), dofs_(std::move(dofs)), coupling_(std::move(coupling)) {}
@@ -21,13 +58,17 @@ void Transmission::drive(const Eigen::VectorXd& torque, const Eigen::VectorXd& c
   }
   for (int m = 0; m < motorCount(); ++m) {
     if (!std::isfinite(torque(m)) || !std::isfinite(coulomb(m)) || coulomb(m) < 0.0) {
-      throw std::invalid_argument("transmission: motor " + std::to_string(m) + ": torque " +
-                                  std::to_string(torque(m)) + ", friction " +
-                                  std::to_string(coulomb(m)) +
-                                  " (finite, friction >= 0); nothing applied");
+      throw std::invalid_argument(
+          "transmission: motor " + std::to_string(m) + ": torque " + std::to_string(torque(m)) +
+          ", friction " + std::to_string(coulomb(m)) + " (finite, friction >= 0); nothing applied");
     }
   }
   servo_.driveTransmission(torque, coulomb);
+}
+
+void Transmission::setRotors(const Eigen::VectorXd& inertia, const Eigen::VectorXd& viscous) {
+  requireRotors(motorCount(), inertia, viscous);
+  servo_.setRotors(inertia, viscous);
 }
 
 Eigen::MatrixXd Transmission::linkInertia() const {
@@ -39,40 +80,6 @@ Eigen::MatrixXd Transmission::linkInertia() const {
   const Eigen::MatrixXd mobility = coupling_ * joints * coupling_.transpose();
   return mobility.llt().solve(Eigen::MatrixXd::Identity(motorCount(), motorCount()));
 }
-
-}  // namespace ambf_like
-
-namespace ambf_like {
-
-namespace {
-
-void requireShape(const TransmissionSpec& spec) {
-  const auto motors = spec.coupling.rows();
-  const auto joints = static_cast<Eigen::Index>(spec.joints.size());
-  if (joints == 0 || spec.coupling.cols() != joints || motors == 0) {
-    throw std::invalid_argument("transmission: coupling is " + std::to_string(motors) + " x " +
-                                std::to_string(spec.coupling.cols()) + " for " +
-                                std::to_string(joints) + " joints");
-  }
-  if (spec.rotor_inertia.size() != motors || spec.viscous.size() != motors) {
-    throw std::invalid_argument("transmission: " + std::to_string(motors) + " motors, " +
-                                std::to_string(spec.rotor_inertia.size()) + " rotor_inertia, " +
-                                std::to_string(spec.viscous.size()) + " viscous");
-  }
-  if (!spec.coupling.allFinite()) throw std::invalid_argument("transmission: coupling not finite");
-  for (Eigen::Index m = 0; m < motors; ++m) {
-    if (!(spec.rotor_inertia(m) > 0.0) || !std::isfinite(spec.rotor_inertia(m))) {
-      throw std::invalid_argument("transmission: rotor_inertia of motor " + std::to_string(m) +
-                                  " must be finite and > 0");
-    }
-    if (!(spec.viscous(m) >= 0.0) || !std::isfinite(spec.viscous(m))) {
-      throw std::invalid_argument("transmission: viscous of motor " + std::to_string(m) +
-                                  " must be finite and >= 0");
-    }
-  }
-}
-
-}  // namespace
 
 Transmission& World::addTransmission(const TransmissionSpec& spec) {
   requireShape(spec);
@@ -99,10 +106,10 @@ Transmission& World::addTransmission(const TransmissionSpec& spec) {
     coupling.col(dofs[j]) = spec.coupling.col(static_cast<Eigen::Index>(j));
   }
   const auto motors = spec.coupling.rows();
-  servo->setTransmission({coupling, coupling.transpose() * spec.rotor_inertia.asDiagonal() * coupling,
-                          coupling.transpose() * spec.viscous.asDiagonal() * coupling,
-                          Eigen::VectorXd::Zero(motors), Eigen::VectorXd::Zero(motors),
-                          stepSize()});
+  const auto dofs_all = Eigen::MatrixXd::Zero(all, all);
+  servo->setTransmission({coupling, dofs_all, dofs_all, Eigen::VectorXd::Zero(motors),
+                          Eigen::VectorXd::Zero(motors), stepSize()});
+  servo->setRotors(spec.rotor_inertia, spec.viscous);
   return *impl_->transmissions.emplace_back(
       std::make_unique<Transmission>(*servo, std::move(dofs), spec.coupling));
 }

@@ -1,12 +1,15 @@
 #pragma once
-// One Raven-II arm below its joints, with no simulator: each 1 ms cycle the encoders are read
-// (4000 counts per motor turn, velocity as the one-cycle difference), the joint setpoint goes
-// through the cable coupling to motor angles, the control software's law gives Tau and the DAC
-// commands, and the motors (MotorAxes) move under the amplified torque.
+// One Raven-II arm below its joints: each 1 ms cycle the encoders are read (4000 counts per motor
+// turn, velocity as the one-cycle difference), the joint setpoint goes through the cable
+// coupling to motor angles, the control software's law gives Tau and the DAC commands, and the
+// motors move under the amplified torque: in the simulated world with the links they turn
+// (WorldMotors), or alone with the links lumped into them (MotorAxes: the calibration's fast
+// model, no simulator).
 
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include "raven/platform_profile.hpp"
 #include "twin/actuation.hpp"
@@ -14,6 +17,7 @@
 #include "twin/motor_controller.hpp"
 #include "twin/motor_dynamics.hpp"
 #include "twin/vocabulary.hpp"
+#include "twin/world_motors.hpp"
 
 namespace twin {
 
@@ -26,6 +30,9 @@ class ArmDrive {
   /// of invalid mechanics.
   ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
            const ArmJoints& joints, const std::optional<raven::JointLimits>& stops = {});
+  /// The motors in a World, at rest where its joints are, with empty integrators (the joints'
+  /// stops are the World's).
+  ArmDrive(Arm arm, const DriveTrain& drive, const WorldMotors& motors, double cycle);
 
   /// One control cycle toward `setpoint` (joints); the readings are this cycle's.
   const ActuatorReadings& cycle(const ArmJoints& setpoint);
@@ -34,7 +41,10 @@ class ArmDrive {
 
   const ActuatorReadings& readings() const { return readings_; }
   /// Where the links are: the motors' exact angles through the cables.
-  ArmJoints linkPosition() const { return drive_.toJoints(arm_, motors_.position()); }
+  ArmJoints linkPosition() const;
+  /// Whether the motors move the World's links themselves (WorldMotors), or the links must be
+  /// put at linkPosition() (MotorAxes).
+  bool movesTheLinks() const { return std::holds_alternative<WorldMotors>(motors_); }
   const MotorController& controller() const { return controller_; }
   /// Why the robot must stop (the amplifiers' soft e-stop), or empty. While set, the
   /// amplifiers get nothing.
@@ -43,6 +53,8 @@ class ArmDrive {
   void clearFault() { fault_.clear(); }
 
  private:
+  ArmDrive(Arm arm, const DriveTrain& drive, double cycle, std::optional<raven::JointLimits> stops,
+           std::variant<MotorAxes, WorldMotors> motors);
   void sense();
   /// A joint that passed its stop is put back on it, its speed into the stop gone (an
   /// inelastic stop), and the motors with it.
@@ -52,7 +64,7 @@ class ArmDrive {
   DriveTrain drive_;
   double cycle_;
   std::optional<raven::JointLimits> stops_;
-  MotorAxes motors_;
+  std::variant<MotorAxes, WorldMotors> motors_;
   MotorController controller_;
   /// d(motor)/d(joint): joint loads are its transpose times motor torques.
   Eigen::Matrix<double, kJointCount, kJointCount> coupling_;

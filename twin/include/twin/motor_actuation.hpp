@@ -1,7 +1,9 @@
 #pragma once
 // The Raven-II's actuation below the joints in a simulated world: each arm's ArmDrive runs the
-// motors and their control software, and the simulated links follow the motors' angles through
-// the cables (the cables taken as stiff; contact loads on the links do not reach the motors).
+// motors and their control software. Where an arm is an articulation (reduced coordinates), its
+// motors drive the links through the cables and the links' loads (weight, contact, stops) come
+// back to them (WorldMotors); elsewhere (maximal coordinates) the links follow the motors'
+// angles and nothing they touch reaches the motors.
 
 #include <array>
 #include <string>
@@ -21,8 +23,8 @@ class MotorActuation final : public Actuation {
  public:
   /// Starts at rest at the arms' current joints with empty integrators. Throws
   /// std::invalid_argument naming the arm and field of invalid mechanics.
-  MotorActuation(TwinArms& arms, const DriveTrain& drive, const ArmsMechanics& mechanics,
-                 double cycle);
+  MotorActuation(TwinArms& arms, ambf_like::World& world, const DriveTrain& drive,
+                 const ArmsMechanics& mechanics, double cycle);
   void drive(Arm arm, const ArmJoints& setpoint, const ArmJoints& setpoint_velocity) override;
   ActuatorReadings read(Arm arm) const override { return drives_[index(arm)].readings(); }
   std::string fault() const override;
@@ -39,6 +41,8 @@ class MotorActuation final : public Actuation {
 
  private:
   static std::size_t index(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
+  static ArmDrive makeDrive(Arm arm, TwinArms& arms, ambf_like::World& world,
+                            const DriveTrain& drive, const MotorMechanics& mechanics, double cycle);
 
   TwinArms& arms_;
   std::array<ArmDrive, 2> drives_;

@@ -33,6 +33,8 @@ struct MotorMechanics {
 
   /// Why these values cannot be used (naming the field), or empty when they can.
   std::string invalidReason() const;
+  /// Itself; throws std::invalid_argument naming `arm` and the field when invalidReason says so.
+  const MotorMechanics& checked(Arm arm) const;
 };
 
 /// Motor angles and speeds of one arm, stepped under the amplifiers' torque.

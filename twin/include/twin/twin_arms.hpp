@@ -41,6 +41,13 @@ class TwinArms {
   /// Throws std::invalid_argument, before moving anything, if a value is NaN or infinite.
   void command(Arm arm, const ArmJoints& joints);
   ArmJoints measured(Arm arm) const;
+  /// Puts `arm`'s joints at `joints` moving at `velocities` (see ambf_like::Joint::place).
+  void place(Arm arm, const ArmJoints& joints, const ArmJoints& velocities);
+  /// The World's names of `arm`'s joints, and how each model value scales with the arm's.
+  std::vector<std::string> jointNames(Arm arm) const;
+  ArmJoints scales(Arm arm) const;
+  /// Whether all of `arm`'s joints are coordinates of articulations (reduced coordinates).
+  bool articulated(Arm arm) const;
   /// The model's joint limits of `arm` in the arm's convention: its joints' mechanical stops
   /// (infinite for a joint without limits).
   raven::JointLimits hardStops(Arm arm) const;
@@ -60,6 +67,7 @@ class TwinArms {
   struct Bound {
     ambf_like::Joint* joint;
     double scale, offset;
+    std::string name;  ///< as bound
   };
   template <typename Read>
   ArmJoints read(Arm arm, Read read) const;

@@ -49,6 +49,9 @@ class Joint {
   void commandEffort(double effort);
   /// Stops driving the joint (motor off, no effort).
   void release();
+  /// Whether the joint is a coordinate of an articulation (reduced coordinates): transmissions
+  /// and place() need it.
+  bool inArticulation() const;
   /// Puts the joint at `position` moving at `velocity` (a replay's start), in reduced
   /// coordinates. Throws std::invalid_argument for NaN/inf, a joint without a coordinate or one
   /// in maximal coordinates (two free bodies, placed by their poses).

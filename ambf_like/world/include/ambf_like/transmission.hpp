@@ -33,6 +33,8 @@ class Transmission {
   /// Each motor's torque and its Coulomb friction (>= 0, the torque it takes to turn it) from the
   /// next step on. Throws std::invalid_argument for a wrong size, NaN or a negative friction.
   void drive(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb);
+  /// New rotors (TransmissionSpec's rotor_inertia and viscous, checked alike).
+  void setRotors(const Eigen::VectorXd& inertia, const Eigen::VectorXd& viscous);
   /// The links' inertia as the motors feel it now, without the rotors: (C M^-1 C^T)^-1.
   Eigen::MatrixXd linkInertia() const;
   int motorCount() const { return static_cast<int>(coupling_.rows()); }

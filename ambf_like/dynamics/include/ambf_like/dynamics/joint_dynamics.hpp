@@ -39,7 +39,7 @@ class JointDynamics {
     JointSpaceServo* servo = nullptr;
     int dof = -1;
   };
-  virtual ServoDof servoDof() { return {}; }
+  virtual ServoDof servoDof() const { return {}; }
   /// Puts the coordinate at `coordinate` moving at `velocity`; false where the formulation
   /// cannot (a constraint between two free bodies).
   virtual bool place(double /*coordinate*/, double /*velocity*/) { return false; }

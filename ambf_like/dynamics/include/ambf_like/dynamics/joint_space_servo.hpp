@@ -37,6 +37,8 @@ class JointSpaceServo {
   /// Puts motors behind the joints (see Transmission); one per articulation.
   void setTransmission(Transmission transmission);
   bool hasTransmission() const { return transmission_.has_value(); }
+  /// The transmission's rotors: their inertia and viscous friction per motor.
+  void setRotors(const Eigen::VectorXd& inertia, const Eigen::VectorXd& viscous);
   /// The transmission's torques and Coulomb friction for the coming steps.
   void driveTransmission(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb);
   /// The joint-space inverse inertia of the links alone (no rotors).
@@ -52,9 +54,7 @@ class JointSpaceServo {
   void observeFreeMotion(const Eigen::Ref<const Eigen::VectorXd>& velocity);
   /// Torque given to `dof` for the last step (motor plus effort; with a transmission, its
   /// torque and friction, not the part that accelerates its rotors).
-  double appliedTorque(int dof) const {
-    return transmission_ ? transmitted_(dof) : torque_(dof);
-  }
+  double appliedTorque(int dof) const { return transmission_ ? transmitted_(dof) : torque_(dof); }
 
  private:
   void solveMotors(double dt);

@@ -26,7 +26,7 @@ class MultiBodyJoint final : public JointDynamics {
   double velocity() const override;
   double effort() const override;
   void actuate(const JointActuation& actuation, double dt) override;
-  ServoDof servoDof() override;
+  ServoDof servoDof() const override;
   /// Sets the coordinate and its speed; the links' colliders move with it at once, their
   /// bodies (mirrors) after the next step.
   bool place(double coordinate, double velocity) override;

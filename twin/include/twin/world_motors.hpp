@@ -1,0 +1,45 @@
+#pragma once
+// One Raven-II arm's motors moving in the simulated world: their torque goes through the cable
+// coupling onto the arm's joints (an ambf_like::Transmission), their rotors' inertia and friction
+// move with the links in one solve, and the encoders read the links' angles through the cables.
+// What the links touch (a ring, the other jaw, the board, a joint's stop) therefore loads them.
+
+#include "ambf_like/world.hpp"
+#include "twin/drive_train.hpp"
+#include "twin/motor_dynamics.hpp"
+#include "twin/twin_arms.hpp"
+#include "twin/vocabulary.hpp"
+
+namespace twin {
+
+/// The motors of one arm as a transmission on its joints in a World.
+class WorldMotors {
+ public:
+  /// The rotors carry what `mechanics`' inertia leaves of the links' inertia as the motors feel
+  /// it at the arms' pose now (the fitted inertia is the motor's whole load). Throws
+  /// std::invalid_argument when the arm's joints are not one articulation of `world`.
+  WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, TwinArms& arms,
+              ambf_like::World& world);
+
+  /// `torque` (at the gearbox outputs) from the next world step on. The links weigh what the
+  /// World gives them; `gravity_load` (the firmware's estimate) times the fitted gravity error
+  /// is the weight beyond that.
+  void step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds);
+  ArmJoints position() const;  ///< motor rad, the links' angles through the cables
+  ArmJoints velocity() const;
+  /// Puts the arm's joints where these motor angles and speeds put them.
+  void place(const ArmJoints& position, const ArmJoints& velocity);
+
+  /// The rotors' inertia on the transmission's motor angles (the gearbox outputs, kg m^2).
+  const ArmJoints& rotorInertia() const { return rotor_inertia_; }
+
+ private:
+  Arm arm_;
+  DriveTrain drive_;
+  MotorMechanics mechanics_;
+  TwinArms* arms_;
+  ambf_like::Transmission* transmission_;
+  ArmJoints rotor_inertia_;
+};
+
+}  // namespace twin

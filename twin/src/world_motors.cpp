@@ -1,0 +1,55 @@
+#include "twin/world_motors.hpp"
+
+#include <algorithm>
+
+namespace twin {
+
+namespace {
+
+/// The smallest share of a motor's fitted inertia its rotor keeps however heavy the links feel:
+/// the catalogue rotors through their gearboxes are 0.5-1x the fitted values.
+constexpr double kLeastRotorShare = 0.25;
+
+}  // namespace
+
+// The transmission's motor angles are the gearbox outputs (motor rad / gearbox): the scale on
+// which the robot logs Tau, so a Tau drives them as it is, and a fitted inertia J (Tau per motor
+// rad/s^2) is J x gearbox on them, as is a viscous friction.
+WorldMotors::WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics,
+                         TwinArms& arms, ambf_like::World& world)
+    : arm_(arm), drive_(drive), mechanics_(mechanics), arms_(&arms) {
+  Eigen::Matrix<double, kJointCount, kJointCount> coupling;
+  const ArmJoints scales = arms.scales(arm);
+  for (int j = 0; j < kJointCount; ++j) {
+    coupling.col(j) =
+        drive.toMotor(arm, ArmJoints::Unit(j)).cwiseQuotient(drive.gearbox) / scales(j);
+  }
+  const ArmJoints fitted = mechanics.inertia.cwiseProduct(drive.gearbox);
+  ambf_like::TransmissionSpec spec{arms.jointNames(arm), coupling, fitted,
+                                   mechanics.viscous.cwiseProduct(drive.gearbox)};
+  transmission_ = &world.addTransmission(spec);
+  const ArmJoints links = transmission_->linkInertia().diagonal();
+  rotor_inertia_ = (fitted - links).cwiseMax(kLeastRotorShare * fitted);
+  transmission_->setRotors(rotor_inertia_, spec.viscous);
+}
+
+void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, double /*seconds*/) {
+  const ArmJoints drive = torque - mechanics_.gravity_error.cwiseProduct(gravity_load);
+  const ArmJoints coulomb =
+      mechanics_.coulomb + mechanics_.load_friction.cwiseProduct(torque.cwiseAbs());
+  transmission_->drive(drive, coulomb);
+}
+
+ArmJoints WorldMotors::position() const {
+  return drive_.toMotor(arm_, arms_->measured(arm_));
+}
+
+ArmJoints WorldMotors::velocity() const {
+  return drive_.toMotor(arm_, arms_->velocities(arm_));  // linear: velocities map alike
+}
+
+void WorldMotors::place(const ArmJoints& position, const ArmJoints& velocity) {
+  arms_->place(arm_, drive_.toJoints(arm_, position), drive_.toJoints(arm_, velocity));
+}
+
+}  // namespace twin
