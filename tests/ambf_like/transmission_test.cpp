@@ -10,31 +10,31 @@
 namespace {
 
 constexpr double kMass = 0.5, kLength = 0.2, kWidth = 0.02;
-constexpr double kRatio = 10.0;       // motor rad per joint rad
-constexpr double kRotor = 2e-4;       // kg m^2 on the motor
+constexpr double kRatio = 10.0;  // motor rad per joint rad
+constexpr double kRotor = 2e-4;  // kg m^2 on the motor
 constexpr double kStep = 0.001;
 
-/// A box link hinged at one end about the vertical (gravity does not turn it), in reduced
-/// coordinates, or maximal ones.
-std::unique_ptr<test_support::Simulation> gearedLink(const test_support::TempDir& dir,
-                                                     ambf_like::Articulation articulation) {
+/// A box link along x hinged at one end about the vertical z (gravity does not turn it), or
+/// about y (gravity does), in reduced coordinates, or maximal ones.
+std::unique_ptr<test_support::Simulation> gearedLink(
+    const test_support::TempDir& dir, ambf_like::Articulation articulation,
+    const std::string& axis = "{x: 0, y: 0, z: 1}") {
   const auto model = dir.write(
       "link.yaml",
       "bodies: [BODY anchor, BODY link]\njoints: [JOINT hinge]\nignore inter-collision: true\n"
       "BODY anchor: {mass: 0, collision shape: BOX, collision geometry: {x: 0.02, y: 0.02, z: "
       "0.02}}\n"
       "BODY link:\n  mass: " +
-          std::to_string(kMass) + "\n  collision shape: BOX\n  collision geometry: {x: " +
-          std::to_string(kLength) + ", y: " + std::to_string(kWidth) +
-          ", z: " + std::to_string(kWidth) +
+          std::to_string(kMass) +
+          "\n  collision shape: BOX\n  collision geometry: {x: " + std::to_string(kLength) +
+          ", y: " + std::to_string(kWidth) + ", z: " + std::to_string(kWidth) +
           "}\n  damping: {linear: 0, angular: 0}\n"
           "  location: {position: {x: 0.1, y: 0, z: 0}}\n"
           "JOINT hinge:\n  parent: BODY anchor\n  child: BODY link\n  parent pivot: {x: 0, y: 0, "
-          "z: 0}\n  child pivot: {x: -0.1, y: 0, z: 0}\n  parent axis: {x: 0, y: 0, z: 1}\n  "
-          "child axis: {x: 0, y: 0, z: 1}\n  type: continuous\n");
-  return test_support::simulate({model}, [articulation](ambf_like::WorldSpec& world) {
-    world.articulation = articulation;
-  });
+          "z: 0}\n  child pivot: {x: -0.1, y: 0, z: 0}\n  parent axis: " +
+          axis + "\n  child axis: " + axis + "\n  type: continuous\n");
+  return test_support::simulate(
+      {model}, [articulation](ambf_like::WorldSpec& world) { world.articulation = articulation; });
 }
 
 /// The link's moment of inertia about its hinge: a box's about its centre, moved by m (L/2)^2.
@@ -52,7 +52,9 @@ ambf_like::TransmissionSpec gear(double viscous = 0.0) {
   return spec;
 }
 
-Eigen::VectorXd one(double value) { return Eigen::VectorXd::Constant(1, value); }
+Eigen::VectorXd one(double value) {
+  return Eigen::VectorXd::Constant(1, value);
+}
 
 TEST(Transmission, TheLinkFeelsItsInertiaOverTheRatioSquaredAtTheMotor) {
   test_support::TempDir dir;
@@ -60,6 +62,14 @@ TEST(Transmission, TheLinkFeelsItsInertiaOverTheRatioSquaredAtTheMotor) {
   auto& transmission = sim->world->addTransmission(gear());
   const double expected = linkInertiaAboutHinge() / (kRatio * kRatio);
   EXPECT_NEAR(transmission.linkInertia()(0, 0), expected, 1e-9 * expected);
+}
+
+TEST(Transmission, TheLinksWeighOnTheirJointsAsTheirCentresOfMassSay) {
+  // Horizontal along x, hinged about y: holding it takes -m g L/2 about y (gravity along -z).
+  test_support::TempDir dir;
+  auto sim = gearedLink(dir, ambf_like::Articulation::Reduced, "{x: 0, y: 1, z: 0}");
+  auto& transmission = sim->world->addTransmission(gear());
+  EXPECT_NEAR(transmission.linkWeight()(0), -kMass * 9.81 * kLength / 2.0, 1e-9);
 }
 
 TEST(Transmission, AMotorTorqueAcceleratesLinkAndRotorTogether) {

@@ -18,14 +18,13 @@ constexpr double kLeastRotorShare = 0.25;
 WorldMotors::WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics,
                          TwinArms& arms, ambf_like::World& world)
     : arm_(arm), drive_(drive), mechanics_(mechanics), arms_(&arms) {
-  Eigen::Matrix<double, kJointCount, kJointCount> coupling;
   const ArmJoints scales = arms.scales(arm);
   for (int j = 0; j < kJointCount; ++j) {
-    coupling.col(j) =
+    coupling_.col(j) =
         drive.toMotor(arm, ArmJoints::Unit(j)).cwiseQuotient(drive.gearbox) / scales(j);
   }
   const ArmJoints fitted = mechanics.inertia.cwiseProduct(drive.gearbox);
-  ambf_like::TransmissionSpec spec{arms.jointNames(arm), coupling, fitted,
+  ambf_like::TransmissionSpec spec{arms.jointNames(arm), coupling_, fitted,
                                    mechanics.viscous.cwiseProduct(drive.gearbox)};
   transmission_ = &world.addTransmission(spec);
   const ArmJoints links = transmission_->linkInertia().diagonal();
@@ -34,7 +33,15 @@ WorldMotors::WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics&
 }
 
 void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, double /*seconds*/) {
-  const ArmJoints drive = torque - mechanics_.gravity_error.cwiseProduct(gravity_load);
+  // The fitted weight, (1 + gravity error) x the firmware's estimate, in place of the links'
+  // own: the motors carry what the robot's motors were fitted to carry, the links' weight moving
+  // with them as the World distributes it. On the transmission's motors the links' weight is
+  // coupling^-T times its joint torques.
+  const ArmJoints model_weight =
+      coupling_.transpose().partialPivLu().solve(ArmJoints(transmission_->linkWeight()));
+  const ArmJoints fitted_weight =
+      (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
+  const ArmJoints drive = torque + model_weight - fitted_weight;
   const ArmJoints coulomb =
       mechanics_.coulomb + mechanics_.load_friction.cwiseProduct(torque.cwiseAbs());
   transmission_->drive(drive, coulomb);

@@ -95,6 +95,7 @@ const Eigen::VectorXd& JointSpaceServo::torques(const Eigen::Ref<const Eigen::Ve
 }
 
 void JointSpaceServo::observeFreeMotion(const Eigen::Ref<const Eigen::VectorXd>& velocity) {
+  if (transmission_) free_velocity_ = velocity;
   free_acceleration_.noalias() = (velocity - velocity_before_) / step_;
   free_acceleration_.noalias() -= inverse_inertia_ * torque_;
 }
@@ -135,8 +136,14 @@ const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
   const Transmission& t = *transmission_;
   const Eigen::MatrixXd& w = reflected_inverse_;
   const Eigen::VectorXd effort = effort_ + t.coupling.transpose() * t.torque - t.damping * velocity;
+  // What contacts and limits put on the joints last step (they act on the links alone, after
+  // the free motion): a load the rotors feel too, so that pressed on a surface the motors' whole
+  // torque comes to rest against it, and Bullet, which applies it again, is not given it twice.
+  const Eigen::VectorXd constrained =
+      free_velocity_ ? Eigen::VectorXd(inertia_ * (velocity - *free_velocity_) / dt)
+                     : Eigen::VectorXd::Zero(velocity.size());
   // Where links and rotors coast to with these torques: f = M a is what Bullet adds itself.
-  const Eigen::VectorXd coasting = dt * w * (effort + inertia_ * free_acceleration_);
+  const Eigen::VectorXd coasting = dt * w * (effort + inertia_ * free_acceleration_ + constrained);
   // The rows: each joint motor (a unit row toward its speed), each motor's Coulomb friction
   // (its coupling row, toward rest).
   std::vector<Eigen::Index> frictional;
@@ -168,7 +175,7 @@ const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
     impulse = boundedImpulses(r * wrt, target - r * (velocity + coasting), bound);
     change.noalias() += wrt * impulse;
   }
-  torque_ = inertia_ * (change / dt - free_acceleration_);
+  torque_ = inertia_ * (change / dt - free_acceleration_) - constrained;
   transmitted_ = effort + r.transpose() * impulse / dt;
   velocity_before_ = velocity;
   step_ = dt;

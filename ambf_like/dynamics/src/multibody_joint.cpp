@@ -65,7 +65,7 @@ void MultiBodyJoint::actuate(const JointActuation& actuation, double dt) {
 
 JointDynamics::ServoDof MultiBodyJoint::servoDof() const {
   if (!hasCoordinate()) return {};
-  return {&servo_, dof_};
+  return {&servo_, dof_, &multibody_};
 }
 
 bool MultiBodyJoint::place(double coordinate, double velocity) {
@@ -75,6 +75,7 @@ bool MultiBodyJoint::place(double coordinate, double velocity) {
   btAlignedObjectArray<btQuaternion> rotations;
   btAlignedObjectArray<btVector3> offsets;
   multibody_.updateCollisionObjectWorldTransforms(rotations, offsets);
+  servo_.forgetPrediction();
   return true;
 }
 

@@ -1,9 +1,12 @@
 #include "ambf_like/transmission.hpp"
 
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+
 #include <cmath>
 #include <stdexcept>
 
 #include "ambf_like/dynamics/joint_space_servo.hpp"
+#include "ambf_like/dynamics/multibody_weight.hpp"
 #include "ambf_like/world.hpp"
 #include "world_impl.hpp"
 
@@ -46,9 +49,14 @@ void requireShape(const TransmissionSpec& spec) {
 
 }  // namespace
 
-Transmission::Transmission(detail::JointSpaceServo& servo, std::vector<int> dofs,
-                           Eigen::MatrixXd coupling)
-    : servo_(servo), dofs_(std::move(dofs)), coupling_(std::move(coupling)) {}
+Transmission::Transmission(detail::JointSpaceServo& servo, const btMultiBody& multibody,
+                           std::vector<int> dofs, Eigen::MatrixXd coupling,
+                           const Eigen::Vector3d& gravity)
+    : servo_(servo),
+      multibody_(multibody),
+      dofs_(std::move(dofs)),
+      coupling_(std::move(coupling)),
+      gravity_(gravity) {}
 
 void Transmission::drive(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb) {
   if (torque.size() != motorCount() || coulomb.size() != motorCount()) {
@@ -71,6 +79,15 @@ void Transmission::setRotors(const Eigen::VectorXd& inertia, const Eigen::Vector
   servo_.setRotors(inertia, viscous);
 }
 
+Eigen::VectorXd Transmission::linkWeight() const {
+  const Eigen::VectorXd all =
+      detail::weightTorques(multibody_, btVector3(gravity_.x(), gravity_.y(), gravity_.z()));
+  Eigen::VectorXd weight(dofs_.size());
+  for (std::size_t j = 0; j < dofs_.size(); ++j)
+    weight(static_cast<Eigen::Index>(j)) = all(dofs_[j]);
+  return weight;
+}
+
 Eigen::MatrixXd Transmission::linkInertia() const {
   const Eigen::MatrixXd& inverse = servo_.inverseInertia();
   Eigen::MatrixXd joints(dofs_.size(), dofs_.size());
@@ -84,6 +101,7 @@ Eigen::MatrixXd Transmission::linkInertia() const {
 Transmission& World::addTransmission(const TransmissionSpec& spec) {
   requireShape(spec);
   detail::JointSpaceServo* servo = nullptr;
+  const btMultiBody* multibody = nullptr;
   std::vector<int> dofs;
   for (const auto& name : spec.joints) {
     const auto at = joint(name).dynamics().servoDof();
@@ -94,6 +112,7 @@ Transmission& World::addTransmission(const TransmissionSpec& spec) {
           "its joints in one articulation: 'articulation: reduced' in the world file)");
     }
     servo = at.servo;
+    multibody = at.multibody;
     dofs.push_back(at.dof);
   }
   if (servo->hasTransmission()) {
@@ -110,8 +129,8 @@ Transmission& World::addTransmission(const TransmissionSpec& spec) {
   servo->setTransmission({coupling, dofs_all, dofs_all, Eigen::VectorXd::Zero(motors),
                           Eigen::VectorXd::Zero(motors), stepSize()});
   servo->setRotors(spec.rotor_inertia, spec.viscous);
-  return *impl_->transmissions.emplace_back(
-      std::make_unique<Transmission>(*servo, std::move(dofs), spec.coupling));
+  return *impl_->transmissions.emplace_back(std::make_unique<Transmission>(
+      *servo, *multibody, std::move(dofs), spec.coupling, settings().gravity));
 }
 
 }  // namespace ambf_like

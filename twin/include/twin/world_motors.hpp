@@ -21,9 +21,9 @@ class WorldMotors {
   WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, TwinArms& arms,
               ambf_like::World& world);
 
-  /// `torque` (at the gearbox outputs) from the next world step on. The links weigh what the
-  /// World gives them; `gravity_load` (the firmware's estimate) times the fitted gravity error
-  /// is the weight beyond that.
+  /// `torque` (at the gearbox outputs) from the next world step on, against the weight the
+  /// calibration fitted: `gravity_load` (the firmware's estimate) times one plus the fitted
+  /// gravity error, whatever the model's links weigh.
   void step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds);
   ArmJoints position() const;  ///< motor rad, the links' angles through the cables
   ArmJoints velocity() const;
@@ -39,6 +39,8 @@ class WorldMotors {
   MotorMechanics mechanics_;
   TwinArms* arms_;
   ambf_like::Transmission* transmission_;
+  /// d(transmission motor angle) / d(model joint coordinate).
+  Eigen::Matrix<double, kJointCount, kJointCount> coupling_;
   ArmJoints rotor_inertia_;
 };
 

@@ -3,6 +3,8 @@
 
 #include <memory>
 
+class btMultiBody;
+
 namespace ambf_like::detail {
 
 class JointSpaceServo;
@@ -38,6 +40,7 @@ class JointDynamics {
   struct ServoDof {
     JointSpaceServo* servo = nullptr;
     int dof = -1;
+    const btMultiBody* multibody = nullptr;  ///< the articulation's
   };
   virtual ServoDof servoDof() const { return {}; }
   /// Puts the coordinate at `coordinate` moving at `velocity`; false where the formulation

@@ -41,6 +41,8 @@ class JointSpaceServo {
   void setRotors(const Eigen::VectorXd& inertia, const Eigen::VectorXd& viscous);
   /// The transmission's torques and Coulomb friction for the coming steps.
   void driveTransmission(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb);
+  /// The joints were put somewhere (Joint::place): their last free motion says nothing now.
+  void forgetPrediction() { free_velocity_.reset(); }
   /// The joint-space inverse inertia of the links alone (no rotors).
   const Eigen::MatrixXd& inverseInertia() const { return inverse_inertia_; }
 
@@ -84,6 +86,9 @@ class JointSpaceServo {
   Eigen::MatrixXd inertia_;            ///< M, with a transmission
   Eigen::MatrixXd reflected_inverse_;  ///< (M + A + h D)^-1, with a transmission
   Eigen::VectorXd transmitted_;        ///< with a transmission: see appliedTorque
+  /// With a transmission: the joints' speeds after the last step's free motion, before
+  /// contacts and limits acted.
+  std::optional<Eigen::VectorXd> free_velocity_;
 };
 
 }  // namespace ambf_like::detail
