@@ -23,6 +23,7 @@ WorldMotors::WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics&
     coupling_.col(j) =
         drive.toMotor(arm, ArmJoints::Unit(j)).cwiseQuotient(drive.gearbox) / scales(j);
   }
+  weight_to_motors_ = coupling_.transpose().inverse();
   const ArmJoints fitted = mechanics.inertia.cwiseProduct(drive.gearbox);
   ambf_like::TransmissionSpec spec{arms.jointNames(arm), coupling_, fitted,
                                    mechanics.viscous.cwiseProduct(drive.gearbox)};
@@ -37,8 +38,7 @@ void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, d
   // own: the motors carry what the robot's motors were fitted to carry, the links' weight moving
   // with them as the World distributes it. On the transmission's motors the links' weight is
   // coupling^-T times its joint torques.
-  const ArmJoints model_weight =
-      coupling_.transpose().partialPivLu().solve(ArmJoints(transmission_->linkWeight()));
+  const ArmJoints model_weight = weight_to_motors_ * transmission_->linkWeight();
   const ArmJoints fitted_weight =
       (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
   const ArmJoints drive = torque + model_weight - fitted_weight;

@@ -11,11 +11,12 @@ Eigen::VectorXd weightTorques(const btMultiBody& multibody, const btVector3& gra
   const btScalar g = gravity.length();
   if (g == 0.0) return weight;
   const btVector3 down = gravity / g;
-  btAlignedObjectArray<btScalar> jacobian;
+  // Scratch Bullet's Jacobians need, kept between calls (a transmission asks every step).
+  thread_local btAlignedObjectArray<btScalar> jacobian;
+  thread_local btAlignedObjectArray<btScalar> scratch_r;
+  thread_local btAlignedObjectArray<btVector3> scratch_v;
+  thread_local btAlignedObjectArray<btMatrix3x3> scratch_m;
   jacobian.resize(6 + dofs);
-  btAlignedObjectArray<btScalar> scratch_r;
-  btAlignedObjectArray<btVector3> scratch_v;
-  btAlignedObjectArray<btMatrix3x3> scratch_m;
   for (int i = 0; i < multibody.getNumLinks(); ++i) {
     const btMultibodyLink& link = multibody.getLink(i);
     // A link's collider sits at its centre of mass.

@@ -4,6 +4,8 @@
 // move with the links in one solve, and the encoders read the links' angles through the cables.
 // What the links touch (a ring, the other jaw, the board, a joint's stop) therefore loads them.
 
+#include <Eigen/LU>
+
 #include "ambf_like/world.hpp"
 #include "twin/drive_train.hpp"
 #include "twin/motor_dynamics.hpp"
@@ -41,6 +43,8 @@ class WorldMotors {
   ambf_like::Transmission* transmission_;
   /// d(transmission motor angle) / d(model joint coordinate).
   Eigen::Matrix<double, kJointCount, kJointCount> coupling_;
+  /// coupling^-T: joint torques to the motor torques that give them.
+  Eigen::Matrix<double, kJointCount, kJointCount> weight_to_motors_;
   ArmJoints rotor_inertia_;
 };
 
