@@ -135,11 +135,16 @@ TEST(TwinPlatform, NoJointOfTheMotorTwinPassesItsHardStopPoweredOrNot) {
     watch();
   }
   EXPECT_EQ(twin.operatingStatus().state, bridge::OperatingState::Fault);
-  // A reading lands at most a count or two of its motors past a stop (a jaw's joint angle
-  // combines its motor's count, 0.18 mrad, with half the wrist's).
+  // A reading lands at most two counts of its own motor past a stop, and a count of each motor
+  // its angle also reads through the cables (a jaw's combines its motor's count, 0.18 mrad,
+  // with half the wrist's; the elbow's, 0.15 of the shoulder's).
+  const double count = 1.0 / drive.countsPerMotorRadian();
   for (int j = 0; j < raven::kJointCount; ++j) {
-    EXPECT_LE(furthest_past(j), (2.0 + 1e-6) / drive.countsPerMotorRadian() / drive.transmission(j))
-        << raven::kJointNames[static_cast<std::size_t>(j)];
+    double reach = 2.0 * count / drive.transmission(j);
+    for (int i = 0; i < raven::kJointCount; ++i) {
+      if (i != j) reach += std::abs(drive.toJoints(Arm::Left, count * ArmJoints::Unit(i))(j));
+    }
+    EXPECT_LE(furthest_past(j), reach + 1e-12) << raven::kJointNames[static_cast<std::size_t>(j)];
   }
   // Enabled again with the integrator that tripped it emptied (the firmware never empties it:
   // the real robot would trip again at once), the amplifiers take commands.

@@ -9,8 +9,10 @@ namespace {
 
 /// Gauss-Seidel sweeps over the motors once a bound is hit, from the unbounded solution.
 constexpr int kSweeps = 8;
-/// The same for a transmission's rows, whose friction rows couple through its cables.
+/// The same for a transmission's rows, whose friction rows couple through its cables: at most
+/// this many, ending once no impulse moves by more than kRowTolerance of its bound.
 constexpr int kRowSweeps = 32;
+constexpr double kRowTolerance = 1e-9;
 
 /// Impulses p, each within |p_i| <= bound_i, for rows of effective mass `k` (R W R^T) that
 /// bring the rows' speeds `rhs` further: directly, then by projected Gauss-Seidel from the
@@ -21,10 +23,15 @@ Eigen::VectorXd boundedImpulses(const Eigen::MatrixXd& k, const Eigen::VectorXd&
   if ((p.array().abs() <= bound.array()).all()) return p;
   p = p.cwiseMax(-bound).cwiseMin(bound);
   for (int sweep = 0; sweep < kRowSweeps; ++sweep) {
+    double largest_change = 0.0;
     for (Eigen::Index i = 0; i < p.size(); ++i) {
-      const double residual = rhs(i) - k.row(i).dot(p);
-      p(i) = std::clamp(p(i) + residual / k(i, i), -bound(i), bound(i));
+      // `k` is symmetric: its column is its row, and contiguous.
+      const double residual = rhs(i) - k.col(i).dot(p);
+      const double next = std::clamp(p(i) + residual / k(i, i), -bound(i), bound(i));
+      largest_change = std::max(largest_change, std::abs(next - p(i)) / (bound(i) + 1e-300));
+      p(i) = next;
     }
+    if (largest_change < kRowTolerance) break;
   }
   return p;
 }

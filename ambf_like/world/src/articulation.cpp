@@ -13,6 +13,7 @@
 #include "ambf_like/dynamics/bullet_world.hpp"
 #include "ambf_like/dynamics/collision_filter.hpp"
 #include "ambf_like/dynamics/multibody_joint.hpp"
+#include "ambf_like/dynamics/multibody_weight.hpp"
 
 namespace ambf_like::detail {
 
@@ -352,6 +353,8 @@ void Articulation::refreshInverseInertia() {
     inverse_inertia_.col(dof) = Eigen::Map<const Eigen::VectorXd>(acceleration_.data() + 6, dofs);
   }
   servo_.setInverseInertia(inverse_inertia_);
+  if (servo_.hasTransmission())
+    servo_.setLinkWeight(weightTorques(*multibody_, world_.getGravity()));
   steps_since_refresh_ = 0;
 }
 

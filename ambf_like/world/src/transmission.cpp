@@ -49,14 +49,9 @@ void requireShape(const TransmissionSpec& spec) {
 
 }  // namespace
 
-Transmission::Transmission(detail::JointSpaceServo& servo, const btMultiBody& multibody,
-                           std::vector<int> dofs, Eigen::MatrixXd coupling,
-                           const Eigen::Vector3d& gravity)
-    : servo_(servo),
-      multibody_(multibody),
-      dofs_(std::move(dofs)),
-      coupling_(std::move(coupling)),
-      gravity_(gravity) {}
+Transmission::Transmission(detail::JointSpaceServo& servo, std::vector<int> dofs,
+                           Eigen::MatrixXd coupling)
+    : servo_(servo), dofs_(std::move(dofs)), coupling_(std::move(coupling)) {}
 
 void Transmission::drive(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb) {
   if (torque.size() != motorCount() || coulomb.size() != motorCount()) {
@@ -80,11 +75,11 @@ void Transmission::setRotors(const Eigen::VectorXd& inertia, const Eigen::Vector
 }
 
 Eigen::VectorXd Transmission::linkWeight() const {
-  const Eigen::VectorXd all =
-      detail::weightTorques(multibody_, btVector3(gravity_.x(), gravity_.y(), gravity_.z()));
+  const Eigen::VectorXd& all = servo_.linkWeight();
   Eigen::VectorXd weight(dofs_.size());
-  for (std::size_t j = 0; j < dofs_.size(); ++j)
+  for (std::size_t j = 0; j < dofs_.size(); ++j) {
     weight(static_cast<Eigen::Index>(j)) = all(dofs_[j]);
+  }
   return weight;
 }
 
@@ -129,8 +124,10 @@ Transmission& World::addTransmission(const TransmissionSpec& spec) {
   servo->setTransmission({coupling, dofs_all, dofs_all, Eigen::VectorXd::Zero(motors),
                           Eigen::VectorXd::Zero(motors), stepSize()});
   servo->setRotors(spec.rotor_inertia, spec.viscous);
-  return *impl_->transmissions.emplace_back(std::make_unique<Transmission>(
-      *servo, *multibody, std::move(dofs), spec.coupling, settings().gravity));
+  const Vec3& g = settings().gravity;
+  servo->setLinkWeight(detail::weightTorques(*multibody, btVector3(g.x(), g.y(), g.z())));
+  return *impl_->transmissions.emplace_back(
+      std::make_unique<Transmission>(*servo, std::move(dofs), spec.coupling));
 }
 
 }  // namespace ambf_like

@@ -6,8 +6,6 @@
 #include <string>
 #include <vector>
 
-class btMultiBody;
-
 namespace ambf_like {
 
 namespace detail {
@@ -30,8 +28,7 @@ struct TransmissionSpec {
 /// A transmission in a World (World::addTransmission): what its motors apply each step.
 class Transmission {
  public:
-  Transmission(detail::JointSpaceServo& servo, const btMultiBody& multibody, std::vector<int> dofs,
-               Eigen::MatrixXd coupling, const Eigen::Vector3d& gravity);
+  Transmission(detail::JointSpaceServo& servo, std::vector<int> dofs, Eigen::MatrixXd coupling);
 
   /// Each motor's torque and its Coulomb friction (>= 0, the torque it takes to turn it) from the
   /// next step on. Throws std::invalid_argument for a wrong size, NaN or a negative friction.
@@ -40,16 +37,15 @@ class Transmission {
   void setRotors(const Eigen::VectorXd& inertia, const Eigen::VectorXd& viscous);
   /// The links' inertia as the motors feel it now, without the rotors: (C M^-1 C^T)^-1.
   Eigen::MatrixXd linkInertia() const;
-  /// What holds the links still against gravity at their pose now, per joint (spec order).
+  /// What holds the links still against the world's gravity, per joint (spec order), as of
+  /// the articulation's last inertia refresh (every 10 steps).
   Eigen::VectorXd linkWeight() const;
   int motorCount() const { return static_cast<int>(coupling_.rows()); }
 
  private:
   detail::JointSpaceServo& servo_;
-  const btMultiBody& multibody_;
   std::vector<int> dofs_;     ///< the joints' degrees of freedom in the articulation
   Eigen::MatrixXd coupling_;  ///< motors x joints, as specified
-  Eigen::Vector3d gravity_;   ///< the world's
 };
 
 }  // namespace ambf_like

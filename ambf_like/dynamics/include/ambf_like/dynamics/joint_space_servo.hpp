@@ -43,6 +43,9 @@ class JointSpaceServo {
   void driveTransmission(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb);
   /// The joints were put somewhere (Joint::place): their last free motion says nothing now.
   void forgetPrediction() { free_velocity_.reset(); }
+  /// What holds the links still against gravity (refreshed with the inverse inertia).
+  void setLinkWeight(const Eigen::VectorXd& weight) { link_weight_ = weight; }
+  const Eigen::VectorXd& linkWeight() const { return link_weight_; }
   /// The joint-space inverse inertia of the links alone (no rotors).
   const Eigen::MatrixXd& inverseInertia() const { return inverse_inertia_; }
 
@@ -89,6 +92,7 @@ class JointSpaceServo {
   /// With a transmission: the joints' speeds after the last step's free motion, before
   /// contacts and limits acted.
   std::optional<Eigen::VectorXd> free_velocity_;
+  Eigen::VectorXd link_weight_;  ///< with a transmission: see setLinkWeight
 };
 
 }  // namespace ambf_like::detail
