@@ -37,8 +37,7 @@ double restBand(const twin::MotorMechanics& m, const twin::MotorGains& gains, do
 /// own torque: the tool cables pull on the insertion, the elbow's and insertion's on the
 /// shoulder (joint loads are coupling^T tau / gearbox; motor i drives joint i).
 ArmJoints coupledLoads(const twin::DriveTrain& drive, Arm arm, const ArmJoints& tau) {
-  Eigen::Matrix<double, raven::kJointCount, raven::kJointCount> c;
-  for (int j = 0; j < raven::kJointCount; ++j) c.col(j) = drive.toMotor(arm, ArmJoints::Unit(j));
+  const auto c = drive.coupling(arm);
   const ArmJoints at_motor = tau.cwiseQuotient(drive.gearbox);
   ArmJoints loads;
   for (int i = 0; i < raven::kJointCount; ++i) {

@@ -212,10 +212,7 @@ TEST(WorldMotors, AToolPressedOnASlabLoadsTheArmMotorsWithJTransposeF) {
   // Pressed, the arm stands still while its tool motors hunt by an encoder count: motors and
   // contacts balance on average, over 0.3 s.
   const auto drive = twin::DriveTrain::raven2();
-  Eigen::Matrix<double, raven::kJointCount, raven::kJointCount> c;
-  for (int j = 0; j < raven::kJointCount; ++j) {
-    c.col(j) = drive.toMotor(Arm::Left, ArmJoints::Unit(j));
-  }
+  const auto c = drive.coupling(Arm::Left);
   ArmJoints by_motors = ArmJoints::Zero();
   ArmJoints by_contact = ArmJoints::Zero();
   constexpr int kCycles = 300;
@@ -235,8 +232,8 @@ TEST(WorldMotors, AToolPressedOnASlabLoadsTheArmMotorsWithJTransposeF) {
   const ArmJoints expected = weight - by_contact;
   EXPECT_GT(by_contact.cwiseAbs().maxCoeff(), 1.0) << "pressed with less than 1 N";
   // The insertion, which the slab stops, within 5 %; the shoulder and elbow, which hold the
-  // contact's moment while the tool motors still settle (the rotors meet a contact one step
-  // late through the links' own inertia: see docs/actuation.md), within 25 %.
+  // contact's moment while the tool motors still settle (the rotors feel a contact only step by
+  // step, through the links' own inertia: see docs/actuation.md), within 25 %.
   for (int j = 0; j <= raven::kInsertion; ++j) {
     const double share = j == raven::kInsertion ? 0.05 : 0.25;
     EXPECT_NEAR(by_motors(j), expected(j), share * std::abs(by_contact(j)) + 2e-3)

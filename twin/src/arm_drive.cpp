@@ -30,9 +30,8 @@ ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, double cycle,
       cycle_(cycle),
       stops_(std::move(stops)),
       motors_(std::move(motors)),
-      controller_(arm, drive) {
-  for (int j = 0; j < kJointCount; ++j) coupling_.col(j) = drive_.toMotor(arm, ArmJoints::Unit(j));
-}
+      controller_(arm, drive),
+      coupling_(drive.coupling(arm)) {}
 
 ArmJoints ArmDrive::linkPosition() const {
   return drive_.toJoints(arm_, std::visit([](const auto& m) { return m.position(); }, motors_));

@@ -59,6 +59,12 @@ ArmJoints DriveTrain::toMotor(Arm arm, const ArmJoints& q) const {
   return toMotor(arm, q, insertionMotor(q));
 }
 
+Eigen::Matrix<double, kJointCount, kJointCount> DriveTrain::coupling(Arm arm) const {
+  Eigen::Matrix<double, kJointCount, kJointCount> c;
+  for (int j = 0; j < kJointCount; ++j) c.col(j) = toMotor(arm, ArmJoints::Unit(j));
+  return c;
+}
+
 double DriveTrain::insertionMotor(const ArmJoints& q) const {
   return transmission(raven::kInsertion) *
          (q(raven::kInsertion) + shoulder_to_insertion * q(raven::kShoulder) +

@@ -18,19 +18,17 @@ constexpr double kLeastRotorShare = 0.25;
 WorldMotors::WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics,
                          TwinArms& arms, ambf_like::World& world)
     : arm_(arm), drive_(drive), mechanics_(mechanics), arms_(&arms) {
-  const ArmJoints scales = arms.scales(arm);
-  for (int j = 0; j < kJointCount; ++j) {
-    coupling_.col(j) =
-        drive.toMotor(arm, ArmJoints::Unit(j)).cwiseQuotient(drive.gearbox) / scales(j);
-  }
-  weight_to_motors_ = coupling_.transpose().inverse();
+  // d(transmission motor angle) / d(model joint coordinate).
+  const Eigen::Matrix<double, kJointCount, kJointCount> coupling =
+      drive.gearbox.cwiseInverse().asDiagonal() * drive.coupling(arm) *
+      arms.scales(arm).cwiseInverse().asDiagonal();
+  weight_to_motors_ = coupling.transpose().inverse();
   const ArmJoints fitted = mechanics.inertia.cwiseProduct(drive.gearbox);
-  ambf_like::TransmissionSpec spec{arms.jointNames(arm), coupling_, fitted,
+  ambf_like::TransmissionSpec spec{arms.jointNames(arm), coupling, fitted,
                                    mechanics.viscous.cwiseProduct(drive.gearbox)};
   transmission_ = &world.addTransmission(spec);
   const ArmJoints links = transmission_->linkInertia().diagonal();
-  rotor_inertia_ = (fitted - links).cwiseMax(kLeastRotorShare * fitted);
-  transmission_->setRotors(rotor_inertia_, spec.viscous);
+  transmission_->setRotors((fitted - links).cwiseMax(kLeastRotorShare * fitted), spec.viscous);
 }
 
 void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, double /*seconds*/) {
@@ -49,10 +47,6 @@ void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, d
 
 ArmJoints WorldMotors::position() const {
   return drive_.toMotor(arm_, arms_->measured(arm_));
-}
-
-ArmJoints WorldMotors::velocity() const {
-  return drive_.toMotor(arm_, arms_->velocities(arm_));  // linear: velocities map alike
 }
 
 void WorldMotors::place(const ArmJoints& position, const ArmJoints& velocity) {

@@ -14,12 +14,13 @@ constexpr int kSweeps = 8;
 constexpr int kRowSweeps = 32;
 constexpr double kRowTolerance = 1e-9;
 
-/// Impulses p, each within |p_i| <= bound_i, for rows of effective mass `k` (R W R^T) that
-/// bring the rows' speeds `rhs` further: directly, then by projected Gauss-Seidel from the
-/// clamped solution when a bound binds.
-Eigen::VectorXd boundedImpulses(const Eigen::MatrixXd& k, const Eigen::VectorXd& rhs,
-                                const Eigen::VectorXd& bound) {
-  Eigen::VectorXd p = k.ldlt().solve(rhs);
+/// Impulses p, each within |p_i| <= bound_i, for rows of effective mass `k` (R W R^T, `factor`
+/// its LDLT) that bring the rows' speeds `rhs` further: directly, then by projected
+/// Gauss-Seidel from the clamped solution when a bound binds.
+Eigen::VectorXd boundedImpulses(const Eigen::MatrixXd& k,
+                                const Eigen::LDLT<Eigen::MatrixXd>& factor,
+                                const Eigen::VectorXd& rhs, const Eigen::VectorXd& bound) {
+  Eigen::VectorXd p = factor.solve(rhs);
   if ((p.array().abs() <= bound.array()).all()) return p;
   p = p.cwiseMax(-bound).cwiseMin(bound);
   for (int sweep = 0; sweep < kRowSweeps; ++sweep) {
@@ -80,6 +81,32 @@ void JointSpaceServo::refreshReflectedInertia() {
   inertia_ = inverse_inertia_.llt().solve(identity);
   const Transmission& t = *transmission_;
   reflected_inverse_ = (inertia_ + t.armature + t.step * t.damping).llt().solve(identity);
+  rows_.valid = false;
+}
+
+void JointSpaceServo::prepareRows() {
+  const Transmission& t = *transmission_;
+  motors_.clear();
+  for (Eigen::Index i = 0; i < motor_impulse_.size(); ++i) {
+    if (motor_impulse_(i) > 0.0) motors_.push_back(i);
+  }
+  frictional_.clear();
+  for (Eigen::Index m = 0; m < t.coulomb.size(); ++m) {
+    if (t.coulomb(m) > 0.0) frictional_.push_back(m);
+  }
+  RowSolve& r = rows_;
+  if (r.valid && r.motors == motors_ && r.frictional == frictional_) return;
+  r.motors = motors_;
+  r.frictional = frictional_;
+  const auto count = static_cast<Eigen::Index>(motors_.size() + frictional_.size());
+  r.rows = Eigen::MatrixXd::Zero(count, inverse_inertia_.rows());
+  Eigen::Index row = 0;
+  for (const auto i : motors_) r.rows(row++, i) = 1.0;
+  for (const auto m : frictional_) r.rows.row(row++) = t.coupling.row(m);
+  r.response = reflected_inverse_ * r.rows.transpose();
+  r.mass = r.rows * r.response;
+  r.factor.compute(r.mass);
+  r.valid = true;
 }
 
 void JointSpaceServo::request(int dof, const JointActuation& actuation) {
@@ -141,7 +168,6 @@ void JointSpaceServo::boundMotors(double dt) {
 const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
     const Eigen::Ref<const Eigen::VectorXd>& velocity, double dt) {
   const Transmission& t = *transmission_;
-  const Eigen::MatrixXd& w = reflected_inverse_;
   const Eigen::VectorXd effort = effort_ + t.coupling.transpose() * t.torque - t.damping * velocity;
   // What contacts and limits put on the joints last step (they act on the links alone, after
   // the free motion): a load the rotors feel too, so that pressed on a surface the motors' whole
@@ -150,40 +176,29 @@ const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
       free_velocity_ ? Eigen::VectorXd(inertia_ * (velocity - *free_velocity_) / dt)
                      : Eigen::VectorXd::Zero(velocity.size());
   // Where links and rotors coast to with these torques: f = M a is what Bullet adds itself.
-  const Eigen::VectorXd coasting = dt * w * (effort + inertia_ * free_acceleration_ + constrained);
+  const Eigen::VectorXd coasting =
+      dt * reflected_inverse_ * (effort + inertia_ * free_acceleration_ + constrained);
   // The rows: each joint motor (a unit row toward its speed), each motor's Coulomb friction
   // (its coupling row, toward rest).
-  std::vector<Eigen::Index> frictional;
-  for (Eigen::Index m = 0; m < t.coulomb.size(); ++m) {
-    if (t.coulomb(m) > 0.0) frictional.push_back(m);
-  }
-  std::vector<Eigen::Index> motors;
-  for (Eigen::Index i = 0; i < motor_impulse_.size(); ++i) {
-    if (motor_impulse_(i) > 0.0) motors.push_back(i);
-  }
-  const auto rows = static_cast<Eigen::Index>(motors.size() + frictional.size());
-  Eigen::MatrixXd r = Eigen::MatrixXd::Zero(rows, velocity.size());
-  Eigen::VectorXd target = Eigen::VectorXd::Zero(rows);
-  Eigen::VectorXd bound(rows);
+  prepareRows();
+  const RowSolve& r = rows_;
+  const auto count = r.rows.rows();
+  Eigen::VectorXd target = Eigen::VectorXd::Zero(count);
+  Eigen::VectorXd bound(count);
   Eigen::Index row = 0;
-  for (const auto i : motors) {
-    r(row, i) = 1.0;
+  for (const auto i : r.motors) {
     target(row) = motor_velocity_(i);
     bound(row++) = motor_impulse_(i);
   }
-  for (const auto m : frictional) {
-    r.row(row) = t.coupling.row(m);
-    bound(row++) = dt * t.coulomb(m);
-  }
+  for (const auto m : r.frictional) bound(row++) = dt * t.coulomb(m);
   Eigen::VectorXd change = coasting;
-  Eigen::VectorXd impulse = Eigen::VectorXd::Zero(rows);
-  if (rows > 0) {
-    const Eigen::MatrixXd wrt = w * r.transpose();
-    impulse = boundedImpulses(r * wrt, target - r * (velocity + coasting), bound);
-    change.noalias() += wrt * impulse;
+  Eigen::VectorXd impulse = Eigen::VectorXd::Zero(count);
+  if (count > 0) {
+    impulse = boundedImpulses(r.mass, r.factor, target - r.rows * (velocity + coasting), bound);
+    change.noalias() += r.response * impulse;
   }
   torque_ = inertia_ * (change / dt - free_acceleration_) - constrained;
-  transmitted_ = effort + r.transpose() * impulse / dt;
+  transmitted_ = effort + r.rows.transpose() * impulse / dt;
   velocity_before_ = velocity;
   step_ = dt;
   return torque_;

@@ -3,6 +3,7 @@
 // fwd_/inv_cable_coupling.cpp; ../shared/reference/raven2-actuation.md §1-2): per motor the
 // transmission and gearbox, the cables that couple the joints, and the 4000-count encoders.
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 
@@ -36,6 +37,9 @@ struct DriveTrain {
   ArmJoints toMotor(Arm arm, const ArmJoints& joint) const;
   /// The insertion motor's angle of joint values (it turns with the shoulder and elbow too).
   double insertionMotor(const ArmJoints& joint) const;
+  /// d(motor angle)/d(joint value) of `arm`: toMotor as a matrix (joint loads are its
+  /// transpose times motor torques at the motor shafts).
+  Eigen::Matrix<double, kJointCount, kJointCount> coupling(Arm arm) const;
   /// Joint values of motor angles (fwd_cable_coupling), the exact inverse.
   ArmJoints toJoints(Arm arm, const ArmJoints& motor) const;
 

@@ -28,12 +28,8 @@ class WorldMotors {
   /// gravity error, whatever the model's links weigh.
   void step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds);
   ArmJoints position() const;  ///< motor rad, the links' angles through the cables
-  ArmJoints velocity() const;
   /// Puts the arm's joints where these motor angles and speeds put them.
   void place(const ArmJoints& position, const ArmJoints& velocity);
-
-  /// The rotors' inertia on the transmission's motor angles (the gearbox outputs, kg m^2).
-  const ArmJoints& rotorInertia() const { return rotor_inertia_; }
 
  private:
   Arm arm_;
@@ -41,11 +37,8 @@ class WorldMotors {
   MotorMechanics mechanics_;
   TwinArms* arms_;
   ambf_like::Transmission* transmission_;
-  /// d(transmission motor angle) / d(model joint coordinate).
-  Eigen::Matrix<double, kJointCount, kJointCount> coupling_;
   /// coupling^-T: joint torques to the motor torques that give them.
   Eigen::Matrix<double, kJointCount, kJointCount> weight_to_motors_;
-  ArmJoints rotor_inertia_;
 };
 
 }  // namespace twin

@@ -70,6 +70,9 @@ class JointSpaceServo {
   const Eigen::VectorXd& reflectedTorques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
                                           double dt);
   void refreshReflectedInertia();
+  /// Picks this step's rows (motors on, motors with friction) and, when they or the inertia
+  /// changed, rebuilds their effective mass and its factor.
+  void prepareRows();
 
   Eigen::MatrixXd inverse_inertia_;
   Eigen::VectorXd free_acceleration_;
@@ -93,6 +96,19 @@ class JointSpaceServo {
   /// contacts and limits acted.
   std::optional<Eigen::VectorXd> free_velocity_;
   Eigen::VectorXd link_weight_;  ///< with a transmission: see setLinkWeight
+  /// With a transmission: the bounded rows of the last step and what they cost to set up, kept
+  /// while the rows and the inertia stay the same.
+  struct RowSolve {
+    std::vector<Eigen::Index> motors;      ///< dofs with a motor: unit rows
+    std::vector<Eigen::Index> frictional;  ///< motors with Coulomb friction: coupling rows
+    Eigen::MatrixXd rows;                  ///< R
+    Eigen::MatrixXd response;              ///< W R^T: joint speeds per row impulse
+    Eigen::MatrixXd mass;                  ///< R W R^T
+    Eigen::LDLT<Eigen::MatrixXd> factor;   ///< of `mass`
+    bool valid = false;
+  };
+  RowSolve rows_;
+  std::vector<Eigen::Index> frictional_;  ///< scratch: this step's frictional motors
 };
 
 }  // namespace ambf_like::detail
