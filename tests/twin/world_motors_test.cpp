@@ -1,13 +1,16 @@
 // The motors drive the simulated links through the cables and carry what the links carry: the
 // weight the calibration fitted, and what the tool presses on, checked against the statics.
 
+#include <BulletDynamics/Dynamics/btRigidBody.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "ambf_like/bullet_conversions.hpp"
 #include "bridge/raven_state.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/gravity_compensation.hpp"
@@ -153,26 +156,85 @@ ArmJoints contactLoads(twin::TwinPlatform& twin, Arm arm) {
   return loads;
 }
 
-/// Our Raven-II with a static 3 x 3 x 1 cm slab at `centre` (world), its faces across `normal`.
-twin::TwinOptions withSlab(const twin::TwinOptions& base, const Eigen::Vector3d& centre,
-                           const Eigen::Vector3d& normal) {
+/// Our Raven-II with one static obstacle of `shape` at `pose` (world), and no rolling friction
+/// anywhere: Bullet's rolling friction puts a couple on a pressed contact (AMBF's default 0.01 m
+/// times the normal force) that no contact point reports, and the statics here are of point forces.
+twin::TwinOptions withObstacle(const twin::TwinOptions& base,
+                               const ambf_like::PrimitiveShape& shape,
+                               const ambf_like::Transform& pose, double friction) {
   twin::TwinOptions options = base;
-  options.adjust_scene = [centre, normal](ambf_like::SceneSpec& scene) {
-    ambf_like::ModelSpec slab;
-    slab.name_space = "/test/";
+  options.adjust_scene = [shape, pose, friction](ambf_like::SceneSpec& scene) {
+    for (auto& model : scene.models) {
+      for (auto& body : model.bodies) body.surface.rolling_friction = 0.0;
+    }
+    ambf_like::ModelSpec obstacle;
+    obstacle.name_space = "/test/";
     ambf_like::BodySpec body;
-    body.name = "slab";
-    ambf_like::PrimitiveShape box;
-    box.box_size = Eigen::Vector3d(0.03, 0.03, 0.01);
-    box.offset = ambf_like::Transform::Identity();
-    body.collision.primitives.push_back(box);
-    body.location.translation() = centre;
-    body.location.linear() =
-        Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), normal).toRotationMatrix();
-    slab.bodies.push_back(body);
-    scene.models.push_back(slab);
+    body.name = "obstacle";
+    body.surface.rolling_friction = 0.0;
+    body.surface.static_friction = friction;
+    body.collision.primitives.push_back(shape);
+    body.collision.primitives.back().offset = ambf_like::Transform::Identity();
+    body.location = pose;
+    obstacle.bodies.push_back(body);
+    scene.models.push_back(obstacle);
   };
   return options;
+}
+
+/// Whether any body that `joint` of `arm` moves presses on something.
+bool touching(twin::TwinPlatform& twin, Arm arm, int joint) {
+  const ArmChain chain = chainOf(twin, arm);
+  for (const auto& body : chain.moves[static_cast<std::size_t>(joint)]) {
+    for (const auto& c : twin.world().contacts(body)) {
+      if (c.normal_impulse > 0.0) return true;
+    }
+  }
+  return false;
+}
+
+/// `arm` at rest against an obstacle, averaged over `cycles` 1 ms cycles: the joint loads its
+/// motors apply through the cables, the fitted weight they carry, and J^T F of its contacts.
+struct JointBalance {
+  ArmJoints by_motors = ArmJoints::Zero();
+  ArmJoints weight = ArmJoints::Zero();
+  ArmJoints by_contact = ArmJoints::Zero();
+  double drift = 0.0;  ///< the farthest any joint went over the cycles (rad or m)
+};
+
+JointBalance balanceAtRest(twin::TwinPlatform& twin, const twin::TwinOptions& options, Arm arm,
+                           int cycles) {
+  const auto drive = twin::DriveTrain::raven2();
+  const auto c = drive.coupling(arm);
+  const ArmChain chain = chainOf(twin, arm);
+  JointBalance balance;
+  std::vector<double> start;
+  for (const auto* joint : chain.joints) start.push_back(joint->position());
+  for (int k = 0; k < cycles; ++k) {
+    twin.advance(0.001);
+    balance.by_motors +=
+        c.transpose() * appliedTorque(twin, arm).cwiseQuotient(drive.gearbox) / cycles;
+    balance.by_contact += contactLoads(twin, arm) / cycles;
+  }
+  for (std::size_t j = 0; j < start.size(); ++j) {
+    balance.drift = std::max(balance.drift, std::abs(chain.joints[j]->position() - start[j]));
+  }
+  balance.weight =
+      c.transpose() *
+      fittedWeight(options, arm, twin.measuredJs(arm).position).cwiseQuotient(drive.gearbox);
+  return balance;
+}
+
+/// At rest, each joint's motor load carries the fitted weight and pushes against the contacts:
+/// within 5 % of what it should be, or 0.1 mN m (revolute) and 1 mN (the insertion).
+void expectMotorsHoldTheContacts(const JointBalance& b) {
+  const ArmJoints expected = b.weight - b.by_contact;
+  for (int j = 0; j < raven::kJointCount; ++j) {
+    const double floor = j == raven::kInsertion ? 1e-3 : 1e-4;
+    EXPECT_NEAR(b.by_motors(j), expected(j), 0.05 * std::abs(expected(j)) + floor)
+        << raven::kJointNames[static_cast<std::size_t>(j)] << ": contact " << b.by_contact(j)
+        << ", weight " << b.weight(j);
+  }
 }
 
 TEST(WorldMotors, AToolPressedOnASlabLoadsTheArmMotorsWithJTransposeF) {
@@ -181,65 +243,85 @@ TEST(WorldMotors, AToolPressedOnASlabLoadsTheArmMotorsWithJTransposeF) {
   const twin::TwinOptions motors_only = frictionlessMotors();
   const auto probe = test_support::readyTwin(motors_only);
   ambf_like::World& free_world = probe->world();
-  // The slab 3 cm ahead of the jaws at home, across the insertion's axis: on the side away
-  // from the shaft, where withdrawing the insertion takes them in this model's frames.
+  // A 3 x 3 x 1 cm slab 3 cm ahead of the jaws at home, across the insertion's axis: on the
+  // side away from the shaft, where withdrawing the insertion takes them in this model's frames.
   const auto& insertion = *chainOf(*probe, Arm::Left).joints[raven::kInsertion];
   const Eigen::Vector3d axis =
       free_world.body("/raven2/left/" + insertion.spec().parent).pose().linear() *
       insertion.spec().parent_axis.normalized();
-  const Eigen::Vector3d jaw = free_world.body("/raven2/left/jaw1_link").pose().translation();
-  auto pressed = test_support::readyTwin(withSlab(motors_only, jaw - 0.03 * axis, axis));
-  ambf_like::World& world = pressed->world();
-  const ArmChain chain = chainOf(*pressed, Arm::Left);
-  auto touching = [&] {
-    for (const auto& body : chain.moves[raven::kInsertion]) {
-      if (!world.contacts(body).empty()) return true;
-    }
-    return false;
-  };
+  ambf_like::PrimitiveShape slab;
+  slab.box_size = Eigen::Vector3d(0.03, 0.03, 0.01);
+  ambf_like::Transform pose = ambf_like::Transform::Identity();
+  pose.translation() = free_world.body("/raven2/left/jaw1_link").pose().translation() - 0.03 * axis;
+  pose.linear() =
+      Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix();
+  const twin::TwinOptions options = withObstacle(motors_only, slab, pose, 0.5);
+  auto pressed = test_support::readyTwin(options);
   ArmJoints in = ArmJoints::Zero();
   in(raven::kInsertion) = -2e-5;  // 2 cm/s toward the slab
-  for (int k = 0; k < 8000 && !touching(); ++k) {
+  for (int k = 0; k < 8000 && !touching(*pressed, Arm::Left, raven::kInsertion); ++k) {
     pressed->send(bridge::ServoJr{Arm::Left, in});
     pressed->advance(0.001);
   }
-  ASSERT_TRUE(touching()) << "the tool never reached the slab";
+  ASSERT_TRUE(touching(*pressed, Arm::Left, raven::kInsertion)) << "never reached the slab";
   for (int k = 0; k < 150; ++k) {  // 3 mm into it
     pressed->send(bridge::ServoJr{Arm::Left, in});
     pressed->advance(0.001);
   }
-  pressed->advance(2.0);
-  // Pressed, the arm stands still while its tool motors hunt by an encoder count: motors and
+  pressed->advance(5.0);  // the rotors take up the contact step by step (docs/actuation.md)
+  // Pressed, the arm stands still while its motors hunt by an encoder count: motors and
   // contacts balance on average, over 0.3 s.
-  const auto drive = twin::DriveTrain::raven2();
-  const auto c = drive.coupling(Arm::Left);
-  ArmJoints by_motors = ArmJoints::Zero();
-  ArmJoints by_contact = ArmJoints::Zero();
-  constexpr int kCycles = 300;
-  for (int k = 0; k < kCycles; ++k) {
-    pressed->advance(0.001);
-    for (int j = 0; j <= raven::kInsertion; ++j) {
-      ASSERT_LT(std::abs(chain.joints[static_cast<std::size_t>(j)]->velocity()), 1e-3);
-    }
-    const ArmJoints tau = appliedTorque(*pressed, Arm::Left);
-    by_motors += c.transpose() * tau.cwiseQuotient(drive.gearbox) / kCycles;
-    by_contact += contactLoads(*pressed, Arm::Left) / kCycles;
+  const JointBalance balance = balanceAtRest(*pressed, options, Arm::Left, 300);
+  EXPECT_LT(balance.drift, 5e-4);
+  EXPECT_GT(balance.by_contact(raven::kInsertion), 10.0) << "pressed with less than 10 N";
+  expectMotorsHoldTheContacts(balance);
+}
+
+TEST(WorldMotors, JawsClosedOnARigidBallSqueezeItWithTheJawMotorsTorque) {
+  // Acceptance 1(a): the jaws commanded closed on a rigid ball held in the world. The jaw
+  // motors' integrators wind up against it; at rest their torque, through the cables and the
+  // jaws' lever arms, is the squeeze.
+  const twin::TwinOptions motors_only = frictionlessMotors();
+  ambf_like::PrimitiveShape ball;
+  ball.type = ambf_like::PrimitiveType::Sphere;
+  ball.radius = 0.007 * std::sin(0.25);  // met about 0.5 rad open, 7 mm from the jaws' pivot
+  ambf_like::Transform away = ambf_like::Transform::Identity();
+  away.translation() = Eigen::Vector3d(0, 0, -1);  // out of the jaws' way while they home
+  const twin::TwinOptions options = withObstacle(motors_only, ball, away, 0.0);
+  auto squeezing = test_support::readyTwin(options);
+  ambf_like::World& world = squeezing->world();
+  // Homed, the ball goes onto the jaws' bisector (each jaw reaches 11 mm along its x, its
+  // gripping face across its y): moved as a test moves a fixture, between steps.
+  const auto jaw1 = world.body("/raven2/left/jaw1_link").pose();
+  const auto jaw2 = world.body("/raven2/left/jaw2_link").pose();
+  ambf_like::Transform between = ambf_like::Transform::Identity();
+  between.translation() =
+      jaw1.translation() + 0.007 * (jaw1.linear().col(0) + jaw2.linear().col(0)).normalized();
+  world.body("/test/obstacle").bullet().setWorldTransform(ambf_like::toBt(between));
+  ArmJoints close = ArmJoints::Zero();
+  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;  // 1 rad/s each
+  const auto bothPress = [&] {
+    return touching(*squeezing, Arm::Left, raven::kJaw1) &&
+           touching(*squeezing, Arm::Left, raven::kJaw2);
+  };
+  for (int k = 0; k < 2000 && !bothPress(); ++k) {
+    squeezing->send(bridge::ServoJr{Arm::Left, close});
+    squeezing->advance(0.001);
   }
-  // At rest the motors' joint loads carry the fitted weight and push against the contact.
-  const ArmJoints weight =
-      c.transpose() * fittedWeight(motors_only, Arm::Left, pressed->measuredJs(Arm::Left).position)
-                          .cwiseQuotient(drive.gearbox);
-  const ArmJoints expected = weight - by_contact;
-  EXPECT_GT(by_contact.cwiseAbs().maxCoeff(), 1.0) << "pressed with less than 1 N";
-  // The insertion, which the slab stops, within 5 %; the shoulder and elbow, which hold the
-  // contact's moment while the tool motors still settle (the rotors feel a contact only step by
-  // step, through the links' own inertia: see docs/actuation.md), within 25 %.
-  for (int j = 0; j <= raven::kInsertion; ++j) {
-    const double share = j == raven::kInsertion ? 0.05 : 0.25;
-    EXPECT_NEAR(by_motors(j), expected(j), share * std::abs(by_contact(j)) + 2e-3)
-        << raven::kJointNames[static_cast<std::size_t>(j)] << ": contact " << by_contact(j)
-        << ", weight " << weight(j);
+  ASSERT_TRUE(bothPress()) << "the jaws never closed on the ball";
+  for (int k = 0; k < 100; ++k) {  // commanded 0.1 rad further closed
+    squeezing->send(bridge::ServoJr{Arm::Left, close});
+    squeezing->advance(0.001);
   }
+  squeezing->advance(5.0);  // the rotors take up the squeeze step by step
+  // Squeezed at the jaws' DAC clip (about 50 N a jaw), the ball wedges the jaws apart and
+  // pushes the tool back; the arm's integrators wind up against it, so the arm creeps (about
+  // 4 mrad/s, quasi-static) and, as on the robot, trips the overdrive e-stop some seconds later.
+  const JointBalance balance = balanceAtRest(*squeezing, options, Arm::Left, 300);
+  EXPECT_LT(balance.drift, 2e-3);
+  EXPECT_GT(balance.by_contact(raven::kJaw1), 0.1) << "squeezed with less than 0.1 N m";
+  EXPECT_GT(balance.by_contact(raven::kJaw2), 0.1) << "squeezed with less than 0.1 N m";
+  expectMotorsHoldTheContacts(balance);
 }
 
 }  // namespace
