@@ -10,7 +10,7 @@ build=${1:-build-sanitize}
 seconds=${2:-30}
 shift $(($# > 2 ? 2 : $#))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(adf urdf mesh recordings ros_messages)
+[ ${#targets[@]} -gt 0 ] || targets=(adf urdf mesh articulations recordings ros_messages)
 export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan-suppressions.txt"
 shared=../shared/data
 work=$(mktemp -d)
@@ -45,16 +45,19 @@ seed mesh 03 $(project_files '*.vtk') $(shared_files '*.vtk')
 [ -d "$shared" ] && seed recordings 00 $(find "$shared/recordings" -name '*_ambf_1.csv' -o -name '*_physical_1.csv')
 [ -d "$shared" ] && seed recordings 01 $(find "$shared/recordings" -name '*_ci.csv')
 seed recordings 01 $(project_files '*_ci.csv')
-mkdir -p "$work/ros_messages-seeds"
+mkdir -p "$work/ros_messages-seeds" "$work/articulations-seeds"
 
-declare -A max_len=([adf]=262144 [urdf]=65536 [mesh]=131072 [recordings]=131072 [ros_messages]=4096)
+# Seconds an input may take: a user waits 20 s for a file of 20,000 links to load and step.
+declare -A timeout=([articulations]=20)
+declare -A max_len=([adf]=262144 [urdf]=65536 [mesh]=131072 [recordings]=131072 [ros_messages]=4096
+  [articulations]=65536)
 status=0
 for target in "${targets[@]}"; do
   binary="$build/fuzz/fuzz_$target"
   [ -x "$binary" ] || { echo "fuzz: $binary is not built (cmake -DRAVEN_FUZZ=ON, CXX=clang++)"; exit 1; }
   mkdir -p "$work/$target-corpus" "$work/findings"
   echo "fuzz: $target for $seconds s"
-  if ! "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  if ! "$binary" -max_total_time="$seconds" -timeout="${timeout[$target]:-10}" -rss_limit_mb=2048 \
       -max_len="${max_len[$target]}" -print_final_stats=1 \
       -artifact_prefix="$work/findings/$target-" \
       "$work/$target-corpus" "fuzz/corpus/$target" "$work/$target-seeds" \
@@ -73,7 +76,7 @@ for target in "${targets[@]}"; do
   regressions=(fuzz/regressions/$target/*)
   if [ -e "${regressions[0]}" ]; then
     echo "fuzz: replaying ${#regressions[@]} saved $target regression inputs"
-    "$binary" -timeout=10 -rss_limit_mb=2048 "${regressions[@]}" > "$work/$target-regressions.log" 2>&1 ||
+    "$binary" -timeout="${timeout[$target]:-10}" -rss_limit_mb=2048 "${regressions[@]}" > "$work/$target-regressions.log" 2>&1 ||
       { tail -n 40 "$work/$target-regressions.log"; status=1; }
   fi
 done
