@@ -23,6 +23,10 @@ constexpr double kLift = 0.030;       ///< the ring's bottom clears the 22 mm po
 constexpr double kRetreat = 0.025;
 constexpr double kReleaseHeight = 0.0015;  ///< the ring's bottom above the board when let go
 constexpr int kSettleIterations = 15;
+constexpr double kAligned = 0.0002;   ///< the measured tool this near the grasp before closing (m)
+constexpr int kAlignIterations = 60;  ///< ... or this many iterations of correcting
+constexpr double kJawsThere = 0.02;   ///< the measured outer jaw this near its command (rad)
+constexpr int kClosingIterations = 30;     ///< ... or stalled on the ring this many iterations
 constexpr double kCentred = 0.0005;        ///< the ring's centre this near the post's axis (m)
 constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
 constexpr int kMaxRegrasps = 2;            ///< per peg, as an operator would before moving on
@@ -31,8 +35,9 @@ constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much
 }  // namespace
 
 std::string_view phaseName(Phase phase) {
-  static constexpr std::array<std::string_view, 10> names{
-      "orient", "descend", "close", "lift", "carry", "lower", "open", "settle", "retreat", "done"};
+  static constexpr std::array<std::string_view, 11> names{"orient", "descend", "align", "close",
+                                                          "lift",   "carry",   "lower", "open",
+                                                          "settle", "retreat", "done"};
   return names[static_cast<std::size_t>(phase)];
 }
 
@@ -138,7 +143,7 @@ bool ArmRoutine::ringFollows(const bridge::ScenePerception& scene) const {
   return layout_.geometry.offTheBoard(ring(scene).bottom());
 }
 
-raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target,
+raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const raven::ArmJoints& measured,
                                   const bridge::ScenePerception& scene) {
   bool arrived = false;
   raven::ArmJoints q = target;
@@ -162,12 +167,24 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target,
     }
     case Phase::Descend:
       q = translate(target, grasp_.pivot, kStep, arrived);
-      if (arrived) advance(Phase::Close);
+      if (arrived) advance(Phase::Align);
       break;
-    case Phase::Close:
+    case Phase::Align: {  // the measured tool onto the grasp: the command moves by what it lacks
+      const Eigen::Vector3d lack = grasp_.pivot - kinematics_.toolPose(measured).translation();
+      if (lack.norm() <= kAligned || ++waited_ > kAlignIterations) {
+        advance(Phase::Close);
+        break;
+      }
+      q = translate(target, kinematics_.toolPose(target).translation() + lack, kStep, arrived);
+      break;
+    }
+    case Phase::Close:  // until the measured jaw is there, or stopped on the ring
       outer_ = std::max(closed_, outer_ - kJawStep);
       q = withJaws(target);
-      if (outer_ <= closed_) advance(Phase::Lift);
+      if (outer_ <= closed_ && (std::abs(measured(raven::kJaw2) - outer_) <= kJawsThere ||
+                                ++waited_ > kClosingIterations)) {
+        advance(Phase::Lift);
+      }
       break;
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);

@@ -92,8 +92,9 @@ void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController&
   try {
     while (!done() && platform.now() < options.time_limit && !options.stopRequested()) {
       const controller::ArmPair current = controller.commanded();
-      const controller::ArmPair next{routines[0].next(current[0], scene),
-                                     routines[1].next(current[1], scene)};
+      const controller::ArmPair next{
+          routines[0].next(current[0], platform.measuredJs(raven::Arm::Left).position, scene),
+          routines[1].next(current[1], platform.measuredJs(raven::Arm::Right).position, scene)};
       result.refused += controller.moveTo(next).refused;
       if (faulted()) throw PlatformFault();
       scene.update(platform.now());

@@ -103,8 +103,10 @@ Eigen::VectorXd PegTransferEnv::expertAction() {
   if (!failure_.empty()) throw std::logic_error("the episode ended when its world failed");
   controller::DualPlatformController& controller = session().controller();
   const controller::ArmPair& current = controller.commanded();
-  const controller::ArmPair targets{(*expert_)[0].next(current[0], *scene_),
-                                    (*expert_)[1].next(current[1], *scene_)};
+  const twin::TwinPlatform& twin = session().twin();
+  const controller::ArmPair targets{
+      (*expert_)[0].next(current[0], twin.measuredJs(raven::Arm::Left).position, *scene_),
+      (*expert_)[1].next(current[1], twin.measuredJs(raven::Arm::Right).position, *scene_)};
   return actionFor(options_.action, targets, current, kinematics_);
 }
 

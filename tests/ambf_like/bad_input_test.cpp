@@ -379,21 +379,6 @@ TEST(BadInput, SoftBodyContactFrictionModel) {
   const auto unknown = dir.write("m.yaml", "soft bodies: [BODY blob]\n" + blob + "glue}\n");
   EXPECT_THAT(loadError(unknown),
               AllOf(HasSubstr("BODY blob/contact friction"), HasSubstr("not 'glue'")));
-  // Coulomb contacts push on rigid bodies; an articulation's links are not rigid bodies.
-  const auto articulated =
-      dir.write("a.yaml", model("1.0", "  damping: {linear: 0, angular: 0}\n") +
-                              "soft bodies: [BODY blob]\n" + blob +
-                              "coulomb, location: " + "{position: {x: 0, y: 0, z: 1}}}\n");
-  auto articulation = [](ambf_like::Articulation a) {
-    return [a](ambf_like::WorldSpec& world) { world.articulation = a; };
-  };
-  EXPECT_THAT(loadErrorOf([&] {
-                test_support::simulate({articulated},
-                                       articulation(ambf_like::Articulation::Reduced));
-              }),
-              AllOf(HasSubstr("BODY blob/contact friction"), HasSubstr("articulation: maximal")));
-  EXPECT_NO_THROW(
-      test_support::simulate({articulated}, articulation(ambf_like::Articulation::Maximal)));
 }
 
 TEST(BadInput, SoftBodySubsteps) {

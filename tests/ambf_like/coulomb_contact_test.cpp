@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 #include "test_files.hpp"
@@ -155,3 +156,64 @@ TEST(CoulombContact, APinchHoldsWhenSqueezedAndLetsGoWhenNot) {
 }
 
 }  // namespace
+
+namespace {
+
+/// A 100 g paddle 20 cm long, hinged about y at x = 0 to a static anchor and held level by its
+/// joint's position controller, with the cube resting on it `x` from the hinge.
+std::string cubeOnAPaddle(double x) {
+  std::ostringstream s;
+  s << "bodies: [BODY anchor, BODY paddle]\njoints: [JOINT hinge]\nsoft bodies: [BODY cube]\n"
+    << "ignore inter-collision: true\n"
+    << "BODY anchor: {name: anchor, mass: 0, collision shape: BOX, collision geometry: {x: 0.01, "
+       "y: 0.01, z: 0.01}}\n"
+    << "BODY paddle:\n  name: paddle\n  mass: 0.1\n  friction: {static: 1.0}\n"
+    << "  damping: {linear: 0, angular: 0}\n  collision shape: BOX\n"
+    << "  collision geometry: {x: 0.2, y: 0.06, z: 0.01}\n"
+    << "  location: {position: {x: 0.1, y: 0, z: 0}}\n"
+    << "JOINT hinge:\n  parent: BODY anchor\n  child: BODY paddle\n"
+    << "  parent pivot: {x: 0, y: 0, z: 0}\n  child pivot: {x: -0.1, y: 0, z: 0}\n"
+    << "  parent axis: {x: 0, y: 1, z: 0}\n  child axis: {x: 0, y: 1, z: 0}\n  type: revolute\n"
+    << "  controller output type: POSITION\n  max motor impulse: 0.05\n"
+    << softCube(x, 0.005 + 0.5 * kCubeSide + 0.001, 0.6);
+  return s.str();
+}
+
+}  // namespace
+
+TEST(CoulombContact, ACubeOnAnArticulatedPaddleLoadsItsJointWithItsWeightsMoment) {
+  // The paddle is a link of an articulation (reduced coordinates) or a rigid body (maximal):
+  // either way the cube's contacts push it, and at rest its joint holds the paddle's weight
+  // (m g L/2) and the cube's (m g x, x its centre's distance from the hinge).
+  for (const auto articulation :
+       {ambf_like::Articulation::Reduced, ambf_like::Articulation::Maximal}) {
+    const bool reduced = articulation == ambf_like::Articulation::Reduced;
+    test_support::TempDir dir;
+    dir.write("cube.obj", subdividedCubeObj(4));
+    auto sim = test_support::simulate({dir.write("scene.yaml", cubeOnAPaddle(0.15))},
+                                      [articulation](ambf_like::WorldSpec& world) {
+                                        world.articulation = articulation;
+                                        world.soft_body_sleep.enabled = false;
+                                      });
+    auto& world = *sim->world;
+    ASSERT_EQ(world.articulationCount(), reduced ? 1u : 0u);
+    auto& hinge = world.joint("hinge");
+    hinge.commandPosition(0.0);
+    world.step(500);
+    double effort = 0.0;
+    double cube_x = 0.0;
+    const int steps = 200;
+    for (int i = 0; i < steps; ++i) {
+      world.step();
+      effort += hinge.effort() / steps;
+      cube_x += world.softBody("cube").centerOfMass().x() / steps;
+    }
+    const double cube_moment = kCubeMass * kGravity * cube_x;
+    const double expected = -(0.1 * kGravity * 0.1 + cube_moment);
+    std::cout << (reduced ? "reduced" : "maximal") << ": joint " << effort << " N m, expected "
+              << expected << " (the cube's share " << cube_moment << ")\n";
+    EXPECT_NEAR(cube_x, 0.15, 0.005) << "the cube slid off its place";
+    EXPECT_NEAR(effort, expected, 0.05 * cube_moment) << (reduced ? "reduced" : "maximal");
+    EXPECT_TRUE(world.softBody("cube").isFinite());
+  }
+}

@@ -50,7 +50,8 @@ class OneArmGrasp : public ::testing::Test {
   controller::IterationReport iterate() {
     auto& controller = session_.controller();
     const auto current = controller.commanded();
-    return controller.moveTo({routine_.next(current[0], scene_), current[1]});
+    const auto measured = session_.twin().measuredJs(raven::Arm::Left).position;
+    return controller.moveTo({routine_.next(current[0], measured, scene_), current[1]});
   }
   /// Iterates until the routine enters `phase` (at most `limit` iterations), calling `each`
   /// after every iteration.

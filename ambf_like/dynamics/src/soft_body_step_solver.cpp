@@ -9,14 +9,15 @@
 #include <stdexcept>
 
 #include "ambf_like/bullet_conversions.hpp"
+#include "ambf_like/dynamics/link_point.hpp"
 #include "ambf_like/dynamics/soft_body_upkeep.hpp"
 
 namespace ambf_like::detail {
 
 namespace {
 
-/// The rigid body a node touches, or null for a static or non-rigid object. Articulation links
-/// are refused when the world is built, so only rigid bodies get here.
+/// The rigid body a node touches, or null for a static object or an articulation's link (see
+/// movingLink).
 btRigidBody* movingRigidBody(const btCollisionObject* object) {
   auto* rigid = const_cast<btRigidBody*>(btRigidBody::upcast(object));
   return rigid != nullptr && rigid->getInvMass() > 0.0 ? rigid : nullptr;
@@ -303,6 +304,8 @@ void SoftBodyStepSolver::startContacts(btSoftBody& body, bool elastic) {
     Accumulated& state = contacts_[static_cast<std::size_t>(i)];
     if (const btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj)) {
       state.surface_velocity = rigid->getVelocityInLocalPoint(arm);
+    } else if (const auto* link = movingLink(contact.m_cti.m_colObj)) {
+      state.surface_velocity = linkPointVelocity(*link, contact.m_node->m_x);
     } else if (const btRigidBody* kinematic = btRigidBody::upcast(contact.m_cti.m_colObj);
                kinematic != nullptr && kinematic->isKinematicObject()) {
       // Placed by its owner before the step, so its contact plane is already where the step
@@ -365,6 +368,8 @@ void SoftBodyStepSolver::applyToRigidBodies(const btSoftBody& body) {
     const btSoftBody::Node& node = *contact.m_node;
     if (btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj)) {
       rigid->applyImpulse(-state.impulse, node.m_x - rigid->getWorldTransform().getOrigin());
+    } else if (auto* link = movingLink(contact.m_cti.m_colObj)) {
+      applyLinkImpulse(*link, node.m_x, -state.impulse);
     }
     impulses_.push_back({&body, contact.m_cti.m_colObj, node.m_x, contact.m_cti.m_normal,
                          state.normal_impulse, state.impulse - state.normal_impulse});

@@ -160,12 +160,6 @@ std::set<std::string> actuatorParents(const std::vector<ModelSpec>& models) {
 
 std::vector<ArticulationPlan> planAutomatically(const std::vector<ModelSpec>& models) {
   std::vector<ArticulationPlan> plans(models.size());
-  const bool coulomb = std::any_of(models.begin(), models.end(), [](const ModelSpec& m) {
-    return std::any_of(m.soft_bodies.begin(), m.soft_bodies.end(), [](const auto& soft) {
-      return soft.contact_friction == SoftContactFriction::Coulomb;
-    });
-  });
-  if (coulomb) return plans;
   const auto held = actuatorParents(models);
   for (std::size_t i = 0; i < models.size(); ++i) {
     const ModelSpec& model = models[i];

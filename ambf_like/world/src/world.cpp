@@ -230,13 +230,6 @@ void World::Impl::addModel(const ModelSpec& model, int model_index, MeshLibrary&
   }
   for (const auto& spec : model.soft_bodies) {
     const bool coulomb = spec.contact_friction == SoftContactFriction::Coulomb;
-    if (coulomb && articulated) {
-      SourceRef at = spec.where;
-      at.key_path += "/contact friction";
-      throw LoadError(at, "soft body '" + spec.name +
-                              "': Coulomb contacts act on rigid bodies only; this world has "
-                              "articulations (set 'articulation: maximal' in its world file)");
-    }
     SourceRef where = spec.where;
     where.key_path += "/mesh";
     const auto mesh = meshes.load(spec.mesh, where);

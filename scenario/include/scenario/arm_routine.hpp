@@ -1,11 +1,12 @@
 #pragma once
-// One arm's scripted peg transfers: for each peg, orient the grasper over it, descend, close,
-// lift, carry, lower, open and retreat; a ring that does not follow the jaws or lands off its post
-// is grasped again (at most twice), as an operator watching it would. Each call gives the next
-// manual-loop target (at most a millimetre or 0.05 rad from the last), which the controller then
-// reaches under its caps, exactly as it would a gamepad's. Positions move with the wrist-locked IK
-// C_W. It sees the rings only as a ScenePerception reports them (poses), so it runs the same on
-// the in-process twin, the twin over ROS and, with a tracker, the physical robot.
+// One arm's scripted peg transfers: for each peg, orient the grasper over it, descend, align the
+// measured tool with the grasp, close, lift, carry, lower, open and retreat; a ring that does not
+// follow the jaws or lands off its post is grasped again (at most twice), as an operator watching
+// it would. Each call gives the next manual-loop target (at most a millimetre or 0.05 rad from the
+// last), which the controller then reaches under its caps, exactly as it would a gamepad's.
+// Positions move with the wrist-locked IK C_W. It sees the rings only as a ScenePerception reports
+// them (poses), so it runs the same on the in-process twin, the twin over ROS and, with a tracker,
+// the physical robot.
 
 #include <optional>
 #include <string_view>
@@ -19,7 +20,7 @@
 namespace scenario {
 
 /// The steps of one transfer.
-enum class Phase { Orient, Descend, Close, Lift, Carry, Lower, Open, Settle, Retreat, Done };
+enum class Phase { Orient, Descend, Align, Close, Lift, Carry, Lower, Open, Settle, Retreat, Done };
 
 std::string_view phaseName(Phase phase);
 
@@ -34,8 +35,11 @@ class ArmRoutine {
   /// force a real grasp of a peg-transfer ring takes (../shared/reference/soft-materials.md).
   static constexpr double kDefaultSqueeze = 0.0005;
 
-  /// The arm's next target. `target` is its current one, `scene` shows the rings.
-  raven::ArmJoints next(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
+  /// The arm's next target. `target` is its current one, `measured` where its encoders say it
+  /// is, `scene` shows the rings. Where the arm stops short of its target (friction, a load),
+  /// the operator watches the tool and makes the difference up before closing the jaws.
+  raven::ArmJoints next(const raven::ArmJoints& target, const raven::ArmJoints& measured,
+                        const bridge::ScenePerception& scene);
   bool done() const { return phase_ == Phase::Done; }
   Phase phase() const { return phase_; }
   raven::Arm arm() const { return arm_; }

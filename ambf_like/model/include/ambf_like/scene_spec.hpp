@@ -55,9 +55,8 @@ struct RigidBodySleep {
 /// static body (revolute, continuous, prismatic or fixed, each body the child of one joint)
 /// becomes a Featherstone articulation whose joints are its coordinates; the rest stays maximal,
 /// and the World says why (World::warnings). Automatic (the default): reduced wherever it is the
-/// same physics, maximal where reduced coordinates cannot carry the scene: every model of a
-/// scene with Coulomb soft bodies (their contacts act on rigid bodies only), and each branch
-/// holding a body a constraint actuator hangs from (it attaches bodies to rigid bodies).
+/// same physics, maximal where reduced coordinates cannot carry the scene: each branch holding a
+/// body a constraint actuator hangs from (it attaches bodies to rigid bodies).
 enum class Articulation { Automatic, Maximal, Reduced };
 
 /// World-file settings that matter to the physics.
