@@ -23,11 +23,10 @@ constexpr double kLift = 0.030;       ///< the ring's bottom clears the 22 mm po
 constexpr double kRetreat = 0.025;
 constexpr double kReleaseHeight = 0.0015;  ///< the ring's bottom above the board when let go
 constexpr int kSettleIterations = 15;
-constexpr double kAligned = 0.0002;   ///< the measured tool this near the grasp before closing (m)
+constexpr double kAligned = 0.0001;   ///< the measured tool this near the grasp before closing (m)
 constexpr int kAlignIterations = 60;  ///< ... or this many iterations of correcting
-constexpr double kJawsThere = 0.02;   ///< the measured outer jaw this near its command (rad)
-constexpr int kClosingIterations = 30;     ///< ... or stalled on the ring this many iterations
-constexpr double kCentred = 0.0005;        ///< the ring's centre this near the post's axis (m)
+constexpr double kStill = 0.00002;    ///< the measured tool moved less in an iteration (m)
+constexpr double kCentred = 0.0005;   ///< the ring's centre this near the post's axis (m)
 constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
 constexpr int kMaxRegrasps = 2;            ///< per peg, as an operator would before moving on
 constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much more (of the first)
@@ -169,22 +168,28 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const raven::A
       q = translate(target, grasp_.pivot, kStep, arrived);
       if (arrived) advance(Phase::Align);
       break;
-    case Phase::Align: {  // the measured tool onto the grasp: the command moves by what it lacks
-      const Eigen::Vector3d lack = grasp_.pivot - kinematics_.toolPose(measured).translation();
-      if (lack.norm() <= kAligned || ++waited_ > kAlignIterations) {
+    case Phase::Align: {  // the command to the grasp; once the tool stops, on by half its lack
+      const Eigen::Vector3d tool = kinematics_.toolPose(measured).translation();
+      const Eigen::Vector3d lack = grasp_.pivot - tool;
+      const bool first = waited_++ == 0;
+      const bool still = !first && (tool - last_tool_).norm() <= kStill;
+      last_tool_ = tool;
+      if (waited_ > kAlignIterations || (still && lack.norm() <= kAligned)) {
         advance(Phase::Close);
         break;
       }
-      q = translate(target, kinematics_.toolPose(target).translation() + lack, kStep, arrived);
+      if (first) {
+        q = translate(target, grasp_.pivot, kStep, arrived);
+      } else if (still) {
+        q = translate(target, kinematics_.toolPose(target).translation() + 0.5 * lack, kStep,
+                      arrived);
+      }
       break;
     }
-    case Phase::Close:  // until the measured jaw is there, or stopped on the ring
+    case Phase::Close:
       outer_ = std::max(closed_, outer_ - kJawStep);
       q = withJaws(target);
-      if (outer_ <= closed_ && (std::abs(measured(raven::kJaw2) - outer_) <= kJawsThere ||
-                                ++waited_ > kClosingIterations)) {
-        advance(Phase::Lift);
-      }
+      if (outer_ <= closed_) advance(Phase::Lift);
       break;
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);

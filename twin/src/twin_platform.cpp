@@ -36,6 +36,11 @@ std::unique_ptr<Actuation> makeActuation(twin::TwinArms& arms, ambf_like::World&
 ambf_like::LoadedScene loadScene(const TwinOptions& options) {
   ambf_like::LoadedScene scene = ambf_like::loadLaunchFile(options.launch_file, {}, options.load);
   if (options.adjust_scene) options.adjust_scene(scene.spec);
+  // The motors drive an arm through its joints only where the arm is one articulation (one
+  // integrator for links and rotors): a scene kept in maximal coordinates gets them where it can.
+  if (options.motors && scene.spec.world.articulation == ambf_like::Articulation::Maximal) {
+    scene.spec.world.articulation = ambf_like::Articulation::Automatic;
+  }
   return scene;
 }
 

@@ -94,7 +94,8 @@ class ArmRoutine {
   Phase phase_ = Phase::Orient;
   int waited_ = 0;
   Grasp grasp_;
-  double squeeze_;                    ///< the first grasp's, m into the wall
+  Eigen::Vector3d last_tool_ = Eigen::Vector3d::Zero();  ///< the measured tool, last iteration
+  double squeeze_;                                       ///< the first grasp's, m into the wall
   double closed_;                     ///< the outer jaw's angle when closed, this attempt
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
 };
