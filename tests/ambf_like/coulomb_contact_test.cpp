@@ -155,10 +155,6 @@ TEST(CoulombContact, APinchHoldsWhenSqueezedAndLetsGoWhenNot) {
   EXPECT_GT(touching, 0.1) << "a cube merely touching both walls fell only " << touching << " m";
 }
 
-}  // namespace
-
-namespace {
-
 /// A 100 g paddle 20 cm long, hinged about y at x = 0 to a static anchor and held level by its
 /// joint's position controller, with the cube resting on it `x` from the hinge.
 std::string cubeOnAPaddle(double x) {
@@ -178,8 +174,6 @@ std::string cubeOnAPaddle(double x) {
     << softCube(x, 0.005 + 0.5 * kCubeSide + 0.001, 0.6);
   return s.str();
 }
-
-}  // namespace
 
 TEST(CoulombContact, ACubeOnAnArticulatedPaddleLoadsItsJointWithItsWeightsMoment) {
   // The paddle is a link of an articulation (reduced coordinates) or a rigid body (maximal):
@@ -217,3 +211,5 @@ TEST(CoulombContact, ACubeOnAnArticulatedPaddleLoadsItsJointWithItsWeightsMoment
     EXPECT_TRUE(world.softBody("cube").isFinite());
   }
 }
+
+}  // namespace

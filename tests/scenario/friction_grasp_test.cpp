@@ -2,7 +2,8 @@
 // left arm is squeezed with the newtons a real grasp takes, held by contact forces that carry
 // exactly its weight, does not slip in the jaws while carried at the velocity caps, and slips
 // out when the jaws squeeze it too little: friction, not glue (nothing but contact acts between
-// the jaws and the ring).
+// the jaws and the ring). On the motor twin, the operator brings the measured tool onto the grasp
+// before it closes.
 
 #include <BulletSoftBody/btSoftBody.h>
 #include <gtest/gtest.h>
@@ -11,6 +12,8 @@
 #include <cstdio>
 
 #include "one_arm_grasp.hpp"
+#include "raven/arm_kinematics.hpp"
+#include "twin/calibration_profile.hpp"
 
 namespace {
 
@@ -120,6 +123,34 @@ TEST_F(FrictionGrasp, OpeningToALightSqueezeInTheAirLetsTheRingSlipOut) {
               (held - layout_.geometry.board_top) * 1e3,
               (ringBottom() - layout_.geometry.board_top) * 1e3);
   EXPECT_LT(ringBottom(), held - 0.015) << "the ring slid down out of the jaws";
+}
+
+/// The left arm on the motor twin: the robot's motors, friction and integrators drive the links.
+class MotorGrasp : public scenario_test::OneArmGrasp {
+ protected:
+  MotorGrasp() : OneArmGrasp(scenario::ArmRoutine::kDefaultSqueeze, motorTwin()) {}
+  static twin::TwinOptions motorTwin() {
+    twin::TwinOptions options = scenario_test::pegScene();
+    options.motors = twin::CalibrationProfile::shipped().mechanics;
+    return options;
+  }
+  Eigen::Vector3d measuredTool() {
+    const auto arm = raven::ArmKinematics::of(raven::builtinProfile("physical"), Arm::Left);
+    return arm.toolPose(session_.twin().measuredJs(Arm::Left).position).translation();
+  }
+};
+
+TEST_F(MotorGrasp, TheOperatorBringsTheMeasuredToolOntoTheGraspBeforeClosing) {
+  // The motors stop short of the command (their friction band, the ring); the operator watches
+  // the encoders and moves the command on until the measured tool is within 0.1 mm.
+  runUntil(Phase::Align);
+  const double short_of_it = (measuredTool() - routine_.graspPivot()).norm();
+  runUntil(Phase::Close, {}, 61);
+  const double closing_at = (measuredTool() - routine_.graspPivot()).norm();
+  std::printf("measured tool from the grasp: %.3f mm after the descent, %.3f mm closing\n",
+              short_of_it * 1e3, closing_at * 1e3);
+  ASSERT_GT(short_of_it, 1e-4) << "the descent alone put it there: nothing to align";
+  EXPECT_LE(closing_at, 1e-4);
 }
 
 }  // namespace

@@ -199,7 +199,8 @@ struct JointBalance {
   ArmJoints by_motors = ArmJoints::Zero();
   ArmJoints weight = ArmJoints::Zero();
   ArmJoints by_contact = ArmJoints::Zero();
-  double drift = 0.0;  ///< the farthest any joint went over the cycles (rad or m)
+  double drift = 0.0;      ///< the farthest any joint went over the cycles (rad or m)
+  double arm_speed = 0.0;  ///< the fastest shoulder, elbow or insertion speed met
 };
 
 JointBalance balanceAtRest(twin::TwinPlatform& twin, const twin::TwinOptions& options, Arm arm,
@@ -212,6 +213,10 @@ JointBalance balanceAtRest(twin::TwinPlatform& twin, const twin::TwinOptions& op
   for (const auto* joint : chain.joints) start.push_back(joint->position());
   for (int k = 0; k < cycles; ++k) {
     twin.advance(0.001);
+    for (int j = 0; j <= raven::kInsertion; ++j) {
+      balance.arm_speed = std::max(balance.arm_speed,
+                                   std::abs(chain.joints[static_cast<std::size_t>(j)]->velocity()));
+    }
     balance.by_motors +=
         c.transpose() * appliedTorque(twin, arm).cwiseQuotient(drive.gearbox) / cycles;
     balance.by_contact += contactLoads(twin, arm) / cycles;
@@ -273,6 +278,7 @@ TEST(WorldMotors, AToolPressedOnASlabLoadsTheArmMotorsWithJTransposeF) {
   // contacts balance on average, over 0.3 s.
   const JointBalance balance = balanceAtRest(*pressed, options, Arm::Left, 300);
   EXPECT_LT(balance.drift, 5e-4);
+  EXPECT_LT(balance.arm_speed, 1e-3) << "the arm itself stands still; its tool motors hunt";
   EXPECT_GT(balance.by_contact(raven::kInsertion), 10.0) << "pressed with less than 10 N";
   expectMotorsHoldTheContacts(balance);
 }

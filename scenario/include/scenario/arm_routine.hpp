@@ -59,6 +59,8 @@ class ArmRoutine {
   /// time squeezing half the first squeeze harder).
   const std::vector<int>& regrasps() const { return regrasps_; }
   const std::vector<RingJob>& jobs() const { return jobs_; }
+  /// Where the tool point goes for the current job's grasp (planned when the job starts).
+  const Eigen::Vector3d& graspPivot() const { return grasp_.pivot; }
 
  private:
   /// Where the grasp of the current job sits, measured from the peg when it starts.
