@@ -10,6 +10,26 @@
 
 namespace test_support {
 
+namespace {
+
+constexpr double kWindow = 0.05;  ///< s
+
+double farthestMove(const std::vector<ambf_like::Vec3>& from,
+                    const std::vector<ambf_like::Vec3>& to) {
+  double farthest = 0.0;
+  for (std::size_t i = 0; i < from.size(); ++i)
+    farthest = std::max(farthest, (to[i] - from[i]).norm());
+  return farthest;
+}
+
+}  // namespace
+
+double CantileverSag::settledAfter(double still) const {
+  std::size_t k = window_moves.size();
+  while (k > 0 && window_moves[k - 1] < still) --k;
+  return kWindow * static_cast<double>(k);
+}
+
 CantileverSag settleCantilever(const CantileverSpec& spec) {
   const double cell = spec.width / spec.cells;
   const int along = static_cast<int>(std::lround(spec.length / cell));
@@ -30,19 +50,33 @@ CantileverSag settleCantilever(const CantileverSpec& spec) {
       << ", fixed nodes: [" << fixed.str() << "]}\n";
   ambf_like::WorldOptions options;
   options.step_size = spec.step;
-  auto sim = simulate({dir.write("scene.yaml", adf.str())}, noSoftBodySleep, options);
+  const auto keepAwake = [&spec](ambf_like::WorldSpec& world) {
+    if (!spec.sleep) noSoftBodySleep(world);
+  };
+  auto sim = simulate({dir.write("scene.yaml", adf.str())}, keepAwake, options);
   auto& beam = sim->world->softBody("beam");
   const auto rest = beam.nodePositions();
   const auto steps = static_cast<std::uint64_t>(std::lround(spec.duration / spec.step));
-  sim->world->step(steps - 1);
+  const auto per_window = static_cast<std::uint64_t>(std::lround(kWindow / spec.step));
+  CantileverSag sag;
+  auto window_start = rest;
+  for (std::uint64_t done = 0; done + 1 < steps;) {
+    const auto now = std::min(per_window, steps - 1 - done);
+    sim->world->step(now);
+    done += now;
+    if (now < per_window) break;
+    const auto at = beam.nodePositions();
+    sag.window_moves.push_back(farthestMove(window_start, at));
+    window_start = at;
+  }
   const auto before = beam.nodePositions();
   sim->world->step();
-  CantileverSag sag;
   sag.finite = beam.isFinite();
+  sag.asleep = beam.isAsleep();
   sag.solve = sim->world->elasticSolveStats(beam);
   int count = 0;
+  sag.last_step_move = farthestMove(before, beam.nodePositions());
   for (std::size_t i = 0; i < rest.size(); ++i) {
-    sag.last_step_move = std::max(sag.last_step_move, (beam.nodePosition(i) - before[i]).norm());
     if (rest[i].x() > spec.length - 1e-9) {
       sag.tip_sag += rest[i].z() - beam.nodePosition(i).z();
       ++count;

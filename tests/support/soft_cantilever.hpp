@@ -1,6 +1,8 @@
 #pragma once
 // Test helper: a cantilever of an elastic material, clamped at one end, sagging under its weight.
 
+#include <vector>
+
 #include "ambf_like/world.hpp"
 
 namespace test_support {
@@ -18,13 +20,19 @@ struct CantileverSpec {
   double step = 0.001;    ///< s
   int substeps = 1;
   double duration = 0.4;  ///< s simulated
+  bool sleep = false;     ///< resting soft bodies sleep (the world's default settings)
 };
 
 /// How the beam ended.
 struct CantileverSag {
   double tip_sag = 0;         ///< m, the mean drop of its tip face's nodes
   double last_step_move = 0;  ///< m, the farthest any node moved in the last step
+  /// m, the farthest any node moved in each 50 ms of the run (the test of rest)
+  std::vector<double> window_moves;
+  /// s, when the windows' moves fell below `still` for good (the duration when they never did)
+  double settledAfter(double still) const;
   bool finite = false;
+  bool asleep = false;                 ///< at the end
   ambf_like::ElasticSolveStats solve;  ///< what its implicit steps took
 };
 
