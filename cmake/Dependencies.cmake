@@ -8,7 +8,7 @@ find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(Threads REQUIRED)
 
-# The simulator's own: Bullet, assimp and urdfdom (not needed by a robot-side build).
+# The simulator's own: Bullet, assimp, urdfdom and TinyXML (not needed by a robot-side build).
 if(RAVEN_SIMULATOR)
   # Debian ships float and double Bullet side by side; only the float64 module defines
   # BT_USE_DOUBLE_PRECISION. Plain find_package(Bullet) would silently pick the float build.
@@ -18,4 +18,7 @@ if(RAVEN_SIMULATOR)
   endif()
   find_package(assimp REQUIRED)
   find_package(urdfdom REQUIRED)
+  # TinyXML, the parser under urdfdom (its -dev package comes with urdfdom's): the URDF reader
+  # parses with it too, for the lines urdfdom does not report.
+  pkg_check_modules(TINYXML REQUIRED IMPORTED_TARGET tinyxml)
 endif()

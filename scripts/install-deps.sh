@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git
   libbullet-dev libbullet-extras-dev libeigen3-dev libassimp-dev
-  libyaml-cpp-dev liburdfdom-dev liburdfdom-headers-dev
+  libyaml-cpp-dev liburdfdom-dev liburdfdom-headers-dev libtinyxml-dev
   libgtest-dev libgmock-dev libbenchmark-dev time
   libsdl2-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libnlopt-cxx-dev libboost-dev
   pybind11-dev python3-dev

@@ -1,6 +1,7 @@
 #include "common/xml_nesting.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace common {
 
@@ -52,11 +53,11 @@ class Cursor {
   std::size_t line_ = 1;
 };
 
-}  // namespace
-
-std::optional<std::size_t> xmlNestedBeyond(std::string_view text, std::size_t limit) {
+/// Walks `text`'s tags: `open(line)` for each element opened and not closed in its own tag (it
+/// returns true to stop the walk), `close()` for each closing tag.
+template <typename Open, typename Close>
+void walkElements(std::string_view text, Open open, Close close) {
   Cursor cursor(text);
-  std::size_t depth = 0;
   while (!cursor.done()) {
     if (cursor.peek() != '<') {
       cursor.advance();
@@ -72,13 +73,41 @@ std::optional<std::size_t> xmlNestedBeyond(std::string_view text, std::size_t li
       cursor.skipTag();
     } else if (cursor.peek(1) == '/') {
       cursor.skipTag();
-      if (depth > 0) --depth;
+      close();
     } else {
       const std::size_t line = cursor.line();
-      if (!cursor.skipTag() && ++depth > limit) return line;
+      if (!cursor.skipTag() && open(line)) return;
     }
   }
-  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::size_t> xmlNestedBeyond(std::string_view text, std::size_t limit) {
+  std::size_t depth = 0;
+  std::optional<std::size_t> beyond;
+  walkElements(
+      text,
+      [&](std::size_t line) {
+        if (++depth > limit) beyond = line;
+        return beyond.has_value();
+      },
+      [&] { depth -= depth > 0 ? 1 : 0; });
+  return beyond;
+}
+
+std::optional<std::size_t> xmlOpenAtEnd(std::string_view text) {
+  std::vector<std::size_t> open;
+  walkElements(
+      text,
+      [&](std::size_t line) {
+        open.push_back(line);
+        return false;
+      },
+      [&] {
+        if (!open.empty()) open.pop_back();
+      });
+  return open.empty() ? std::nullopt : std::optional<std::size_t>(open.back());
 }
 
 }  // namespace common

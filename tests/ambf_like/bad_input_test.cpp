@@ -294,10 +294,42 @@ TEST(BadInput, LaunchEntryPointingAtAMissingFile) {
               HasSubstr("multibody config 0"));
 }
 
-TEST(BadInput, MalformedUrdf) {
+TEST(BadInput, AUrdfIsRefusedByLine) {
+  // urdfdom says what is wrong but not where; the reader finds the line (issue 66: most URDF
+  // refusals named no line).
   TempDir dir;
-  const auto file = dir.write("arm.urdf", "<robot name='r'><link name='a'></robot>");
-  EXPECT_THAT(loadError(file), AllOf(HasSubstr(file.string()), HasSubstr("malformed URDF")));
+  const std::string head = "<?xml version='1.0'?>\n<robot name='r'>\n<link name='base'/>\n";
+  const std::string link =
+      "<link name='l'>\n<inertial><mass value='1'/>\n"
+      "<inertia ixx='1' iyy='1' izz='1' ixy='0' ixz='0' iyz='0'/>\n"
+      "</inertial></link>\n";  // lines 4-7
+  const std::string joint =
+      "<joint name='j' type='revolute'>\n<parent link='base'/>\n"
+      "<child link='l'/>\n<limit lower='-1' upper='1' effort='1' "
+      "velocity='1'/>\n</joint>\n";  // lines 8-12
+  const auto error = [&](const std::string& name, const std::string& text) {
+    return loadError(dir.write(name, text));
+  };
+  ASSERT_EQ(error("good.urdf", head + link + joint + "</robot>\n"), "");
+  // Not well-formed: TinyXML's line and column.
+  EXPECT_THAT(error("attr.urdf", head + "<link name='l' bad>\n</link></robot>\n"),
+              AllOf(HasSubstr("attr.urdf:4"), HasSubstr("malformed URDF"), HasSubstr("column")));
+  // Cut off inside an element: the line that opened it.
+  EXPECT_THAT(
+      error("cut.urdf", head + link + "<joint name='j' type='revolute'>\n<parent link='base'/>"),
+      AllOf(HasSubstr("cut.urdf:8"), HasSubstr("is not closed")));
+  // Refused by the reader: the element its path names.
+  std::string inverted = joint;
+  inverted.replace(inverted.find("lower='-1'"), 10, "lower='2'");
+  EXPECT_THAT(error("limit.urdf", head + link + inverted + "</robot>\n"),
+              AllOf(HasSubstr("limit.urdf:11: joint[j]/limit"), HasSubstr("lower > upper")));
+  EXPECT_THAT(error("inertial.urdf", head + "<link name='l'/>\n" + joint + "</robot>\n"),
+              AllOf(HasSubstr("inertial.urdf:4: link[l]/inertial"), HasSubstr("<inertial>")));
+  // Refused by urdfdom: the link or joint its message names.
+  std::string orphan = joint;
+  orphan.replace(orphan.find("link='l'"), 8, "link='x'");
+  EXPECT_THAT(error("tree.urdf", head + link + orphan + "</robot>\n"),
+              AllOf(HasSubstr("tree.urdf:8"), HasSubstr("not a valid URDF")));
 }
 
 TEST(BadInput, SoftBodyFixedNodeOutOfRange) {

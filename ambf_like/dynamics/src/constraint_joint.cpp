@@ -4,6 +4,8 @@
 #include <BulletDynamics/ConstraintSolver/btHingeConstraint.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
+#include <limits>
+
 #include "ambf_like/bullet_conversions.hpp"
 #include "ambf_like/dynamics/joint_frames.hpp"
 
@@ -63,6 +65,15 @@ double ConstraintJoint::velocity() const {
     return Vec3(toEigen(body.getLinearVelocity()) + toEigen(body.getAngularVelocity()).cross(r));
   };
   return (pointVelocity(child_) - pointVelocity(parent_)).dot(axis);
+}
+
+double ConstraintJoint::axisInertia() const {
+  const Vec3 axis = axisInWorld();
+  const double mobility = angular_ ? axis.dot((toEigen(parent_.getInvInertiaTensorWorld()) +
+                                               toEigen(child_.getInvInertiaTensorWorld())) *
+                                              axis)
+                                   : parent_.getInvMass() + child_.getInvMass();
+  return mobility > 0.0 ? 1.0 / mobility : std::numeric_limits<double>::infinity();
 }
 
 double ConstraintJoint::effort() const {

@@ -5,6 +5,7 @@
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 
 #include <cmath>
+#include <limits>
 
 #include "ambf_like/dynamics/joint_space_servo.hpp"
 
@@ -44,6 +45,12 @@ double MultiBodyJoint::coordinate() const {
 
 double MultiBodyJoint::velocity() const {
   return hasCoordinate() ? multibody_.getJointVel(link_) : 0.0;
+}
+
+double MultiBodyJoint::axisInertia() const {
+  const Eigen::MatrixXd& mobility = servo_.inverseInertia();
+  const bool known = hasCoordinate() && dof_ < mobility.rows() && mobility(dof_, dof_) > 0.0;
+  return known ? 1.0 / mobility(dof_, dof_) : std::numeric_limits<double>::infinity();
 }
 
 double MultiBodyJoint::effort() const {

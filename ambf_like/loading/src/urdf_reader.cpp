@@ -10,6 +10,7 @@
 #include "common/farthest.hpp"
 #include "common/utf8.hpp"
 #include "common/xml_nesting.hpp"
+#include "urdf_lines.hpp"
 
 namespace ambf_like::detail {
 
@@ -43,7 +44,8 @@ Vec3 toVec(const urdf::Vector3& v) {
 struct UrdfContext {
   std::filesystem::path file;
   LoadContext& load;
-  SourceRef at(const std::string& path) const { return SourceRef{file, 0, path}; }
+  const UrdfLines& lines;
+  SourceRef at(const std::string& path) const { return SourceRef{file, lines.lineOf(path), path}; }
   [[noreturn]] void fail(const std::string& path, const std::string& message) const {
     throw LoadError(at(path), message);
   }
@@ -233,9 +235,11 @@ JointSpec readUrdfJoint(const urdf::Joint& joint, const UrdfContext& ctx) {
 }  // namespace
 
 ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context) {
-  const UrdfContext ctx{file, context};
   std::ifstream in(file);
-  if (!in) ctx.fail("", std::filesystem::exists(file) ? "cannot read file" : "file not found");
+  if (!in) {
+    throw LoadError(SourceRef{file, 0, ""},
+                    std::filesystem::exists(file) ? "cannot read file" : "file not found");
+  }
   std::stringstream text;
   text << in.rdbuf();
   // urdfdom's XML parser recurses once per element level until the stack ends.
@@ -250,6 +254,8 @@ ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context)
                     "not well-formed UTF-8 (XML requires it): a malformed byte sequence or a NUL");
   }
 
+  const UrdfLines lines(file, text.str());
+  const UrdfContext ctx{file, context, lines};
   urdf::ModelInterfaceSharedPtr urdf;
   std::string messages;
   {
@@ -257,7 +263,10 @@ ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context)
     urdf = urdf::parseURDF(text.str());
     messages = console.messages();
   }
-  if (!urdf) ctx.fail("", "malformed URDF" + (messages.empty() ? "" : ": " + messages));
+  if (!urdf) {
+    throw LoadError(SourceRef{file, lines.lineNamedIn(messages), ""},
+                    "not a valid URDF" + (messages.empty() ? "" : ": " + messages));
+  }
 
   ModelSpec model;
   model.file = file;

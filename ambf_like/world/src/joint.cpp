@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "ambf_like/dynamics/joint_dynamics.hpp"
@@ -178,8 +179,19 @@ void Joint::applyControl(double dt) {
       spec_.type == JointType::LinearSpring || spec_.type == JointType::TorsionSpring;
   if (!spec_.isSingleAxis() || springs_damp_themselves) return;
   auto actuation = isControllable() ? drivenActuation(dt) : detail::JointActuation{};
-  if (spec_.damping > 0.0) actuation.effort -= spec_.damping * velocity();
+  if (spec_.damping > 0.0) actuation.effort -= dampingEffort(dt);
   dynamics_->actuate(actuation, dt);
+}
+
+double Joint::dampingEffort(double dt) const {
+  // A damper c on an inertia I over a step h takes v to v exp(-c h / I): the effort that does
+  // that, I (1 - exp(-c h / I)) / h, is c for a light damper and at most what stops the joint
+  // within the step. The explicit c v overshoots (and grows) once c h / I passes 2: a joint
+  // damped by 5 N m s on a 1e-9 kg m^2 link flung it at 22 km/s at its second step.
+  const double inertia = dynamics_->axisInertia();
+  const double damping = spec_.damping;
+  if (!(inertia < std::numeric_limits<double>::infinity())) return damping * velocity();
+  return inertia / dt * -std::expm1(-damping * dt / inertia) * velocity();
 }
 
 Joint::State Joint::state() const {

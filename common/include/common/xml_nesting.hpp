@@ -1,6 +1,7 @@
 #pragma once
-// How deep an XML text nests its elements, measured without a recursive parser: the guard in
-// front of the parsers that recurse once per level (tinyxml under urdfdom, assimp's COLLADA).
+// How an XML text nests its elements, read without a recursive parser: the guard in front of the
+// parsers that recurse once per level (tinyxml under urdfdom, assimp's COLLADA), and where an
+// element is left open.
 
 #include <cstddef>
 #include <optional>
@@ -16,5 +17,9 @@ inline constexpr std::size_t kMostXmlNesting = 500;
 /// Comments, CDATA, declarations and processing instructions are skipped; quoted attribute
 /// values may hold '>'.
 std::optional<std::size_t> xmlNestedBeyond(std::string_view text, std::size_t limit);
+
+/// The line (1-based) that opens the innermost element still open where `text` ends, if any:
+/// where a parser that reached the end inside an element (and says so without a line) stopped.
+std::optional<std::size_t> xmlOpenAtEnd(std::string_view text);
 
 }  // namespace common

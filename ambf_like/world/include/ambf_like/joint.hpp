@@ -77,6 +77,8 @@ class Joint {
   void setDrive(JointDrive drive, double target);
   void setMotor(detail::JointActuation& actuation, double velocity) const;
   detail::JointActuation drivenActuation(double dt);
+  /// The joint damping's effort over a step of dt, integrated exactly on the axis inertia.
+  double dampingEffort(double dt) const;
 
   JointSpec spec_;
   std::unique_ptr<detail::JointDynamics> dynamics_;

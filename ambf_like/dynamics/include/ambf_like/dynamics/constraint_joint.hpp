@@ -22,6 +22,8 @@ class ConstraintJoint final : public JointDynamics {
 
   double coordinate() const override;
   double velocity() const override;
+  /// Of the two bodies alone (what else they are joined to only adds to it).
+  double axisInertia() const override;
   double effort() const override;
   void actuate(const JointActuation& actuation, double dt) override;
 

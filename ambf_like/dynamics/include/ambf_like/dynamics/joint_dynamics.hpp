@@ -31,6 +31,9 @@ class JointDynamics {
   /// Joint coordinate (rad or m); angular ones may wrap at +-pi.
   virtual double coordinate() const = 0;
   virtual double velocity() const = 0;
+  /// Inertia (kg m^2, or kg for a sliding joint) that the joint's own generalised force moves:
+  /// what a damper on it acts against. Infinite where nothing it joins can move.
+  virtual double axisInertia() const = 0;
   /// Generalised force the motor, the limits and the effort applied in the last step.
   virtual double effort() const = 0;
   /// Sets the motor and applies the effort for the coming step.

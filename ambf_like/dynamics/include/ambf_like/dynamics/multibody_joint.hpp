@@ -24,6 +24,8 @@ class MultiBodyJoint final : public JointDynamics {
 
   double coordinate() const override;
   double velocity() const override;
+  /// From the articulation's joint-space inverse inertia: the links with every other joint free.
+  double axisInertia() const override;
   double effort() const override;
   void actuate(const JointActuation& actuation, double dt) override;
   ServoDof servoDof() const override;
