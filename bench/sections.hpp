@@ -41,6 +41,8 @@ void measureMicro(const BenchSettings& settings, Report& report);
 void measureCameras(const BenchSettings& settings, Report& report);
 /// A learner's snapshots: save and restore of a peg-transfer episode against a reset.
 void measureSnapshots(const BenchSettings& settings, Report& report);
+/// scripts/soak.sh's ten-minute run: RSS and step-time growth over a long session and batch.
+void measureSoak(const BenchSettings& settings, Report& report);
 /// Learning at full size: demonstrations, training and success of the state policy.
 void measureTraining(const BenchSettings& settings, Report& report);
 

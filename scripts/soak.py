@@ -1,0 +1,310 @@
+#!/usr/bin/env python3
+"""Soak test: a long lock-step session of the twin node driven at 1 kHz over ROS, then a long
+peg-transfer batch, each watched for growth of its resident memory (RSS) and its step time from
+the first tenth of the run to the last. Run through scripts/soak.sh (its header has the usage).
+
+Growth, the figure it prints and checks (under 5 %), is last tenth over first tenth, less one:
+- RSS: each process's highest sample within the tenth (a process that leaks a little each cycle
+  grows its peak; a steady one repeats it), sampled every --interval wall seconds;
+- step time: the processes' CPU time (user and system) per simulated millisecond within the tenth,
+  so that other work on the machine does not count as growth. The session's progress is the last
+  whole row of its rs recording; the batch's is its finished runs' steps (runs.jsonl).
+The session's tenths are of the steady dance after O5's ramp (the whole session when it is too
+short for that), by simulated time; the batch's are of its runs after the warm-up, by runs (its
+memory while the first tenth is running, and after all but the last tenth have finished). The
+session's recording is then checked whole: one row per controller turn (as the controller
+reports), every row with the header's fields, indices contiguous, times increasing, the last at
+the session's end.
+"""
+import argparse
+import json
+import os
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+LIMIT_PERCENT = 5.0
+BATCH_RUNS_PER_HOUR = 500  # 1,000 runs for a two-hour soak; about as long as the session
+BATCH_THREADS = 2
+# A worker's first runs size its heap: glibc serves a world's large blocks by mmap until it frees
+# one, then raises its mmap threshold and keeps later worlds' blocks in the heap (about 15 % more
+# RSS over the first two runs, flat after). The batch's tenths are of the runs after them.
+WARMUP_RUNS_PER_THREAD = 2
+# O5's dance grows its amplitude over its first 2,000 turns (DanceSettings::ramp_per_call is 0.5/500
+# of full scale a turn), and the work of a cycle with it.
+DANCE_RAMP_TURNS = 2000
+CLOCK_TICKS = os.sysconf("SC_CLK_TCK")
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def usage(pid):
+    """(VmRSS in KiB, CPU seconds) of a live process, None once it has gone."""
+    try:
+        status = Path(f"/proc/{pid}/status").read_text()
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except (FileNotFoundError, ProcessLookupError):
+        return None
+    rss = next((int(line.split()[1]) for line in status.splitlines()
+                if line.startswith("VmRSS:")), None)
+    fields = stat.rsplit(")", 1)[1].split()  # after the command name, which may hold spaces
+    cpu = (int(fields[11]) + int(fields[12])) / CLOCK_TICKS  # utime, stime
+    return (rss, cpu) if rss is not None else None
+
+
+def last_row_time(csv_path):
+    """Simulated time of the last whole row of a growing rs recording, None before the first."""
+    with open(csv_path, "rb") as f:
+        f.seek(0, os.SEEK_END)
+        f.seek(max(0, f.tell() - 65536))
+        lines = f.read().split(b"\n")
+    whole = [line for line in lines[:-1] if line and not line.startswith(b",")]
+    return float(whole[-1].split(b",")[1]) if whole else None
+
+
+def row_time(csv_path, index):
+    """Simulated time of a recording's row `index`, None when it has fewer rows."""
+    with open(csv_path) as f:
+        for i, line in enumerate(f):
+            if i == index + 1:
+                return float(line.split(",")[1])
+    return None
+
+
+def fresh_folder(path):
+    """An empty folder (a kept folder's earlier run is removed)."""
+    shutil.rmtree(path, ignore_errors=True)
+    path.mkdir(parents=True)
+    return path
+
+
+def growth(first, last):
+    return 100.0 * (last / first - 1.0)
+
+
+class RosMaster:
+    """A private rosmaster on a free port, its environment for the children, stopped by PID."""
+
+    def __init__(self, work):
+        port = free_port()
+        self.env = dict(os.environ, ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_IP="127.0.0.1",
+                        ROS_HOME=str(work), ROS_LOG_DIR=str(work / "log"))
+        self.process = subprocess.Popen(["/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p",
+                                         str(port)], env=self.env,
+                                        stdout=open(work / "master.log", "w"),
+                                        stderr=subprocess.STDOUT)
+        probe = ["/usr/bin/python3", "-c", "import rosgraph; rosgraph.Master('/soak').getPid()"]
+        for _ in range(100):
+            if subprocess.run(probe, env=self.env, capture_output=True).returncode == 0:
+                return
+            time.sleep(0.1)
+        raise SystemExit(f"soak: rosmaster did not come up; see {work / 'master.log'}")
+
+    def stop(self):
+        self.process.terminate()
+        self.process.wait()
+
+
+def watch(processes, interval, progress):
+    """Samples (progress, {name: (rss_kib, cpu_s)}) every interval while every process lives;
+    progress() is None until there is some."""
+    samples = []
+    while all(p.poll() is None for p in processes.values()):
+        done = progress()
+        used = {name: usage(p.pid) for name, p in processes.items()}
+        if done is not None and None not in used.values():
+            samples.append((done, used))
+        time.sleep(interval)
+    return samples
+
+
+class Tenths:
+    """The samples of a run's first and last tenth, and what grew from one to the other."""
+
+    def __init__(self, first, last, what):
+        if len(first) < 2 or len(last) < 2:
+            raise SystemExit(f"soak: fewer than two samples in a tenth of the {what}; run longer "
+                             "or sample more often (--interval)")
+        self.first, self.last = first, last
+
+    def rss(self, name):
+        """(first, last) peak RSS of one process in KiB."""
+        return tuple(max(used[name][0] for _, used in part) for part in (self.first, self.last))
+
+    def cpu_per_progress(self, names, progress_of=lambda done: done):
+        """(first, last) CPU seconds of the named processes per unit of progress."""
+        def slope(part):
+            cpu = [sum(used[n][1] for n in names) for _, used in part]
+            return (cpu[-1] - cpu[0]) / (progress_of(part[-1][0]) - progress_of(part[0][0]))
+        return slope(self.first), slope(self.last)
+
+
+def check_recording(csv_path, turns, duration):
+    """Problems with a finished rs recording: empty list when it is whole."""
+    lines = Path(csv_path).read_text().split("\n")
+    if lines[-1] != "":
+        return [f"{csv_path}: the last row has no line end (cut off)"]
+    header, rows = lines[0].split(","), lines[1:-1]
+    problems = []
+    if len(rows) != turns:
+        problems.append(f"{csv_path}: {len(rows)} rows for {turns} controller turns")
+    last_time = -1.0
+    for i, line in enumerate(rows):
+        fields = line.split(",")
+        if len(fields) != len(header):
+            problems.append(f"{csv_path} row {i}: {len(fields)} fields, the header has {len(header)}")
+            break
+        if int(fields[0]) != i:
+            problems.append(f"{csv_path} row {i}: index {fields[0]}")
+            break
+        t = float(fields[1])
+        if not t > last_time:
+            problems.append(f"{csv_path} row {i}: time {t} after {last_time}")
+            break
+        last_time = t
+    if last_time < duration - 0.1:
+        problems.append(f"{csv_path}: ends at {last_time:.3f} s of a {duration:.3f} s session")
+    return problems
+
+
+def soak_session(build, work, seconds, interval):
+    """The twin node in lock-step, raven_controller's O5 dance on it at 1 kHz for `seconds`."""
+    master = RosMaster(work)
+    processes = {}
+    out = fresh_folder(work / "session")
+    try:
+        processes["twin node"] = subprocess.Popen(
+            [str(build / "twin/ros/raven_twin_node"), "--lock-step"], env=master.env,
+            stdout=open(work / "node.log", "w"), stderr=subprocess.STDOUT)
+        processes["controller"] = subprocess.Popen(
+            [str(build / "controller/raven_controller"), "--twin-over-ros", "--twin-ns", "",
+             "--lock-step", "--mode", "o5", "--rate", "1000", "--duration", str(seconds),
+             "--no-gamepad", "--no-keyboard", "--record", "yes", "--name", "soak", "--out",
+             str(out)], env=master.env, stdout=open(work / "controller.log", "w"),
+            stderr=subprocess.STDOUT)
+
+        def recorded():
+            files = sorted(out.glob("soak_*_rs.csv"))
+            return last_row_time(files[0]) if files else None
+
+        samples = watch(processes, interval, recorded)
+        if processes["controller"].wait() != 0:
+            raise SystemExit(f"soak: raven_controller failed; see {work / 'controller.log'}")
+    finally:
+        for p in processes.values():
+            if p.poll() is None:
+                p.send_signal(signal.SIGINT)
+                p.wait()
+        master.stop()
+
+    log = (work / "controller.log").read_text()
+    turns = int(log.split("done: ")[1].split(" turns")[0])
+    rs = sorted(out.glob("soak_*_rs.csv"))[0]
+    problems = check_recording(rs, turns, seconds)
+    ramp_end = row_time(rs, DANCE_RAMP_TURNS)
+    steady = [s for s in samples if ramp_end is not None and s[0] >= ramp_end]
+    after_ramp = len(steady) >= 20
+    steady = steady if after_ramp else samples
+    s0, s1 = steady[0][0], steady[-1][0]
+    tenths = Tenths([s for s in steady if s[0] <= s0 + (s1 - s0) / 10],
+                    [s for s in steady if s[0] >= s1 - (s1 - s0) / 10], "session")
+    rows = [(f"rss {name}", tenths.rss(name)) for name in processes]
+    rows.append(("cpu session", tenths.cpu_per_progress(list(processes))))
+    what = (f"{seconds:.0f} s simulated, {turns} turns, tenths "
+            + (f"after O5's ramp ({ramp_end:.0f} s)" if after_ramp else "with O5's ramp"))
+    return rows, problems, what
+
+
+def soak_batch(build, work, runs, interval):
+    """raven_peg_transfer's nominal scene `runs` times: every run the same work, so any change from
+    the first tenth of runs to the last is the process's own."""
+    out = fresh_folder(work / "batch")
+    jsonl = out / "runs.jsonl"
+    batch = subprocess.Popen(
+        [str(build / "scenario/raven_peg_transfer"), "--runs", str(runs), "--threads",
+         str(BATCH_THREADS), "--record", "no", "--out", str(out), "-q"],
+        stdout=open(work / "batch.log", "w"), stderr=subprocess.STDOUT)
+
+    def finished():
+        return jsonl.read_text().count("\n") if jsonl.exists() else 0
+
+    samples = watch({"batch": batch}, interval, finished)
+    if batch.wait() != 0:
+        raise SystemExit(f"soak: raven_peg_transfer failed; see {work / 'batch.log'}")
+    results = [json.loads(line) for line in jsonl.read_text().splitlines()]
+    if len(results) != runs:
+        raise SystemExit(f"soak: the batch wrote {len(results)} of {runs} runs")
+    simulated_after = [0.0]  # simulated seconds of the first k finished runs
+    for r in results:
+        simulated_after.append(simulated_after[-1] + r["sim_time_s"])
+    warm = BATCH_THREADS * WARMUP_RUNS_PER_THREAD
+    tenth = max(BATCH_THREADS, (runs - warm) // 10)  # runs end together on parallel workers
+    tenths = Tenths([s for s in samples if warm <= s[0] <= warm + tenth],
+                    [s for s in samples if s[0] >= runs - tenth], "batch")
+    rows = [("rss batch", tenths.rss("batch")),
+            ("cpu batch", tenths.cpu_per_progress(["batch"], lambda done: simulated_after[done]))]
+    placed = sum(r["placed"] for r in results)
+    return rows, f"{runs} nominal runs on {BATCH_THREADS} threads, {placed} of {6 * runs} placed"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", type=Path, required=True)
+    length = parser.add_mutually_exclusive_group()
+    length.add_argument("--hours", type=float, help="simulated hours of the session")
+    length.add_argument("--minutes", type=float, help="simulated minutes of the session")
+    parser.add_argument("--interval", type=float, help="wall seconds between samples")
+    parser.add_argument("--keep", type=Path, help="keep the logs and recordings in this folder")
+    parser.add_argument("--json", type=Path, help="write the figures to this file")
+    parser.add_argument("--check", choices=["all", "memory"], default="all",
+                        help="what fails the run: all (RSS, step time, the recording) or memory "
+                        "(RSS and the recording; a short run's step time is the host's noise)")
+    args = parser.parse_args()
+    hours = args.hours if args.hours is not None else (args.minutes or 10.0) / 60.0
+    if not hours > 0:
+        raise SystemExit("soak: --hours / --minutes must be positive")
+    seconds = 3600.0 * hours
+    runs = max(BATCH_THREADS * (WARMUP_RUNS_PER_THREAD + 3), round(BATCH_RUNS_PER_HOUR * hours))
+    interval = args.interval or min(5.0, max(0.2, seconds / 600.0))
+
+    with tempfile.TemporaryDirectory(prefix="soak-") as tmp:
+        work = args.keep or Path(tmp)
+        work.mkdir(parents=True, exist_ok=True)
+        print(f"soak: a {seconds:.0f} s lock-step session at 1 kHz, then a {runs}-run batch "
+              f"(samples every {interval:g} s, logs in {work})", flush=True)
+        session_rows, problems, session_what = soak_session(args.build, work, seconds, interval)
+        print(f"session: {session_what}", flush=True)
+        batch_rows, batch_what = soak_batch(args.build, work, runs, interval)
+        print(f"batch: {batch_what}")
+
+    figures = []
+    for name, (a, b) in session_rows + batch_rows:
+        detail = (f"{a / 1024:.1f} -> {b / 1024:.1f} MiB" if name.startswith("rss")
+                  else f"{a:.4f} -> {b:.4f} ms of CPU per simulated ms")
+        figures.append({"what": name, "growth_percent": growth(a, b), "detail": detail})
+        print(f"  {name:<16} {growth(a, b):+6.2f} %  ({detail})")
+    for problem in problems:
+        print(f"  recording: {problem}")
+    rss = max(f["growth_percent"] for f in figures if f["what"].startswith("rss"))
+    step = max(f["growth_percent"] for f in figures if f["what"].startswith("cpu"))
+    if args.json:
+        args.json.write_text(json.dumps({
+            "hours": hours, "session": session_what, "batch": batch_what,
+            "rss_growth_percent": rss, "step_time_growth_percent": step,
+            "recording_whole": not problems, "figures": figures}, indent=1))
+    print(f"rss growth {rss:.2f} %, step time growth {step:.2f} %")
+    step_ok = args.check == "memory" or step < LIMIT_PERCENT
+    return 0 if rss < LIMIT_PERCENT and step_ok and not problems else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
