@@ -22,10 +22,11 @@ class Cursor {
                                                  text_.begin() + static_cast<long>(end), '\n'));
     at_ = end;
   }
-  /// Moves past the next `marker` (to the end when there is none).
+  /// Moves past the next `marker` (to the end when there is none: cut()).
   void skipPast(std::string_view marker) {
     const std::size_t found = text_.find(marker, at_);
-    advance(found == std::string_view::npos ? text_.size() - at_ : found - at_ + marker.size());
+    cut_ = found == std::string_view::npos;
+    advance(cut_ ? text_.size() - at_ : found - at_ + marker.size());
   }
   /// Moves past the '>' that ends a tag, quoted values included; true if it was "/>".
   bool skipTag() {
@@ -43,41 +44,56 @@ class Cursor {
       }
       last = c;
     }
+    cut_ = true;
     return false;
   }
+  /// Whether the text ended inside what the last skip was skipping.
+  bool cut() const { return cut_; }
   std::size_t line() const { return line_; }
 
  private:
   std::string_view text_;
   std::size_t at_ = 0;
   std::size_t line_ = 1;
+  bool cut_ = false;
 };
 
-/// Walks `text`'s tags: `open(line)` for each element opened and not closed in its own tag (it
-/// returns true to stop the walk), `close()` for each closing tag.
+/// Moves the cursor past the tag, comment, CDATA section or declaration it is at; true when
+/// `open` asks the walk to stop.
 template <typename Open, typename Close>
-void walkElements(std::string_view text, Open open, Close close) {
+bool walkOne(Cursor& cursor, Open& open, Close& close) {
+  if (cursor.startsWith("<!--")) {
+    cursor.skipPast("-->");
+  } else if (cursor.startsWith("<![CDATA[")) {
+    cursor.skipPast("]]>");
+  } else if (cursor.peek(1) == '?') {
+    cursor.skipPast("?>");
+  } else if (cursor.peek(1) == '!') {
+    cursor.skipTag();
+  } else if (cursor.peek(1) == '/') {
+    cursor.skipTag();
+    close();
+  } else {
+    const std::size_t line = cursor.line();
+    return !cursor.skipTag() && !cursor.cut() && open(line);
+  }
+  return false;
+}
+
+/// Walks `text`'s tags: `open(line)` for each element opened and not closed in its own tag (it
+/// returns true to stop the walk), `close()` for each closing tag, and `cut(line)` for a tag,
+/// comment, CDATA section or declaration that the text ends inside of.
+template <typename Open, typename Close, typename Cut>
+void walkElements(std::string_view text, Open open, Close close, Cut cut) {
   Cursor cursor(text);
   while (!cursor.done()) {
     if (cursor.peek() != '<') {
       cursor.advance();
       continue;
     }
-    if (cursor.startsWith("<!--")) {
-      cursor.skipPast("-->");
-    } else if (cursor.startsWith("<![CDATA[")) {
-      cursor.skipPast("]]>");
-    } else if (cursor.peek(1) == '?') {
-      cursor.skipPast("?>");
-    } else if (cursor.peek(1) == '!') {
-      cursor.skipTag();
-    } else if (cursor.peek(1) == '/') {
-      cursor.skipTag();
-      close();
-    } else {
-      const std::size_t line = cursor.line();
-      if (!cursor.skipTag() && open(line)) return;
-    }
+    const std::size_t start = cursor.line();
+    if (walkOne(cursor, open, close)) return;
+    if (cursor.cut()) cut(start);
   }
 }
 
@@ -92,7 +108,7 @@ std::optional<std::size_t> xmlNestedBeyond(std::string_view text, std::size_t li
         if (++depth > limit) beyond = line;
         return beyond.has_value();
       },
-      [&] { depth -= depth > 0 ? 1 : 0; });
+      [&] { depth -= depth > 0 ? 1 : 0; }, [](std::size_t) {});
   return beyond;
 }
 
@@ -106,7 +122,8 @@ std::optional<std::size_t> xmlOpenAtEnd(std::string_view text) {
       },
       [&] {
         if (!open.empty()) open.pop_back();
-      });
+      },
+      [&](std::size_t line) { open.push_back(line); });
   return open.empty() ? std::nullopt : std::optional<std::size_t>(open.back());
 }
 

@@ -317,7 +317,7 @@ TEST(BadInput, AUrdfIsRefusedByLine) {
   // Cut off inside an element: the line that opened it.
   EXPECT_THAT(
       error("cut.urdf", head + link + "<joint name='j' type='revolute'>\n<parent link='base'/>"),
-      AllOf(HasSubstr("cut.urdf:8"), HasSubstr("is not closed")));
+      AllOf(HasSubstr("cut.urdf:8"), HasSubstr("ends inside what this line opens")));
   // Refused by the reader: the element its path names.
   std::string inverted = joint;
   inverted.replace(inverted.find("lower='-1'"), 10, "lower='2'");

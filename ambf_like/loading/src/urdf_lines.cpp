@@ -33,7 +33,7 @@ UrdfLines::UrdfLines(const std::filesystem::path& file, const std::string& text)
   TiXmlDocument document;
   document.Parse(text.c_str(), nullptr, TIXML_ENCODING_UTF8);
   if (document.Error()) {
-    // TinyXML gives no place for an element the text ends inside of.
+    // TinyXML gives no place for an element (or tag, comment, declaration) the text ends inside of.
     const int row = document.ErrorRow() > 0
                         ? document.ErrorRow()
                         : static_cast<int>(common::xmlOpenAtEnd(text).value_or(0));
@@ -41,7 +41,7 @@ UrdfLines::UrdfLines(const std::filesystem::path& file, const std::string& text)
         SourceRef{file, row, ""},
         "malformed URDF: " + std::string(document.ErrorDesc()) +
             (document.ErrorRow() > 0 ? " (column " + std::to_string(document.ErrorCol()) + ")"
-             : row > 0               ? " (the element opened here is not closed)"
+             : row > 0               ? " (the file ends inside what this line opens)"
                                      : ""));
   }
   const TiXmlElement* robot = document.FirstChildElement("robot");

@@ -18,8 +18,9 @@ inline constexpr std::size_t kMostXmlNesting = 500;
 /// values may hold '>'.
 std::optional<std::size_t> xmlNestedBeyond(std::string_view text, std::size_t limit);
 
-/// The line (1-based) that opens the innermost element still open where `text` ends, if any:
-/// where a parser that reached the end inside an element (and says so without a line) stopped.
+/// The line (1-based) that opens the innermost element, tag, comment or declaration still open
+/// where `text` ends, if any: where a parser that reached the end inside it (and says so without
+/// a line) stopped.
 std::optional<std::size_t> xmlOpenAtEnd(std::string_view text);
 
 }  // namespace common
