@@ -60,8 +60,8 @@ CantileverSag settleCantilever(const CantileverSpec& spec) {
   const auto per_window = static_cast<std::uint64_t>(std::lround(kWindow / spec.step));
   CantileverSag sag;
   auto window_start = rest;
-  for (std::uint64_t done = 0; done + 1 < steps;) {
-    const auto now = std::min(per_window, steps - 1 - done);
+  for (std::uint64_t done = 0; done < steps;) {
+    const auto now = std::min(per_window, steps - done);
     sim->world->step(now);
     done += now;
     if (now < per_window) break;
@@ -69,13 +69,10 @@ CantileverSag settleCantilever(const CantileverSpec& spec) {
     sag.window_moves.push_back(farthestMove(window_start, at));
     window_start = at;
   }
-  const auto before = beam.nodePositions();
-  sim->world->step();
   sag.finite = beam.isFinite();
   sag.asleep = beam.isAsleep();
   sag.solve = sim->world->elasticSolveStats(beam);
   int count = 0;
-  sag.last_step_move = farthestMove(before, beam.nodePositions());
   for (std::size_t i = 0; i < rest.size(); ++i) {
     if (rest[i].x() > spec.length - 1e-9) {
       sag.tip_sag += rest[i].z() - beam.nodePosition(i).z();

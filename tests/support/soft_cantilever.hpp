@@ -25,8 +25,7 @@ struct CantileverSpec {
 
 /// How the beam ended.
 struct CantileverSag {
-  double tip_sag = 0;         ///< m, the mean drop of its tip face's nodes
-  double last_step_move = 0;  ///< m, the farthest any node moved in the last step
+  double tip_sag = 0;  ///< m, the mean drop of its tip face's nodes
   /// m, the farthest any node moved in each 50 ms of the run (the test of rest)
   std::vector<double> window_moves;
   /// s, when the windows' moves fell below `still` for good (the duration when they never did)
