@@ -318,6 +318,10 @@ TEST(BadInput, AUrdfIsRefusedByLine) {
   EXPECT_THAT(
       error("cut.urdf", head + link + "<joint name='j' type='revolute'>\n<parent link='base'/>"),
       AllOf(HasSubstr("cut.urdf:8"), HasSubstr("ends inside what this line opens")));
+  // TinyXML ends a declaration at its first '>' (XML at "?>"), and its error then has no line:
+  // the line of the last thing it read.
+  EXPECT_THAT(error("decl.urdf", "\n<?xml ve <a><b><<?xml version=c\"1\"?>r\n"),
+              AllOf(HasSubstr("decl.urdf:2"), HasSubstr("stopped after what this line starts")));
   // Refused by the reader: the element its path names.
   std::string inverted = joint;
   inverted.replace(inverted.find("lower='-1'"), 10, "lower='2'");
@@ -330,6 +334,12 @@ TEST(BadInput, AUrdfIsRefusedByLine) {
   orphan.replace(orphan.find("link='l'"), 8, "link='x'");
   EXPECT_THAT(error("tree.urdf", head + link + orphan + "</robot>\n"),
               AllOf(HasSubstr("tree.urdf:8"), HasSubstr("not a valid URDF")));
+  // Two joints naming one child (urdfdom keeps the last): the second, before a loop is walked.
+  std::string again = joint;
+  again.replace(again.find("name='j'"), 8, "name='k'");
+  EXPECT_THAT(error("twice.urdf", head + link + joint + again + "</robot>\n"),
+              AllOf(HasSubstr("twice.urdf:13: joint[k]"),
+                    HasSubstr("link[l] the child of a second joint (after joint[j])")));
 }
 
 TEST(BadInput, SoftBodyFixedNodeOutOfRange) {

@@ -27,21 +27,35 @@ void recordChildren(const TiXmlElement& element, const std::string& path, int de
   }
 }
 
+/// The line of the last node TinyXML read before it failed: the end of its chain of last children
+/// (it links each node as it parses it, the failed one too).
+int lastReadRow(const TiXmlNode& document) {
+  int row = 0;
+  for (const TiXmlNode* node = document.LastChild(); node != nullptr; node = node->LastChild()) {
+    if (node->Row() > 0) row = node->Row();
+  }
+  return row;
+}
+
 }  // namespace
 
 UrdfLines::UrdfLines(const std::filesystem::path& file, const std::string& text) {
   TiXmlDocument document;
   document.Parse(text.c_str(), nullptr, TIXML_ENCODING_UTF8);
   if (document.Error()) {
-    // TinyXML gives no place for an element (or tag, comment, declaration) the text ends inside of.
-    const int row = document.ErrorRow() > 0
-                        ? document.ErrorRow()
-                        : static_cast<int>(common::xmlOpenAtEnd(text).value_or(0));
+    // TinyXML gives no place when its text runs out inside an element, tag, comment or
+    // declaration: the line that opens the innermost of them, or else (where TinyXML read a tag
+    // differently from XML's rules) the last thing it read.
+    const auto open = common::xmlOpenAtEnd(text);
+    const int row = document.ErrorRow() > 0 ? document.ErrorRow()
+                    : open.has_value()      ? static_cast<int>(*open)
+                                            : lastReadRow(document);
     throw LoadError(
         SourceRef{file, row, ""},
         "malformed URDF: " + std::string(document.ErrorDesc()) +
             (document.ErrorRow() > 0 ? " (column " + std::to_string(document.ErrorCol()) + ")"
-             : row > 0               ? " (the file ends inside what this line opens)"
+             : open.has_value()      ? " (the file ends inside what this line opens)"
+             : row > 0               ? " (the parser stopped after what this line starts)"
                                      : ""));
   }
   const TiXmlElement* robot = document.FirstChildElement("robot");

@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <fstream>
 #include <sstream>
+#include <unordered_map>
 
 #include "common/farthest.hpp"
 #include "common/utf8.hpp"
@@ -274,11 +275,20 @@ ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context)
   // Depth-first from the root so every link's location follows from its parent's.
   std::vector<std::pair<urdf::LinkConstSharedPtr, Transform>> pending{
       {urdf->getRoot(), Transform::Identity()}};
+  // urdfdom keeps the last of two joints naming one child and lists both under their parents:
+  // read as they are, a loop of joints would be walked round until its links left the world.
+  std::unordered_map<std::string, std::string> joint_above;  // child link -> its joint
   while (!pending.empty()) {
     auto [link, location] = pending.back();
     pending.pop_back();
     model.bodies.push_back(readLink(*link, link == urdf->getRoot(), location, ctx));
     for (const auto& joint : link->child_joints) {
+      if (const auto [seen, first] = joint_above.try_emplace(joint->child_link_name, joint->name);
+          !first) {
+        ctx.fail("joint[" + joint->name + "]", "makes link[" + joint->child_link_name +
+                                                   "] the child of a second joint (after joint[" +
+                                                   seen->second + "]): a URDF's links form a tree");
+      }
       model.joints.push_back(readUrdfJoint(*joint, ctx));
       const auto child = urdf->getLink(joint->child_link_name);
       const Transform placed = location * toTransform(joint->parent_to_joint_origin_transform,
