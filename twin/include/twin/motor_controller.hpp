@@ -6,6 +6,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <utility>
 
 #include "twin/drive_train.hpp"
 #include "twin/vocabulary.hpp"
@@ -34,7 +36,8 @@ struct MotorCommand {
   ArmJoints gravity = ArmJoints::Zero();  ///< the gravity compensation's part of it
   std::array<std::int32_t, kJointCount> dac{};
   ArmJoints applied = ArmJoints::Zero();  ///< the torque the amplified current gives (N m)
-  bool overdrive = false;                 ///< some |dac| passed the e-stop threshold
+  /// The first motor whose |dac| passed the e-stop threshold, and its count before the clip.
+  std::optional<std::pair<int, double>> overdrive;
 };
 
 /// The control law of one arm with its integrators.
