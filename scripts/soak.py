@@ -8,7 +8,9 @@ Growth, the figure it prints and checks (under 5 %), is last tenth over first te
   grows its peak; a steady one repeats it), sampled every --interval wall seconds;
 - step time: the processes' CPU time (user and system) per simulated millisecond within the tenth,
   so that other work on the machine does not count as growth. The session's progress is the last
-  whole row of its rs recording; the batch's is its finished runs' steps (runs.jsonl).
+  whole row of its rs recording; the batch's is its finished runs' steps (runs.jsonl). Beside it,
+  the share of the host's CPUs busy with other work in each tenth: a growth is the code's only
+  where that share stayed small.
 The session's tenths are of the steady dance after O5's ramp (the whole session when it is too
 short for that), by simulated time; the batch's are of its runs after the warm-up, by runs (its
 memory while the first tenth is running, and after all but the last tenth have finished). The
@@ -59,6 +61,13 @@ def usage(pid):
     fields = stat.rsplit(")", 1)[1].split()  # after the command name, which may hold spaces
     cpu = (int(fields[11]) + int(fields[12])) / CLOCK_TICKS  # utime, stime
     return (rss, cpu) if rss is not None else None
+
+
+def host_usage():
+    """(monotonic wall seconds, CPU seconds the whole host has been busy) now, from /proc/stat."""
+    fields = [int(x) for x in Path("/proc/stat").read_text().split("\n")[0].split()[1:]]
+    idle = fields[3] + fields[4]  # idle, iowait
+    return time.monotonic(), (sum(fields[:8]) - idle) / CLOCK_TICKS  # through steal
 
 
 def last_row_time(csv_path):
@@ -115,14 +124,14 @@ class RosMaster:
 
 
 def watch(processes, interval, progress):
-    """Samples (progress, {name: (rss_kib, cpu_s)}) every interval while every process lives;
-    progress() is None until there is some."""
+    """Samples (progress, {name: (rss_kib, cpu_s)}, host_usage()) every interval while every
+    process lives; progress() is None until there is some."""
     samples = []
     while all(p.poll() is None for p in processes.values()):
         done = progress()
         used = {name: usage(p.pid) for name, p in processes.items()}
         if done is not None and None not in used.values():
-            samples.append((done, used))
+            samples.append((done, used, host_usage()))
         time.sleep(interval)
     return samples
 
@@ -138,14 +147,25 @@ class Tenths:
 
     def rss(self, name):
         """(first, last) peak RSS of one process in KiB."""
-        return tuple(max(used[name][0] for _, used in part) for part in (self.first, self.last))
+        return tuple(max(used[name][0] for _, used, _ in part) for part in (self.first, self.last))
 
     def cpu_per_progress(self, names, progress_of=lambda done: done):
         """(first, last) CPU seconds of the named processes per unit of progress."""
         def slope(part):
-            cpu = [sum(used[n][1] for n in names) for _, used in part]
+            cpu = [sum(used[n][1] for n in names) for _, used, _ in part]
             return (cpu[-1] - cpu[0]) / (progress_of(part[-1][0]) - progress_of(part[0][0]))
         return slope(self.first), slope(self.last)
+
+    def other_load(self, names):
+        """(first, last) share (%) of the host's CPUs busy with work other than the named
+        processes': CPU time is the process's own, but another job on the same cores still slows
+        it (caches, memory bandwidth), so a growth is the code's only on a quiet host."""
+        def share(part):
+            (_, first, (wall0, busy0)), (_, last, (wall1, busy1)) = part[0], part[-1]
+            ours = sum(last[n][1] - first[n][1] for n in names)
+            # The kernel counts a process's time and the CPUs' apart: a few % either way.
+            return max(0.0, 100.0 * (busy1 - busy0 - ours) / ((wall1 - wall0) * os.cpu_count()))
+        return share(self.first), share(self.last)
 
 
 def check_recording(csv_path, turns, duration):
@@ -217,8 +237,9 @@ def soak_session(build, work, seconds, interval):
     s0, s1 = steady[0][0], steady[-1][0]
     tenths = Tenths([s for s in steady if s[0] <= s0 + (s1 - s0) / 10],
                     [s for s in steady if s[0] >= s1 - (s1 - s0) / 10], "session")
-    rows = [(f"rss {name}", tenths.rss(name)) for name in processes]
-    rows.append(("cpu session", tenths.cpu_per_progress(list(processes))))
+    rows = [(f"rss {name}", tenths.rss(name), None) for name in processes]
+    rows.append(("cpu session", tenths.cpu_per_progress(list(processes)),
+                 tenths.other_load(list(processes))))
     what = (f"{seconds:.0f} s simulated, {turns} turns, tenths "
             + (f"after O5's ramp ({ramp_end:.0f} s)" if after_ramp else "with O5's ramp"))
     return rows, problems, what
@@ -250,8 +271,9 @@ def soak_batch(build, work, runs, interval):
     tenth = max(BATCH_THREADS, (runs - warm) // 10)  # runs end together on parallel workers
     tenths = Tenths([s for s in samples if warm <= s[0] <= warm + tenth],
                     [s for s in samples if s[0] >= runs - tenth], "batch")
-    rows = [("rss batch", tenths.rss("batch")),
-            ("cpu batch", tenths.cpu_per_progress(["batch"], lambda done: simulated_after[done]))]
+    rows = [("rss batch", tenths.rss("batch"), None),
+            ("cpu batch", tenths.cpu_per_progress(["batch"], lambda done: simulated_after[done]),
+             tenths.other_load(["batch"]))]
     placed = sum(r["placed"] for r in results)
     return rows, f"{runs} nominal runs on {BATCH_THREADS} threads, {placed} of {6 * runs} placed"
 
@@ -287,9 +309,11 @@ def main():
         print(f"batch: {batch_what}")
 
     figures = []
-    for name, (a, b) in session_rows + batch_rows:
+    for name, (a, b), other in session_rows + batch_rows:
         detail = (f"{a / 1024:.1f} -> {b / 1024:.1f} MiB" if name.startswith("rss")
                   else f"{a:.4f} -> {b:.4f} ms of CPU per simulated ms")
+        if other is not None:
+            detail += f"; other work on the host {other[0]:.0f} % -> {other[1]:.0f} %"
         figures.append({"what": name, "growth_percent": growth(a, b), "detail": detail})
         print(f"  {name:<16} {growth(a, b):+6.2f} %  ({detail})")
     for problem in problems:
