@@ -13,20 +13,30 @@ namespace scenario {
 
 namespace {
 
-constexpr double kOpen = 1.3;         ///< the outer jaw's angle when open (rad): clear of the ring
-constexpr double kJawStep = 0.05;     ///< jaw angle per iteration
-constexpr double kStep = 0.001;       ///< tool travel per iteration (m)
-constexpr double kAboveTop = 0.0035;  ///< the jaw axis above the ring's top at the grasp
-constexpr double kGap = 0.0002;       ///< the inner jaw's face from the wall
-constexpr double kApproach = 0.025;   ///< the orientation move ends this far above the grasp
-constexpr double kLift = 0.030;       ///< the ring's bottom clears the 22 mm post
+constexpr double kOpen = 1.3;      ///< the outer jaw's angle when open (rad): clear of the ring
+constexpr double kJawStep = 0.05;  ///< jaw angle per iteration
+constexpr double kStep = 0.001;    ///< tool travel per iteration (m)
+// The jaw axis above the ring's top at the grasp. A jaw hinged above a tube meets it above its
+// widest point, so the two faces make a wedge that pushes the tube down and out of the jaws, and
+// friction holds it only while the wedge is narrow (half-angle under atan mu). The higher the
+// hinge, the narrower the wedge: 5 mm up, the closed outer jaw stands 0.47 rad from the inner
+// one (0.58 rad 3.5 mm up, where the ideal twin re-grasped 34 rings of 120 on seeds 1-20).
+constexpr double kAboveTop = 0.005;
+constexpr double kGap = 0.0002;      ///< the inner jaw's face from the wall
+constexpr double kApproach = 0.025;  ///< the orientation move ends this far above the grasp
+constexpr double kLift = 0.030;      ///< the ring's bottom clears the 22 mm post
 constexpr double kRetreat = 0.025;
 constexpr double kReleaseHeight = 0.0015;  ///< the ring's bottom above the board when let go
 constexpr int kSettleIterations = 15;
 constexpr double kAligned = 0.0001;   ///< the measured tool this near the grasp before closing (m)
 constexpr int kAlignIterations = 60;  ///< ... or this many iterations of correcting
 constexpr double kStill = 0.00002;    ///< the measured tool moved less in an iteration (m)
-constexpr double kCentred = 0.0005;   ///< the ring's centre this near the post's axis (m)
+// The measured tool lags the command by up to 3 mm while it moves (the motors' tracking); twice
+// that means something stops it, and pushing on only winds the arm's amplifiers up.
+constexpr double kBlockedLag = 0.006;
+constexpr double kJawReached = 0.01;       ///< each measured jaw this near its command (rad)
+constexpr int kJawIterations = 30;         ///< ... or this many iterations of waiting for them
+constexpr double kCentred = 0.0005;        ///< the ring's centre this near the post's axis (m)
 constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
 constexpr int kMaxRegrasps = 2;            ///< per peg, as an operator would before moving on
 constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much more (of the first)
@@ -138,6 +148,37 @@ bool ArmRoutine::decideToRegrasp(const char* why) {
   return true;
 }
 
+bool ArmRoutine::jawsOnCommand(const raven::ArmJoints& measured) const {
+  return std::abs(measured(raven::kJaw1) - inner_) <= kJawReached &&
+         std::abs(measured(raven::kJaw2) - outer_) <= kJawReached;
+}
+
+bool ArmRoutine::blocked(const raven::ArmJoints& target, const raven::ArmJoints& measured) const {
+  const bool moving = phase_ == Phase::Descend || phase_ == Phase::Align || phase_ == Phase::Lift ||
+                      phase_ == Phase::Carry || phase_ == Phase::Lower || phase_ == Phase::Retreat;
+  return moving &&
+         (kinematics_.toolPose(target).translation() - kinematics_.toolPose(measured).translation())
+                 .norm() > kBlockedLag;
+}
+
+raven::ArmJoints ArmRoutine::easeOff(const raven::ArmJoints& measured) {
+  spdlog::debug("{} arm, {}: the tool was blocked while it {}; easing off where it is",
+                raven::armName(arm_), jobs_[job_].ring, phaseName(phase_));
+  if (phase_ == Phase::Descend) {  // it met the ring or its post: grasp it again from above
+    if (decideToRegrasp("blocked the jaws on their way down")) {
+      advance(Phase::Open);
+    } else {
+      retrying_ = false;
+      advance(Phase::Retreat);
+    }
+  } else if (phase_ == Phase::Align) {  // as near the grasp as it goes: close there
+    advance(Phase::Close);
+  } else if (phase_ == Phase::Lower) {  // the ring is on something: let it go there
+    advance(Phase::Open);
+  }
+  return withJaws(measured);
+}
+
 bool ArmRoutine::ringFollows(const bridge::ScenePerception& scene) const {
   return layout_.geometry.offTheBoard(ring(scene).bottom());
 }
@@ -148,6 +189,7 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const raven::A
   raven::ArmJoints q = target;
   const Phase before = phase_;
   const std::size_t job = job_;
+  if (blocked(target, measured)) return easeOff(measured);
   switch (phase_) {
     case Phase::Orient: {  // one capped move: over the peg, jaws down and open
       plan(scene);
@@ -186,11 +228,15 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const raven::A
       }
       break;
     }
-    case Phase::Close:
+    case Phase::Close: {  // the jaws to the grasp's angle, then until the measured jaws are there
+      const bool commanded = outer_ <= closed_;
       outer_ = std::max(closed_, outer_ - kJawStep);
       q = withJaws(target);
-      if (outer_ <= closed_) advance(Phase::Lift);
+      // The jaw motors' integrators bring the jaws onto their command once the ring stops them.
+      if (commanded && (jawsOnCommand(measured) || ++waited_ > kJawIterations))
+        advance(Phase::Lift);
       break;
+    }
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
       if (!arrived) break;

@@ -31,9 +31,9 @@ class ArmRoutine {
   ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile, const PegLayout& layout,
              std::vector<RingJob> jobs, double squeeze = kDefaultSqueeze);
 
-  /// 0.5 mm of the silicone ring's 4 mm wall: each jaw then presses on it with about 1-2 N, the
+  /// 0.35 mm of the silicone ring's 4 mm wall: each jaw then presses on it with about 2-3 N, the
   /// force a real grasp of a peg-transfer ring takes (../shared/reference/soft-materials.md).
-  static constexpr double kDefaultSqueeze = 0.0005;
+  static constexpr double kDefaultSqueeze = 0.00035;
 
   /// The arm's next target. `target` is its current one, `measured` where its encoders say it
   /// is, `scene` shows the rings. Where the arm stops short of its target (friction, a load),
@@ -79,6 +79,14 @@ class ArmRoutine {
                              double step, bool& arrived) const;
   raven::ArmJoints withJaws(raven::ArmJoints q) const;
   void advance(Phase next);
+  /// True when each measured jaw is within kJawReached of its command.
+  bool jawsOnCommand(const raven::ArmJoints& measured) const;
+  /// True when the measured tool lags a moving command by more than the motors' tracking does.
+  bool blocked(const raven::ArmJoints& target, const raven::ArmJoints& measured) const;
+  /// The command back to where the tool is, and what a person does next: a blocked descent is
+  /// grasped again, a blocked alignment closes where it is, a blocked lowering lets the ring go;
+  /// other moves go on from there.
+  raven::ArmJoints easeOff(const raven::ArmJoints& measured);
   /// True when the ring of the current job left the board with the jaws.
   bool ringFollows(const bridge::ScenePerception& scene) const;
   /// Counts a re-grasp of the current job and marks it to be started again, unless it had its
@@ -97,6 +105,7 @@ class ArmRoutine {
   int waited_ = 0;
   Grasp grasp_;
   Eigen::Vector3d last_tool_ = Eigen::Vector3d::Zero();  ///< the measured tool, last iteration
+  double last_jaw_ = 0.0;                                ///< the measured outer jaw, last iteration
   double squeeze_;                                       ///< the first grasp's, m into the wall
   double closed_;                     ///< the outer jaw's angle when closed, this attempt
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
