@@ -6,7 +6,10 @@
 // up; a crash, a hang (libFuzzer's timeout) or memory past the limit is a finding. The first tree
 // it found to diverge (fuzz/regressions/articulations/diverges-at-step-2: a 1 mg link on a joint
 // damped by 5 N m s, flung at 22 km/s at step 2 by the explicit damper) now runs finite: a joint's
-// damping is integrated exactly on its axis inertia (Joint::dampingEffort).
+// damping is integrated exactly on its axis inertia (Joint::dampingEffort). Still accepted and
+// stopped by the guard at step 1 (impossible-inertia-diverges-at-step-1): links whose principal
+// moments break the triangle inequality (2.5 kg m^2 against 3e-9 + 1e-9), which no body has;
+// AMBF takes such files, so whether to refuse them is open (issue 66).
 
 #include <fuzzer/FuzzedDataProvider.h>
 
