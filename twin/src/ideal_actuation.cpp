@@ -2,8 +2,7 @@
 
 namespace twin {
 
-void IdealActuation::drive(raven::Arm arm, const raven::ArmJoints& setpoint,
-                           const raven::ArmJoints& /*setpoint_velocity*/) {
+void IdealActuation::drive(raven::Arm arm, const raven::ArmJoints& setpoint) {
   arms_.command(arm, setpoint);
 }
 

@@ -17,7 +17,7 @@ ArmDrive MotorActuation::makeDrive(Arm arm, TwinArms& arms, ambf_like::World& wo
   return ArmDrive(arm, drive, WorldMotors(arm, drive, mechanics.checked(arm), arms, world), cycle);
 }
 
-void MotorActuation::drive(Arm arm, const ArmJoints& setpoint, const ArmJoints& /*velocity*/) {
+void MotorActuation::drive(Arm arm, const ArmJoints& setpoint) {
   ArmDrive& d = drives_[index(arm)];
   d.cycle(setpoint);
   if (!d.movesTheLinks()) arms_.command(arm, d.linkPosition());

@@ -96,7 +96,7 @@ void TwinPlatform::runCycle() {
   previous_position_ = measuredPositions();
   core_.cycle(previous_position_);
   for (Arm arm : raven::kArms) {
-    actuation_->drive(arm, core_.setpoint(arm), core_.setpointVelocity(arm));
+    actuation_->drive(arm, core_.setpoint(arm));
   }
   world_.step();
   if (after_step_) after_step_(world_);

@@ -145,7 +145,6 @@ void MasterWatch::watch(double period) {
       spdlog::warn(
           "rosmaster {} restarted (pid {}, was {}): registered this node's {} topics again",
           ::ros::master::getURI(), *pid, *last, topics);
-      ++restarts_;
     }
     if (pid) last = pid;
     lock.lock();

@@ -36,7 +36,6 @@ class YamlView {
            std::string key_path);
 
   const std::filesystem::path& file() const { return *file_; }
-  const std::string& keyPath() const { return key_path_; }
   SourceRef where() const;
   [[noreturn]] void fail(const std::string& message) const;
 

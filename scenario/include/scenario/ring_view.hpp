@@ -20,7 +20,6 @@ struct RingDimensions {
   int stations = 0;
 
   double innerRadius() const { return major_radius - tube_half_width; }
-  double outerRadius() const { return major_radius + tube_half_width; }
 };
 
 /// The board and posts a check needs.

@@ -36,9 +36,8 @@ struct ArmStart {
 class Actuation {
  public:
   virtual ~Actuation() = default;
-  /// Before the world steps: drive `arm` toward `setpoint` (moving at `setpoint_velocity`).
-  virtual void drive(raven::Arm arm, const raven::ArmJoints& setpoint,
-                     const raven::ArmJoints& setpoint_velocity) = 0;
+  /// Before the world steps: drive `arm` toward `setpoint`.
+  virtual void drive(raven::Arm arm, const raven::ArmJoints& setpoint) = 0;
   /// After the world stepped.
   virtual ActuatorReadings read(raven::Arm arm) const = 0;
   /// Puts `arm`'s actuators (and the joints they hold) where a recording began.

@@ -13,8 +13,7 @@ namespace twin {
 class IdealActuation final : public Actuation {
  public:
   IdealActuation(twin::TwinArms& arms, DriveTrain drive) : arms_(arms), drive_(drive) {}
-  void drive(raven::Arm arm, const raven::ArmJoints& setpoint,
-             const raven::ArmJoints& setpoint_velocity) override;
+  void drive(raven::Arm arm, const raven::ArmJoints& setpoint) override;
   ActuatorReadings read(raven::Arm arm) const override;
   /// The joints go where the recorded motors put them.
   void place(raven::Arm arm, const ArmStart& start) override;

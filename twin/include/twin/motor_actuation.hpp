@@ -25,7 +25,7 @@ class MotorActuation final : public Actuation {
   /// std::invalid_argument naming the arm and field of invalid mechanics.
   MotorActuation(TwinArms& arms, ambf_like::World& world, const DriveTrain& drive,
                  const ArmsMechanics& mechanics, double cycle);
-  void drive(Arm arm, const ArmJoints& setpoint, const ArmJoints& setpoint_velocity) override;
+  void drive(Arm arm, const ArmJoints& setpoint) override;
   ActuatorReadings read(Arm arm) const override { return drives_[index(arm)].readings(); }
   std::string fault() const override;
   void clearFault() override {

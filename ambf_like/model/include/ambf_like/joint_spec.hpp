@@ -89,8 +89,6 @@ struct JointSpec {
            type == JointType::Prismatic || type == JointType::LinearSpring ||
            type == JointType::TorsionSpring;
   }
-  /// True for prismatic and linear-spring joints (coordinate in metres).
-  bool isLinear() const { return type == JointType::Prismatic || type == JointType::LinearSpring; }
   /// True for revolute, continuous and torsion-spring joints (coordinate in radians).
   bool isAngular() const {
     return type == JointType::Revolute || type == JointType::Continuous ||

@@ -15,14 +15,6 @@ inline Quat quatFromRpy(double roll, double pitch, double yaw) {
               Eigen::AngleAxisd(roll, Vec3::UnitX()));
 }
 
-/// A transform from a position and an AMBF {r, p, y} orientation.
-inline Transform makeTransform(const Vec3& position, const Vec3& rpy) {
-  Transform t = Transform::Identity();
-  t.linear() = quatFromRpy(rpy.x(), rpy.y(), rpy.z()).toRotationMatrix();
-  t.translation() = position;
-  return t;
-}
-
 /// The shortest rotation taking unit direction `from` onto unit direction `to` (exact, also for
 /// anti-parallel vectors, unlike AMBF's version which snaps angles under 0.1 rad to identity).
 inline Quat rotationBetween(const Vec3& from, const Vec3& to) {

@@ -3,7 +3,6 @@
 // of the publishers and subscribers registered with the old one, and roscpp does not register
 // them again by itself, so without this no new peer could find them.
 
-#include <atomic>
 #include <condition_variable>
 #include <mutex>
 #include <thread>
@@ -22,13 +21,9 @@ class MasterWatch {
   MasterWatch(const MasterWatch&) = delete;
   MasterWatch& operator=(const MasterWatch&) = delete;
 
-  /// How many master restarts it has registered this process's topics after.
-  int restartsHandled() const { return restarts_; }
-
  private:
   void watch(double period);
 
-  std::atomic<int> restarts_{0};
   std::mutex mutex_;
   std::condition_variable wake_;
   bool stopping_ = false;
