@@ -75,8 +75,8 @@ TEST(MotorController, TheDacIsTauOverTheAmplifiersAndTheClipHoldsExceptOnGrasp2)
   set(raven::kRoll) += 10.0;  // 0.9 N m: 24595 counts
   out = twin::MotorController(Arm::Left, drive).cycle(set, m, ArmJoints::Zero(), home());
   ASSERT_TRUE(out.overdrive);
-  EXPECT_EQ(out.overdrive->first, raven::kRoll) << "the e-stop names the motor that tripped it";
-  EXPECT_NEAR(out.overdrive->second,
+  EXPECT_EQ(out.overdrive->motor, raven::kRoll) << "the e-stop names the motor that tripped it";
+  EXPECT_NEAR(out.overdrive->counts,
               std::trunc(out.torque(raven::kRoll) * dac.counts_per_torque(raven::kRoll)), 0.5);
   for (int c : out.dac) EXPECT_EQ(c, 0);
 }

@@ -65,10 +65,10 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
   MotorCommand command =
       controller_.cycle(r.motor_setpoint, r.motor_position, r.motor_velocity, r.position);
   if (command.overdrive && fault_.empty()) {
-    const auto [motor, counts] = *command.overdrive;
+    const Overdrive& over = *command.overdrive;
     fault_ = "the " + std::string(armName(arm_)) + " arm's " +
-             std::string(kJointNames[static_cast<std::size_t>(motor)]) + " amplifier command (" +
-             std::to_string(static_cast<long>(counts)) +
+             std::string(kJointNames[static_cast<std::size_t>(over.motor)]) +
+             " amplifier command (" + std::to_string(static_cast<long>(over.counts)) +
              " DAC counts) passed the overdrive threshold (soft e-stop)";
   }
   if (!fault_.empty()) {  // the soft e-stop keeps the amplifiers off until the robot is enabled

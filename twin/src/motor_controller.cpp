@@ -60,7 +60,7 @@ MotorCommand MotorController::cycle(const ArmJoints& motor_setpoint,
     const double counts = std::trunc(out.torque(i) * dac_.counts_per_torque(i));
     const double saturated = std::clamp(counts, -32768.0, 32767.0);
     if (std::abs(saturated) > dac_.overdrive && i != raven::kJaw2 && !out.overdrive) {
-      out.overdrive = std::pair(i, saturated);
+      out.overdrive = Overdrive{.motor = i, .counts = saturated};
     }
     const auto limit = static_cast<double>(dac_.limit[k]);
     out.dac[k] = static_cast<std::int32_t>(std::clamp(saturated, -limit, limit));

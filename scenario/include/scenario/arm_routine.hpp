@@ -105,7 +105,6 @@ class ArmRoutine {
   int waited_ = 0;
   Grasp grasp_;
   Eigen::Vector3d last_tool_ = Eigen::Vector3d::Zero();  ///< the measured tool, last iteration
-  double last_jaw_ = 0.0;                                ///< the measured outer jaw, last iteration
   double squeeze_;                                       ///< the first grasp's, m into the wall
   double closed_;                     ///< the outer jaw's angle when closed, this attempt
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical

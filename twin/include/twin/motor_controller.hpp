@@ -7,7 +7,6 @@
 #include <array>
 #include <cstdint>
 #include <optional>
-#include <utility>
 
 #include "twin/drive_train.hpp"
 #include "twin/vocabulary.hpp"
@@ -30,14 +29,19 @@ struct DacConversion {
   static DacConversion raven2(Arm arm);
 };
 
+/// A motor whose amplifier command passed the e-stop threshold, and that command before the clip.
+struct Overdrive {
+  int motor = 0;
+  double counts = 0.0;
+};
+
 /// What one cycle sends to the amplifiers.
 struct MotorCommand {
   ArmJoints torque = ArmJoints::Zero();   ///< Tau: PID + gravity, before the clip (N m)
   ArmJoints gravity = ArmJoints::Zero();  ///< the gravity compensation's part of it
   std::array<std::int32_t, kJointCount> dac{};
   ArmJoints applied = ArmJoints::Zero();  ///< the torque the amplified current gives (N m)
-  /// The first motor whose |dac| passed the e-stop threshold, and its count before the clip.
-  std::optional<std::pair<int, double>> overdrive;
+  std::optional<Overdrive> overdrive;     ///< the first motor past the e-stop threshold, if any
 };
 
 /// The control law of one arm with its integrators.
