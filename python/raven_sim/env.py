@@ -23,6 +23,10 @@ pose x, y, z, qw, qx, qy, qz [28, 42), grasp force and torque [42, 54); then eac
 posts (+1 as one comes to rest there, -1 if one leaves); an episode terminates with all six
 placed and is truncated at the time limit. The main job's scripted operator is the expert:
 `expert_action()`. The same seed and actions give the same episode.
+
+The twin is the Raven-II's motor-level one by default (actuation="motors": its motors, cables and
+control software drive the joints, and what the jaws touch loads the motors), or ideal joint
+servos (actuation="ideal").
 """
 
 from concurrent.futures import ThreadPoolExecutor
@@ -95,13 +99,13 @@ class PegTransferEnv(_Env):
 
     def __init__(self, action_type="joints", randomize=False, time_limit=240.0, launch_file=None,
                  control="waypoint", period=0.05, obs=("state",), camera="overview",
-                 image_size=(128, 96)):
+                 image_size=(128, 96), actuation="motors"):
         kinds = ("joints", "joint_deltas", "tool_deltas", "pad")
         if action_type not in kinds:
             raise ValueError(f"action_type is '{action_type}': expected one of {kinds}")
         core_action = "joints" if action_type == "pad" else action_type
         self.core = PegTransferCore(randomize, time_limit, launch_file, core_action, control,
-                                    period)
+                                    period, actuation)
         self.action_type = action_type
         self.obs = (obs,) if isinstance(obs, str) else tuple(obs)
         unknown = [k for k in self.obs if k not in OBSERVATIONS]

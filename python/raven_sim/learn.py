@@ -110,7 +110,7 @@ def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None
 def record(args):
     enough_seeds(args)
     rng = np.random.default_rng(args.noise_seed)
-    kwargs = demos.ENV_KWARGS
+    kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation}
     if args.obs != ["state"]:
         kwargs = {**kwargs, "obs": args.obs, "camera": args.camera.split(","),
                   "image_size": args.image_size}
@@ -175,14 +175,15 @@ def dagger(args):
     enough_seeds(args)
     single_threaded()
     rng = np.random.default_rng(args.noise_seed)
-    env = PegTransferEnv(**demos.ENV_KWARGS)
+    kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation}
+    env = PegTransferEnv(**kwargs)
     policy = Policy.load(args.policy)
 
     def drive(observation, label):
         action = policy.act(observation)  # every step: the policy keeps its memory
         return label if rng.random() < args.beta else action
 
-    f, data = demos.open_demos(args.collect, demos.ENV_KWARGS, "DAgger", mode="a")
+    f, data = demos.open_demos(args.collect, kwargs, "DAgger", mode="a")
     placed = collect(env, SteppedExpert(env), args.seeds[:args.episodes], drive, data,
                      f"DAgger: {args.policy} driving, beta {args.beta}", args.max_steps, policy)
     f.close()
@@ -190,11 +191,11 @@ def dagger(args):
           f"labels joined {args.collect}")
 
 
-def evaluate_seed(policy, seed, time_limit):
+def evaluate_seed(policy, seed, time_limit, actuation="motors"):
     """One episode of the policy on `seed`'s scene: (rings placed, a line saying how it went)."""
     policy = policy.fresh()  # its own memory of the episode: episodes may run side by side
     env = PegTransferEnv(**{**demos.ENV_KWARGS, **policy.env_kwargs,
-                            "time_limit": time_limit})
+                            "time_limit": time_limit, "actuation": actuation})
     info = demos.run_episode(env, seed, lambda observation, _: policy.act(observation)).info
     why = f" (the world failed: {info['failure']})" if "failure" in info else ""
     return info["placed"], f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s{why}"
@@ -206,13 +207,20 @@ def evaluate(args):
     single_threaded()
     policy = load_policy(args.policy)
     with ThreadPoolExecutor(args.workers) as pool:
-        runs = pool.map(lambda seed: evaluate_seed(policy, seed, args.time_limit), args.seeds)
+        runs = pool.map(lambda seed: evaluate_seed(policy, seed, args.time_limit, args.actuation),
+                        args.seeds)
         placed = []
         for rings, line in runs:
             placed.append(rings)
             print(line, flush=True)
     print(f"placed {sum(placed)}/{6 * len(args.seeds)} rings; "
           f"{sum(p == 6 for p in placed)}/{len(args.seeds)} episodes all six")
+
+
+def add_actuation(parser):
+    parser.add_argument("--actuation", choices=["motors", "ideal"], default="motors",
+                        help="what drives the twin's joints: motors (the Raven-II's motor-level "
+                             "actuation, the default) or ideal (ideal joint servos)")
 
 
 def main(argv=None):
@@ -231,6 +239,7 @@ def main(argv=None):
     p.add_argument("--noise", type=float, default=0.0, help="DART noise, times NOISE_SCALE")
     p.add_argument("--noise-seed", type=int, default=0)
     p.add_argument("--out", required=True)
+    add_actuation(p)
     p.set_defaults(run=record)
     p = sub.add_parser("convert", help="a gamepad session's ci file replayed into HDF5")
     p.add_argument("--ci", required=True)
@@ -266,12 +275,14 @@ def main(argv=None):
     p.add_argument("--max-steps", type=int, default=1500,
                    help="an episode's steps at most (the expert needs 500-900)")
     p.add_argument("--collect", required=True, help="the HDF5 file the episodes join")
+    add_actuation(p)
     p.set_defaults(run=dagger)
     p = sub.add_parser("evaluate", help="the policy on randomised scenes")
     p.add_argument("--policy", required=True)
     p.add_argument("--seeds", type=seed_range, required=True)
     p.add_argument("--time-limit", type=float, default=240.0)
     p.add_argument("--workers", type=int, default=1, help="episodes run side by side")
+    add_actuation(p)
     p.set_defaults(run=evaluate)
     args = parser.parse_args(argv)
     args.run(args)

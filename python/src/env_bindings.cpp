@@ -7,6 +7,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include "bindings.hpp"
+#include "common/actuation_kind.hpp"
 #include "scenario/peg_cameras.hpp"
 #include "scenario/peg_transfer_env.hpp"
 
@@ -63,7 +64,7 @@ void bindPegTransferEnv(py::module_& m) {
   py::class_<E>(m, "PegTransferCore", "the peg transfer, one manual-loop iteration per step")
       .def(py::init([](bool randomize, double time_limit,
                        std::optional<std::filesystem::path> launch_file, const std::string& action,
-                       const std::string& control, double period) {
+                       const std::string& control, double period, const std::string& actuation) {
              scenario::PegTransferEnvOptions options;
              options.randomize = randomize;
              options.time_limit = time_limit;
@@ -76,11 +77,13 @@ void bindPegTransferEnv(py::module_& m) {
              options.control = control == "period" ? scenario::EnvControl::Period
                                                    : scenario::EnvControl::Waypoint;
              options.period = period;
+             options.actuation = common::actuationNamed(actuation);
              return std::make_unique<E>(options);
            }),
            py::arg("randomize") = false, py::arg("time_limit") = 240.0,
            py::arg("launch_file") = py::none(), py::arg("action") = "joints",
-           py::arg("control") = "waypoint", py::arg("period") = 0.05)
+           py::arg("control") = "waypoint", py::arg("period") = 0.05,
+           py::arg("actuation") = "motors")
       .def_readonly_static("observation_size", &E::kObservationSize)
       .def_property_readonly("action_size", &E::actionSize)
       .def(

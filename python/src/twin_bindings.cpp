@@ -7,6 +7,7 @@
 
 #include "bindings.hpp"
 #include "bridge/enable_and_home.hpp"
+#include "common/actuation_kind.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/twin_platform.hpp"
 
@@ -133,13 +134,10 @@ void bindTwin(py::module_& m) {
              if (launch_file) options.launch_file = *launch_file;
              options.profile = profile;
              options.load.strict = strict;
-             if (actuation == "motors") {
+             if (common::actuationNamed(actuation) == common::ActuationKind::Motors) {
                (calibration ? twin::CalibrationProfile::load(*calibration)
                             : twin::CalibrationProfile::shipped())
                    .applyTo(options);
-             } else if (actuation != "ideal") {
-               throw std::invalid_argument("actuation must be 'motors' or 'ideal', not '" +
-                                           actuation + "'");
              }
              py::gil_scoped_release release;
              return std::make_unique<T>(options);

@@ -55,7 +55,7 @@ struct Settings {
   std::string jsonl;
   /// Ideal servos until the scripted operator closes its loop on what it sees (issue 64): open
   /// loop on joints, the robot's friction band costs it rings.
-  common::ActuationKind actuation = common::ActuationKind::Ideal;
+  common::ActuationKind actuation = common::ActuationKind::Motors;
   double time_limit = 240.0;
   double squeeze_mm = scenario::ArmRoutine::kDefaultSqueeze * 1e3;
   double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
@@ -119,7 +119,7 @@ int runPegTransfers(const Settings& s) {
   options.randomize = s.randomize;
   options.assist =
       s.assist == "contact" ? scenario::AssistMode::Contact : scenario::AssistMode::Off;
-  options.motor_actuation = s.actuation == common::ActuationKind::Motors;
+  options.actuation = s.actuation;
   options.launch_file = s.launch;
   options.time_limit = s.time_limit;
   options.squeeze = s.squeeze_mm * 1e-3;
@@ -148,13 +148,14 @@ int runPegTransfers(const Settings& s) {
   const std::string which =
       single ? fmt::format("seed {}", seeds.front())
              : fmt::format("{} runs, seeds {}..{}", seeds.size(), s.seed, s.seed + s.runs - 1);
-  fmt::print("Peg transfer on the Raven-II twin{}: {}{}, {} scene, grasp assist {}{}\n",
-             s.over_ros ? " over ROS" : "", which,
-             shard.count > 1 ? fmt::format(" (shard {}: every {}th from seed {})", s.shard,
-                                           shard.count, s.seed + shard.index - 1)
-                             : "",
-             s.randomize ? "randomised" : "nominal", s.assist,
-             s.actuation == common::ActuationKind::Motors ? ", motor-level actuation" : "");
+  fmt::print(
+      "Peg transfer on the Raven-II twin{}: {}{}, {} scene, grasp assist {}{}\n",
+      s.over_ros ? " over ROS" : "", which,
+      shard.count > 1 ? fmt::format(" (shard {}: every {}th from seed {})", s.shard, shard.count,
+                                    s.seed + shard.index - 1)
+                      : "",
+      s.randomize ? "randomised" : "nominal", s.assist,
+      s.actuation == common::ActuationKind::Motors ? ", motor-level actuation" : ", ideal servos");
   std::fflush(stdout);
 
   scenario::ProgressBar bar(stderr, single ? "transfers" : "runs");
@@ -224,7 +225,7 @@ int runRectangleTask(const Settings& s) {
   const fs::path out(s.out_dir);
   fs::create_directories(out);
   scenario::RectangleOptions options;
-  options.motor_actuation = s.actuation == common::ActuationKind::Motors;
+  options.actuation = s.actuation;
   if (s.rect_width_mm > 0) options.width = s.rect_width_mm * 1e-3;
   if (s.rect_depth_mm > 0) options.depth = s.rect_depth_mm * 1e-3;
   if (s.record != "no") {
@@ -270,8 +271,10 @@ int main(int argc, char** argv) {
                  "off (default: friction only) or contact (pin a peg touched by both jaws)")
       ->check(CLI::IsMember({"off", "contact"}))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // quickstart.sh's can be overridden
-  app.add_option("--squeeze", s.squeeze_mm,
-                 "how far the closed jaws reach into a ring's 4 mm wall (mm, default 0.5)")
+  app.add_option(
+         "--squeeze", s.squeeze_mm,
+         fmt::format("how far the closed jaws reach into a ring's 4 mm wall (mm, default {})",
+                     scenario::ArmRoutine::kDefaultSqueeze * 1e3))
       ->check(CLI::Range(0.0, 4.0));
   app.add_option("--launch", s.launch,
                  "the scene's launch file (default: the shipped peg_transfer/launch.yaml)")

@@ -31,6 +31,10 @@ constexpr int kSettleIterations = 15;
 constexpr double kAligned = 0.0001;   ///< the measured tool this near the grasp before closing (m)
 constexpr int kAlignIterations = 60;  ///< ... or this many iterations of correcting
 constexpr double kStill = 0.00002;    ///< the measured tool moved less in an iteration (m)
+// In free space the arm's motors stop at most about 1 mm short of a command (their joints have no
+// integrator: friction and the weight the firmware misjudges hold them off); a command that has
+// to go further than this beyond the grasp is pressing the tool against something.
+constexpr double kAlignReach = 0.002;
 // The measured tool lags the command by up to 3 mm while it moves (the motors' tracking); twice
 // that means something stops it, and pushing on only winds the arm's amplifiers up.
 constexpr double kBlockedLag = 0.006;
@@ -225,6 +229,13 @@ raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const raven::A
       } else if (still) {
         q = translate(target, kinematics_.toolPose(target).translation() + 0.5 * lack, kStep,
                       arrived);
+        if ((kinematics_.toolPose(q).translation() - grasp_.pivot).norm() > kAlignReach) {
+          spdlog::debug(
+              "{} arm, {}: something holds the tool {:.1f} mm from the grasp; closing there",
+              raven::armName(arm_), jobs_[job_].ring, lack.norm() * 1e3);
+          q = target;
+          advance(Phase::Close);
+        }
       }
       break;
     }

@@ -37,7 +37,8 @@ twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
     // The assist's jaw sensors and actuators, after the arms whose jaws carry them.
     if (assist) ambf_like::appendModelFiles(scene, {GraspAssist::modelFile()});
   };
-  if (options.motor_actuation) twin::CalibrationProfile::shipped().applyTo(twin);
+  if (options.actuation == common::ActuationKind::Motors)
+    twin::CalibrationProfile::shipped().applyTo(twin);
   return twin;
 }
 
@@ -167,7 +168,7 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   result.variation = options.randomize ? SceneVariation::draw(options.seed) : SceneVariation{};
   result.variation.seed = options.seed;
   result.assist = options.assist;
-  result.motor_actuation = options.motor_actuation;
+  result.actuation = options.actuation;
 
   ScriptedSession session(pegTransferTwin(options, result.variation));
   twin::TwinPlatform& twin = session.twin();

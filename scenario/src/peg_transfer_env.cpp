@@ -44,6 +44,7 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   PegTransferOptions run;
   run.seed = seed;
   run.launch_file = options_.launch_file;
+  run.actuation = options_.actuation;
   SceneVariation variation = options_.randomize ? SceneVariation::draw(seed) : SceneVariation{};
   variation.seed = seed;
   expert_.reset();

@@ -49,7 +49,7 @@ nlohmann::json PegTransferResult::json() const {
                    {"seed", variation.seed},
                    {"scene", variation.json()},
                    {"grasp_assist", assistName(assist)},
-                   {"actuation", motor_actuation ? "motors" : "ideal servos"},
+                   {"actuation", common::actuationWord(actuation)},
                    {"placed", placed()},
                    {"lost", lost()},
                    {"regrasps", regrasps()},

@@ -76,7 +76,8 @@ RectangleResult runRectangle(const RectangleOptions& options) {
   const controller::ControllerOptions controller_options;  // M2, the paper's constants
   const auto inputs = rectangleInputs(options, controller_options.mapping);
   twin::TwinOptions twin_options;
-  if (options.motor_actuation) twin::CalibrationProfile::shipped().applyTo(twin_options);
+  if (options.actuation == common::ActuationKind::Motors)
+    twin::CalibrationProfile::shipped().applyTo(twin_options);
   ScriptedSession session(twin_options, controller_options);
   session.makeReady(options.time_limit);
   twin::TwinPlatform& twin = session.twin();

@@ -15,6 +15,7 @@ using raven::Arm;
 TEST(RectangleTask, BothArmsTraceTheRectangleAtConstantHeightAndItIsRecorded) {
   test_support::TempDir dir;
   scenario::RectangleOptions options;
+  options.actuation = common::ActuationKind::Ideal;  // the mapping's geometry, to 0.1-0.3 mm
   options.rs_file = dir.path() / "d2_rs.csv";
   options.ci_file = dir.path() / "d2_ci.csv";
   const auto result = scenario::runRectangle(options);

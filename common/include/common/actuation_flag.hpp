@@ -5,23 +5,16 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
-namespace common {
+#include "common/actuation_kind.hpp"
 
-/// What drives a twin's joints.
-enum class ActuationKind {
-  Motors,  ///< the Raven-II's motor-level actuation (motors, cables, its control software)
-  Ideal,   ///< ideal joint servos
-};
+namespace common {
 
 /// Adds `--actuation motors|ideal`; `kind` holds the program's default, named in the help.
 inline CLI::Option* addActuationFlag(CLI::App& app, ActuationKind& kind) {
-  const std::string fallback = kind == ActuationKind::Motors ? "motors" : "ideal";
+  const std::string fallback(actuationWord(kind));
   return app
       .add_option_function<std::string>(
-          "--actuation",
-          [&kind](const std::string& word) {
-            kind = word == "motors" ? ActuationKind::Motors : ActuationKind::Ideal;
-          },
+          "--actuation", [&kind](const std::string& word) { kind = actuationNamed(word); },
           "what drives the twin's joints: motors (the Raven-II's motor-level actuation, fitted "
           "by raven_calibrate) or ideal (ideal joint servos); default " +
               fallback)

@@ -29,8 +29,8 @@ struct PegTransferOptions {
   AssistMode assist = AssistMode::Off;
   /// How far (m) the closed jaws reach into a ring's wall (ArmRoutine).
   double squeeze = ArmRoutine::kDefaultSqueeze;
-  /// The Raven-II's motor-level actuation (the shipped calibration) instead of ideal servos.
-  bool motor_actuation = false;
+  /// The Raven-II's motor-level actuation (the shipped calibration), or ideal joint servos.
+  common::ActuationKind actuation = common::ActuationKind::Motors;
   /// The scene's launch file; empty: raven_description's peg_transfer (the benchmarks pass the
   /// dense-collision variant).
   std::filesystem::path launch_file;

@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "common/actuation_kind.hpp"
 #include "scenario/arm_routine.hpp"
 #include "scenario/env_action.hpp"
 #include "scenario/peg_layout.hpp"
@@ -43,6 +44,8 @@ struct PegTransferEnvOptions {
   double squeeze = ArmRoutine::kDefaultSqueeze;
   /// The scene; empty: the shipped peg_transfer.
   std::filesystem::path launch_file;
+  /// The Raven-II's motor-level actuation (the shipped calibration), or ideal joint servos.
+  common::ActuationKind actuation = common::ActuationKind::Motors;
 };
 
 /// What one step gives back.

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "common/actuation_kind.hpp"
 #include "raven/arm.hpp"
 #include "scenario/run_timing.hpp"
 #include "scenario/scene_variation.hpp"
@@ -43,7 +44,7 @@ struct RingOutcome {
 struct PegTransferResult {
   SceneVariation variation;
   AssistMode assist = AssistMode::Off;
-  bool motor_actuation = false;
+  common::ActuationKind actuation = common::ActuationKind::Motors;
   std::array<RingOutcome, 6> pegs;
   bool timed_out = false;  ///< the simulated time limit ended it
   bool stopped = false;    ///< asked to stop (PegTransferOptions::stop) before it was done

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "common/actuation_kind.hpp"
 #include "controller/gamepad_mapping.hpp"
 #include "recording/gamepad_state.hpp"
 #include "scenario/run_progress.hpp"
@@ -20,11 +21,12 @@ namespace scenario {
 
 /// The rectangle and how it is driven.
 struct RectangleOptions {
-  double width = 0.03;           ///< along x (m); 40 mm takes the right elbow to its limit
-  double depth = 0.02;           ///< along y (m)
-  double deflection = 1.0;       ///< how far the sticks are pushed (1: full; past the deadzone)
-  int dwell = 25;                ///< neutral readings after each edge (the operator's pause)
-  bool motor_actuation = false;  ///< the motor-level actuation instead of ideal servos
+  double width = 0.03;      ///< along x (m); 40 mm takes the right elbow to its limit
+  double depth = 0.02;      ///< along y (m)
+  double deflection = 1.0;  ///< how far the sticks are pushed (1: full; past the deadzone)
+  int dwell = 25;           ///< neutral readings after each edge (the operator's pause)
+  /// The Raven-II's motor-level actuation (the shipped calibration), or ideal joint servos.
+  common::ActuationKind actuation = common::ActuationKind::Motors;
   std::filesystem::path rs_file, ci_file;  ///< recordings; empty: none
   double time_limit = 60.0;                ///< simulated seconds
   ProgressCallback progress;

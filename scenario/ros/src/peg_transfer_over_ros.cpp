@@ -51,7 +51,7 @@ std::vector<std::string> twinNodeCommand(const std::filesystem::path& program,
                                    : options.launch_file)
           .string()};
   argv.push_back("--actuation");
-  argv.push_back(options.motor_actuation ? "motors" : "ideal");
+  argv.emplace_back(common::actuationWord(options.actuation));
   if (options.soft_body_sleep) argv.push_back("--soft-body-sleep");
   return argv;
 }
