@@ -59,7 +59,9 @@ void measureLoopFrequency(const BenchSettings& s, Report& report) {
   const auto dense = s.dense_models / "peg_transfer" / "launch.yaml";
   const double seconds = s.scene_seconds;
   const std::string moving = fmt::format(
-      "main job's first {:.0f} s (both arms moving, rings grasped), {} runs", seconds, s.repeat);
+      "main job's first {:.0f} s on the motor twin, the default (both arms moving, rings grasped), "
+      "{} runs",
+      seconds, s.repeat);
 
   // Friction grasps (the main job) and the assisted scene alternate run by run.
   std::vector<PegSceneRate> friction, assisted;

@@ -1,12 +1,17 @@
 #!/usr/bin/env python3
 """Checks the house's floors: every quoted #include stays in its room or goes down to a room the
 room's README allows ("May include: ..."), no include climbs with "..", and the allowed rooms
-form no cycle (no two rooms include each other, directly or around a loop); and the README stays
-a door (at most README_LINES lines: topics go to docs/).
+form no cycle (no two rooms include each other, directly or around a loop); an arm's place in a
+PerArm is raven::slot(arm), never an index cast by hand; every room's README lists each of its
+source files (a table row's first column: names, `name.*` or `adf_*_reader.cpp`) and lists none
+that is not there; and the README stays a door (at most README_LINES lines: topics go to docs/).
 
-  scripts/check-rooms.py [--graph]     (--graph prints the includes as found, room by room)
+  scripts/check-rooms.py [--graph] [--root DIR]
+      --graph prints the includes as found, room by room; --root checks another tree (a test's
+      small house: rooms it has no folder for are left out)
 Exit status 1 with one line per breach, naming file and line."""
 
+import fnmatch
 import re
 import sys
 from pathlib import Path
@@ -32,6 +37,9 @@ README_LINES = 200
 ENGINE_STAGES = ["ambf_like/model", "ambf_like/loading", "ambf_like/world"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 MAY_INCLUDE = re.compile(r"^May include:\s*(.*)$", re.MULTILINE)
+FILE_ROW = re.compile(r"^\|([^|]*)\|", re.MULTILINE)
+SOURCE_SUFFIXES = (".hpp", ".cpp", ".h", ".py")
+HAND_CAST_SLOT = re.compile(r"static_cast<std::size_t>\(\s*(1\s*-\s*)?(raven::)?index\(")
 
 
 def room_of_file(path):
@@ -70,6 +78,41 @@ def allowed_rooms(room, problems):
     return {name.strip().strip("`") for name in text.split(",") if name.strip()}
 
 
+def listed_names(room):
+    """The file names and patterns in the first column of the room README's tables."""
+    names = []
+    readme = ROOT / room / "README.md"
+    for cell in FILE_ROW.findall(readme.read_text() if readme.exists() else ""):
+        names += [Path(n).name for n in re.findall(r"`([^`\s]+)`", cell) if not n.endswith("/")]
+    return names
+
+
+def lists(name, path):
+    """True when the README entry `name` names `path`: its file name; its stem when the entry has
+    no suffix (`run_watcher`); a header's entry names its source too."""
+    if fnmatch.fnmatch(path.name, name) or ("." not in name and path.stem == name):
+        return True
+    return path.suffix == ".cpp" and Path(name).suffix in (".hpp", ".h") and \
+        fnmatch.fnmatch(path.stem, Path(name).stem)
+
+
+def check_listings(sources, problems):
+    by_room = {}
+    for path in sources:
+        room = room_of_file(path)
+        if room not in (None, "tests", "fuzz") and path.suffix in SOURCE_SUFFIXES:
+            by_room.setdefault(room, []).append(path)
+    for room, paths in sorted(by_room.items()):
+        names = listed_names(room)
+        for path in paths:
+            if not any(lists(name, path) for name in names):
+                problems.append(f"{path.relative_to(ROOT)}: not listed in {room}/README.md")
+        for name in names:
+            if Path(name).suffix in SOURCE_SUFFIXES + (".*",) and \
+                    not any(lists(name, path) for path in paths):
+                problems.append(f"{room}/README.md: lists `{name}`, which is not in the room")
+
+
 def find_cycle(graph):
     """A loop of rooms (its first room repeated at the end), or None. Depth first: a room met
     again while still on the path closes a loop."""
@@ -95,10 +138,14 @@ def find_cycle(graph):
 
 
 def main():
+    global ROOT, ROOMS
+    if "--root" in sys.argv:
+        ROOT = Path(sys.argv[sys.argv.index("--root") + 1]).resolve()
+        ROOMS = [room for room in ROOMS if (ROOT / room).is_dir()]
     problems = []
     declared = {room: allowed_rooms(room, problems) for room in ROOMS}
     found = {room: set() for room in ROOMS}
-    sources = [p for p in ROOT.rglob("*") if p.suffix in (".hpp", ".cpp", ".h")
+    sources = [p for p in ROOT.rglob("*") if p.suffix in SOURCE_SUFFIXES
                and not any(part.startswith("build") or part.startswith(".") for part in
                            p.relative_to(ROOT).parts)]
     for path in sorted(sources):
@@ -106,6 +153,9 @@ def main():
         if room is None:
             continue
         for number, line in enumerate(path.read_text(errors="replace").splitlines(), 1):
+            if HAND_CAST_SLOT.search(line):
+                problems.append(f"{path.relative_to(ROOT)}:{number}: an arm's place cast by hand: "
+                                "raven::slot(arm) (or slot(raven::other(arm)))")
             match = INCLUDE.match(line)
             if not match:
                 continue
@@ -122,6 +172,7 @@ def main():
             if "*" not in allowed and other not in allowed:
                 problems.append(f'{where}: {room} includes "{target}" of {other}, which '
                                 f"{room}/README.md does not allow")
+    check_listings(sources, problems)
     for room, allowed in declared.items():
         for name in allowed - {"*"}:
             if name not in ROOMS:

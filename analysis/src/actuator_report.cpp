@@ -105,7 +105,7 @@ void writeActuatorReport(const std::vector<PlatformActuators>& platforms,
       const char* name = columnName(kActuatorSignals[k]);
       json arms = json::object();
       for (raven::Arm arm : raven::kArms) {
-        const auto a = static_cast<std::size_t>(raven::index(arm));
+        const auto a = raven::slot(arm);
         const raven::ArmJoints& v = c.mean_abs[k][a];
         arms[std::string(raven::armName(arm))] = std::vector<double>(v.data(), v.data() + v.size());
         for (int j = 0; j < raven::kJointCount; ++j) {

@@ -47,7 +47,7 @@ ActuatorTrace actuatorTrace(const recording::RsRecording& rs) {
   ActuatorTrace trace;
   trace.name = rs.path.filename().string();
   for (raven::Arm arm : raven::kArms) {
-    auto& rows = trace.arms[static_cast<std::size_t>(raven::index(arm))];
+    auto& rows = trace.arms[raven::slot(arm)];
     for (std::size_t r = 0; r < rs.rows.size(); ++r) rows.push_back(rs.signals(r, arm));
   }
   const double t0 = rs.rows.empty() ? 0.0 : rs.time(0);

@@ -145,7 +145,7 @@ void printFigures(const calibration::ReplayScore& s) {
 void printMechanics(const twin::CalibrationProfile& p) {
   std::printf("\nfitted mechanics (+- standard deviation)\n");
   for (raven::Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     const twin::MotorMechanics &m = p.mechanics[a], &u = p.uncertainty[a];
     for (int v = 0; v < calibration::kMechanicsValues; ++v) {
       std::printf("  %-6s %-14s", std::string(raven::armName(arm)).c_str(),

@@ -105,14 +105,14 @@ ActuationFitResult fitActuation(const std::vector<analysis::ActuatorTrace>& trai
   } else {
     for (raven::Arm arm : raven::kArms) {
       const auto noise = quantisationNoise(arm);
-      const auto a = static_cast<std::size_t>(raven::index(arm));
+      const auto a = raven::slot(arm);
       for (std::size_t k = 0; k < noise.size(); ++k) spread.spread[k][a] = noise[k];
     }
   }
   ActuationFitResult result{initial, {}, 0};
   for (int sweep = 0; sweep < options.sweeps; ++sweep) {
     for (raven::Arm arm : raven::kArms) {
-      const auto a = static_cast<std::size_t>(raven::index(arm));
+      const auto a = raven::slot(arm);
       for (int joint = 0; joint < raven::kJointCount; ++joint) {
         std::vector<MechanicsParameter> parameters;
         for (const auto& p : mechanicsParameters(joint)) {

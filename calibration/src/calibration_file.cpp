@@ -16,7 +16,7 @@ std::vector<double> listOf(const raven::ArmJoints& joints) {
 void emitArms(YAML::Emitter& out, const char* key, const twin::ArmsMechanics& arms) {
   out << YAML::Key << key << YAML::Value << YAML::BeginMap;
   for (raven::Arm arm : raven::kArms) {
-    const twin::MotorMechanics& m = arms[static_cast<std::size_t>(raven::index(arm))];
+    const twin::MotorMechanics& m = arms[raven::slot(arm)];
     out << YAML::Key << std::string(raven::armName(arm)) << YAML::Value << YAML::BeginMap;
     for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
       out << YAML::Key << std::string(twin::MotorMechanics::kNames[k]) << YAML::Value << YAML::Flow

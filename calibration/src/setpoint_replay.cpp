@@ -41,7 +41,7 @@ analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording
   const twin::DriveTrain drive = twin::DriveTrain::raven2();
   const twin::RecordedStart start = recordedStart(recording);
   for (raven::Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     const Rows& in = recording.arms[a];
     twin::ArmDrive motors(arm, drive, mechanics[a], raven::kControlCycle, in.front().joints);
     motors.place(start.arms[a]);

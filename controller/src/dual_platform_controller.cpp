@@ -57,7 +57,7 @@ void DualPlatformController::send(const InterpolationPlan& plan, int k, Iteratio
   const ArmPair increment = plan.increment(k);
   for (const PlatformSlot& slot : platforms_) {
     for (Arm arm : raven::kArms) {
-      const auto a = static_cast<std::size_t>(raven::index(arm));
+      const auto a = raven::slot(arm);
       const bridge::PlatformCommand command =
           slot.style == CommandStyle::ServoJr
               ? bridge::PlatformCommand{bridge::ServoJr{arm, increment[a]}}
@@ -160,7 +160,7 @@ IterationReport DualPlatformController::sineDance() {
   for (Arm arm : raven::kArms) {
     const int a = raven::index(arm);
     for (int i = 0; i < raven::kJointCount; ++i) {
-      next[static_cast<std::size_t>(a)](i) =
+      next[raven::slot(arm)](i) =
           ramp * dance_.scale(i) *
               std::sin(dance_.speed * (static_cast<double>(dance_count_) + (i + a) * M_PI / 2.0)) +
           profile_.home(i);

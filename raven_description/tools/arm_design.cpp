@@ -47,7 +47,7 @@ void weighAsTheRobot(const PlatformProfile& profile, Arm arm, const ArmJoints& h
         "profile '" + profile.name +
         "' has no firmware_kinematics: the links' weights are in its frames");
   }
-  const auto& firmware_chain = (*profile.firmware_kinematics)[static_cast<std::size_t>(index(arm))];
+  const auto& firmware_chain = (*profile.firmware_kinematics)[raven::slot(arm)];
   const auto firmware = ArmKinematics(firmware_chain, profile.limits).frames(home);
   const Isometry3d frame0 = firmwareFrame0(ArmKinematics::of(profile, arm).convention(), arm);
   const auto links = design::FirmwareLinks::of(arm);

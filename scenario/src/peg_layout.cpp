@@ -17,6 +17,7 @@ PegLayout::PegLayout(const raven::design::PegSceneDesign& design,
           .stations = design.peg_ring_segments};
   geometry.board_top = at.translation().z();
   geometry.post_radius = design.post_radius;
+  geometry.post_height = design.post_height;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     const raven::Arm arm = design.posts[i].x() > 0.0 ? raven::Arm::Left : raven::Arm::Right;
     jobs[i] = RingJob{"peg" + std::to_string(i + 1), arm, post(i), post(i + jobs.size())};

@@ -126,7 +126,7 @@ Eigen::Matrix<double, 2, 3, Eigen::RowMajor> PegTransferEnv::toolPoints(
   for (raven::Arm arm : raven::kArms) {
     const int a = raven::index(arm);
     const raven::ArmJoints q = joints.segment<raven::kJointCount>(raven::kJointCount * a);
-    out.row(a) = arms[static_cast<std::size_t>(a)].toolPose(q).translation().transpose();
+    out.row(a) = arms[raven::slot(arm)].toolPose(q).translation().transpose();
   }
   return out;
 }
@@ -165,7 +165,7 @@ Eigen::VectorXd PegTransferEnv::observe() const {
   for (raven::Arm arm : raven::kArms) {
     const int a = raven::index(arm);
     o.segment<7>(7 * a) = twin.measuredJs(arm).position;
-    o.segment<7>(14 + 7 * a) = targets[static_cast<std::size_t>(a)];
+    o.segment<7>(14 + 7 * a) = targets[raven::slot(arm)];
     const Eigen::Isometry3d tool = twin.measuredCp(arm).pose;
     const Eigen::Quaterniond q(tool.linear());
     o.segment<3>(28 + 7 * a) = tool.translation();

@@ -49,7 +49,7 @@ std::vector<recording::GamepadState> rectangleInputs(const RectangleOptions& opt
 }
 
 Eigen::Vector3d RectangleResult::extent(raven::Arm arm) const {
-  const auto& path = wrist_path[static_cast<std::size_t>(raven::index(arm))];
+  const auto& path = wrist_path[raven::slot(arm)];
   if (path.empty()) return Eigen::Vector3d::Zero();
   Eigen::Vector3d low = path.front(), high = path.front();
   for (const auto& p : path) {
@@ -95,7 +95,7 @@ RectangleResult runRectangle(const RectangleOptions& options) {
   RectangleResult result;
   auto recordPose = [&] {
     for (raven::Arm arm : raven::kArms) {
-      const auto slot = static_cast<std::size_t>(raven::index(arm));
+      const auto slot = raven::slot(arm);
       result.wrist_path[slot].push_back(kinematics[slot].wristPoint(twin.measuredJs(arm).position));
     }
   };

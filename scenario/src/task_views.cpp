@@ -8,10 +8,6 @@ namespace scenario {
 
 namespace {
 
-/// The board's top (m): raven_description/tools/peg_scene.hpp puts it at z = -0.205, the posts
-/// 22 mm above it.
-constexpr double kBoardTop = -0.205;
-constexpr double kPostHeight = 0.022;
 /// Looking from the start row towards the target row, from above: both rows and each ring's
 /// hole stay visible, and a ring on a target post sits behind the empty start post.
 constexpr double kFromFront = -std::numbers::pi / 2;
@@ -30,7 +26,8 @@ viewer::Camera taskCamera(const PegLayout& layout, raven::Arm arm) {
   for (const RingJob& job : jobs) centre += (job.from + job.to) / 2.0;
   centre /= static_cast<double>(jobs.size());
   viewer::Camera c;
-  c.target = Eigen::Vector3d(centre.x(), centre.y(), kBoardTop + 0.6 * kPostHeight);
+  c.target = Eigen::Vector3d(centre.x(), centre.y(),
+                             layout.geometry.board_top + 0.6 * layout.geometry.post_height);
   c.yaw = kFromFront;
   c.pitch = 0.75;
   c.distance = 0.20;
@@ -55,7 +52,7 @@ std::vector<std::string> pegTransferViewNames() {
 
 std::vector<viewer::View> pegTransferViews(const ambf_like::World& world, const PegLayout& layout) {
   viewer::Camera overview;
-  overview.target = Eigen::Vector3d(0.0, 0.079, kBoardTop + 0.08);
+  overview.target = Eigen::Vector3d(0.0, 0.079, layout.geometry.board_top + 0.08);
   overview.yaw = kFromFront;
   overview.pitch = 0.55;
   overview.distance = 1.05;

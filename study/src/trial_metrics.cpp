@@ -79,7 +79,7 @@ std::array<TipPath, 2> tipPaths(const fs::path& rs_file) {
   std::array<TipPath, 2> paths;
   for (raven::Arm arm : raven::kArms) {
     const auto kinematics = raven::ArmKinematics::of(profile, arm);
-    TipPath& path = paths[static_cast<std::size_t>(raven::index(arm))];
+    TipPath& path = paths[raven::slot(arm)];
     for (std::size_t row = 0; row < rs.rows.size(); ++row) {
       path.t.push_back(rs.time(row));
       path.p.push_back(kinematics.toolPose(rs.joints(row, arm)).translation());

@@ -65,7 +65,7 @@ TrialRun runTrial(const TrialSettings& s) {
     TaskView v;
     v.time = twin.now() - start;
     for (raven::Arm arm : raven::kArms) {
-      const auto a = static_cast<std::size_t>(raven::index(arm));
+      const auto a = raven::slot(arm);
       v.tips[a] = kinematics[a].toolPose(twin.measuredJs(arm).position).translation();
     }
     v.world = &twin.world();

@@ -143,7 +143,7 @@ TEST(TwinOverRos, RavenStateIsPublishedEveryCycleInDegreesAndMicrons) {
     EXPECT_NEAR(state->jpos[base + 6] + state->jpos[base + 7], 90.0, 0.01);
   }
   for (Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     const auto measured = robot.measuredJs(arm).position;
     for (int i = 0; i < raven::kJointCount; ++i) {
       EXPECT_NEAR(state->jpos[static_cast<std::size_t>(bridge::ravenStateIndex(arm, i))],

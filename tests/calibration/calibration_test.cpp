@@ -135,7 +135,7 @@ TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
     q(raven::kShoulder) += 0.05 * std::sin(2.0 * M_PI * 0.5 * t);
     trace.time.push_back(t);
     for (raven::Arm arm : raven::kArms) {
-      auto& a = trace.arms[static_cast<std::size_t>(raven::index(arm))];
+      auto& a = trace.arms[raven::slot(arm)];
       const raven::ArmJoints set = arm == raven::Arm::Left ? q : home;
       const raven::ArmJoints motor = drive.toMotor(arm, set);
       const raven::ArmJoints zero = raven::ArmJoints::Zero();

@@ -129,7 +129,7 @@ void expectWithinCapsOverTheirOwnTime(const CommandLog& log) {
   const raven::ArmJoints per_second = controller::VelocityCaps{}.per_second;
   std::array<std::optional<double>, 2> previous;
   for (std::size_t i = 0; i < log.servo_jr.size(); ++i) {
-    auto& last = previous[static_cast<std::size_t>(raven::index(log.servo_jr[i].arm))];
+    auto& last = previous[raven::slot(log.servo_jr[i].arm)];
     if (last) {
       const ArmJoints cap = per_second * (log.sent_at[i] - *last);
       ASSERT_TRUE(

@@ -33,7 +33,7 @@ Eigen::Vector3d wristPoint(Arm arm, const ArmJoints& q) {
 Eigen::Vector3d wristStep(GamepadMapping& m, const GamepadState& pad, Arm arm) {
   const auto before = m.targets();
   const auto result = m.apply(pad, home());
-  const auto a = static_cast<std::size_t>(raven::index(arm));
+  const auto a = raven::slot(arm);
   return wristPoint(arm, result.joints[a]) - wristPoint(arm, before[a]);
 }
 
@@ -132,7 +132,7 @@ TEST(Mapping, SchemeSelectionIsLevelTriggered) {
 /// The firmware's home with `arm`'s joint `joint` at `value`.
 ArmPair homeWith(Arm arm, int joint, double value) {
   ArmPair q = home();
-  q[static_cast<std::size_t>(raven::index(arm))](joint) = value;
+  q[raven::slot(arm)](joint) = value;
   return q;
 }
 
@@ -170,7 +170,7 @@ TEST(MappingM1, TheRightTriggerGraspsWithTheSelectedArmAndTheLeftTriggerIsIgnore
 TEST(MappingM1, TheRightStickTurnsJoints4And5OfTheSelectedArmOnly) {
   for (Arm arm : raven::kArms) {
     GamepadMapping m(test_support::physicalProfile(), m1(arm), home());
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     GamepadState pad;
     pad.right_x = 0.5;  // joint 4: -0.5 / 10
     pad.right_y = 0.3;  // joint 5: +0.3 / 10
@@ -275,7 +275,7 @@ TEST(MappingM1Property, NoPadSequenceUnderM1EverChangesTheOtherArmsTarget) {
   std::mt19937_64 random(17);
   std::uniform_real_distribution<double> offset(-0.3, 0.3);
   for (Arm selected : raven::kArms) {
-    const auto other = static_cast<std::size_t>(1 - raven::index(selected));
+    const auto other = raven::slot(raven::other(selected));
     for (int sequence = 0; sequence < 20; ++sequence) {
       ArmPair start = home();  // both arms anywhere near home, wrists off home too
       for (auto& q : start) {

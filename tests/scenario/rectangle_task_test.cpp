@@ -26,7 +26,7 @@ TEST(RectangleTask, BothArmsTraceTheRectangleAtConstantHeightAndItIsRecorded) {
   EXPECT_EQ(result.refused, 0u);
   EXPECT_EQ(result.clamped, 0u);
   for (Arm arm : raven::kArms) {
-    const auto& path = result.wrist_path[static_cast<std::size_t>(raven::index(arm))];
+    const auto& path = result.wrist_path[raven::slot(arm)];
     const Eigen::Vector3d extent = result.extent(arm);
     EXPECT_NEAR(extent.x(), options.width, 2e-4) << raven::armName(arm);
     EXPECT_NEAR(extent.y(), options.depth, 2e-4) << raven::armName(arm);

@@ -189,7 +189,7 @@ TEST(TwinPlatform, RavenStateIsInDegreesAndMicronsInTheRobotsLayout) {
     }
     // pos: the tool point in microns, in the firmware's frame, as measured_cp reports it.
     const auto pose = twin.measuredCp(arm).pose;
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     for (std::size_t r = 0; r < 3; ++r) {
       EXPECT_NEAR(state->pos[a * 3 + r], pose.translation()(static_cast<int>(r)) * 1e6, 1.0);
       EXPECT_NEAR(state->ori[a * 9 + r * 3 + 1], pose.linear()(static_cast<int>(r), 1), 1e-6);

@@ -60,7 +60,7 @@ ArmJoints loggedTau(const twin::TwinPlatform& twin, Arm arm) {
 /// The weight the calibration says `arm`'s motors carry at `joints` (at the gearbox outputs):
 /// the firmware's gravity estimate times one plus the fitted gravity error.
 ArmJoints fittedWeight(const twin::TwinOptions& options, Arm arm, const ArmJoints& joints) {
-  const auto& m = (*options.motors)[static_cast<std::size_t>(raven::index(arm))];
+  const auto& m = (*options.motors)[raven::slot(arm)];
   return (ArmJoints::Ones() + m.gravity_error)
       .cwiseProduct(twin::gravityCompensation(arm, joints, twin::DriveTrain::raven2()));
 }
@@ -80,12 +80,12 @@ TEST(WorldMotors, HeldStillTheMotorsCarryTheFittedWeight) {
   for (int k = 0; k < kCycles; ++k) {
     motors->advance(0.001);
     for (Arm arm : raven::kArms) {
-      mean_tau[static_cast<std::size_t>(raven::index(arm))] += loggedTau(*motors, arm) / kCycles;
+      mean_tau[raven::slot(arm)] += loggedTau(*motors, arm) / kCycles;
     }
   }
   for (Arm arm : raven::kArms) {
     const ArmJoints expected = fittedWeight(options, arm, motors->measuredJs(arm).position);
-    const ArmJoints tau = mean_tau[static_cast<std::size_t>(raven::index(arm))];
+    const ArmJoints tau = mean_tau[raven::slot(arm)];
     const double scale = expected.cwiseAbs().maxCoeff();
     for (int i = 0; i < raven::kJointCount; ++i) {
       EXPECT_NEAR(tau(i), expected(i), 0.05 * std::abs(expected(i)) + 1e-3 * scale)
@@ -103,8 +103,7 @@ struct ArmChain {
 ArmChain chainOf(twin::TwinPlatform& twin, Arm arm) {
   ambf_like::World& world = twin.world();
   ArmChain chain;
-  const auto names =
-      twin::ArmBindings::ourRaven().joints[static_cast<std::size_t>(raven::index(arm))];
+  const auto names = twin::ArmBindings::ourRaven().joints[raven::slot(arm)];
   std::map<std::string, std::string> parent_of;  // child body -> parent body (plain names)
   for (const auto& b : names) {
     const auto& spec = world.joint(b.name).spec();

@@ -18,13 +18,13 @@ ArmDrive MotorActuation::makeDrive(Arm arm, TwinArms& arms, ambf_like::World& wo
 }
 
 void MotorActuation::drive(Arm arm, const ArmJoints& setpoint) {
-  ArmDrive& d = drives_[index(arm)];
+  ArmDrive& d = drives_[raven::slot(arm)];
   d.cycle(setpoint);
   if (!d.movesTheLinks()) arms_.command(arm, d.linkPosition());
 }
 
 void MotorActuation::place(Arm arm, const ArmStart& start) {
-  ArmDrive& d = drives_[index(arm)];
+  ArmDrive& d = drives_[raven::slot(arm)];
   d.place(start);
   if (!d.movesTheLinks()) arms_.command(arm, d.linkPosition());
 }

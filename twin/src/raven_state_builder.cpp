@@ -19,7 +19,7 @@ void putDegrees(std::array<float, 16>& out, Arm arm, const ArmJoints& q) {
 
 void putPose(std::array<std::int32_t, 6>& position, std::array<float, 18>& rotation, Arm arm,
              const Eigen::Isometry3d& pose) {
-  const auto a = static_cast<std::size_t>(raven::index(arm));
+  const auto a = raven::slot(arm);
   for (std::size_t r = 0; r < 3; ++r) {
     position[a * 3 + r] = static_cast<std::int32_t>(
         std::lround(pose.translation()(static_cast<int>(r)) * kMicronsPerMetre));
@@ -55,7 +55,7 @@ RavenStateSnapshot makeRavenState(const TwinStateSources& s) {
   out.type = {bridge::kGoldArmType, bridge::kGreenArmType};
   out.dt = core.limits().cycle;
   for (Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     const ActuatorReadings& r = s.readings[a];
     const ArmJoints& setpoint = core.setpoint(arm);
     const Eigen::Isometry3d pose = core.reportedPose(arm, r.position);

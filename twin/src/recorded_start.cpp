@@ -9,7 +9,7 @@ namespace twin {
 RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_row) {
   RecordedStart out;
   for (Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     const recording::ArmSignals& s = first_row[a];
     ArmStart& start = out.arms[a];
     start.motor_position = s.motor;
@@ -44,8 +44,7 @@ RecordedStart recordedStart(const recording::RsRecording& rs) {
 
 void startAt(TwinPlatform& twin, const RecordedStart& start) {
   for (Arm arm : raven::kArms) {
-    const auto result =
-        twin.send(bridge::MoveJp{arm, start.setpoint[static_cast<std::size_t>(raven::index(arm))]});
+    const auto result = twin.send(bridge::MoveJp{arm, start.setpoint[raven::slot(arm)]});
     if (!result) {
       throw std::runtime_error("cannot start where the recording began: " + result.note);
     }
@@ -53,8 +52,7 @@ void startAt(TwinPlatform& twin, const RecordedStart& start) {
   const double deadline = twin.now() + 30.0;
   while (twin.operatingStatus().is_busy && twin.now() < deadline) twin.advance(0.01);
   twin.advance(0.5);  // settled
-  for (Arm arm : raven::kArms)
-    twin.place(arm, start.arms[static_cast<std::size_t>(raven::index(arm))]);
+  for (Arm arm : raven::kArms) twin.place(arm, start.arms[raven::slot(arm)]);
 }
 
 }  // namespace twin

@@ -11,7 +11,7 @@ ArmBindings ArmBindings::ourRaven() {
   ArmBindings b;
   for (Arm arm : kArms) {
     for (int i = 0; i < kJointCount; ++i) {
-      b.joints[static_cast<std::size_t>(index(arm))][static_cast<std::size_t>(i)].name =
+      b.joints[raven::slot(arm)][static_cast<std::size_t>(i)].name =
           "/raven2/" + std::string(armName(arm)) + "/" +
           std::string(kJointNames[static_cast<std::size_t>(i)]);
     }
@@ -31,7 +31,7 @@ ArmBindings ArmBindings::ambfRaven() {
                                                      "wrist_" + s + "-grasper1_" + s,
                                                      "wrist_" + s + "-grasper2_" + s};
     for (int i = 0; i < kJointCount; ++i) {
-      auto& joint = b.joints[static_cast<std::size_t>(index(arm))][static_cast<std::size_t>(i)];
+      auto& joint = b.joints[raven::slot(arm)][static_cast<std::size_t>(i)];
       joint.name = names[static_cast<std::size_t>(i)];
       if (arm == Arm::Right && (i == raven::kJaw1 || i == raven::kJaw2)) joint.scale = -1.0;
     }
@@ -79,7 +79,7 @@ void TwinArms::command(Arm arm, const ArmJoints& joints) {
                                 " arm: joint command holds NaN or inf; nothing moved");
   }
   for (std::size_t i = 0; i < kJointCount; ++i) {
-    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    const auto& b = bound_[raven::slot(arm)][i];
     b.joint->commandPosition(b.scale * joints(static_cast<int>(i)) + b.offset);
   }
 }
@@ -88,7 +88,7 @@ template <typename Read>
 ArmJoints TwinArms::read(Arm arm, Read read) const {
   ArmJoints out;
   for (std::size_t i = 0; i < kJointCount; ++i) {
-    out(static_cast<int>(i)) = read(bound_[static_cast<std::size_t>(index(arm))][i]);
+    out(static_cast<int>(i)) = read(bound_[raven::slot(arm)][i]);
   }
   return out;
 }
@@ -99,7 +99,7 @@ ArmJoints TwinArms::measured(Arm arm) const {
 
 void TwinArms::place(Arm arm, const ArmJoints& joints, const ArmJoints& velocities) {
   for (std::size_t i = 0; i < kJointCount; ++i) {
-    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    const auto& b = bound_[raven::slot(arm)][i];
     const auto j = static_cast<int>(i);
     b.joint->place(b.scale * joints(j) + b.offset, b.scale * velocities(j));
   }
@@ -107,12 +107,12 @@ void TwinArms::place(Arm arm, const ArmJoints& joints, const ArmJoints& velociti
 
 std::vector<std::string> TwinArms::jointNames(Arm arm) const {
   std::vector<std::string> names;
-  for (const auto& b : bound_[static_cast<std::size_t>(index(arm))]) names.push_back(b.name);
+  for (const auto& b : bound_[raven::slot(arm)]) names.push_back(b.name);
   return names;
 }
 
 bool TwinArms::articulated(Arm arm) const {
-  const auto& arm_joints = bound_[static_cast<std::size_t>(index(arm))];
+  const auto& arm_joints = bound_[raven::slot(arm)];
   return std::all_of(arm_joints.begin(), arm_joints.end(),
                      [](const Bound& b) { return b.joint->inArticulation(); });
 }
@@ -125,7 +125,7 @@ raven::JointLimits TwinArms::hardStops(Arm arm) const {
   constexpr double kNone = std::numeric_limits<double>::infinity();
   raven::JointLimits stops{ArmJoints::Constant(-kNone), ArmJoints::Constant(kNone)};
   for (std::size_t i = 0; i < kJointCount; ++i) {
-    const auto& b = bound_[static_cast<std::size_t>(index(arm))][i];
+    const auto& b = bound_[raven::slot(arm)][i];
     const auto& limits = b.joint->spec().limits;
     if (!limits) continue;
     const double a = (limits->low - b.offset) / b.scale;

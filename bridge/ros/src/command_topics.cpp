@@ -45,8 +45,7 @@ std::uint8_t lockStepId(CommandTopic topic) {
 }
 
 std::uint8_t lockStepId(CrtkCommand command, raven::Arm arm) {
-  return static_cast<std::uint8_t>(kCommandTopicCount +
-                                   static_cast<std::size_t>(raven::index(arm)) * kCrtkCommandCount +
+  return static_cast<std::uint8_t>(kCommandTopicCount + raven::slot(arm) * kCrtkCommandCount +
                                    static_cast<std::size_t>(command));
 }
 

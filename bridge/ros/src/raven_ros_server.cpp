@@ -52,8 +52,7 @@ IncomingCommand fromStateCommand(const crtk_msgs::StringStamped& message) {
 IncomingCommand automoveFrom(const raven_2::raven_automove& message) {
   IncomingCommand out;
   for (Arm arm : raven::kArms) {
-    auto increment =
-        poseFromTransform(message.tf_incr[static_cast<std::size_t>(raven::index(arm))], true);
+    auto increment = poseFromTransform(message.tf_incr[raven::slot(arm)], true);
     if (!increment.value) {
       return {{}, "tf_incr[" + std::to_string(raven::index(arm)) + "]: " + increment.error};
     }
@@ -168,7 +167,7 @@ RavenRosServer::Impl::Impl(RavenPlatform& platform, const std::string& ros_names
         {}, lowLatency()));
   }
   for (Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     const std::string ns = armNamespace(arm) + "/";
     p.arm_operating_state[a] =
         node_.advertise<crtk_msgs::operating_state>(ns + "operating_state", kStateQueue);
@@ -380,7 +379,7 @@ void RavenRosServer::Impl::publishState() {
   sensor_msgs::JointState both;
   both.header.stamp = now;
   for (Arm arm : raven::kArms) {
-    const auto a = static_cast<std::size_t>(raven::index(arm));
+    const auto a = raven::slot(arm);
     const std::string_view colour = armColour(arm);
     p.arm_operating_state[a].publish(status);
     const Arm source = measuredJsSource(arm, options_.arm_swap);

@@ -32,12 +32,12 @@ struct PlatformProfile {
   std::optional<ArmJoints> robot_home;
   JointLimits limits;
 
-  const ArmConvention& arm(Arm a) const { return kinematics[static_cast<std::size_t>(index(a))]; }
+  const ArmConvention& arm(Arm a) const { return kinematics[slot(a)]; }
   /// The chain the platform reports Cartesian poses in: the firmware's when the profile has
   /// one, else the controller's.
   const ArmConvention& reportingArm(Arm a) const {
     const auto& chains = firmware_kinematics ? *firmware_kinematics : kinematics;
-    return chains[static_cast<std::size_t>(index(a))];
+    return chains[slot(a)];
   }
   const ArmJoints& robotHome() const { return robot_home ? *robot_home : home; }
 };

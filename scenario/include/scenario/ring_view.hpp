@@ -26,6 +26,7 @@ struct RingDimensions {
 struct BoardGeometry {
   double board_top = 0.0;    ///< z of the board's surface (m)
   double post_radius = 0.0;  ///< the posts' radius (m)
+  double post_height = 0.0;  ///< how far the posts stand above the board (m)
   double lifted = 0.005;     ///< a ring whose bottom is this far above the board is off it
 
   bool offTheBoard(double bottom) const { return bottom > board_top + lifted; }

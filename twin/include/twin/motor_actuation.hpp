@@ -15,7 +15,7 @@
 
 namespace twin {
 
-/// The mechanics of both arms' motors (index raven::index(arm)).
+/// The mechanics of both arms' motors (per raven::slot(arm)).
 using ArmsMechanics = std::array<MotorMechanics, 2>;
 
 /// Motor-level actuation of both arms of a TwinArms.
@@ -26,7 +26,7 @@ class MotorActuation final : public Actuation {
   MotorActuation(TwinArms& arms, ambf_like::World& world, const DriveTrain& drive,
                  const ArmsMechanics& mechanics, double cycle);
   void drive(Arm arm, const ArmJoints& setpoint) override;
-  ActuatorReadings read(Arm arm) const override { return drives_[index(arm)].readings(); }
+  ActuatorReadings read(Arm arm) const override { return drives_[raven::slot(arm)].readings(); }
   std::string fault() const override;
   void clearFault() override {
     for (ArmDrive& d : drives_) d.clearFault();
@@ -40,7 +40,6 @@ class MotorActuation final : public Actuation {
   }
 
  private:
-  static std::size_t index(Arm arm) { return static_cast<std::size_t>(raven::index(arm)); }
   static ArmDrive makeDrive(Arm arm, TwinArms& arms, ambf_like::World& world,
                             const DriveTrain& drive, const MotorMechanics& mechanics, double cycle);
 

@@ -18,7 +18,7 @@ struct RecordedStart {
   std::array<ArmStart, 2> arms;
 };
 
-/// From the first row's signals of each arm (index raven::index(arm)).
+/// From the first row's signals of each arm (per raven::slot(arm)).
 RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_row);
 /// From a recording's first row; throws recording::RecordingError naming the file when a column
 /// is missing or the row's signals are not numbers.

@@ -55,13 +55,9 @@ class TwinArms {
   /// Joint torques (N m) and the insertion force (N) the drives exert, in the arm's sense.
   ArmJoints efforts(Arm arm) const;
   /// The two jaw bodies of `arm` (the jaw joints' children), qualified names.
-  const std::array<std::string, 2>& jawBodies(Arm arm) const {
-    return jaws_[static_cast<std::size_t>(index(arm))];
-  }
+  const std::array<std::string, 2>& jawBodies(Arm arm) const { return jaws_[raven::slot(arm)]; }
   /// Every body the arm's joints connect, qualified names.
-  const std::vector<std::string>& bodies(Arm arm) const {
-    return bodies_[static_cast<std::size_t>(index(arm))];
-  }
+  const std::vector<std::string>& bodies(Arm arm) const { return bodies_[raven::slot(arm)]; }
 
  private:
   struct Bound {
