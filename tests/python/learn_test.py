@@ -131,8 +131,10 @@ class ShippedPolicy(unittest.TestCase):
     def test_the_shipped_state_policy_loads_and_places_rings(self):
         import torch
         torch.set_num_threads(1)
-        # A seed outside training (1000-1029, 2000-2029) and the documented evaluation (1-20).
-        placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 57, 120.0)
+        # A seed outside training (1000-1029, 2000-2029) and the documented evaluation (1-20), on
+        # the ideal servos it was trained on (on the motor twin it is not yet: docs/learning.md).
+        placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 57, 120.0,
+                                           actuation="ideal")
         self.assertGreaterEqual(placed, 4, line)
 
 
