@@ -27,7 +27,7 @@ ReplayScore scoreReplays(ReplaySetup setup, const std::vector<analysis::Trial>& 
       throw std::invalid_argument(trial.path.string() + ": logs no actuator signals to start from");
     }
     physical_traces.push_back(*trial.actuators);
-    setup.start = recordedStart(*trial.actuators);
+    setup.start = traceStart(*trial.actuators);
     score.replays.push_back(recordReplay(setup));
     twin_traces.push_back(analysis::actuatorTrace(score.replays.back()));
     const analysis::Trial twin = analysis::toTrial(score.replays.back(), twin_profile);

@@ -29,7 +29,7 @@ recording::ArmSignals signalsOf(const twin::ActuatorReadings& r, const raven::Ar
 
 }  // namespace
 
-twin::RecordedStart recordedStart(const analysis::ActuatorTrace& trace) {
+twin::RecordedStart traceStart(const analysis::ActuatorTrace& trace) {
   return twin::recordedStart({trace.arms[0].front(), trace.arms[1].front()});
 }
 
@@ -39,7 +39,7 @@ analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording
   out.name = "twin from " + recording.name;
   out.time = recording.time;
   const twin::DriveTrain drive = twin::DriveTrain::raven2();
-  const twin::RecordedStart start = recordedStart(recording);
+  const twin::RecordedStart start = traceStart(recording);
   for (raven::Arm arm : raven::kArms) {
     const auto a = raven::slot(arm);
     const Rows& in = recording.arms[a];

@@ -177,7 +177,7 @@ TEST(ShippedCalibration, AReplayStartedFromATrialBeginsWhereItBegan) {
   const auto profile = twin::CalibrationProfile::shipped();
   profile.applyTo(paper->setup.twin);
   const auto physical = paper->physical[1].actuators.value();
-  paper->setup.start = calibration::recordedStart(physical);
+  paper->setup.start = calibration::traceStart(physical);
   const auto replay = analysis::actuatorTrace(calibration::recordReplay(paper->setup));
   // Row 0 comes after the replay's 1 s wait, as the robot's came 1.4 s before its first input:
   // the motors held by friction, the tools' integrators a second further on.

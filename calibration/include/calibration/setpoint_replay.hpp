@@ -10,8 +10,9 @@
 
 namespace calibration {
 
-/// The first row of `trace`, with the integrators that make its Tau.
-twin::RecordedStart recordedStart(const analysis::ActuatorTrace& trace);
+/// Where `trace` began (twin::recordedStart of its first row): the motors and the integrators
+/// that make its Tau.
+twin::RecordedStart traceStart(const analysis::ActuatorTrace& trace);
 
 /// The twin's actuator signals at the recording's row times (in the recording's units).
 analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording,
