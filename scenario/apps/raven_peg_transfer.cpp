@@ -53,8 +53,7 @@ struct Settings {
   std::string out_dir = "peg_transfer_results";
   std::string record = "auto";
   std::string jsonl;
-  /// Ideal servos until the scripted operator closes its loop on what it sees (issue 64): open
-  /// loop on joints, the robot's friction band costs it rings.
+  /// The robot's motors, as every program's default; ideal servos on request.
   common::ActuationKind actuation = common::ActuationKind::Motors;
   double time_limit = 240.0;
   double squeeze_mm = scenario::ArmRoutine::kDefaultSqueeze * 1e3;

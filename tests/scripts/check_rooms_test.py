@@ -39,6 +39,11 @@ class CheckRooms(unittest.TestCase):
                              capture_output=True, text=True)
         return run.returncode, run.stdout
 
+    def assert_fails_with(self, line):
+        code, out = self.check()
+        self.assertEqual(code, 1, out)
+        self.assertIn(line, out)
+
     def test_the_house_as_built_passes(self):
         code, out = self.check()
         self.assertEqual(code, 0, out)
@@ -46,30 +51,22 @@ class CheckRooms(unittest.TestCase):
 
     def test_a_source_file_its_readme_does_not_list_fails(self):
         self.write("twin/src/helper.cpp", '#include "twin/user.hpp"\n')
-        code, out = self.check()
-        self.assertEqual(code, 1)
-        self.assertIn("twin/src/helper.cpp: not listed in twin/README.md", out)
+        self.assert_fails_with("twin/src/helper.cpp: not listed in twin/README.md")
 
     def test_a_listed_file_that_is_not_there_fails(self):
         self.write("twin/README.md", f"# twin\n\n{TABLE}| `user.hpp`, `gone.hpp` | two |\n\n"
                                      "May include: common\n")
-        code, out = self.check()
-        self.assertEqual(code, 1)
-        self.assertIn("twin/README.md: lists `gone.hpp`, which is not in the room", out)
+        self.assert_fails_with("twin/README.md: lists `gone.hpp`, which is not in the room")
 
     def test_an_arms_place_cast_by_hand_fails(self):
         self.write("twin/include/twin/user.hpp",
                    '#pragma once\n#include "common/thing.hpp"\n'
                    "auto& x = things[static_cast<std::size_t>(" + "raven::index(arm))];\n")
-        code, out = self.check()
-        self.assertEqual(code, 1)
-        self.assertIn("twin/include/twin/user.hpp:3: an arm's place cast by hand", out)
+        self.assert_fails_with("twin/include/twin/user.hpp:3: an arm's place cast by hand")
 
     def test_an_include_that_climbs_fails(self):
         self.write("common/include/common/thing.hpp", '#pragma once\n#include "twin/user.hpp"\n')
-        code, out = self.check()
-        self.assertEqual(code, 1)
-        self.assertIn('common/include/common/thing.hpp:2: common includes "twin/user.hpp"', out)
+        self.assert_fails_with('common/include/common/thing.hpp:2: common includes "twin/user.hpp"')
 
 
 if __name__ == "__main__":
