@@ -135,13 +135,7 @@ void printSummary(const nlohmann::json& s) {
   }
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Options o;
-  CLI::App app{
-      "ambf_like: AMBF-style ADF/URDF models on a double-precision Bullet world, "
-      "headless. With no model given it runs the bundled demo scene for 5 s."};
+void addOptions(CLI::App& app, Options& o) {
   app.add_option("--launch_file", o.launch_file, "AMBF launch file")->check(CLI::ExistingFile);
   app.add_option("-l,--load_multibodies", o.launch_indices,
                  "indices of the launch file's multibody configs, e.g. 0,3 (default: all)");
@@ -179,60 +173,40 @@ int main(int argc, char** argv) {
                "warning");
   app.add_option("--summary-json", o.summary_json, "also write the exit summary as JSON");
   app.add_flag("-q,--quiet", o.quiet, "no once-a-second loop report");
-  CLI11_PARSE(app, argc, argv);
+}
 
-  if (o.snapshot_every > 0.0 && o.snapshot.empty()) {
-    spdlog::error("--snapshot-every needs --snapshot FILE.png to name the series");
-    return 2;
-  }
-  const bool use_default = o.launch_file.empty() && o.extra_files.empty();
-  if (use_default) {
-    o.launch_file = AMBF_LIKE_DEFAULT_LAUNCH;
-    if (o.max_steps == 0 && o.duration == 0.0) o.duration = 5.0;
-    spdlog::info("no model given: running the bundled demo scene {}", o.launch_file);
-  }
-
-  ambf_like::LoadedScene scene;
-  try {
-    scene = load(o);
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return 1;
-  }
-  for (const auto& warning : scene.warnings) spdlog::warn("{}", warning.str());
-
-  ambf_like::WorldOptions world_options;
-  world_options.step_size = o.step_size;
-  ambf_like::MeshLibrary meshes;
-  std::unique_ptr<ambf_like::World> world;
-  try {
-    world = std::make_unique<ambf_like::World>(scene.spec, meshes, world_options);
-  } catch (const std::exception& e) {
-    spdlog::error("{}", e.what());
-    return 1;
-  }
-  for (const auto& warning : world->warnings()) spdlog::warn("{}", warning);
-
+/// The loop the options ask for, reporting once a second unless quiet.
+std::unique_ptr<ambf_like::PhysicsLoop> makeLoop(ambf_like::World& world, const Options& o) {
   ambf_like::LoopOptions loop_options;
   loop_options.rate_hz = o.rate_hz;
   loop_options.paced = !o.free_run;
   loop_options.fixed_time_step = o.fixed_time_step || o.free_run;
-  ambf_like::PhysicsLoop loop(*world, loop_options);
-  if (const double asked = 1.0 / o.rate_hz / world->stepSize();
-      asked > static_cast<double>(loop.stepsPerIteration()) + 0.5) {
+  auto loop = std::make_unique<ambf_like::PhysicsLoop>(world, loop_options);
+  if (const double asked = 1.0 / o.rate_hz / world.stepSize();
+      asked > static_cast<double>(loop->stepsPerIteration()) + 0.5) {
     spdlog::warn(
         "a {} Hz loop asks for {:.0f} internal steps an iteration, more than the world's max "
         "iterations: each takes {}, as AMBF's does, and simulated time runs slower than the loop",
-        o.rate_hz, asked, loop.stepsPerIteration());
+        o.rate_hz, asked, loop->stepsPerIteration());
   }
   if (!o.quiet) {
-    loop.on_window = [&world](const ambf_like::FrequencyMeter& meter) {
-      spdlog::info("Phx {:.0f} Hz   sim time {:.3f} s", meter.frequency(), world->time());
+    loop->on_window = [&world](const ambf_like::FrequencyMeter& meter) {
+      spdlog::info("Phx {:.0f} Hz   sim time {:.3f} s", meter.frequency(), world.time());
     };
   }
+  return loop;
+}
 
+/// What watches the run: a viewer window or headless snapshots, and a video.
+struct Watchers {
   std::unique_ptr<viewer::Viewer> view;
   std::optional<viewer::SnapshotSchedule> schedule;
+  std::unique_ptr<viewer::VideoRecorder> video;
+};
+
+/// The watchers the options ask for; throws std::runtime_error naming the one that failed.
+Watchers openWatchers(ambf_like::World& world, const Options& o) {
+  Watchers w;
   if (o.show_gui || !o.snapshot.empty()) {
     viewer::ViewerOptions view_options;
     view_options.window = o.show_gui;
@@ -240,73 +214,111 @@ int main(int argc, char** argv) {
     view_options.visual_skin = o.visual_skin;
     view_options.title = "ambf_like " + (o.launch_file.empty() ? std::string() : o.launch_file);
     try {
-      view = std::make_unique<viewer::Viewer>(*world, view_options);
+      w.view = std::make_unique<viewer::Viewer>(world, view_options);
     } catch (const std::exception& e) {
-      spdlog::error("viewer: {}", e.what());
-      return 1;
+      throw std::runtime_error(std::string("viewer: ") + e.what());
     }
-    if (o.snapshot_every > 0.0) schedule.emplace(o.snapshot, o.snapshot_every);
+    if (o.snapshot_every > 0.0) w.schedule.emplace(o.snapshot, o.snapshot_every);
   }
-  std::unique_ptr<viewer::VideoRecorder> video;
   if (!o.video.file.empty()) {
     try {
       viewer::VideoOptions video_options = viewer::VideoOptions::of(o.video);
       video_options.look = {o.collision_view, o.contacts};
       video_options.visual_skin = o.visual_skin;
-      video = std::make_unique<viewer::VideoRecorder>(*world, video_options, std::nullopt);
+      w.video = std::make_unique<viewer::VideoRecorder>(world, video_options, std::nullopt);
     } catch (const std::exception& e) {
-      spdlog::error("video: {}", e.what());
-      return 1;
+      throw std::runtime_error(std::string("video: ") + e.what());
     }
   }
+  return w;
+}
 
+/// How a run of the loop ended.
+struct RunEnd {
+  std::optional<std::string> diverged;  ///< the guard's reason, when the world blew up
+  double wall = 0.0;                    ///< wall-clock seconds
+};
+
+/// Iterates the loop until the options' end, a signal or a closed window; throws for a snapshot
+/// that cannot be written.
+RunEnd run(ambf_like::PhysicsLoop& loop, ambf_like::World& world, Watchers& w, const Options& o) {
   std::signal(SIGINT, [](int) { g_stop = true; });
   std::signal(SIGTERM, [](int) { g_stop = true; });
   auto done = [&] {
-    return g_stop || (view && view->closed()) ||
-           (o.max_steps > 0 && world->stepCount() >= o.max_steps) ||
-           (o.duration > 0.0 && world->time() + world->stepSize() / 2 >= o.duration);
+    return g_stop || (w.view && w.view->closed()) ||
+           (o.max_steps > 0 && world.stepCount() >= o.max_steps) ||
+           (o.duration > 0.0 && world.time() + world.stepSize() / 2 >= o.duration);
   };
   const auto start = std::chrono::steady_clock::now();
-  std::optional<std::string> diverged;  // the guard's reason, when the world blew up
+  RunEnd end;
   try {
     while (!done()) {
       loop.iterate();
-      if (video) video->capture(*world);
-      if (view) {
-        view->publish(*world);
-        if (schedule) schedule->maybeTake(*view, *world);
+      if (w.video) w.video->capture(world);
+      if (w.view) {
+        w.view->publish(world);
+        if (w.schedule) w.schedule->maybeTake(*w.view, world);
       }
     }
   } catch (const ambf_like::SimulationDiverged& e) {
     spdlog::error("{}", e.what());
-    diverged = e.what();
-  } catch (const std::exception& e) {  // a snapshot that cannot be written
+    end.diverged = e.what();
+  }
+  end.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return end;
+}
+
+/// Finishes the video and takes the end's snapshot; throws naming what failed.
+void closeWatchers(Watchers& w, ambf_like::World& world, const Options& o) {
+  if (w.video) spdlog::info("video: {}", w.video->finish().describe());
+  if (w.view && !o.snapshot.empty() && !w.schedule) {
+    try {
+      w.view->snapshot(world, o.snapshot);
+    } catch (const std::exception& e) {
+      throw std::runtime_error(std::string("snapshot: ") + e.what());
+    }
+    spdlog::info("snapshot: {}", o.snapshot);
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options o;
+  CLI::App app{
+      "ambf_like: AMBF-style ADF/URDF models on a double-precision Bullet world, "
+      "headless. With no model given it runs the bundled demo scene for 5 s."};
+  addOptions(app, o);
+  CLI11_PARSE(app, argc, argv);
+
+  if (o.snapshot_every > 0.0 && o.snapshot.empty()) {
+    spdlog::error("--snapshot-every needs --snapshot FILE.png to name the series");
+    return 2;
+  }
+  if (o.launch_file.empty() && o.extra_files.empty()) {
+    o.launch_file = AMBF_LIKE_DEFAULT_LAUNCH;
+    if (o.max_steps == 0 && o.duration == 0.0) o.duration = 5.0;
+    spdlog::info("no model given: running the bundled demo scene {}", o.launch_file);
+  }
+
+  try {
+    const ambf_like::LoadedScene scene = load(o);
+    for (const auto& warning : scene.warnings) spdlog::warn("{}", warning.str());
+    ambf_like::WorldOptions world_options;
+    world_options.step_size = o.step_size;
+    ambf_like::MeshLibrary meshes;
+    ambf_like::World world(scene.spec, meshes, world_options);
+    for (const auto& warning : world.warnings()) spdlog::warn("{}", warning);
+    const auto loop = makeLoop(world, o);
+    Watchers watchers = openWatchers(world, o);
+    const RunEnd end = run(*loop, world, watchers, o);
+    closeWatchers(watchers, world, o);
+    const auto summary = summarize(scene, world, loop->meter(), end.wall, end.diverged);
+    printSummary(summary);
+    if (!o.summary_json.empty()) std::ofstream(o.summary_json) << summary.dump(2) << "\n";
+    return summary["finite"].get<bool>() ? 0 : 3;
+  } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 1;
   }
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  if (video) {
-    try {
-      spdlog::info("video: {}", video->finish().describe());
-    } catch (const std::exception& e) {
-      spdlog::error("{}", e.what());
-      return 1;
-    }
-  }
-  if (view && !o.snapshot.empty() && !schedule) {
-    try {
-      view->snapshot(*world, o.snapshot);
-      spdlog::info("snapshot: {}", o.snapshot);
-    } catch (const std::exception& e) {
-      spdlog::error("snapshot: {}", e.what());
-      return 1;
-    }
-  }
-  const auto summary = summarize(scene, *world, loop.meter(), wall, diverged);
-  printSummary(summary);
-  if (!o.summary_json.empty()) std::ofstream(o.summary_json) << summary.dump(2) << "\n";
-  return summary["finite"].get<bool>() ? 0 : 3;
 }

@@ -1,6 +1,6 @@
-// What a camera observation costs: frames per second of the peg scene's overview camera rendered
-// headless (EGL) as the learning environment renders it, colour alone and colour, depth and
-// segmentation together, at the two sizes learners use.
+// What a camera observation costs: frames per second of the peg-transfer scene's overview camera
+// rendered headless (EGL) as the learning environment renders it, colour alone and colour, depth
+// and segmentation together, at the two sizes learners use.
 
 #include <fmt/format.h>
 

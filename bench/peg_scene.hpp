@@ -10,7 +10,7 @@
 
 namespace bench {
 
-/// How one timed run of the peg scene is made.
+/// How one timed run of the peg-transfer scene is made.
 struct PegSceneRun {
   std::filesystem::path launch;
   bridge::ClockKind clock = bridge::ClockKind::Simulated;

@@ -22,12 +22,12 @@ void write(const YAML::Node& node, const std::filesystem::path& file) {
 std::filesystem::path writePositionBasedPegScene(const std::filesystem::path& dir) {
   const auto models = raven::modelDirectory();
   const auto shipped = models / "peg_transfer";
-  YAML::Node pegs = YAML::LoadFile((shipped / "pegs.yaml").string());
+  YAML::Node rings = YAML::LoadFile((shipped / "rings.yaml").string());
   const std::string meshes = (shipped / "meshes").string() + "/";
-  pegs["high resolution path"] = meshes;
-  pegs["low resolution path"] = meshes;
-  for (const auto& entry : pegs["soft bodies"]) {
-    YAML::Node body = pegs[entry.as<std::string>()];
+  rings["high resolution path"] = meshes;
+  rings["low resolution path"] = meshes;
+  for (const auto& entry : rings["soft bodies"]) {
+    YAML::Node body = rings[entry.as<std::string>()];
     body.remove("material");
     body["mass"] = 0.002;
     body["contact friction"] = "coulomb";
@@ -41,12 +41,12 @@ std::filesystem::path writePositionBasedPegScene(const std::filesystem::path& di
     config["flags"] = 1;
     body["config"] = config;
   }
-  write(pegs, dir / "pegs.yaml");
+  write(rings, dir / "rings.yaml");
   YAML::Node launch;
   launch["world config"] = (shipped / "world.yaml").string();
   for (const auto& file :
        {models / "raven2" / "raven2_left.yaml", models / "raven2" / "raven2_right.yaml",
-        shipped / "peg_board.yaml", dir / "pegs.yaml"}) {
+        shipped / "peg_board.yaml", dir / "rings.yaml"}) {
     launch["multibody configs"].push_back(file.string());
   }
   write(launch, dir / "launch.yaml");

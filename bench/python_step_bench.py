@@ -2,8 +2,8 @@
 """raven_sim's cost from Python, for raven_bench's "python" section (prints one JSON object).
 
 Per repetition, alternating: the twin (our Raven-II alone, homed) stepped one 1 ms cycle per
-Python call, and the same number of cycles in one call (the C++ loop); then N = 1, 2, 4 peg
-transfer environments stepped together on threads, each following the expert.
+Python call, and the same number of cycles in one call (the C++ loop); then N = 1, 2, 4
+peg-transfer environments stepped together on threads, each following the expert.
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python_step_bench.py [--repeat 3]
 """

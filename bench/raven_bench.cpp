@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   app.add_option("--repeat", settings.repeat, "repetitions of each timed run")
       ->check(CLI::Range(1, 100));
   app.add_option("--scene-seconds", settings.scene_seconds,
-                 "simulated seconds of the moving peg scene per run")
+                 "simulated seconds of the moving peg-transfer scene per run")
       ->check(CLI::Range(1.0, 300.0));
   app.add_option("--only", only, "sections to run (default: all, in this order)")
       ->check(CLI::IsMember(names));

@@ -9,15 +9,15 @@ namespace bench {
 
 /// What every section needs to know.
 struct BenchSettings {
-  int repeat = 3;                      ///< repetitions of each timed run
-  double scene_seconds = 30.0;         ///< simulated seconds of the moving peg scene per run
+  int repeat = 3;               ///< repetitions of each timed run
+  double scene_seconds = 30.0;  ///< simulated seconds of the moving peg-transfer scene per run
   std::filesystem::path shared_data;   ///< ../shared/data (may be absent)
   std::filesystem::path dense_models;  ///< the build's dense-collision models
   std::filesystem::path programs;      ///< the build directory (main job, twin node, micro bench)
 };
 
-/// Dynamic loop frequency: the moving peg scene (simplified vs dense collision, free-running and
-/// paced), the Raven-II alone, AMBF's Raven-II.
+/// Dynamic loop frequency: the moving peg-transfer scene (simplified vs dense collision,
+/// free-running and paced), the Raven-II alone, AMBF's Raven-II.
 void measureLoopFrequency(const BenchSettings& settings, Report& report);
 /// AMBF's own description files (the Raven, puzzles, a cloth) against AMBF's figures on them.
 void measureAmbfScenes(const BenchSettings& settings, Report& report);
@@ -29,7 +29,8 @@ void measureReplay(const BenchSettings& settings, Report& report);
 void measureRosEdge(const BenchSettings& settings, Report& report);
 /// Peak resident size of the main job and of the twin node.
 void measureMemory(const BenchSettings& settings, Report& report);
-/// The peg scene's loop frequency with the viewer window open against headless (needs a display).
+/// The peg-transfer scene's loop frequency with the viewer window open against headless (needs a
+/// display).
 void measureViewer(const BenchSettings& settings, Report& report);
 /// The main job's real-time factor with and without a video.
 void measureVideo(const BenchSettings& settings, Report& report);
@@ -37,7 +38,8 @@ void measureVideo(const BenchSettings& settings, Report& report);
 void measurePython(const BenchSettings& settings, Report& report);
 /// The Google Benchmark micro-benchmarks (IK, interpolation, a physics step).
 void measureMicro(const BenchSettings& settings, Report& report);
-/// Camera observations: frames per second of the peg scene's overview camera (camera_cost.cpp).
+/// Camera observations: frames per second of the peg-transfer scene's overview camera
+/// (camera_cost.cpp).
 void measureCameras(const BenchSettings& settings, Report& report);
 /// A learner's snapshots: save and restore of a peg-transfer episode against a reset.
 void measureSnapshots(const BenchSettings& settings, Report& report);

@@ -55,14 +55,15 @@ void measureViewer(const BenchSettings& s, Report& report) {
         pegScene({.launch = launch, .seconds = seconds, .observe = observe}, 1).front().whole);
     ratios.push_back(windowed.back() / headless.back());
   }
-  report.add(measured(kSection, "peg scene, free-running, headless", Spread::of(headless),
+  report.add(measured(kSection, "peg-transfer scene, free-running, headless", Spread::of(headless),
                       "steps/s", how));
-  report.add(measured(kSection, "peg scene, free-running, viewer window open", Spread::of(windowed),
-                      "steps/s", how + fmt::format(", {} frames drawn", watcher.frames)));
+  report.add(measured(kSection, "peg-transfer scene, free-running, viewer window open",
+                      Spread::of(windowed), "steps/s",
+                      how + fmt::format(", {} frames drawn", watcher.frames)));
   report.add(atLeast(kSection, "window open / headless", Spread::of(ratios), "x", 0.9,
                      "run by run, alternating; the window renders at 30 fps on its own thread"));
   report.add(atLeast(
-      kSection, "peg scene, paced at 1 kHz, viewer window open",
+      kSection, "peg-transfer scene, paced at 1 kHz, viewer window open",
       Spread::of(wholeRates(pegScene(
           {.launch = launch, .clock = bridge::ClockKind::Wall, .seconds = 10.0, .observe = observe},
           1))),

@@ -39,7 +39,9 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"')
 MAY_INCLUDE = re.compile(r"^May include:\s*(.*)$", re.MULTILINE)
 FILE_ROW = re.compile(r"^\|([^|]*)\|", re.MULTILINE)
 SOURCE_SUFFIXES = (".hpp", ".cpp", ".h", ".py")
-HAND_CAST_SLOT = re.compile(r"static_cast<std::size_t>\(\s*(1\s*-\s*)?(raven::)?index\(")
+# An arm's place in a PerArm cast by hand, or the other arm's place counted by hand.
+HAND_CAST_SLOT = re.compile(r"static_cast<std::size_t>\(\s*(1\s*-\s*)?(raven::)?index\("
+                            r"|\b1\s*-\s*(raven::)?slot\(")
 
 
 def room_of_file(path):

@@ -84,9 +84,10 @@ void BM_AmbfRaven(benchmark::State& state) {
 BENCHMARK(BM_AmbfRaven)->Iterations(kSceneSteps);
 
 void BM_PegAndBaseOnFloor(benchmark::State& state) {
-  const auto peg = kShared / "ambf/ambf_models/descriptions/multi-bodies/puzzles/peg_and_base.yaml";
-  if (sharedFileMissing(state, peg)) return;
-  stepScene(state, ambf_like::loadModelFiles({peg, kExamples / "floor.yaml"}));
+  const auto puzzle =
+      kShared / "ambf/ambf_models/descriptions/multi-bodies/puzzles/peg_and_base.yaml";
+  if (sharedFileMissing(state, puzzle)) return;
+  stepScene(state, ambf_like::loadModelFiles({puzzle, kExamples / "floor.yaml"}));
 }
 BENCHMARK(BM_PegAndBaseOnFloor)->Iterations(kSceneSteps);
 

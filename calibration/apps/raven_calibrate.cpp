@@ -13,7 +13,6 @@
 #include <thread>
 
 #include "calibration/actuation_fit.hpp"
-#include "calibration/calibration_file.hpp"
 #include "calibration/command_delivery.hpp"
 #include "calibration/excitation.hpp"
 #include "calibration/replay_score.hpp"
@@ -21,6 +20,7 @@
 #include "common/actuation_flag.hpp"
 #include "raven/control_cycle.hpp"
 #include "recording/recording_io.hpp"
+#include "twin/calibration_profile.hpp"
 
 namespace {
 
@@ -252,7 +252,7 @@ int runFit(const FitSettings& s) {
   printActuators("setpoint replays, fitted on every trial", fitted);
   printMechanics(profile);
 
-  calibration::FitProvenance provenance;
+  twin::FitProvenance provenance;
   for (const auto& t : physical) provenance.physical.push_back(t.path.string());
   provenance.notes.push_back("setpoint replays, fitted on every trial: " + medianRatios(fitted));
   if (!s.replay.ci.empty()) {
@@ -280,7 +280,7 @@ int runFit(const FitSettings& s) {
         fmt::format("end-to-end replays: {}; {} of 8 joint figures within T_PP",
                     medianRatios(score.actuators), score.figuresWithin()));
   }
-  calibration::writeCalibration(s.out, profile, provenance);
+  profile.save(s.out, provenance);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   std::printf("\nwrote %s (%.0f s)\n", s.out.c_str(), seconds);

@@ -121,7 +121,8 @@ std::optional<Mode> modeFromKey(char key) {
   return it == keys.end() ? std::nullopt : std::optional<Mode>(it->second);
 }
 
-int run(const Settings& s) {
+/// Refuses settings that do not go together, before anything is read or moves.
+void checkSettings(const Settings& s) {
   if (s.velocity_scale > 1.0 && s.platform != "twin") {
     throw std::runtime_error(
         "--velocity-scale above 1 raises the paper's joint speed caps: the "
@@ -136,6 +137,86 @@ int run(const Settings& s) {
     throw std::runtime_error(
         "--lock-step needs a replay (--replay-ci / --replay-rs) or --mode o1/o5");
   }
+}
+
+controller::ControllerOptions controllerOptions(
+    const Settings& s, const std::optional<controller_app::ControllerCalibration>& calibration) {
+  controller::ControllerOptions options;
+  options.rate = s.rate;
+  options.caps.min_steps = s.man_steps;
+  options.caps.per_second *= s.velocity_scale;
+  options.mapping.deadzone = s.deadzone;
+  options.mapping.divisor = s.divisor;
+  options.mapping.wrist_divisor = s.wrist_divisor;
+  options.scheme = controller::mappingSchemeNamed(s.mapping);
+  options.mapping.deadzone_reads_y_twice = s.paper_deadzone;
+  if (calibration) options.iteration_overhead = calibration->iteration_overhead;
+  return options;
+}
+
+/// The mode a session starts in: the one asked for, else the replay's, else manual with a pad.
+Mode firstMode(const Settings& s, bool has_pad) {
+  const std::map<std::string, Mode> modes{{"o1", Mode::Homing},
+                                          {"o2", Mode::Manual},
+                                          {"o3", Mode::ReplayInputs},
+                                          {"o4", Mode::ReplayJoints},
+                                          {"o5", Mode::SineDance}};
+  if (!s.start_mode.empty()) return modes.at(s.start_mode);
+  return !s.replay_ci.empty()   ? Mode::ReplayInputs
+         : !s.replay_rs.empty() ? Mode::ReplayJoints
+         : has_pad              ? Mode::Manual
+                                : Mode::Idle;
+}
+
+/// Turns the session until it ends, a key quits it, the duration passes or a platform faults;
+/// reports the twin's divergence from the physical robot when both run.
+void turnUntilDone(controller::ControllerSession& session,
+                   const controller::DualPlatformController& control,
+                   const std::vector<controller::PlatformSlot>& slots,
+                   controller::TerminalKeys* keys, const Settings& s) {
+  auto& reference = *slots.front().platform;
+  const double start = reference.now();
+  double next_report = start + 1.0, worst_divergence = 0.0;
+  std::size_t turns = 0;
+  while (!interrupted && session.turn()) {
+    ++turns;
+    // One key per turn: each takes effect after at least one iteration of the previous one.
+    if (const auto key = keys ? keys->next() : std::nullopt) {
+      if (const auto mode = modeFromKey(*key)) session.select(*mode);
+      if (*key == 'r') session.startRecording();
+      if (*key == 's') session.stopRecording();
+      if (*key == 'q' || *key == '0') session.quit();
+    }
+    if (slots.size() > 1) {
+      const double d = control.divergence();
+      worst_divergence = std::max(worst_divergence, d);
+      if (reference.now() >= next_report) {
+        spdlog::info("twin vs physical: largest joint divergence {:.4f} now, {:.4f} so far", d,
+                     worst_divergence);
+        next_report += 1.0;
+      }
+    }
+    if (s.duration > 0.0 && reference.now() - start >= s.duration) break;
+    const auto faulted = std::find_if(slots.begin(), slots.end(), [](auto& p) {
+      return p.platform->operatingStatus().state == bridge::OperatingState::Fault;
+    });
+    if (faulted != slots.end()) {  // everything recorded so far is on disk
+      spdlog::error("{} is in FAULT: stopping", faulted->name);
+      break;
+    }
+  }
+  const std::size_t rows = session.recording() ? session.stopRecording() : 0;
+  spdlog::info("done: {} turns, {:.3f} s of platform time; {} recording file(s){}", turns,
+               reference.now() - start, session.recordings().size(),
+               rows ? " (" + std::to_string(rows) + " rows)" : std::string());
+  for (const auto& file : session.recordings()) spdlog::info("  {}", file.string());
+  if (slots.size() > 1) {
+    spdlog::info("largest twin vs physical joint divergence: {:.4f}", worst_divergence);
+  }
+}
+
+int run(const Settings& s) {
+  checkSettings(s);
   // Read once, and refused before anything moves.
   std::optional<controller_app::ControllerCalibration> calibration;
   if (!s.calibration_file.empty()) {
@@ -157,18 +238,7 @@ int run(const Settings& s) {
   }
   Platforms platforms = makePlatforms(s, calibration ? &*calibration : nullptr);
   makeReady(platforms.slots);
-
-  controller::ControllerOptions options;
-  options.rate = s.rate;
-  options.caps.min_steps = s.man_steps;
-  options.caps.per_second *= s.velocity_scale;
-  options.mapping.deadzone = s.deadzone;
-  options.mapping.divisor = s.divisor;
-  options.mapping.wrist_divisor = s.wrist_divisor;
-  options.scheme = controller::mappingSchemeNamed(s.mapping);
-  options.mapping.deadzone_reads_y_twice = s.paper_deadzone;
-  if (calibration) options.iteration_overhead = calibration->iteration_overhead;
-  controller::DualPlatformController control(platforms.slots, options);
+  controller::DualPlatformController control(platforms.slots, controllerOptions(s, calibration));
 
   std::unique_ptr<controller::SdlGamepad> pad;
   if (!s.no_gamepad && !s.lock_step) {
@@ -177,70 +247,19 @@ int run(const Settings& s) {
                                                        : controller::TriggerScale::XboxOne);
   }
   inputs.gamepad = pad.get();
-  const bool replay = !s.replay_ci.empty() || !s.replay_rs.empty();
   controller::SessionOptions session_options;
   session_options.out_dir = s.out_dir;
   session_options.record_name = s.name;
-  session_options.end_after_replay = replay;
+  session_options.end_after_replay = !s.replay_ci.empty() || !s.replay_rs.empty();
   controller::ControllerSession session(control, std::move(inputs), session_options);
   std::unique_ptr<controller::TerminalKeys> keys;
   if (!s.no_keyboard && !s.lock_step) {
     keys = std::make_unique<controller::TerminalKeys>(STDIN_FILENO);
     spdlog::info("keys: 1-5 modes O1-O5, r record, s stop recording, q quit");
   }
-
-  const std::map<std::string, Mode> modes{{"o1", Mode::Homing},
-                                          {"o2", Mode::Manual},
-                                          {"o3", Mode::ReplayInputs},
-                                          {"o4", Mode::ReplayJoints},
-                                          {"o5", Mode::SineDance}};
-  Mode first = !s.replay_ci.empty()   ? Mode::ReplayInputs
-               : !s.replay_rs.empty() ? Mode::ReplayJoints
-               : pad                  ? Mode::Manual
-                                      : Mode::Idle;
-  if (!s.start_mode.empty()) first = modes.at(s.start_mode);
-  if (first != Mode::Idle) session.select(first);
+  if (const Mode first = firstMode(s, pad != nullptr); first != Mode::Idle) session.select(first);
   if (s.record == "yes") session.startRecording();
-
-  auto& reference = *platforms.slots.front().platform;
-  const double start = reference.now();
-  double next_report = start + 1.0, worst_divergence = 0.0;
-  std::size_t turns = 0;
-  while (!interrupted && session.turn()) {
-    ++turns;
-    // One key per turn: each takes effect after at least one iteration of the previous one.
-    if (const auto key = keys ? keys->next() : std::nullopt) {
-      if (const auto mode = modeFromKey(*key)) session.select(*mode);
-      if (*key == 'r') session.startRecording();
-      if (*key == 's') session.stopRecording();
-      if (*key == 'q' || *key == '0') session.quit();
-    }
-    if (platforms.slots.size() > 1) {
-      const double d = control.divergence();
-      worst_divergence = std::max(worst_divergence, d);
-      if (reference.now() >= next_report) {
-        spdlog::info("twin vs physical: largest joint divergence {:.4f} now, {:.4f} so far", d,
-                     worst_divergence);
-        next_report += 1.0;
-      }
-    }
-    if (s.duration > 0.0 && reference.now() - start >= s.duration) break;
-    const auto faulted = std::find_if(platforms.slots.begin(), platforms.slots.end(), [](auto& p) {
-      return p.platform->operatingStatus().state == bridge::OperatingState::Fault;
-    });
-    if (faulted != platforms.slots.end()) {  // everything recorded so far is on disk
-      spdlog::error("{} is in FAULT: stopping", faulted->name);
-      break;
-    }
-  }
-  const std::size_t rows = session.recording() ? session.stopRecording() : 0;
-  spdlog::info("done: {} turns, {:.3f} s of platform time; {} recording file(s){}", turns,
-               reference.now() - start, session.recordings().size(),
-               rows ? " (" + std::to_string(rows) + " rows)" : std::string());
-  for (const auto& file : session.recordings()) spdlog::info("  {}", file.string());
-  if (platforms.slots.size() > 1) {
-    spdlog::info("largest twin vs physical joint divergence: {:.4f}", worst_divergence);
-  }
+  turnUntilDone(session, control, platforms.slots, keys.get(), s);
   return 0;
 }
 

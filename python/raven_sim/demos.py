@@ -9,7 +9,7 @@ import json
 
 import numpy as np
 
-from .env import PegTransferEnv
+from .env import PegTransferEnv, part
 from .imitation import ACTION
 
 ENV_KWARGS = {"action_type": ACTION, "randomize": True, "time_limit": 240.0}
@@ -120,10 +120,10 @@ def convert(ci_path, seed, out):
     observations, actions, rewards = [], [], []
     info = {"placed": pad.core.placed}
     for row in inputs:
-        before = observation[14:28].copy()  # the commanded targets
+        before = observation[part("targets")].copy()
         observations.append(observation)
         observation, reward, terminated, truncated, info = pad.step(row)
-        actions.append(observation[14:28] - before)
+        actions.append(observation[part("targets")] - before)
         rewards.append(reward)
         if terminated or truncated:
             break

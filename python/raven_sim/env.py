@@ -17,9 +17,10 @@ Observations (obs): "state" alone gives the vector below; with "rgb" (H, W, 3) u
 int32 ids (SEGMENT_IDS), the observation is a dict of them (keys "<kind>" for one camera,
 "<camera>/<kind>" for several; camera: any named view, e.g. "overview", "left-task",
 "right-task", "grasper-left", "grasper-right"), rendered headless at image_size (W, H). The
-observation (72 values) is, per arm, measured joints [0, 14), commanded targets [14, 28), tool
-pose x, y, z, qw, qx, qy, qz [28, 42), grasp force and torque [42, 54); then each ring's centre
-[54, 72). The reward is the change in the number of rings resting threaded on their target
+state (72 values) is, per arm (left first), its measured joints, commanded targets, tool pose
+(x, y, z, qw, qx, qy, qz) and grasp force and torque; then each ring's centre (ring1..ring6):
+`state[part("targets")]`, `state[part("rings", 2)]` (the C++ layout's names and places,
+raven_sim.observation_layout()). The reward is the change in the number of rings resting threaded on their target
 posts (+1 as one comes to rest there, -1 if one leaves); an episode terminates with all six
 placed and is truncated at the time limit. The main job's scripted operator is the expert:
 `expert_action()`. The same seed and actions give the same episode.
@@ -33,7 +34,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from ._raven_sim import PegCameras, PegTransferCore
+from ._raven_sim import PegCameras, PegTransferCore, observation_layout
 
 try:  # Gymnasium when it is there; the same API without it
     import gymnasium
@@ -82,12 +83,25 @@ except ImportError:
             high = np.minimum(self.high, np.finfo(np.float64).max / 4)
             return rng.uniform(low, high).astype(self.dtype)
 
+STATE_LAYOUT = observation_layout()  # name: (slice, values per item)
+
+
+def part(name, item=None):
+    """The slice of the state holding part `name` ("joints", "targets", "tool_poses", "wrenches",
+    "rings"), or only its item `item` (an arm, 0 left / 1 right; or a ring, 0-5)."""
+    whole, size = STATE_LAYOUT[name]
+    if item is None:
+        return whole
+    start = whole.start + size * item
+    return slice(start, start + size)
+
+
 # A pad reading's ranges: sticks in [-1, 1], triggers on the paper's 0 .. 3.996, buttons 0 or 1.
 PAD_LOW = [-1, -1, 0, 0, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0]
 PAD_HIGH = [1, 1, 3.996, 1, 1, 1, 3.996, 1, 1, 1, 1, 1, 1, 1]
 OBSERVATIONS = ("state", "rgb", "depth", "segmentation")
 # Segmentation ids (scenario/peg_cameras.hpp): 0 background, 1 the board's plate, 2-7 the start
-# posts of peg1..peg6, 8-13 their target posts, 14-19 the rings peg1..peg6, 20 the left arm's
+# posts of ring1..ring6, 8-13 their target posts, 14-19 the rings ring1..ring6, 20 the left arm's
 # links, 21 the left jaws, 22 the right arm's links, 23 the right jaws, 24 anything else.
 SEGMENT_IDS = 25
 

@@ -19,8 +19,8 @@ routines do): it sees one arm's `ArmFeatures` and gives that arm's waypoint. An 
 are its own (the arm, its targets, its tool point in the world frame, the rings' frame:
 raven_sim.tool_points; its grasp wrench), per ring of its jobs where the ring is from the tool,
 from its start and target posts and above the board, with whether it rests on its target (the
-layout's design values: raven_sim.peg_layout); which job is the first not done and that ring's
-offset within NEAR (the millimetres a grasp is decided on, at their own scale); and how many
+layout's design values: raven_sim.peg_layout; the C++ judgement: raven_sim.ring_placed); which
+job is the first not done and that ring's offset within NEAR (the millimetres a grasp is decided on, at their own scale); and how many
 steps the targets have stood still (up to HOLD_MEMORY): the operator waits, and a policy that
 only saw the present could not count. The other arm is not seen: in the demonstrations the two
 arms keep in step, which a policy must not learn to rely on. Nor are the policy's own last
@@ -32,7 +32,8 @@ import time
 
 import numpy as np
 
-from ._raven_sim import peg_layout, tool_points
+from ._raven_sim import peg_layout, ring_placed, tool_points
+from .env import part
 
 ACTION = "joint_deltas"
 OUTPUT = "asinh(waypoint / RESOLUTION), per arm"
@@ -44,10 +45,8 @@ HOLD_MEMORY = 20
 STILL = 2e-4  # targets changing less than this per step stand still (rad or m; the
 #               operator's moves change some joint by a millimetre's 1e-3 or more)
 NEAR = 0.02  # m: the current ring's offset from the tool, clipped
-PLACED_XY = 0.004  # m: a ring this near its target post's axis ...
-PLACED_LIFT = 0.002  # m: ... and its centre this near its resting height is placed
-TARGETS = slice(14, 28)
-RINGS = slice(54, 72)
+TARGETS = part("targets")
+RINGS = part("rings")
 LAYOUT = peg_layout()
 REST_Z = LAYOUT["board_top"] + LAYOUT["ring_height"] / 2  # a ring's centre lying on the board
 
@@ -110,11 +109,10 @@ class ArmFeatures:
         self.previous = targets.copy()
         rings = state[RINGS].reshape(6, 3)[self.rings]
         lift = rings[:, 2] - REST_Z
-        placed = (np.linalg.norm(rings[:, :2] - self.ends, axis=1) < PLACED_XY) & \
-            (lift < PLACED_LIFT)
+        placed = np.array([ring_placed(r, end) for r, end in zip(rings, self.ends)])
         current = int(np.argmin(placed)) if not placed.all() else 3
         near = np.zeros(3) if current == 3 else np.clip(rings[current] - tool, -NEAR, NEAR)
-        wrench = state[42 + 6 * self.arm:48 + 6 * self.arm]
+        wrench = state[part("wrenches", self.arm)]
         per_ring = np.hstack([rings - tool, rings[:, :2] - self.starts, rings[:, :2] - self.ends,
                               lift[:, None], placed[:, None]])
         return np.hstack([1.0 - 2.0 * self.arm, targets, tool, wrench, per_ring.ravel(),

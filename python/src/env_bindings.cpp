@@ -16,15 +16,17 @@ namespace py = pybind11;
 namespace raven_python {
 
 namespace {
+
 /// An episode's saved state, as Python holds it.
 struct SavedEpisode {
   std::shared_ptr<const scenario::PegTransferEnv::State> state;
 };
-}  // namespace
 
-void bindPegTransferEnv(py::module_& m) {
+/// The scene's design, the observation's layout and the judgement of a placed ring.
+void bindLayouts(py::module_& m) {
   m.def("tool_points", &scenario::PegTransferEnv::toolPoints, py::arg("joints"),
-        "both arms' tool points (2 x 3, m) in the peg scene's world frame, the rings' frame, for "
+        "both arms' tool points (2 x 3, m) in the peg-transfer scene's world frame, the rings' "
+        "frame, for "
         "14 joint values (left arm first); the state's tool poses are the robot's own report");
   m.def(
       "peg_layout",
@@ -33,7 +35,7 @@ void bindPegTransferEnv(py::module_& m) {
         py::list jobs;
         for (const scenario::RingJob& job : layout.jobs) {
           py::dict d;
-          d["peg"] = job.ring;
+          d["ring"] = job.ring;
           d["arm"] = raven::index(job.arm);
           d["from"] = job.from;
           d["to"] = job.to;
@@ -46,9 +48,37 @@ void bindPegTransferEnv(py::module_& m) {
         out["ring_height"] = 2.0 * layout.ring.half_height;
         return out;
       },
-      "the peg transfer's design values: its six jobs (peg, arm 0 left / 1 right, the start and "
+      "the peg transfer's design values: its six jobs (ring, arm 0 left / 1 right, the start and "
       "target posts' x, y in m, in the order of the state's ring centres), the board's top z, "
       "the rings' centre-line radius and height");
+  m.def(
+      "ring_placed",
+      [](const Eigen::Vector3d& centre, const Eigen::Vector2d& post) {
+        const scenario::PegLayout layout;
+        bridge::Sighting upright;
+        upright.pose.translation() = centre;
+        return scenario::restsOn(scenario::RingView(upright, layout.ring), post, layout.geometry);
+      },
+      py::arg("centre"), py::arg("post"),
+      "whether an upright ring centred at `centre` (x, y, z, m) rests threaded on the post at "
+      "`post` (x, y): the judgement the environment's reward and the main job make "
+      "(scenario::restsOn), for a state that has the rings' centres alone");
+  m.def(
+      "observation_layout",
+      [] {
+        py::dict out;
+        for (const scenario::observation::Part& part : scenario::observation::kParts) {
+          out[part.name] =
+              py::make_tuple(py::slice(part.slice.start, part.slice.end(), 1), part.item_size);
+        }
+        return out;
+      },
+      "where each part of PegTransferEnv's state sits: {name: (slice, values per item)}, the "
+      "items an arm's (left first) or a ring's (ring1..ring6) (scenario/observation_layout.hpp)");
+}
+
+/// The environment's core (raven_sim.env wraps it), its steps and saved states.
+void bindEnvironment(py::module_& m) {
   using E = scenario::PegTransferEnv;
   py::class_<scenario::PegTransferStep>(m, "PegTransferStep")
       .def_readonly("observation", &scenario::PegTransferStep::observation)
@@ -129,7 +159,11 @@ void bindPegTransferEnv(py::module_& m) {
       .def_property_readonly("time", &E::time)
       .def_property_readonly("observation", &E::observation)
       .def_property_readonly("placed", &E::placed);
+}
 
+/// An episode's cameras: its named views rendered as arrays.
+void bindCameras(py::module_& m) {
+  using E = scenario::PegTransferEnv;
   py::class_<scenario::PegCameras>(m, "PegCameras",
                                    "the named views of an episode's world as images (headless)")
       .def(py::init([](E& env, const std::vector<std::string>& views, int width, int height) {
@@ -162,6 +196,14 @@ void bindPegTransferEnv(py::module_& m) {
             return out;
           },
           py::arg("env"), py::arg("rgb"), py::arg("depth"), py::arg("segmentation"));
+}
+
+}  // namespace
+
+void bindPegTransferEnv(py::module_& m) {
+  bindLayouts(m);
+  bindEnvironment(m);
+  bindCameras(m);
 }
 
 }  // namespace raven_python

@@ -52,7 +52,10 @@ auto copied(V C::*field) {
 
 }  // namespace
 
-void bindTwin(py::module_& m) {
+namespace {
+
+/// The arms, the state commands and the CRTK motion commands, and a command's answer.
+void bindCommands(py::module_& m) {
   py::enum_<Arm>(m, "Arm", "LEFT is the gold arm (arm1), RIGHT the green arm (arm2).")
       .value("LEFT", Arm::Left)
       .value("RIGHT", Arm::Right);
@@ -87,7 +90,10 @@ void bindTwin(py::module_& m) {
         return std::string(r.accepted ? "<taken" : "<refused") +
                (r.note.empty() ? "" : ": " + r.note) + ">";
       });
+}
 
+/// What a platform reports: its status, joints, grasp forces and raven_state.
+void bindReadings(py::module_& m) {
   py::class_<bridge::OperatingStatus>(m, "OperatingStatus")
       .def_property_readonly(
           "state", [](const bridge::OperatingStatus& s) { return std::string(wireName(s.state)); })
@@ -124,7 +130,10 @@ void bindTwin(py::module_& m) {
       .def_readonly("tau", &bridge::RavenStateSnapshot::tau)
       .def_readonly("dac_val", &bridge::RavenStateSnapshot::dac_val)
       .def_readonly("grasp_d", &bridge::RavenStateSnapshot::grasp_d);
+}
 
+/// The in-process twin as a RavenPlatform.
+void bindTwinPlatform(py::module_& m) {
   using T = twin::TwinPlatform;
   py::class_<T>(m, "Twin", "The in-process Raven-II twin on the simulated clock (RavenPlatform).")
       .def(py::init([](std::optional<std::filesystem::path> launch_file, const std::string& profile,
@@ -191,6 +200,14 @@ void bindTwin(py::module_& m) {
               },
               py::keep_alive<0, 1>()),
           "the twin's simulation (it keeps the twin alive)");
+}
+
+}  // namespace
+
+void bindTwin(py::module_& m) {
+  bindCommands(m);
+  bindReadings(m);
+  bindTwinPlatform(m);
 }
 
 }  // namespace raven_python

@@ -75,9 +75,8 @@ std::vector<std::string> names(std::size_t count, Get get) {
   return out;
 }
 
-}  // namespace
-
-void bindWorld(py::module_& m) {
+/// The views of a world's parts: bodies, joints, soft bodies, sensors and actuators.
+void bindWorldParts(py::module_& m) {
   py::class_<ambf_like::RigidBody>(m, "RigidBody",
                                    "A rigid body of a World (a view: the World owns it).")
       .def_property_readonly("name", &ambf_like::RigidBody::qualifiedName)
@@ -124,7 +123,12 @@ void bindWorld(py::module_& m) {
           [](ambf_like::ConstraintActuator& a, ambf_like::RigidBody& body) { a.actuate(body); },
           py::arg("body"), py::keep_alive<1, 2>())
       .def("release", &ambf_like::ConstraintActuator::release);
+}
 
+}  // namespace
+
+void bindWorld(py::module_& m) {
+  bindWorldParts(m);
   py::class_<SavedWorld>(m, "WorldState", "a World's saved state (World.save_state)");
   using W = WorldHandle;
   auto ref = py::return_value_policy::reference_internal;

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
             "# Both Raven-II arms.\n"
             "world config: world.yaml\n"
             "multibody configs:\n  - raven2_left.yaml   #0\n  - raven2_right.yaml  #1\n");
-  // The same board and pegs beside either arm variant (the benchmarks compare the two).
+  // The same board and rings beside either arm variant (the benchmarks compare the two).
   writePegScene(PegSceneDesign{}, out / "peg_transfer");
   // Touching: the ring's margin and the jaw's (0.5 + 0.2 mm) and a little.
   writeGraspAssist(profile, ArmDesign{}, 0.001, out / "peg_transfer" / "grasp_assist.yaml");
@@ -68,11 +68,11 @@ int main(int argc, char** argv) {
             "articulates the arms\n"
             "  soft body sdf voxel size: 0.002  # the posts are 5 mm thick\n");
   writeText(out / "peg_transfer" / "launch.yaml",
-            "# The peg-transfer scene: both arms, the board and six soft pegs.\n"
+            "# The peg-transfer scene: both arms, the board and six soft rings.\n"
             "world config: world.yaml\n"
             "multibody configs:\n  - ../raven2/raven2_left.yaml   #0\n"
             "  - ../raven2/raven2_right.yaml  #1\n  - peg_board.yaml               #2\n"
-            "  - pegs.yaml                    #3\n");
+            "  - rings.yaml                   #3\n");
   std::cout << (dense ? "dense" : "simplified") << " Raven-II written to " << robot_dir << ": "
             << vertices << " collision mesh vertices\n";
   return 0;

@@ -1,7 +1,7 @@
 #pragma once
 // The grasp assist as AMBF builds such things (SRC grasps its needle so): on each jaw a proximity
 // sensor looking out of its gripping face and a constraint actuator, in a model of their own that
-// the peg scene loads after the arms only when the assist is asked for.
+// the peg-transfer scene loads after the arms only when the assist is asked for.
 
 #include <filesystem>
 

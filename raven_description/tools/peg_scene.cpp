@@ -62,29 +62,29 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
   // Six soft rings, one resting on each start post.
   // A solid ring (tetrahedra) of silicone: the jaws squeeze its wall through its thickness, and
   // its material answers with the force that silicone would.
-  solidRing(d.peg_major_radius, d.peg_minor_radius, d.peg_half_height, d.peg_ring_segments,
-            d.peg_tube_segments)
-      .writeVtk(dir / "meshes" / "peg.vtk", "soft ring peg" + note);
-  YAML::Node pegs;
-  pegs["high resolution path"] = "./meshes/";
-  pegs["low resolution path"] = "./meshes/";
-  pegs["namespace"] = "/peg_transfer/";
-  for (std::size_t i = 0; i < d.peg_count; ++i) {
-    const std::string name = "peg" + std::to_string(i + 1);
-    pegs["soft bodies"].push_back("BODY " + name);
+  solidRing(d.ring_major_radius, d.ring_minor_radius, d.ring_half_height, d.ring_segments,
+            d.ring_tube_segments)
+      .writeVtk(dir / "meshes" / "ring.vtk", "soft ring" + note);
+  YAML::Node rings;
+  rings["high resolution path"] = "./meshes/";
+  rings["low resolution path"] = "./meshes/";
+  rings["namespace"] = "/peg_transfer/";
+  for (std::size_t i = 0; i < d.ring_count; ++i) {
+    const std::string name = "ring" + std::to_string(i + 1);
+    rings["soft bodies"].push_back("BODY " + name);
     YAML::Node p;
     p["name"] = name;
-    p["mesh"] = "peg.vtk";
+    p["mesh"] = "ring.vtk";
     YAML::Node material;
-    material["young's modulus"] = number(d.peg_youngs_modulus);
-    material["poisson's ratio"] = number(d.peg_poissons_ratio);
-    material["density"] = number(d.peg_density);
+    material["young's modulus"] = number(d.ring_youngs_modulus);
+    material["poisson's ratio"] = number(d.ring_poissons_ratio);
+    material["density"] = number(d.ring_density);
     p["material"] = flow(material);
     Eigen::Isometry3d at = Eigen::Isometry3d::Identity();
     at.translation() = Eigen::Vector3d(d.posts[i].x(), d.posts[i].y(),
-                                       d.board_top + d.peg_half_height + d.peg_margin);
+                                       d.board_top + d.ring_half_height + d.ring_margin);
     p["location"] = pose(at);
-    p["collision margin"] = number(d.peg_margin);
+    p["collision margin"] = number(d.ring_margin);
     // Held by friction alone: Coulomb contacts (the material implies them), friction
     // kDF x the jaws' 1.0. kDP is per step in Bullet, so it stays small. Contact is node-vs-rigid
     // SDF (SDF_RS): the world file sets a voxel fine enough for the posts.
@@ -93,10 +93,10 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
     config["kDP"] = number(0.001);
     config["flags"] = 1;
     p["config"] = flow(config);
-    pegs["BODY " + name] = p;
+    rings["BODY " + name] = p;
   }
-  pegs["soft bodies"].SetStyle(YAML::EmitterStyle::Flow);
-  writeYaml(pegs, "Six tall soft ring pegs" + note, dir / "pegs.yaml");
+  rings["soft bodies"].SetStyle(YAML::EmitterStyle::Flow);
+  writeYaml(rings, "Six tall soft rings" + note, dir / "rings.yaml");
 }
 
 }  // namespace raven::model

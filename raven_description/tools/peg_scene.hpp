@@ -1,6 +1,6 @@
 #pragma once
 // The peg-transfer scene: a board with twelve posts (six in each arm's reach) and six tall soft
-// ring pegs resting on the start posts.
+// rings resting on the start posts.
 
 #include <filesystem>
 
@@ -10,7 +10,7 @@ namespace raven::model {
 
 using design::PegSceneDesign;
 
-/// Writes peg_board.yaml, pegs.yaml and meshes/peg.vtk into `dir`.
+/// Writes peg_board.yaml, rings.yaml and meshes/ring.vtk into `dir`.
 void writePegScene(const PegSceneDesign& design, const std::filesystem::path& dir);
 
 }  // namespace raven::model

@@ -96,11 +96,11 @@ int merge(const fs::path& dir) {
   summary_out << summary.dump(2) << '\n';
   if (!runs || !summary_out) throw std::runtime_error("cannot write into " + dir.string());
   fmt::print(
-      "whole: every seed once; {} of {} runs placed all six pegs, {} of {} pegs placed, {} "
+      "whole: every seed once; {} of {} runs placed all six rings, {} of {} rings placed, {} "
       "lost, {} re-grasps\nwrote {}, {}\n",
       summary["runs_all_placed"].get<std::size_t>(), plan.runs,
-      summary["pegs_placed"].get<std::size_t>(), summary["pegs"].get<std::size_t>(),
-      summary["pegs_lost"].get<std::size_t>(), summary["regrasps"].get<std::size_t>(),
+      summary["rings_placed"].get<std::size_t>(), summary["rings"].get<std::size_t>(),
+      summary["rings_lost"].get<std::size_t>(), summary["regrasps"].get<std::size_t>(),
       summary_file.string(), runs_file.string());
   return 0;
 }

@@ -1,5 +1,5 @@
 // raven_peg_transfer: the project's main job. Runs the peg transfer (or the paper's rectangle
-// task D_II) on the in-process twin, headless, no ROS master: one run with a per-peg report, or
+// task D_II) on the in-process twin, headless, no ROS master: one run with a per-ring report, or
 // a seeded randomised batch, split across machines with --shard, as JSON lines. With --over-ros
 // the same job drives the twin node through the robot's ROS topics in lock-step.
 
@@ -101,19 +101,8 @@ scenario::WatchOptions watchOptions(const Settings& s, bool batch) {
   return w;
 }
 
-int runPegTransfers(const Settings& s) {
-  const scenario::Shard shard = scenario::Shard::parse(s.shard);
-  const auto seeds = scenario::seedsOf(s.seed, s.runs, shard);
-  if (s.runs > 1 && !s.randomize) {
-    spdlog::warn("--runs {} without --randomize: every run uses the same nominal scene", s.runs);
-  }
-  const fs::path out(s.out_dir);
-  fs::create_directories(out);
-  const bool record = s.record == "yes" || (s.record == "auto" && seeds.size() == 1);
-  const fs::path jsonl_path = s.jsonl.empty() ? shard.runsFile(out) : fs::path(s.jsonl);
-  std::ofstream jsonl(jsonl_path);
-  if (!jsonl) throw std::runtime_error("cannot write " + jsonl_path.string());
-
+/// The runs' options from the command line (the seed, progress and watchers are per run).
+scenario::PegTransferOptions pegTransferOptions(const Settings& s) {
   scenario::PegTransferOptions options;
   options.randomize = s.randomize;
   options.assist =
@@ -123,30 +112,34 @@ int runPegTransfers(const Settings& s) {
   options.time_limit = s.time_limit;
   options.squeeze = s.squeeze_mm * 1e-3;
   options.stop = &stop_requested;
-  std::signal(SIGINT, requestStop);
-  std::signal(SIGTERM, requestStop);
-  const bool single = seeds.size() == 1;
-  const fs::path summary_path = shard.summaryFile(out);
-  // The totals of the runs finished so far: rewritten as each run ends, so a killed batch keeps
-  // them.
-  auto summaryOf = [&](const std::vector<scenario::PegTransferResult>& finished) {
-    std::vector<nlohmann::json> rows;  // each run's JSON once: the totals and the results
-    rows.reserve(finished.size());
-    for (const auto& r : finished) rows.push_back(r.json());
-    nlohmann::json summary = scenario::summarize(rows);
-    summary["task"] = "peg_transfer";
-    summary["shard"] = s.shard;
-    summary["first_seed"] = s.seed;
-    summary["randomized"] = s.randomize;
-    summary["grasp_assist"] = s.assist;
-    summary["runs_asked"] = seeds.size();
-    summary["stopped"] = stop_requested.load();
-    summary["results"] = std::move(rows);
-    return summary;
-  };
-  const std::string which =
-      single ? fmt::format("seed {}", seeds.front())
-             : fmt::format("{} runs, seeds {}..{}", seeds.size(), s.seed, s.seed + s.runs - 1);
+  return options;
+}
+
+/// The totals of the runs finished so far, of `asked` (rewritten as each run ends, so a killed
+/// batch keeps them).
+nlohmann::json summaryOf(const Settings& s, std::size_t asked,
+                         const std::vector<scenario::PegTransferResult>& finished) {
+  std::vector<nlohmann::json> rows;  // each run's JSON once: the totals and the results
+  rows.reserve(finished.size());
+  for (const auto& r : finished) rows.push_back(r.json());
+  nlohmann::json summary = scenario::summarize(rows);
+  summary["task"] = "peg_transfer";
+  summary["shard"] = s.shard;
+  summary["first_seed"] = s.seed;
+  summary["randomized"] = s.randomize;
+  summary["grasp_assist"] = s.assist;
+  summary["runs_asked"] = asked;
+  summary["stopped"] = stop_requested.load();
+  summary["results"] = std::move(rows);
+  return summary;
+}
+
+/// The line saying what runs: which seeds, which shard, which scene and actuation.
+void printHeader(const Settings& s, const std::vector<std::uint64_t>& seeds,
+                 const scenario::Shard& shard) {
+  const std::string which = seeds.size() == 1 ? fmt::format("seed {}", seeds.front())
+                                              : fmt::format("{} runs, seeds {}..{}", seeds.size(),
+                                                            s.seed, s.seed + s.runs - 1);
   fmt::print(
       "Peg transfer on the Raven-II twin{}: {}{}, {} scene, grasp assist {}{}\n",
       s.over_ros ? " over ROS" : "", which,
@@ -156,10 +149,70 @@ int runPegTransfers(const Settings& s) {
       s.randomize ? "randomised" : "nominal", s.assist,
       s.actuation == common::ActuationKind::Motors ? ", motor-level actuation" : ", ideal servos");
   std::fflush(stdout);
+}
+
+/// Where a run's results go: the JSON lines, the summary, and whether rs files are written.
+struct RunFiles {
+  fs::path jsonl, summary;
+  bool record = false;
+};
+
+/// Prints the table (one run's rings, or a batch's runs) and the handover line, and writes the
+/// summary; the command's exit code.
+int reportRuns(const Settings& s, const std::vector<scenario::PegTransferResult>& results,
+               std::size_t asked, const RunFiles& files) {
+  const bool single = asked == 1;
+  const auto handover =
+      scenario::measureHandoverReach(raven::builtinProfile("physical"), kHandoverSamples);
+  if (single) {
+    fmt::print("{}{}", scenario::ringTable(results.front()),
+               scenario::timingLine(results.front().timing));
+  } else {
+    fmt::print("{}", scenario::batchTable(results));
+  }
+  fmt::print("mid-air handover: {}\n", handover.explain(kJawLength));
+
+  nlohmann::json summary = summaryOf(s, asked, results);
+  summary["handover"] = {
+      {"possible", handover.possible(kJawLength)},   {"left_min_x_m", handover.left_min_x},
+      {"right_max_x_m", handover.right_max_x},       {"gap_m", handover.gap()},
+      {"samples_per_arm", handover.samples_per_arm}, {"explanation", handover.explain(kJawLength)}};
+  writeJson(files.summary, summary);
+  const auto& first = results.front();
+  fmt::print("wrote {}{}, {}\n",
+             single && files.record
+                 ? fmt::format("{} ({} rows), {}, ", first.rs_file.string(), first.rs_rows,
+                               recording::cfPathFor(first.rs_file).string())
+                 : "",
+             files.summary.string(), files.jsonl.string());
+  if (stop_requested) return 130;
+  // A run the world's guard stopped fails the command (the others are written all the same).
+  return std::any_of(results.begin(), results.end(), [](const auto& r) { return r.failed(); }) ? 3
+                                                                                               : 0;
+}
+
+int runPegTransfers(const Settings& s) {
+  const scenario::Shard shard = scenario::Shard::parse(s.shard);
+  const auto seeds = scenario::seedsOf(s.seed, s.runs, shard);
+  if (s.runs > 1 && !s.randomize) {
+    spdlog::warn("--runs {} without --randomize: every run uses the same nominal scene", s.runs);
+  }
+  const fs::path out(s.out_dir);
+  fs::create_directories(out);
+  const RunFiles files{s.jsonl.empty() ? shard.runsFile(out) : fs::path(s.jsonl),
+                       shard.summaryFile(out),
+                       s.record == "yes" || (s.record == "auto" && seeds.size() == 1)};
+  std::ofstream jsonl(files.jsonl);
+  if (!jsonl) throw std::runtime_error("cannot write " + files.jsonl.string());
+  scenario::PegTransferOptions options = pegTransferOptions(s);
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
+  const bool single = seeds.size() == 1;
+  printHeader(s, seeds, shard);
 
   scenario::ProgressBar bar(stderr, single ? "transfers" : "runs");
   std::vector<scenario::PegTransferResult> results;
-  if (record) options.rs_folder = out;  // peg_transfer_seed<N>_rs.csv for every run
+  if (files.record) options.rs_folder = out;  // peg_transfer_seed<N>_rs.csv for every run
   scenario::RunWatcher watcher(watchOptions(s, !single));
   if (s.gui || !s.snapshot.empty() || !s.video.file.empty()) options.observe = std::ref(watcher);
   if (single) {
@@ -176,7 +229,7 @@ int runPegTransfers(const Settings& s) {
         [&](const scenario::PegTransferResult& r) {
           jsonl << r.json().dump() << '\n' << std::flush;
           finished.push_back(r);
-          writeJson(summary_path, summaryOf(finished));
+          writeJson(files.summary, summaryOf(s, seeds.size(), finished));
           bar.show({r.timing.sim_time, finished.size(), seeds.size()});
         });
   }
@@ -190,34 +243,7 @@ int runPegTransfers(const Settings& s) {
         finished, seeds.size(), results.size() - static_cast<std::size_t>(finished));
   }
   if (results.empty()) return 130;
-
-  const auto handover =
-      scenario::measureHandoverReach(raven::builtinProfile("physical"), kHandoverSamples);
-  if (single) {
-    fmt::print("{}{}", scenario::pegTable(results.front()),
-               scenario::timingLine(results.front().timing));
-  } else {
-    fmt::print("{}", scenario::batchTable(results));
-  }
-  fmt::print("mid-air handover: {}\n", handover.explain(kJawLength));
-
-  nlohmann::json summary = summaryOf(results);
-  summary["handover"] = {
-      {"possible", handover.possible(kJawLength)},   {"left_min_x_m", handover.left_min_x},
-      {"right_max_x_m", handover.right_max_x},       {"gap_m", handover.gap()},
-      {"samples_per_arm", handover.samples_per_arm}, {"explanation", handover.explain(kJawLength)}};
-  writeJson(summary_path, summary);
-  const auto& first = results.front();
-  fmt::print("wrote {}{}, {}\n",
-             single && record
-                 ? fmt::format("{} ({} rows), {}, ", first.rs_file.string(), first.rs_rows,
-                               recording::cfPathFor(first.rs_file).string())
-                 : "",
-             summary_path.string(), jsonl_path.string());
-  if (stop_requested) return 130;
-  // A run the world's guard stopped fails the command (the others are written all the same).
-  return std::any_of(results.begin(), results.end(), [](const auto& r) { return r.failed(); }) ? 3
-                                                                                               : 0;
+  return reportRuns(s, results, seeds.size(), files);
 }
 
 int runRectangleTask(const Settings& s) {
@@ -250,24 +276,18 @@ int runRectangleTask(const Settings& s) {
   return 0;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  Settings s;
-  CLI::App app{
-      "raven_peg_transfer: the peg transfer (or the rectangle task D_II) on the Raven-II "
-      "twin, headless; prints per-peg results and rates, writes the rs recording, a JSON "
-      "summary and JSON lines"};
+void addOptions(CLI::App& app, Settings& s) {
   app.add_option("--task", s.task, "peg (the peg transfer, default) or rectangle (D_II)")
       ->check(CLI::IsMember({"peg", "rectangle"}));
   app.add_option("--seed", s.seed, "first seed (run k uses seed + k)");
   app.add_option("--runs", s.runs, "how many runs in the whole batch")->check(CLI::PositiveNumber);
   app.add_option("--shard", s.shard,
                  "i/N: run only this shard's share of the batch (runs k with k mod N = i - 1)");
-  app.add_flag("--randomize", s.randomize,
-               "draw peg start poses, peg friction and softness and board friction from the seed");
+  app.add_flag(
+      "--randomize", s.randomize,
+      "draw ring start poses, ring friction and softness and board friction from the seed");
   app.add_option("--grasp-assist", s.assist,
-                 "off (default: friction only) or contact (pin a peg touched by both jaws)")
+                 "off (default: friction only) or contact (pin a ring touched by both jaws)")
       ->check(CLI::IsMember({"off", "contact"}))
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);  // quickstart.sh's can be overridden
   app.add_option(
@@ -309,8 +329,9 @@ int main(int argc, char** argv) {
   app.add_flag("--over-ros", s.over_ros,
                "drive the twin node through the robot's ROS topics in lock-step (started here "
                "unless --robot-namespace; a private rosmaster without ROS_MASTER_URI)");
-  app.add_option("--robot-namespace", s.ros.robot_namespace,
-                 "--over-ros: a twin node already serving the peg scene in lock-step there")
+  app.add_option(
+         "--robot-namespace", s.ros.robot_namespace,
+         "--over-ros: a twin node already serving the peg-transfer scene in lock-step there")
       ->needs("--over-ros");
   app.add_option("--twin-node", s.ros.twin_node,
                  "--over-ros: the raven_twin_node program to start (default: the built one)")
@@ -318,6 +339,17 @@ int main(int argc, char** argv) {
       ->needs("--over-ros");
   app.add_flag("-q,--quiet", s.quiet, "warnings and errors only");
   app.add_flag("-v,--verbose", s.verbose, "log every phase of every transfer");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Settings s;
+  CLI::App app{
+      "raven_peg_transfer: the peg transfer (or the rectangle task D_II) on the Raven-II "
+      "twin, headless; prints per-ring results and rates, writes the rs recording, a JSON "
+      "summary and JSON lines"};
+  addOptions(app, s);
   CLI11_PARSE(app, argc, argv);
   setUpLogging(s);
   try {

@@ -42,7 +42,7 @@ constexpr double kJawReached = 0.01;       ///< each measured jaw this near its 
 constexpr int kJawIterations = 30;         ///< ... or this many iterations of waiting for them
 constexpr double kCentred = 0.0005;        ///< the ring's centre this near the post's axis (m)
 constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
-constexpr int kMaxRegrasps = 2;            ///< per peg, as an operator would before moving on
+constexpr int kMaxRegrasps = 2;            ///< per ring, as an operator would before moving on
 constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much more (of the first)
 
 }  // namespace
@@ -72,10 +72,10 @@ RingView ArmRoutine::ring(const bridge::ScenePerception& scene) const {
 }
 
 void ArmRoutine::plan(const bridge::ScenePerception& scene) {
-  const RingView peg = ring(scene);
-  const Eigen::Vector2d centre = peg.centre().head<2>();
+  const RingView seen = ring(scene);
+  const Eigen::Vector2d centre = seen.centre().head<2>();
   // The station: the tube's centre line on the ring's -y side, away from the target row.
-  const Eigen::Vector3d station = peg.stationToward(-Eigen::Vector2d::UnitY());
+  const Eigen::Vector3d station = seen.stationToward(-Eigen::Vector2d::UnitY());
   const Eigen::Vector2d inward = (centre - station.head<2>()).normalized();
   // Jaws down; jaw 1 (the inner one) swings towards grasp_scale's side of the tool's y axis.
   const double side = profile_.arm(arm_).grasp_scale > 0 ? 1.0 : -1.0;
@@ -84,7 +84,7 @@ void ArmRoutine::plan(const bridge::ScenePerception& scene) {
   grasp_.orientation.col(1) = y;
   grasp_.orientation.col(2) = x.cross(y);
   const Eigen::Vector2d face = station.head<2>() + inward * (layout_.ring.tube_half_width + kGap);
-  grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), peg.top() + kAboveTop);
+  grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), seen.top() + kAboveTop);
   grasp_.offset = face - centre;
 }
 
@@ -103,7 +103,7 @@ raven::ArmJoints ArmRoutine::withJaws(raven::ArmJoints q) const {
   return q;
 }
 
-std::optional<raven::ArmJoints> ArmRoutine::overPeg(const raven::ArmJoints& target) const {
+std::optional<raven::ArmJoints> ArmRoutine::overRing(const raven::ArmJoints& target) const {
   Eigen::Isometry3d above = Eigen::Isometry3d::Identity();
   above.linear() = grasp_.orientation;
   above.translation() = grasp_.pivot + Eigen::Vector3d(0, 0, kApproach);
@@ -189,146 +189,176 @@ bool ArmRoutine::ringFollows(const bridge::ScenePerception& scene) const {
 
 raven::ArmJoints ArmRoutine::next(const raven::ArmJoints& target, const raven::ArmJoints& measured,
                                   const bridge::ScenePerception& scene) {
-  bool arrived = false;
-  raven::ArmJoints q = target;
   const Phase before = phase_;
   const std::size_t job = job_;
   if (blocked(target, measured)) return easeOff(measured);
+  const raven::ArmJoints q = stepPhase(target, measured, scene);
+  if (phase_ != before) logTransition(before, job, q, scene);
+  return q;
+}
+
+raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
+                                       const raven::ArmJoints& measured,
+                                       const bridge::ScenePerception& scene) {
+  bool arrived = false;
+  raven::ArmJoints q = target;
   switch (phase_) {
-    case Phase::Orient: {  // one capped move: over the peg, jaws down and open
-      plan(scene);
-      inner_ = 0.0;
-      outer_ = kOpen;
-      if (const auto above = overPeg(target)) {
-        q = *above;
-        advance(Phase::Descend);
-      } else {  // out of reach: leave this peg (its outcome shows it)
-        spdlog::warn("{} arm: no joint solution within the limits over {}; skipping it",
-                     raven::armName(arm_), jobs_[job_].ring);
-        retrying_ = false;
-        advance(Phase::Retreat);
-      }
-      break;
-    }
+    case Phase::Orient:
+      return orient(target, scene);
     case Phase::Descend:
       q = translate(target, grasp_.pivot, kStep, arrived);
       if (arrived) advance(Phase::Align);
-      break;
-    case Phase::Align: {  // the command to the grasp; once the tool stops, on by half its lack
-      const Eigen::Vector3d tool = kinematics_.toolPose(measured).translation();
-      const Eigen::Vector3d lack = grasp_.pivot - tool;
-      const bool first = waited_++ == 0;
-      const bool still = !first && (tool - last_tool_).norm() <= kStill;
-      last_tool_ = tool;
-      if (waited_ > kAlignIterations || (still && lack.norm() <= kAligned)) {
-        advance(Phase::Close);
-        break;
-      }
-      if (first) {
-        q = translate(target, grasp_.pivot, kStep, arrived);
-      } else if (still) {
-        q = translate(target, kinematics_.toolPose(target).translation() + 0.5 * lack, kStep,
-                      arrived);
-        if ((kinematics_.toolPose(q).translation() - grasp_.pivot).norm() > kAlignReach) {
-          spdlog::debug(
-              "{} arm, {}: something holds the tool {:.1f} mm from the grasp; closing there",
-              raven::armName(arm_), jobs_[job_].ring, lack.norm() * 1e3);
-          q = target;
-          advance(Phase::Close);
-        }
-      }
-      break;
-    }
+      return q;
+    case Phase::Align:
+      return align(target, measured);
     case Phase::Close: {  // the jaws to the grasp's angle, then until the measured jaws are there
       const bool commanded = outer_ <= closed_;
       outer_ = std::max(closed_, outer_ - kJawStep);
-      q = withJaws(target);
       // The jaw motors' integrators bring the jaws onto their command once the ring stops them.
       if (commanded && (jawsOnCommand(measured) || ++waited_ > kJawIterations))
         advance(Phase::Lift);
-      break;
+      return withJaws(target);
     }
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
-      if (!arrived) break;
+      if (!arrived) return q;
       if (!ringFollows(scene) && decideToRegrasp("did not come up with the jaws")) {
         advance(Phase::Open);
       } else {
         advance(Phase::Carry);
       }
-      break;
-    case Phase::Carry: {  // over the target post, watching the ring (it sways on its grasp)
-      const RingView peg = ring(scene);
-      const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
-      // A ring that came along is centred by sight; without one the jaws go where it would be.
-      const bool carried = layout_.geometry.offTheBoard(peg.bottom());
-      if (!carried && decideToRegrasp("slipped out of the jaws on the way")) {
-        advance(Phase::Open);
-        break;
-      }
-      const Eigen::Vector2d offset =
-          carried ? Eigen::Vector2d(tool.head<2>() - peg.centre().head<2>()) : grasp_.offset;
-      const Eigen::Vector2d over = jobs_[job_].to + offset;
-      q = translate(target, Eigen::Vector3d(over.x(), over.y(), grasp_.pivot.z() + kLift), kStep,
-                    arrived);
-      const bool centred = !carried || (peg.centre().head<2>() - jobs_[job_].to).norm() < kCentred;
-      if (arrived && (centred || ++waited_ > kCentringIterations)) advance(Phase::Lower);
-      break;
-    }
-    case Phase::Lower: {  // down until the ring is just above the board, still centring it
-      const RingView peg = ring(scene);
-      const double drop = peg.bottom() - (layout_.geometry.board_top + kReleaseHeight);
-      if (!layout_.geometry.offTheBoard(peg.bottom())) {  // it did not come along
-        advance(Phase::Open);
-        break;
-      }
-      const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
-      const Eigen::Vector2d shift = jobs_[job_].to - peg.centre().head<2>();
-      q = translate(target, tool + Eigen::Vector3d(shift.x(), shift.y(), -std::max(drop, 0.0)),
-                    kStep, arrived);
-      if (arrived) advance(Phase::Open);
-      break;
-    }
+      return q;
+    case Phase::Carry:
+      return carry(target, scene);
+    case Phase::Lower:
+      return lower(target, scene);
     case Phase::Open:
       outer_ = std::min(kOpen, outer_ + kJawStep);
-      q = withJaws(target);
       if (outer_ >= kOpen) advance(Phase::Settle);
-      break;
+      return withJaws(target);
     case Phase::Settle:
-      if (++waited_ < kSettleIterations) break;
+      if (++waited_ < kSettleIterations) return q;
       // A ring let go off its target post is grasped again once the jaws are up and clear.
       if (!retrying_ && !restsOn(ring(scene), jobs_[job_].to, layout_.geometry)) {
         decideToRegrasp("landed off its target post");
       }
       advance(Phase::Retreat);
-      break;
-    case Phase::Retreat: {
-      const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
-      const double height = grasp_.pivot.z() + kRetreat;
-      q = translate(target, Eigen::Vector3d(tool.x(), tool.y(), height), kStep, arrived);
-      if (arrived) {
-        if (!retrying_) {
-          ++job_;
-          closed_ = jawAngleFor(squeeze_);
-        }
-        retrying_ = false;
-        advance(job_ < jobs_.size() ? Phase::Orient : Phase::Done);
-      }
-      break;
-    }
+      return q;
+    case Phase::Retreat:
+      return retreat(target);
     case Phase::Done:
-      break;
-  }
-  if (phase_ != before) {
-    const RingView peg(scene.sight(jobs_[job].ring), layout_.ring);
-    const Eigen::Vector3d tool = kinematics_.toolPose(q).translation();
-    spdlog::debug(
-        "{} arm, {}: {} -> {}; tool ({:.4f} {:.4f} {:.4f}), peg centre ({:.4f} {:.4f} "
-        "{:.4f}) bottom {:.4f}",
-        raven::armName(arm_), jobs_[job].ring, phaseName(before), phaseName(phase_), tool.x(),
-        tool.y(), tool.z(), peg.centre().x(), peg.centre().y(), peg.centre().z(), peg.bottom());
+      return q;
   }
   return q;
+}
+
+raven::ArmJoints ArmRoutine::orient(const raven::ArmJoints& target,
+                                    const bridge::ScenePerception& scene) {
+  // One capped move: over the ring, jaws down and open.
+  plan(scene);
+  inner_ = 0.0;
+  outer_ = kOpen;
+  if (const auto above = overRing(target)) {
+    advance(Phase::Descend);
+    return *above;
+  }
+  // Out of reach: leave this ring (its outcome shows it).
+  spdlog::warn("{} arm: no joint solution within the limits over {}; skipping it",
+               raven::armName(arm_), jobs_[job_].ring);
+  retrying_ = false;
+  advance(Phase::Retreat);
+  return target;
+}
+
+raven::ArmJoints ArmRoutine::align(const raven::ArmJoints& target,
+                                   const raven::ArmJoints& measured) {
+  // The command to the grasp; once the tool stops, on by half its lack.
+  const Eigen::Vector3d tool = kinematics_.toolPose(measured).translation();
+  const Eigen::Vector3d lack = grasp_.pivot - tool;
+  const bool first = waited_++ == 0;
+  const bool still = !first && (tool - last_tool_).norm() <= kStill;
+  last_tool_ = tool;
+  if (waited_ > kAlignIterations || (still && lack.norm() <= kAligned)) {
+    advance(Phase::Close);
+    return target;
+  }
+  bool arrived = false;
+  if (first) return translate(target, grasp_.pivot, kStep, arrived);
+  if (!still) return target;
+  const raven::ArmJoints q =
+      translate(target, kinematics_.toolPose(target).translation() + 0.5 * lack, kStep, arrived);
+  if ((kinematics_.toolPose(q).translation() - grasp_.pivot).norm() <= kAlignReach) return q;
+  spdlog::debug("{} arm, {}: something holds the tool {:.1f} mm from the grasp; closing there",
+                raven::armName(arm_), jobs_[job_].ring, lack.norm() * 1e3);
+  advance(Phase::Close);
+  return target;
+}
+
+raven::ArmJoints ArmRoutine::carry(const raven::ArmJoints& target,
+                                   const bridge::ScenePerception& scene) {
+  // Over the target post, watching the ring (it sways on its grasp).
+  const RingView seen = ring(scene);
+  const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+  // A ring that came along is centred by sight; without one the jaws go where it would be.
+  const bool carried = layout_.geometry.offTheBoard(seen.bottom());
+  if (!carried && decideToRegrasp("slipped out of the jaws on the way")) {
+    advance(Phase::Open);
+    return target;
+  }
+  const Eigen::Vector2d offset =
+      carried ? Eigen::Vector2d(tool.head<2>() - seen.centre().head<2>()) : grasp_.offset;
+  const Eigen::Vector2d over = jobs_[job_].to + offset;
+  bool arrived = false;
+  const raven::ArmJoints q = translate(
+      target, Eigen::Vector3d(over.x(), over.y(), grasp_.pivot.z() + kLift), kStep, arrived);
+  const bool centred = !carried || (seen.centre().head<2>() - jobs_[job_].to).norm() < kCentred;
+  if (arrived && (centred || ++waited_ > kCentringIterations)) advance(Phase::Lower);
+  return q;
+}
+
+raven::ArmJoints ArmRoutine::lower(const raven::ArmJoints& target,
+                                   const bridge::ScenePerception& scene) {
+  // Down until the ring is just above the board, still centring it.
+  const RingView seen = ring(scene);
+  const double drop = seen.bottom() - (layout_.geometry.board_top + kReleaseHeight);
+  if (!layout_.geometry.offTheBoard(seen.bottom())) {  // it did not come along
+    advance(Phase::Open);
+    return target;
+  }
+  const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+  const Eigen::Vector2d shift = jobs_[job_].to - seen.centre().head<2>();
+  bool arrived = false;
+  const raven::ArmJoints q = translate(
+      target, tool + Eigen::Vector3d(shift.x(), shift.y(), -std::max(drop, 0.0)), kStep, arrived);
+  if (arrived) advance(Phase::Open);
+  return q;
+}
+
+raven::ArmJoints ArmRoutine::retreat(const raven::ArmJoints& target) {
+  const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+  const double height = grasp_.pivot.z() + kRetreat;
+  bool arrived = false;
+  const raven::ArmJoints q =
+      translate(target, Eigen::Vector3d(tool.x(), tool.y(), height), kStep, arrived);
+  if (!arrived) return q;
+  if (!retrying_) {
+    ++job_;
+    closed_ = jawAngleFor(squeeze_);
+  }
+  retrying_ = false;
+  advance(job_ < jobs_.size() ? Phase::Orient : Phase::Done);
+  return q;
+}
+
+void ArmRoutine::logTransition(Phase before, std::size_t job, const raven::ArmJoints& q,
+                               const bridge::ScenePerception& scene) const {
+  const RingView seen(scene.sight(jobs_[job].ring), layout_.ring);
+  const Eigen::Vector3d tool = kinematics_.toolPose(q).translation();
+  spdlog::debug(
+      "{} arm, {}: {} -> {}; tool ({:.4f} {:.4f} {:.4f}), ring centre ({:.4f} {:.4f} "
+      "{:.4f}) bottom {:.4f}",
+      raven::armName(arm_), jobs_[job].ring, phaseName(before), phaseName(phase_), tool.x(),
+      tool.y(), tool.z(), seen.centre().x(), seen.centre().y(), seen.centre().z(), seen.bottom());
 }
 
 }  // namespace scenario

@@ -18,10 +18,10 @@ nlohmann::json summarize(const std::vector<nlohmann::json>& rows) {
     total.loop_seconds += timing.loop_seconds;
     total.steps += timing.steps;
   }
-  nlohmann::json j{{"runs", rows.size()},   {"runs_all_placed", complete},
-                   {"pegs_placed", placed}, {"pegs", rows.size() * 6},
-                   {"pegs_lost", lost},     {"runs_timed_out", timed_out},
-                   {"runs_failed", failed}, {"regrasps", regrasps}};
+  nlohmann::json j{{"runs", rows.size()},    {"runs_all_placed", complete},
+                   {"rings_placed", placed}, {"rings", rows.size() * 6},
+                   {"rings_lost", lost},     {"runs_timed_out", timed_out},
+                   {"runs_failed", failed},  {"regrasps", regrasps}};
   total.addTo(j);  // sums, with the rates of the whole set
   return j;
 }

@@ -4,14 +4,14 @@
 
 namespace scenario {
 
-void CarriedSqueeze::record(const std::string& peg, const bridge::GrasperForces& forces) {
-  auto& jaws = samples_[peg];
+void CarriedSqueeze::record(const std::string& ring, const bridge::GrasperForces& forces) {
+  auto& jaws = samples_[ring];
   for (std::size_t jaw = 0; jaw < 2; ++jaw) jaws[jaw].push_back(forces.jaws[jaw].normal.norm());
 }
 
-std::array<double, 2> CarriedSqueeze::median(const std::string& peg) const {
+std::array<double, 2> CarriedSqueeze::median(const std::string& ring) const {
   std::array<double, 2> out{0.0, 0.0};
-  const auto it = samples_.find(peg);
+  const auto it = samples_.find(ring);
   if (it == samples_.end()) return out;
   for (std::size_t jaw = 0; jaw < 2; ++jaw) {
     std::vector<double> values = it->second[jaw];

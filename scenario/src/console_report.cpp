@@ -52,13 +52,13 @@ void ProgressBar::finish() {
   drawn_ = false;
 }
 
-std::string pegTable(const PegTransferResult& result) {
+std::string ringTable(const PegTransferResult& result) {
   if (result.failed()) return fmt::format("the run failed: {}\n", result.failure);
   std::string out =
       fmt::format("{:<5} {:<5} {:<12} {:<12} {:<7} {:>9} {:>8} {:>11} {:<6} {:>9} {:>13}  {}\n",
-                  "peg", "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)", "regrasps",
+                  "ring", "arm", "from (mm)", "to (mm)", "lifted", "lift (mm)", "regrasps",
                   "squeeze (N)", "placed", "miss (mm)", "volume ratio", "lost");
-  for (const RingOutcome& p : result.pegs) {
+  for (const RingOutcome& p : result.rings) {
     out += fmt::format(
         "{:<5} {:<5} {:<12} {:<12} {:<7} {:>9.1f} {:>8} {:>11} {:<6} {:>9.1f} {:>13}  {}\n", p.ring,
         raven::armName(p.arm), millimetres(p.from), millimetres(p.to), yesNo(p.grasped),
@@ -69,8 +69,8 @@ std::string pegTable(const PegTransferResult& result) {
                       : "not seen",
         p.lost ? p.loss : "no");
   }
-  out += fmt::format("placed {}/{}, lost {}, re-grasps {}{}\n", result.placed(), result.pegs.size(),
-                     result.lost(), result.regrasps(),
+  out += fmt::format("placed {}/{}, lost {}, re-grasps {}{}\n", result.placed(),
+                     result.rings.size(), result.lost(), result.regrasps(),
                      result.timed_out ? " (stopped at the time limit)" : "");
   return out;
 }
@@ -97,11 +97,11 @@ std::string batchTable(const std::vector<PegTransferResult>& results) {
   }
   const nlohmann::json total = summarize(results);
   out += fmt::format(
-      "{} of {} runs placed all six pegs ({} failed); {} of {} pegs placed, {} lost, {} "
+      "{} of {} runs placed all six rings ({} failed); {} of {} rings placed, {} lost, {} "
       "re-grasps; {:.2f}x real time and a {:.0f} Hz dynamic loop over all runs\n",
       total["runs_all_placed"].get<std::size_t>(), results.size(),
-      total["runs_failed"].get<std::size_t>(), total["pegs_placed"].get<std::size_t>(),
-      total["pegs"].get<std::size_t>(), total["pegs_lost"].get<std::size_t>(),
+      total["runs_failed"].get<std::size_t>(), total["rings_placed"].get<std::size_t>(),
+      total["rings"].get<std::size_t>(), total["rings_lost"].get<std::size_t>(),
       total["regrasps"].get<std::size_t>(), total["real_time_factor"].get<double>(),
       total["loop_frequency_hz"].get<double>());
   return out;

@@ -48,7 +48,7 @@ ActionBounds actionBounds(EnvAction kind, const raven::JointLimits& limits) {
 
 controller::ArmPair targetsOf(EnvAction kind, const Eigen::VectorXd& action,
                               const controller::ArmPair& current,
-                              const std::array<raven::ArmKinematics, 2>& kinematics,
+                              const raven::PerArm<raven::ArmKinematics>& kinematics,
                               const raven::ArmJoints& home) {
   if (action.size() != actionSize(kind)) {
     throw std::invalid_argument("an action has " + std::to_string(actionSize(kind)) +
@@ -97,7 +97,7 @@ controller::ArmPair targetsOf(EnvAction kind, const Eigen::VectorXd& action,
 
 Eigen::VectorXd actionFor(EnvAction kind, const controller::ArmPair& targets,
                           const controller::ArmPair& current,
-                          const std::array<raven::ArmKinematics, 2>& kinematics) {
+                          const raven::PerArm<raven::ArmKinematics>& kinematics) {
   Eigen::VectorXd out(actionSize(kind));
   for (std::size_t arm = 0; arm < 2; ++arm) {
     const auto i = static_cast<Eigen::Index>(arm);

@@ -19,8 +19,8 @@ std::filesystem::path GraspAssist::modelFile() {
   return raven::modelDirectory() / "peg_transfer" / "grasp_assist.yaml";
 }
 
-GraspAssist::GraspAssist(ambf_like::World& world, const std::vector<std::string>& pegs) {
-  for (const auto& name : pegs) pegs_.push_back(&world.softBody(name));
+GraspAssist::GraspAssist(ambf_like::World& world, const std::vector<std::string>& rings) {
+  for (const auto& name : rings) rings_.push_back(&world.softBody(name));
   for (raven::Arm arm : raven::kArms) {
     for (std::size_t jaw = 0; jaw < 2; ++jaw) {
       const std::string base = std::string(raven::armName(arm)) + "_jaw" + std::to_string(jaw + 1);
@@ -32,10 +32,10 @@ GraspAssist::GraspAssist(ambf_like::World& world, const std::vector<std::string>
 }
 
 std::vector<int> GraspAssist::sensedNodes(raven::Arm arm, std::size_t jaw,
-                                          const ambf_like::SoftBody& peg) const {
+                                          const ambf_like::SoftBody& ring) const {
   std::vector<int> nodes;
   for (const auto& ray : sensors_[slot(arm)][jaw]->readings()) {
-    if (!ray.triggered || ray.soft_face < 0 || ray.body != peg.qualifiedName()) continue;
+    if (!ray.triggered || ray.soft_face < 0 || ray.body != ring.qualifiedName()) continue;
     for (int node : ray.face_nodes) {
       if (std::find(nodes.begin(), nodes.end(), node) == nodes.end()) nodes.push_back(node);
     }
@@ -56,14 +56,14 @@ void GraspAssist::update(raven::Arm arm, double commanded_opening) {
     return;
   }
   if (!closing) return;
-  for (ambf_like::SoftBody* peg : pegs_) {
-    const std::array<std::vector<int>, 2> seen{sensedNodes(arm, 0, *peg),
-                                               sensedNodes(arm, 1, *peg)};
+  for (ambf_like::SoftBody* ring : rings_) {
+    const std::array<std::vector<int>, 2> seen{sensedNodes(arm, 0, *ring),
+                                               sensedNodes(arm, 1, *ring)};
     if (seen[0].empty() || seen[1].empty()) continue;
-    for (std::size_t jaw = 0; jaw < 2; ++jaw) actuators_[a][jaw]->actuate(*peg, seen[jaw]);
+    for (std::size_t jaw = 0; jaw < 2; ++jaw) actuators_[a][jaw]->actuate(*ring, seen[jaw]);
     spdlog::debug("grasp assist: {} grasper holds {} by {} + {} nodes", raven::armName(arm),
-                  peg->name(), seen[0].size(), seen[1].size());
-    hold = Hold{peg, commanded_opening};
+                  ring->name(), seen[0].size(), seen[1].size());
+    hold = Hold{ring, commanded_opening};
     ++grasps_;
     return;
   }

@@ -42,7 +42,7 @@ twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
   return twin;
 }
 
-std::array<ArmRoutine, 2> pegTransferOperators(const PegLayout& layout, double squeeze) {
+raven::PerArm<ArmRoutine> pegTransferOperators(const PegLayout& layout, double squeeze) {
   const auto profile = raven::builtinProfile("physical");
   return {
       ArmRoutine(raven::Arm::Left, profile, layout, layout.jobsOf(raven::Arm::Left), squeeze),
@@ -54,7 +54,7 @@ namespace {
 /// What an in-process run adds to the job, both on the world: the grasp assist (after every
 /// move) and the viewer.
 struct InProcessHooks {
-  std::function<void(const std::array<ArmRoutine, 2>&)> after_move = [](const auto&) {};
+  std::function<void(const raven::PerArm<ArmRoutine>&)> after_move = [](const auto&) {};
   std::function<void(WorldMoment)> show = [](WorldMoment) {};
 };
 
@@ -71,7 +71,7 @@ std::filesystem::path rsFileOf(const PegTransferOptions& options) {
 }
 
 /// The job on a ready platform: the scripted operators move, the watch judges, both through
-/// `scene`; fills the result's pegs, counts and recording.
+/// `scene`; fills the result's rings, counts and recording.
 void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController& controller,
             bridge::ScenePerception& scene, const PegTransferOptions& options,
             const InProcessHooks& hooks, PegTransferResult& result) {
@@ -79,7 +79,7 @@ void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController&
   const PegLayout layout = PegLayout::seen(scene);
   RingWatch watch(layout);
   CarriedSqueeze squeeze;
-  std::array<ArmRoutine, 2> routines = pegTransferOperators(layout, options.squeeze);
+  raven::PerArm<ArmRoutine> routines = pegTransferOperators(layout, options.squeeze);
   std::unique_ptr<recording::RsWriter> rs;
   std::unique_ptr<recording::CfWriter> cf;
   if (const auto rs_file = rsFileOf(options); !rs_file.empty()) {
@@ -150,11 +150,11 @@ void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController&
     result.rs_rows = rs->rows();
   }
   if (!result.failure.empty()) return;
-  result.pegs = watch.finish(scene);
-  for (RingOutcome& outcome : result.pegs) outcome.carried_squeeze = squeeze.median(outcome.ring);
+  result.rings = watch.finish(scene);
+  for (RingOutcome& outcome : result.rings) outcome.carried_squeeze = squeeze.median(outcome.ring);
   for (const ArmRoutine& routine : routines) {
     for (std::size_t j = 0; j < routine.jobs().size(); ++j) {
-      for (RingOutcome& outcome : result.pegs) {
+      for (RingOutcome& outcome : result.rings) {
         if (outcome.ring == routine.jobs()[j].ring) outcome.regrasps = routine.regrasps()[j];
       }
     }
@@ -179,10 +179,10 @@ PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   InProcessHooks hooks;
   std::optional<GraspAssist> assist;
   if (options.assist == AssistMode::Contact) {
-    std::vector<std::string> pegs;
-    for (const RingJob& job : PegLayout{}.jobs) pegs.push_back(job.ring);
-    assist.emplace(twin.world(), pegs);
-    hooks.after_move = [&](const std::array<ArmRoutine, 2>& routines) {
+    std::vector<std::string> rings;
+    for (const RingJob& job : PegLayout::seen(scene).jobs) rings.push_back(job.ring);
+    assist.emplace(twin.world(), rings);
+    hooks.after_move = [&](const raven::PerArm<ArmRoutine>& routines) {
       for (const ArmRoutine& routine : routines) assist->update(routine.arm(), routine.opening());
     };
   }

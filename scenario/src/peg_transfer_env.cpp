@@ -10,8 +10,14 @@ namespace scenario {
 
 namespace {
 
+/// Item `i` of part P of the observation `o` (an arm's, or a ring's), as a fixed-size block.
+template <const observation::Part& P>
+auto itemOf(Eigen::VectorXd& o, std::size_t i) {
+  return o.segment<P.item_size>(observation::item(P, i).start);
+}
+
 /// Both arms' kinematics of `profile`, left first.
-std::array<raven::ArmKinematics, 2> armsOf(const raven::PlatformProfile& profile) {
+raven::PerArm<raven::ArmKinematics> armsOf(const raven::PlatformProfile& profile) {
   return {raven::ArmKinematics::of(profile, raven::Arm::Left),
           raven::ArmKinematics::of(profile, raven::Arm::Right)};
 }
@@ -121,7 +127,7 @@ Eigen::VectorXd PegTransferEnv::actionHigh() const {
 
 Eigen::Matrix<double, 2, 3, Eigen::RowMajor> PegTransferEnv::toolPoints(
     const Eigen::Matrix<double, 14, 1>& joints) {
-  static const std::array<raven::ArmKinematics, 2> arms = armsOf(raven::builtinProfile("physical"));
+  static const raven::PerArm<raven::ArmKinematics> arms = armsOf(raven::builtinProfile("physical"));
   Eigen::Matrix<double, 2, 3, Eigen::RowMajor> out;
   for (raven::Arm arm : raven::kArms) {
     const int a = raven::index(arm);
@@ -159,23 +165,26 @@ int PegTransferEnv::countPlaced() const {
 }
 
 Eigen::VectorXd PegTransferEnv::observe() const {
-  Eigen::VectorXd o(kObservationSize);
+  namespace obs = observation;
+  Eigen::VectorXd o(obs::kSize);
   const twin::TwinPlatform& twin = session_->twin();
   const controller::ArmPair& targets = session_->controller().commanded();
   for (raven::Arm arm : raven::kArms) {
-    const int a = raven::index(arm);
-    o.segment<7>(7 * a) = twin.measuredJs(arm).position;
-    o.segment<7>(14 + 7 * a) = targets[raven::slot(arm)];
+    const std::size_t a = raven::slot(arm);
+    itemOf<obs::kJoints>(o, a) = twin.measuredJs(arm).position;
+    itemOf<obs::kTargets>(o, a) = targets[a];
     const Eigen::Isometry3d tool = twin.measuredCp(arm).pose;
     const Eigen::Quaterniond q(tool.linear());
-    o.segment<3>(28 + 7 * a) = tool.translation();
-    o.segment<4>(31 + 7 * a) << q.w(), q.x(), q.y(), q.z();
+    auto pose = itemOf<obs::kToolPoses>(o, a);
+    pose.head<3>() = tool.translation();
+    pose.tail<4>() << q.w(), q.x(), q.y(), q.z();
     const auto forces = twin.measuredCf(arm);
-    o.segment<3>(42 + 6 * a) = forces ? forces->force : Eigen::Vector3d::Zero();
-    o.segment<3>(45 + 6 * a) = forces ? forces->torque : Eigen::Vector3d::Zero();
+    auto wrench = itemOf<obs::kWrenches>(o, a);
+    wrench.head<3>() = forces ? forces->force : Eigen::Vector3d::Zero();
+    wrench.tail<3>() = forces ? forces->torque : Eigen::Vector3d::Zero();
   }
   for (std::size_t i = 0; i < rings_.size(); ++i) {
-    o.segment<3>(54 + 3 * static_cast<int>(i)) = rings_[i]->centerOfMass();
+    itemOf<obs::kRings>(o, i) = rings_[i]->centerOfMass();
   }
   return o;
 }
@@ -185,7 +194,7 @@ struct PegTransferEnv::State {
   std::uint64_t episode;
   std::shared_ptr<const twin::TwinPlatform::State> twin;
   controller::DualPlatformController::State controller;
-  std::array<ArmRoutine, 2> expert;
+  raven::PerArm<ArmRoutine> expert;
   int placed;
   Eigen::VectorXd last_observation;
 };

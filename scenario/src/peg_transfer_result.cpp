@@ -10,26 +10,26 @@ std::string_view assistName(AssistMode mode) {
 
 std::size_t PegTransferResult::placed() const {
   return static_cast<std::size_t>(
-      std::count_if(pegs.begin(), pegs.end(), [](const RingOutcome& p) { return p.placed; }));
+      std::count_if(rings.begin(), rings.end(), [](const RingOutcome& p) { return p.placed; }));
 }
 
 std::size_t PegTransferResult::lost() const {
   return static_cast<std::size_t>(
-      std::count_if(pegs.begin(), pegs.end(), [](const RingOutcome& p) { return p.lost; }));
+      std::count_if(rings.begin(), rings.end(), [](const RingOutcome& p) { return p.lost; }));
 }
 
 std::size_t PegTransferResult::regrasps() const {
   std::size_t count = 0;
-  for (const RingOutcome& p : pegs) count += static_cast<std::size_t>(p.regrasps);
+  for (const RingOutcome& p : rings) count += static_cast<std::size_t>(p.regrasps);
   return count;
 }
 
 nlohmann::json PegTransferResult::json() const {
-  nlohmann::json pegs_json = nlohmann::json::array();
-  for (const RingOutcome& p : pegs) {
+  nlohmann::json rings_json = nlohmann::json::array();
+  for (const RingOutcome& p : rings) {
     if (failed()) break;
-    pegs_json.push_back(
-        {{"peg", p.ring},
+    rings_json.push_back(
+        {{"ring", p.ring},
          {"arm", raven::armName(p.arm)},
          {"from_m", {p.from.x(), p.from.y()}},
          {"to_m", {p.to.x(), p.to.y()}},
@@ -62,7 +62,7 @@ nlohmann::json PegTransferResult::json() const {
                    {"refused_commands", refused},
                    {"rs_file", rs_file.string()},
                    {"rs_rows", rs_rows},
-                   {"pegs", pegs_json}};
+                   {"rings", rings_json}};
   timing.addTo(j);
   return j;
 }

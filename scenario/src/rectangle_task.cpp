@@ -88,7 +88,7 @@ RectangleResult runRectangle(const RectangleOptions& options) {
   if (!options.rs_file.empty()) rs = std::make_unique<recording::RsWriter>(options.rs_file);
   if (!options.ci_file.empty()) ci = std::make_unique<recording::CiWriter>(options.ci_file);
   const auto profile = raven::builtinProfile(controller_options.profile);
-  const std::array<raven::ArmKinematics, 2> kinematics{
+  const raven::PerArm<raven::ArmKinematics> kinematics{
       raven::ArmKinematics::of(profile, raven::Arm::Left),
       raven::ArmKinematics::of(profile, raven::Arm::Right)};
 

@@ -8,9 +8,9 @@
 
 namespace scenario {
 
-RingNodes inspect(const ambf_like::SoftBody& peg) {
+RingNodes inspect(const ambf_like::SoftBody& ring) {
   RingNodes s;
-  const btSoftBody& body = peg.bullet();
+  const btSoftBody& body = ring.bullet();
   s.bottom = std::numeric_limits<double>::infinity();
   for (int i = 0; i < body.m_nodes.size(); ++i) {
     const auto& n = body.m_nodes[i];

@@ -195,32 +195,26 @@ StudyData loadStudy(const std::vector<fs::path>& dirs) {
   return data;
 }
 
-nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
-  nlohmann::json j;
-  j["study"] = data.study;
-  j["participants"] = data.participants;
-  j["virtual_participants"] =
-      std::count_if(data.participants.begin(), data.participants.end(), [&](const auto& p) {
-        return std::any_of(data.trials.begin(), data.trials.end(), [&](const TrialRecord& r) {
-          return r.participant == p && r.is_virtual;
-        });
-      });
-  j["trials"] = data.trials.size();
-  j["correction"] = kCorrection;
-  j["metrics"] = nlohmann::json::object();
-  for (const std::string& m : metricNames()) {
-    j["metrics"][m] = {{"meaning", metricMeaning(m)},
-                       {"better", metricSense(m) < 0   ? "lower"
-                                  : metricSense(m) > 0 ? "higher"
-                                                       : "neither"}};
-  }
+namespace {
 
-  // Per scheme: the trials' metrics (the comparison blocks, not the tuning).
-  std::map<std::string, std::vector<const TrialRecord*>> by_condition;
-  for (const TrialRecord& r : data.trials) {
-    if (!r.tuning) by_condition[r.condition].push_back(&r);
+/// The comparison blocks' trials (not the tuning's), per scheme.
+using TrialsByScheme = std::map<std::string, std::vector<const TrialRecord*>>;
+
+/// Each metric's meaning and which way is better.
+nlohmann::json metricDefinitions() {
+  nlohmann::json metrics = nlohmann::json::object();
+  for (const std::string& m : metricNames()) {
+    metrics[m] = {{"meaning", metricMeaning(m)},
+                  {"better", metricSense(m) < 0   ? "lower"
+                             : metricSense(m) > 0 ? "higher"
+                                                  : "neither"}};
   }
-  j["schemes"] = nlohmann::json::object();
+  return metrics;
+}
+
+/// Per scheme: its trials, participants and each metric described, over all and per task.
+nlohmann::json describeSchemes(const TrialsByScheme& by_condition) {
+  nlohmann::json schemes = nlohmann::json::object();
   for (const auto& [condition, rows] : by_condition) {
     nlohmann::json scheme{{"trials", rows.size()}};
     std::set<std::string> people, tasks;
@@ -241,12 +235,15 @@ nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
         scheme["tasks"][task][m] = describe(of_task);
       }
     }
-    j["schemes"][condition] = scheme;
+    schemes[condition] = scheme;
   }
+  return schemes;
+}
 
-  // Paired comparisons on the participants' means.
-  nlohmann::json comparisons = nlohmann::json::array();
-  nlohmann::json power_rows = nlohmann::json::array();
+/// Paired comparisons of the schemes on the participants' means of each metric, appended to
+/// `comparisons` (and the observed power to `power_rows`).
+void compareMetrics(const TrialsByScheme& by_condition, const PowerQuestion& power,
+                    nlohmann::json& comparisons, nlohmann::json& power_rows) {
   for (const std::string& m : metricNames()) {
     std::map<std::string, ParticipantMeans> means;
     for (const auto& [condition, rows] : by_condition) {
@@ -261,7 +258,12 @@ nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
       comparisons.push_back(row);
     }
   }
-  // The questionnaires: their scores compared as the metrics are.
+}
+
+/// The questionnaires' scores per scheme, compared as the metrics are (appended to
+/// `comparisons`).
+nlohmann::json compareQuestionnaires(const StudyData& data, const PowerQuestion& power,
+                                     nlohmann::json& comparisons, nlohmann::json& power_rows) {
   nlohmann::json questionnaires = nlohmann::json::object();
   for (const char* name : {"nasa-tlx", "sus"}) {
     std::map<std::string, ParticipantMeans> means;
@@ -278,12 +280,13 @@ nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
       comparisons.push_back(row);
     }
   }
-  j["comparisons"] = comparisons;
-  j["questionnaires"] = questionnaires;
+  return questionnaires;
+}
 
-  // Tuning: per participant, the settings the process predicts cheapest.
-  j["recommended"] = nlohmann::json::object();
-  std::map<std::string, std::vector<const TrialRecord*>> tuned;
+/// Tuning: per participant, the settings the process predicts cheapest.
+nlohmann::json recommendSettings(const StudyData& data) {
+  nlohmann::json recommended = nlohmann::json::object();
+  TrialsByScheme tuned;  // here: per participant
   for (const TrialRecord& r : data.trials) {
     if (r.tuning && !r.tuning_record.is_null()) tuned[r.participant].push_back(&r);
   }
@@ -303,7 +306,7 @@ nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
     for (std::size_t i = 0; i < parameters.size(); ++i) {
       settings[parameters[i].name] = best.settings[i];
     }
-    j["recommended"][participant] = {
+    recommended[participant] = {
         {"settings", settings},
         {"predicted_cost", best.predicted_cost},
         {"cost", rows.front()->tuning_record.at("cost_is")},
@@ -313,20 +316,53 @@ nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
          "Gaussian-process Bayesian optimisation (expected improvement); the tried "
          "settings of lowest predicted cost"}};
   }
+  return recommended;
+}
 
+/// The power analysis: what the comparisons observed, and the participants stated effects need.
+nlohmann::json powerSection(const PowerQuestion& power, const nlohmann::json& power_rows) {
   nlohmann::json stated = nlohmann::json::array();
   for (double d : power.effects) {
     stated.push_back(
         {{"effect_size", d}, {"participants_needed", pairsNeeded(d, power.alpha, power.power)}});
   }
-  j["power"] = {{"test", "two-sided paired t-test (noncentral t)"},
-                {"alpha", power.alpha},
-                {"power", power.power},
-                {"observed", power_rows},
-                {"stated_effects", stated},
-                {"note",
-                 "observed: the alpha is divided by the number of scheme pairs (Holm's "
-                 "strictest step); stated: for one comparison at alpha"}};
+  return {{"test", "two-sided paired t-test (noncentral t)"},
+          {"alpha", power.alpha},
+          {"power", power.power},
+          {"observed", power_rows},
+          {"stated_effects", stated},
+          {"note",
+           "observed: the alpha is divided by the number of scheme pairs (Holm's "
+           "strictest step); stated: for one comparison at alpha"}};
+}
+
+}  // namespace
+
+nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
+  nlohmann::json j;
+  j["study"] = data.study;
+  j["participants"] = data.participants;
+  j["virtual_participants"] =
+      std::count_if(data.participants.begin(), data.participants.end(), [&](const auto& p) {
+        return std::any_of(data.trials.begin(), data.trials.end(), [&](const TrialRecord& r) {
+          return r.participant == p && r.is_virtual;
+        });
+      });
+  j["trials"] = data.trials.size();
+  j["correction"] = kCorrection;
+  j["metrics"] = metricDefinitions();
+  TrialsByScheme by_condition;
+  for (const TrialRecord& r : data.trials) {
+    if (!r.tuning) by_condition[r.condition].push_back(&r);
+  }
+  j["schemes"] = describeSchemes(by_condition);
+  nlohmann::json comparisons = nlohmann::json::array();
+  nlohmann::json power_rows = nlohmann::json::array();
+  compareMetrics(by_condition, power, comparisons, power_rows);
+  j["questionnaires"] = compareQuestionnaires(data, power, comparisons, power_rows);
+  j["comparisons"] = comparisons;
+  j["recommended"] = recommendSettings(data);
+  j["power"] = powerSection(power, power_rows);
   return j;
 }
 

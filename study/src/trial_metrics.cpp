@@ -266,15 +266,15 @@ TrialMetrics measureTrial(const fs::path& dir) {
                                     ": no trial_end event (the trial did not finish)");
   }
   const auto paths = tipPaths(fileEnding(dir, "_rs.csv"));
-  const bool pegs = count("rings") > 0;
+  const bool rings = count("rings") > 0;
   const bool targets = count("target_shown") > 0;
   TrialMetrics m;
   m["completion_time_s"] = end->time;
   m["completed"] = end->value;
   m["targets_reached"] = targets ? count("target_reached") : kNaN;
   m["overshoots"] = targets ? count("target_left") : kNaN;
-  m["rings_placed"] = pegs ? count("ring_placed") - count("ring_unplaced") : kNaN;
-  m["rings_dropped"] = pegs ? count("ring_dropped") : kNaN;
+  m["rings_placed"] = rings ? count("ring_placed") - count("ring_unplaced") : kNaN;
+  m["rings_dropped"] = rings ? count("ring_dropped") : kNaN;
   m["path_length_left_m"] = paths[0].length(0.0, end->time);
   m["path_length_right_m"] = paths[1].length(0.0, end->time);
   m["path_length_m"] = m["path_length_left_m"] + m["path_length_right_m"];
@@ -285,7 +285,7 @@ TrialMetrics measureTrial(const fs::path& dir) {
   const auto [peak, mean] = graspForces(fileEnding(dir, "_cf.csv"));
   m["peak_grasp_force_n"] = peak;
   m["mean_grasp_force_n"] = mean;
-  m["board_collisions"] = pegs ? count("board_contact") : kNaN;
+  m["board_collisions"] = rings ? count("board_contact") : kNaN;
   return m;
 }
 

@@ -139,6 +139,26 @@ TEST(BadInput, ABodyWithMassAndAZeroMomentOfInertiaIsRefusedByLine) {
                                      HasSubstr("positive definite inertia")));
 }
 
+TEST(BadInput, MomentsOfInertiaNoBodyCanHaveAreRefusedByLine) {
+  // Each principal moment is at most the sum of the other two (I_x + I_y - I_z = 2 int z^2 dm):
+  // the fuzzer's tree of moments 2.5 against 3e-9 + 1e-9 was taken and diverged at step 1.
+  TempDir dir;
+  const auto file =
+      dir.write("m.yaml", model("1.0", "  inertia: {ix: 2.5, iy: 3.0e-9, iz: 1.0e-9}\n"));
+  EXPECT_THAT(loadError(file),
+              AllOf(HasSubstr(file.string() + ":13"), HasSubstr("BODY box/inertia"),
+                    HasSubstr("triangle inequality")));
+  // A thin plate written to two digits (1.5 % over the sum) is a file's rounding, not a body.
+  EXPECT_EQ(loadError(dir.write("plate.yaml",
+                                model("1.0", "  inertia: {ix: 0.013, iy: 0.013, iz: 0.0264}\n"))),
+            "");
+  const auto urdf =
+      dir.write("rod.urdf", oneLinkUrdf("ixx='1' iyy='1e-6' izz='1e-6'", "revolute",
+                                        "<limit lower='-1' upper='1' effort='1' velocity='1'/>"));
+  EXPECT_THAT(loadError(urdf), AllOf(HasSubstr("rod.urdf"), HasSubstr("link[l]/inertial"),
+                                     HasSubstr("triangle inequality")));
+}
+
 TEST(BadInput, APoseFarBeyondAnyWorldIsRefusedByLine) {
   // A collision offset of 1.7e308 m (1.8e308 is past the largest double: not a number at all)
   // was taken and the world turned NaN at its first step.

@@ -146,8 +146,8 @@ TEST(Contact, SoftBodyDroppedOnAPlaneRestsOnIt) {
 TEST(Contact, SoftBodyNodeBoundsAreSizedByItsOwnMargin) {
   // Each node's bounding-volume leaf must be the node plus the body's margin: leaves left at
   // Bullet's 0.25 m default make every rigid body within 25 cm test every node at every step
-  // (the peg scene ran at half speed, and the coarse distance field then caught nodes up to a
-  // voxel outside a shape's bounds).
+  // (the peg-transfer scene ran at half speed, and the coarse distance field then caught nodes up
+  // to a voxel outside a shape's bounds).
   test_support::TempDir dir;
   const double margin = 0.0005;
   const auto file = dir.write("blob.yaml", "soft bodies: [BODY blob]\n" + softBallBody(margin));

@@ -1,6 +1,6 @@
 // The main job over ROS 1, against a real rosmaster: raven_twin_node started in its own process,
 // the same scripted operators driving it through RavenRosClient in lock-step and seeing the rings
-// on its AMBF object topics; it places all six, and its per-peg table is the in-process run's.
+// on its AMBF object topics; it places all six, and its per-ring table is the in-process run's.
 
 #include "scenario/ros/peg_transfer_over_ros.hpp"
 
@@ -32,9 +32,9 @@ TEST(PegTransferOverRos, PlacesAllSixAndItsTableIsTheInProcessRuns) {
   EXPECT_EQ(over_ros.iterations, in_process.iterations);
   EXPECT_NEAR(over_ros.timing.sim_time, in_process.timing.sim_time, 1e-9);
   EXPECT_EQ(over_ros.refused, 0u);
-  for (std::size_t i = 0; i < in_process.pegs.size(); ++i) {
-    const auto& a = over_ros.pegs[i];
-    const auto& b = in_process.pegs[i];
+  for (std::size_t i = 0; i < in_process.rings.size(); ++i) {
+    const auto& a = over_ros.rings[i];
+    const auto& b = in_process.rings[i];
     EXPECT_EQ(a.ring, b.ring);
     EXPECT_EQ(a.grasped, b.grasped) << a.ring;
     EXPECT_EQ(a.placed, b.placed) << a.ring;
@@ -58,10 +58,10 @@ TEST(PegTransferOverRos, TheDefaultMotorTwinPlacesAllSixWithSqueezesARealGraspTa
   ASSERT_EQ(options.actuation, common::ActuationKind::Motors);
   options.time_limit = 150.0;
   const scenario::PegTransferResult over_ros = scenario::ros1::runPegTransferOverRos(options, {});
-  std::printf("%s", scenario::pegTable(over_ros).c_str());
+  std::printf("%s", scenario::ringTable(over_ros).c_str());
   EXPECT_TRUE(over_ros.allPlaced()) << over_ros.failure;
   EXPECT_EQ(over_ros.refused, 0u);
-  for (const auto& p : over_ros.pegs) {
+  for (const auto& p : over_ros.rings) {
     EXPECT_FALSE(p.lost) << p.ring << ": " << p.loss;
     // ../shared/reference/soft-materials.md: a few newtons per jaw hold a silicone ring.
     for (double squeeze : p.carried_squeeze) {

@@ -25,8 +25,8 @@ using bridge::ros1::PoseSource;
 using bridge::ros1::RosPerceptionOptions;
 using bridge::ros1::RosScenePerception;
 
-const std::vector<std::string> kObjects{"peg_board", "peg1", "peg2", "peg3",
-                                        "peg4",      "peg5", "peg6"};
+const std::vector<std::string> kObjects{"peg_board", "ring1", "ring2", "ring3",
+                                        "ring4",     "ring5", "ring6"};
 
 twin::TwinOptions pegScene() {
   twin::TwinOptions options;
@@ -48,7 +48,7 @@ TEST(ScenePerceptionOverRos, TheObjectTopicsGiveTheWorldsPosesAtTheSimulatedTime
   options.objects = kObjects;
   options.lock_step = true;
   RosScenePerception seen(options);
-  EXPECT_EQ(seen.topicOf("peg1"), "/peg_transfer/peg1/State");
+  EXPECT_EQ(seen.topicOf("ring1"), "/peg_transfer/ring1/State");
   const twin::WorldPerception truth(twin.world());
   for (int cycle = 0; cycle < 300; ++cycle) {
     twin.advance(0.001);  // the rings settle on their posts
@@ -62,7 +62,7 @@ TEST(ScenePerceptionOverRos, TheObjectTopicsGiveTheWorldsPosesAtTheSimulatedTime
       EXPECT_FALSE(over_ros.volume_ratio) << object << ": AMBF's topics carry no volume";
     }
   }
-  EXPECT_TRUE(truth.sight("peg1").volume_ratio);  // the in-process world does
+  EXPECT_TRUE(truth.sight("ring1").volume_ratio);  // the in-process world does
 }
 
 /// Publishes geometry_msgs/PoseStamped as a tracker (vrpn_client_ros) does.
@@ -86,7 +86,7 @@ TEST(ScenePerceptionOverRos, ATrackersRecordedPosesComeOutInTheRobotsFrame) {
   const twin::WorldPerception truth(twin.world());
   std::vector<Eigen::Isometry3d> recorded;
   for (int k = 0; k < 5; ++k) {
-    Eigen::Isometry3d pose = truth.sight("peg1").pose;
+    Eigen::Isometry3d pose = truth.sight("ring1").pose;
     pose.translation() += Eigen::Vector3d(0.002 * k, -0.001 * k, 0.004 * k);
     pose.linear() = Eigen::AngleAxisd(0.1 * k, Eigen::Vector3d::UnitX()) * pose.linear();
     recorded.push_back(pose);
@@ -96,16 +96,16 @@ TEST(ScenePerceptionOverRos, ATrackersRecordedPosesComeOutInTheRobotsFrame) {
   world_from_tracker.translation() << 0.1, 1.2, 0.3;
   world_from_tracker.linear() = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitZ()).matrix();
 
-  RecordedTracker tracker("/vrpn_client_node/peg1/pose");
+  RecordedTracker tracker("/vrpn_client_node/ring1/pose");
   RosPerceptionOptions options;
   options.source = PoseSource::Tracker;
   options.topic_namespace = "/vrpn_client_node/";
-  options.objects = {"peg1"};
+  options.objects = {"ring1"};
   options.world_from_source = world_from_tracker;
   options.stale_after = 0.5;
   RosScenePerception seen(options);
-  EXPECT_EQ(seen.topicOf("peg1"), "/vrpn_client_node/peg1/pose");
-  EXPECT_THROW(seen.sight("peg1"), bridge::PerceptionError);  // nothing has arrived yet
+  EXPECT_EQ(seen.topicOf("ring1"), "/vrpn_client_node/ring1/pose");
+  EXPECT_THROW(seen.sight("ring1"), bridge::PerceptionError);  // nothing has arrived yet
 
   // Delivered, the sighting is the recorded pose in the robot's frame (platform time 1.0 s).
   auto receive = [&](const Eigen::Isometry3d& expected) {
@@ -113,7 +113,7 @@ TEST(ScenePerceptionOverRos, ATrackersRecordedPosesComeOutInTheRobotsFrame) {
     while (::ros::WallTime::now() < deadline) {
       seen.update(1.0);
       try {
-        if (poseGap(seen.sight("peg1").pose, expected) < 1e-12) return true;
+        if (poseGap(seen.sight("ring1").pose, expected) < 1e-12) return true;
       } catch (const bridge::PerceptionError&) {
       }
     }
@@ -132,20 +132,20 @@ TEST(ScenePerceptionOverRos, ATrackersRecordedPosesComeOutInTheRobotsFrame) {
   ASSERT_TRUE(receive(recorded[2]));
   // Not seen for longer than stale_after: no sighting.
   seen.update(1.0 + 0.6);
-  EXPECT_THROW(seen.sight("peg1"), bridge::PerceptionError);
+  EXPECT_THROW(seen.sight("ring1"), bridge::PerceptionError);
 }
 
 TEST(ScenePerceptionOverRos, AnObjectNobodyPublishesIsNamed) {
   RosPerceptionOptions options;
   options.source = PoseSource::Tracker;
   options.topic_namespace = "/nobody/";
-  options.objects = {"peg7"};
+  options.objects = {"ring7"};
   options.timeout = 0.3;
   try {
     RosScenePerception seen(options);
     FAIL() << "no error";
   } catch (const bridge::PerceptionError& e) {
-    EXPECT_NE(std::string(e.what()).find("/nobody/peg7/pose"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("/nobody/ring7/pose"), std::string::npos) << e.what();
   }
 }
 

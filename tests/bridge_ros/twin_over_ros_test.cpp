@@ -284,67 +284,66 @@ TEST(TwinOverRos, TheMotorLevelActuationGivesTheSameTrajectoryInProcessAndOverRo
   expectSameTrajectory({}, options);
 }
 
-TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {
-  Rig rig(kIdealServos);
-  ros_test::RawPeer peer(rig.node.ns());
-  auto& robot = rig.client;
-  makeReady(robot);
-  robot.advance(0.2);  // "ready" is within a tolerance of home: let the arm come to rest
-  const ArmJoints start = robot.measuredJs(Arm::Left).position;
+/// A malformed or unsafe message a raw peer sends, and the words its refusal must hold.
+struct BadMessage {
+  const char* what;
+  std::function<void()> send;
+  const char* reason;
+};
+
+/// One of each kind of bad message to arm 1, the arm standing at `start`.
+std::vector<BadMessage> badMessages(ros_test::RawPeer& peer,
+                                    const bridge::ros1::RavenRosClient& robot,
+                                    const ArmJoints& start) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> home(start.data(), start.data() + 7);
-  auto with = [&](int i, double value) {
+  const std::vector<double> home(start.data(), start.data() + 7);
+  auto with = [home](int i, double value) {
     auto q = home;
     q[static_cast<std::size_t>(i)] = value;
     return q;
   };
-  struct Case {
-    const char* what;
-    std::function<void()> send;
-    const char* reason;
-  };
-  const std::vector<Case> cases{
+  return {
       {"5 values",
-       [&] {
+       [=, &peer] {
          peer.send(CommandTopic::Arm1ServoJr, jointCommand({0, 0, 0, 0, 0}));
        },
        "position has 5 values"},
       {"NaN",
-       [&] {
+       [=, &peer] {
          peer.send(CommandTopic::Arm1ServoJr, jointCommand({0, nan, 0, 0, 0, 0, 0}));
        },
        "position[1]"},
-      {"inf", [&] { peer.send(CommandTopic::Arm1ServoJp, jointCommand(with(4, inf))); },
+      {"inf", [=, &peer] { peer.send(CommandTopic::Arm1ServoJp, jointCommand(with(4, inf))); },
        "position[4]"},
       {"15 values, extras not 0",
-       [&] {
+       [=, &peer] {
          std::vector<double> q(15, 0.0);
          q[9] = 1.0;
          peer.send(CommandTopic::Arm1ServoJr, jointCommand(q));
        },
        "must be 0"},
       {"a jump beyond the clamps",
-       [&] { peer.send(CommandTopic::Arm1ServoJp, jointCommand(with(0, home[0] + 0.2))); },
+       [=, &peer] { peer.send(CommandTopic::Arm1ServoJp, jointCommand(with(0, home[0] + 0.2))); },
        "would jump"},
       {"servo_jr piling up beyond the clamps",
-       [&] {
+       [=, &peer] {
          peer.send(CommandTopic::Arm1ServoJr, jointCommand({0, 0, 0.002, 0, 0, 0, 0}));
        },
        "'insertion' would jump"},
-      {"empty grasp", [&] { peer.send(CommandTopic::Grasp1ServoJp, jointCommand({})); },
+      {"empty grasp", [=, &peer] { peer.send(CommandTopic::Grasp1ServoJp, jointCommand({})); },
        "position is empty"},
-      {"NaN grasp", [&] { peer.send(CommandTopic::Grasp1ServoJr, jointCommand({nan})); },
+      {"NaN grasp", [=, &peer] { peer.send(CommandTopic::Grasp1ServoJr, jointCommand({nan})); },
        "position[0]"},
       {"non-unit quaternion",
-       [&] {
+       [=, &peer] {
          geometry_msgs::TransformStamped m;
          m.transform.rotation.w = 2.0;
          peer.send(CommandTopic::Arm1ServoCp, m);
        },
        "quaternion has length"},
       {"a tool jump",
-       [&] {
+       [=, &peer, &robot] {
          auto pose = robot.measuredCp(Arm::Left).pose;
          pose.translation().z() += 0.05;
          peer.send(CommandTopic::Arm1ServoCp,
@@ -352,14 +351,23 @@ TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {
        },
        "tool would jump"},
       {"unknown state command",
-       [&] {
+       [=, &peer] {
          crtk_msgs::StringStamped m;
          m.string = "fly";
          peer.send(CommandTopic::StateCommand, m);
        },
        "unknown state command 'fly'"},
   };
-  for (const auto& c : cases) {
+}
+
+TEST(TwinOverRos, BadMessagesAreRefusedWithAReasonAndMoveNothing) {
+  Rig rig(kIdealServos);
+  ros_test::RawPeer peer(rig.node.ns());
+  auto& robot = rig.client;
+  makeReady(robot);
+  robot.advance(0.2);  // "ready" is within a tolerance of home: let the arm come to rest
+  const ArmJoints start = robot.measuredJs(Arm::Left).position;
+  for (const auto& c : badMessages(peer, robot, start)) {
     SCOPED_TRACE(c.what);
     c.send();
     const auto refusals = peer.step(20, 1);

@@ -12,13 +12,13 @@
 #include <random>
 
 #include "calibration/actuation_fit.hpp"
-#include "calibration/calibration_file.hpp"
 #include "calibration/excitation.hpp"
 #include "calibration/mechanics_information.hpp"
 #include "calibration/replay_score.hpp"
 #include "calibration/replay_timing.hpp"
 #include "common/load_error.hpp"
 #include "test_files.hpp"
+#include "twin/calibration_profile.hpp"
 
 namespace {
 
@@ -82,8 +82,7 @@ TEST(CalibrationFile, WhatIsWrittenIsReadBack) {
   profile.mechanics[1].load_friction(raven::kShoulder) = 0.3;
   profile.uncertainty = filled(1e-4);
   profile.iteration_overhead = 0.001;
-  calibration::writeCalibration(dir.path() / "c.yaml", profile,
-                                {"inputs_ci.csv", {"a_physical_1.csv"}, {"a note"}});
+  profile.save(dir.path() / "c.yaml", {"inputs_ci.csv", {"a_physical_1.csv"}, {"a note"}});
   const auto read = twin::CalibrationProfile::load(dir.path() / "c.yaml");
   for (std::size_t a = 0; a < 2; ++a) {
     for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
@@ -101,7 +100,7 @@ TEST(CalibrationFile, BadValuesAreRefusedNamingFileAndKey) {
   twin::CalibrationProfile profile;
   profile.mechanics = calibration::startingMechanics();
   profile.uncertainty = filled(0.0);
-  calibration::writeCalibration(dir.path() / "good.yaml", profile, {});
+  profile.save(dir.path() / "good.yaml", {});
   std::ifstream in(dir.path() / "good.yaml");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   auto refused = [&](const std::string& from, const std::string& to, const std::string& named) {

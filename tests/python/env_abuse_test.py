@@ -16,7 +16,7 @@ import numpy as np
 
 import raven_sim
 
-RINGS = slice(54, 72)  # the six ring centres of the observation
+RINGS = raven_sim.part("rings")  # the six ring centres of the observation
 
 
 def jaws_shut(action, low):

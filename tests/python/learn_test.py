@@ -102,12 +102,12 @@ class PolicyInputsAndOutputs(unittest.TestCase):
         features = imitation.Features()
         current = slice(imitation.ArmFeatures.size - 8, imitation.ArmFeatures.size - 4)
         self.assertEqual(list(features(state)[:, current].argmax(1)), [0, 0])
-        # peg1 (the left arm's first) and peg4 (the right's) down on their target posts.
+        # ring1 (the left arm's first) and ring4 (the right's) down on their target posts.
         for ring in (0, 3):
             to = raven_sim.peg_layout()["jobs"][ring]["to"]
-            state[54 + 3 * ring:56 + 3 * ring] = to
+            state[raven_sim.part("rings", ring)][:2] = to
         self.assertEqual(list(imitation.Features()(state)[:, current].argmax(1)), [1, 1])
-        state[54 + 2] += 0.02  # peg1 lifted off its post again
+        state[raven_sim.part("rings", 0)][2] += 0.02  # ring1 lifted off its post again
         self.assertEqual(list(imitation.Features()(state)[:, current].argmax(1)), [0, 1])
 
     def test_a_policy_moves_at_most_a_step_towards_its_waypoint(self):

@@ -22,7 +22,7 @@ BatchPlan sixRunsInTwoShards() {
 scenario::PegTransferResult runOf(std::uint64_t seed, std::size_t placed, bool stopped = false) {
   scenario::PegTransferResult r;
   r.variation.seed = seed;
-  for (std::size_t i = 0; i < placed; ++i) r.pegs[i].placed = true;
+  for (std::size_t i = 0; i < placed; ++i) r.rings[i].placed = true;
   r.stopped = stopped;
   r.timing = {60.0 + static_cast<double>(seed), 9.0, 8.0, 60000 + seed};
   return r;
@@ -125,7 +125,7 @@ TEST(BatchMerge, NamesMissingRepeatedStoppedForeignAndCutOffRunsAndTheShardToRer
   const nlohmann::json summary = whole.summary();
   const nlohmann::json expected = scenario::summarize(std::vector{
       runOf(10, 6), runOf(11, 6), runOf(12, 5), runOf(13, 6), runOf(14, 6), runOf(15, 6)});
-  for (const char* key : {"runs", "runs_all_placed", "pegs_placed", "steps", "sim_time_s",
+  for (const char* key : {"runs", "runs_all_placed", "rings_placed", "steps", "sim_time_s",
                           "loop_time_s", "real_time_factor"}) {
     EXPECT_EQ(summary[key], expected[key]) << key;
   }

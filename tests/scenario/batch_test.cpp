@@ -64,32 +64,32 @@ TEST(Handover, TheArmsWorkspacesNeverMeetWithTheseBaseFrames) {
 
 TEST(BatchSummary, CountsRunsPegsAndRates) {
   std::vector<scenario::PegTransferResult> results(2);
-  for (auto& p : results[0].pegs) p.placed = true;
-  results[1].pegs[0].placed = true;
-  results[1].pegs[1].lost = true;
+  for (auto& p : results[0].rings) p.placed = true;
+  results[1].rings[0].placed = true;
+  results[1].rings[1].lost = true;
   results[0].timing = {10.0, 6.0, 5.0, 10000};
   results[1].timing = {20.0, 11.0, 10.0, 20000};
   const auto j = scenario::summarize(results);
   EXPECT_EQ(j["runs"], 2);
   EXPECT_EQ(j["runs_all_placed"], 1);
-  EXPECT_EQ(j["pegs_placed"], 7);
-  EXPECT_EQ(j["pegs_lost"], 1);
+  EXPECT_EQ(j["rings_placed"], 7);
+  EXPECT_EQ(j["rings_lost"], 1);
   EXPECT_DOUBLE_EQ(j["real_time_factor"].get<double>(), 2.0);
   EXPECT_DOUBLE_EQ(j["loop_frequency_hz"].get<double>(), 2000.0);
 }
 
 TEST(BatchSummary, ARunWhoseWorldBlewUpIsCountedFailedAndPrintsNoPegNumbers) {
   std::vector<scenario::PegTransferResult> results(2);
-  for (auto& p : results[0].pegs) p.placed = true;
-  results[1].failure = "the simulation diverged at step 5 (t = 0.0050 s): soft body 'peg3' node 2";
-  results[1].pegs[2].min_volume_ratio = 1e32;  // what a blown-up ring would show
+  for (auto& p : results[0].rings) p.placed = true;
+  results[1].failure = "the simulation diverged at step 5 (t = 0.0050 s): soft body 'ring3' node 2";
+  results[1].rings[2].min_volume_ratio = 1e32;  // what a blown-up ring would show
   results[1].variation.seed = 7;
   const auto row = results[1].json();
   EXPECT_EQ(row["failure"], results[1].failure);
-  EXPECT_TRUE(row["pegs"].empty()) << "no peg numbers from a world that blew up";
+  EXPECT_TRUE(row["rings"].empty()) << "no peg numbers from a world that blew up";
   EXPECT_FALSE(row["all_placed"]);
   EXPECT_TRUE(results[0].json()["failure"].is_null());
-  EXPECT_EQ(scenario::pegTable(results[1]), "the run failed: " + results[1].failure + "\n");
+  EXPECT_EQ(scenario::ringTable(results[1]), "the run failed: " + results[1].failure + "\n");
   const std::string table = scenario::batchTable(results);
   EXPECT_NE(table.find("     7 failed: the simulation diverged"), std::string::npos) << table;
   EXPECT_EQ(table.find("1e+32"), std::string::npos) << table;

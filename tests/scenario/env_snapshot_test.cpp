@@ -32,12 +32,14 @@ ExpertRun expertRun(scenario::PegTransferEnv& env, int steps) {
 
 TEST(EnvSnapshot, TheSameActionsAfterARestoreGiveTheSameObservationsBitForBit) {
   scenario::PegTransferEnv env(options());
-  const auto ring_z = [](const Eigen::VectorXd& o) { return o(56); };  // peg1's centre, z
+  const auto ring_z = [](const Eigen::VectorXd& o) {
+    return o(scenario::observation::item(scenario::observation::kRings, 0).start + 2);
+  };  // ring1's centre, z
   const double resting = ring_z(env.reset(4));
   int steps = 0;
   while (ring_z(env.observation()) < resting + 0.01 && ++steps < 1000) expertRun(env, 1);
-  ASSERT_LT(steps, 1000) << "the expert lifts peg1";
-  const auto state = env.saveState();  // peg1 held by friction between the jaws
+  ASSERT_LT(steps, 1000) << "the expert lifts ring1";
+  const auto state = env.saveState();  // ring1 held by friction between the jaws
   const Eigen::VectorXd saved = env.observation();
   const double saved_time = env.time();
   const ExpertRun first = expertRun(env, 150);  // carried over its target post

@@ -1,5 +1,5 @@
-// Friction grasps on the real grasper and the shipped peg scene: a silicone ring lifted by the
-// left arm is squeezed with the newtons a real grasp takes, held by contact forces that carry
+// Friction grasps on the real grasper and the shipped peg-transfer scene: a silicone ring lifted by
+// the left arm is squeezed with the newtons a real grasp takes, held by contact forces that carry
 // exactly its weight, does not slip in the jaws while carried at the velocity caps, and slips
 // out when the jaws squeeze it too little: friction, not glue (nothing but contact acts between
 // the jaws and the ring). On the motor twin, the operator brings the measured tool onto the grasp

@@ -10,7 +10,7 @@
 
 namespace {
 
-// The peg scene's wall and grasp: a 4 mm wide, 10 mm tall tube section 5 mm under the jaw
+// The peg-transfer scene's wall and grasp: a 4 mm wide, 10 mm tall tube section 5 mm under the jaw
 // axis, the inner jaw 0.2 mm from it, 11 mm jaws.
 const scenario::PinchedWall kWall{.half_width = 0.002,
                                   .half_height = 0.005,

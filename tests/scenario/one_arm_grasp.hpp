@@ -1,6 +1,6 @@
 #pragma once
-// A test fixture: the shipped peg scene on the simulated clock, the left arm taking peg1 through
-// the scripted routine (the path a pad's iterations take), the right arm still.
+// A test fixture: the shipped peg-transfer scene on the simulated clock, the left arm taking ring1
+// through the scripted routine (the path a pad's iterations take), the right arm still.
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@
 
 namespace scenario_test {
 
-/// The peg scene with every ring awake (a sleeping ring reports no contacts), changed further by
-/// `adjust` if given.
+/// The peg-transfer scene with every ring awake (a sleeping ring reports no contacts), changed
+/// further by `adjust` if given.
 inline twin::TwinOptions pegScene(std::function<void(ambf_like::SceneSpec&)> adjust = {}) {
   twin::TwinOptions options;
   options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
@@ -28,7 +28,7 @@ inline twin::TwinOptions pegScene(std::function<void(ambf_like::SceneSpec&)> adj
   return options;
 }
 
-/// The left arm and peg1.
+/// The left arm and ring1.
 class OneArmGrasp : public ::testing::Test {
  protected:
   explicit OneArmGrasp(double squeeze = scenario::ArmRoutine::kDefaultSqueeze,
@@ -40,7 +40,7 @@ class OneArmGrasp : public ::testing::Test {
   }
 
   ambf_like::World& world() { return session_.twin().world(); }
-  const ambf_like::SoftBody& ring() { return world().softBody("peg1"); }
+  const ambf_like::SoftBody& ring() { return world().softBody("ring1"); }
   double ringBottom() {
     double low = std::numeric_limits<double>::infinity();
     for (const auto& p : ring().nodePositions()) low = std::min(low, p.z());

@@ -1,14 +1,18 @@
 // The checks a peg-transfer run is judged by, on the real scene and through the perception a run
 // sees it by: a ring's pose (its nodes' shape-matched frame) gives its extremes and whether a
 // post passes through its hole; a ring counts as placed only when threaded on its post and down
-// on the board; RingWatch calls a peg lost when its pose goes non-finite, its volume leaves the
+// on the board; RingWatch calls a ring lost when its pose goes non-finite, its volume leaves the
 // 20 % band, or it falls through the board.
 
 #include <BulletSoftBody/btSoftBody.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <regex>
+#include <sstream>
 
 #include "scenario/peg_layout.hpp"
 #include "scenario/ring_nodes.hpp"
@@ -79,11 +83,42 @@ TEST(PegChecks, TheBoardSeenPlacesThePostsOfTheDesign) {
       1e-12);
 }
 
+TEST(PegChecks, AnOldSceneWhoseRingsAreCalledPegsIsSeenByItsOwnNames) {
+  namespace fs = std::filesystem;
+  const fs::path shipped = raven::modelDirectory() / "peg_transfer";
+  const fs::path dir = fs::path(::testing::TempDir()) / "legacy_ring_names";
+  fs::create_directories(dir);
+  std::ifstream rings(shipped / "rings.yaml");
+  std::stringstream text;
+  text << rings.rdbuf();
+  std::string legacy = std::regex_replace(text.str(), std::regex("ring([1-6])"), "peg$1");
+  legacy = std::regex_replace(legacy, std::regex("\\./meshes/"), (shipped / "meshes/").string());
+  std::ofstream(dir / "pegs.yaml") << legacy;
+  std::ofstream(dir / "launch.yaml")
+      << "world config: " << (shipped / "world.yaml").string() << "\nmultibody configs:\n"
+      << "  - " << (shipped / "../raven2/raven2_left.yaml").string() << "\n"
+      << "  - " << (shipped / "../raven2/raven2_right.yaml").string() << "\n"
+      << "  - " << (shipped / "peg_board.yaml").string() << "\n  - pegs.yaml\n";
+  twin::TwinOptions options;
+  options.launch_file = dir / "launch.yaml";
+  twin::TwinPlatform old_scene(options);
+  const PegLayout layout = PegLayout::seen(twin::WorldPerception(old_scene.world()));
+  for (std::size_t i = 0; i < layout.jobs.size(); ++i) {
+    EXPECT_EQ(layout.jobs[i].ring, "peg" + std::to_string(i + 1));
+    EXPECT_EQ(scenario::ringIndexOf(layout.jobs[i].ring), i);
+  }
+  twin::TwinPlatform today(pegScene());
+  EXPECT_EQ(PegLayout::seen(twin::WorldPerception(today.world())).jobs[5].ring, "ring6");
+  EXPECT_EQ(scenario::ringIndexOf("ring6"), 5u);
+  EXPECT_FALSE(scenario::ringIndexOf("ring7"));
+  EXPECT_FALSE(scenario::ringIndexOf(PegLayout::kBoard));
+}
+
 TEST(PegChecks, ARingsPoseFollowsItsNodesAndGivesTheirExtremes) {
   twin::TwinPlatform twin(pegScene());
   auto& world = twin.world();
   const twin::WorldPerception scene(world);
-  const auto& body = world.softBody("peg1");
+  const auto& body = world.softBody("ring1");
   // At rest: the spec's orientation, at the nodes' mean, the extremes the nodes have.
   auto nodeExtremes = [&] {
     const auto s = scenario::inspect(body);
@@ -91,7 +126,7 @@ TEST(PegChecks, ARingsPoseFollowsItsNodesAndGivesTheirExtremes) {
     for (const auto& p : body.nodePositions()) top = std::max(top, p.z());
     return std::pair{s.bottom, top};
   };
-  auto ring = seen(scene, "peg1");
+  auto ring = seen(scene, "ring1");
   EXPECT_TRUE(ring.pose.linear().isApprox(body.spec().location.linear(), 1e-9));
   EXPECT_LT((ring.centre() - scenario::inspect(body).centre).norm(), 1e-12);
   EXPECT_NEAR(ring.bottom(), nodeExtremes().first, 1e-9);
@@ -101,8 +136,8 @@ TEST(PegChecks, ARingsPoseFollowsItsNodesAndGivesTheirExtremes) {
   const Eigen::Matrix3d turn = (Eigen::AngleAxisd(0.7, Eigen::Vector3d::UnitZ()) *
                                 Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()))
                                    .toRotationMatrix();
-  rotate(world.softBody("peg1").bullet(), turn);
-  ring = seen(scene, "peg1");
+  rotate(world.softBody("ring1").bullet(), turn);
+  ring = seen(scene, "ring1");
   EXPECT_TRUE(ring.pose.linear().isApprox(turn * body.spec().location.linear(), 1e-9));
   EXPECT_LE(ring.bottom(), nodeExtremes().first + 1e-9);
   EXPECT_GT(ring.bottom(), nodeExtremes().first - 0.0005);
@@ -116,17 +151,17 @@ TEST(PegChecks, TheStationTowardASideIsTheRingsNearestStationNode) {
   twin::TwinPlatform twin(pegScene());
   auto& world = twin.world();
   const twin::WorldPerception scene(world);
-  const auto& body = world.softBody("peg1");
+  const auto& body = world.softBody("ring1");
   const std::size_t per_station = 9;
   const Eigen::Vector2d minus_y(0, -1);
   EXPECT_LT(
-      (seen(scene, "peg1").stationToward(minus_y) - body.nodePosition(12 * per_station)).norm(),
+      (seen(scene, "ring1").stationToward(minus_y) - body.nodePosition(12 * per_station)).norm(),
       1e-9);
   // Turned by 0.3 rad (more than half a station, 0.196 rad): station 11 faces -y now.
-  rotate(world.softBody("peg1").bullet(),
+  rotate(world.softBody("ring1").bullet(),
          Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix());
   EXPECT_LT(
-      (seen(scene, "peg1").stationToward(minus_y) - body.nodePosition(11 * per_station)).norm(),
+      (seen(scene, "ring1").stationToward(minus_y) - body.nodePosition(11 * per_station)).norm(),
       1e-9);
 }
 
@@ -161,7 +196,7 @@ TEST(PegChecks, TheVolumeFromTheNodesIsTheRingsPolyhedralVolume) {
   }
 }
 
-TEST(RingWatch, CallsAPegLostForEachKindOfLoss) {
+TEST(RingWatch, CallsARingLostForEachKindOfLoss) {
   twin::TwinPlatform twin(pegScene());
   auto& world = twin.world();
   const twin::WorldPerception scene(world);
@@ -169,13 +204,13 @@ TEST(RingWatch, CallsAPegLostForEachKindOfLoss) {
   watch.observe(scene);
   EXPECT_EQ(watch.lost(), 0u);
 
-  world.softBody("peg1").bullet().m_nodes[5].m_x.setX(std::numeric_limits<double>::quiet_NaN());
-  btSoftBody& swollen = world.softBody("peg2").bullet();  // 1.1^3 = 1.33 times its volume
+  world.softBody("ring1").bullet().m_nodes[5].m_x.setX(std::numeric_limits<double>::quiet_NaN());
+  btSoftBody& swollen = world.softBody("ring2").bullet();  // 1.1^3 = 1.33 times its volume
   const btVector3 centre = swollen.m_nodes[0].m_x;
   for (int i = 0; i < swollen.m_nodes.size(); ++i) {
     swollen.m_nodes[i].m_x = centre + (swollen.m_nodes[i].m_x - centre) * 1.1;
   }
-  translate(world.softBody("peg4").bullet(), btVector3(0, 0, -0.01));  // under the board
+  translate(world.softBody("ring4").bullet(), btVector3(0, 0, -0.01));  // under the board
   watch.observe(scene);
 
   const auto outcomes = watch.finish(scene);

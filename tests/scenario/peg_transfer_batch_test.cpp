@@ -1,7 +1,7 @@
 // The main job's batches: the nominal scene on the default (motor-level) twin, and 20 seeded
 // randomised peg transfers on ideal servos (start poses, friction, softness drawn from each
 // seed), the rings held by contact and friction alone, on two worker threads and the simulated
-// clock. At least 19 must place all six pegs; no peg may ever be lost, crushed (volume within
+// clock. At least 19 must place all six rings; no peg may ever be lost, crushed (volume within
 // 20 % of rest) or pushed through the board. The grasp assist's 20 as well.
 
 #include <gtest/gtest.h>
@@ -29,8 +29,8 @@ TEST(PegTransferBatch, TheNominalSceneIsPlacedWholeByFrictionAlone) {
   const auto result = scenario::runPegTransfer({});
   EXPECT_TRUE(result.allPlaced());
   EXPECT_FALSE(result.timed_out);
-  std::printf("%s", scenario::pegTable(result).c_str());
-  for (const auto& p : result.pegs) {
+  std::printf("%s", scenario::ringTable(result).c_str());
+  for (const auto& p : result.rings) {
     EXPECT_TRUE(p.placed) << p.ring << " " << p.miss * 1e3 << " mm off";
     EXPECT_FALSE(p.lost) << p.ring << ": " << p.loss;
     EXPECT_GT(p.min_volume_ratio, 0.8);
@@ -54,7 +54,7 @@ TEST(PegTransferBatch, OnIdealServosNineteenOfTwentyRandomisedRunsPlaceAllSixAnd
     complete += r.allPlaced() ? 1 : 0;
     EXPECT_FALSE(r.timed_out) << "seed " << r.variation.seed;
     EXPECT_EQ(r.refused, 0u) << "seed " << r.variation.seed;
-    for (const auto& p : r.pegs) {
+    for (const auto& p : r.rings) {
       EXPECT_FALSE(p.lost) << "seed " << r.variation.seed << " " << p.ring << ": " << p.loss;
       EXPECT_GT(p.min_volume_ratio, 0.8);
       EXPECT_LT(p.max_volume_ratio, 1.2);
@@ -72,7 +72,7 @@ TEST(PegTransferBatch, OnIdealServosNineteenOfTwentyRandomisedRunsPlaceAllSixAnd
 void expectAllPlacedWhole(const scenario::PegTransferResult& r) {
   EXPECT_EQ(r.failure, "") << "seed " << r.variation.seed;
   EXPECT_TRUE(r.allPlaced()) << "seed " << r.variation.seed;
-  for (const auto& p : r.pegs) {
+  for (const auto& p : r.rings) {
     EXPECT_FALSE(p.lost) << "seed " << r.variation.seed << " " << p.ring << ": " << p.loss;
     EXPECT_GT(p.min_volume_ratio, 0.5) << "seed " << r.variation.seed << " " << p.ring;
     EXPECT_LT(p.max_volume_ratio, 2.0) << "seed " << r.variation.seed << " " << p.ring;
@@ -86,7 +86,7 @@ TEST(PegTransferBatch, TheGraspAssistPinsEveryRingWholeOnTheNominalAndTwentyRand
   options.actuation = common::ActuationKind::Ideal;  // the assist's own checks, as its pins are
   options.assist = scenario::AssistMode::Contact;
   const auto nominal = scenario::runPegTransfer(options);
-  std::printf("%s", scenario::pegTable(nominal).c_str());
+  std::printf("%s", scenario::ringTable(nominal).c_str());
   expectAllPlacedWhole(nominal);
   options.randomize = true;
   const auto results = scenario::runBatch(options, scenario::seedsOf(1, 20, scenario::Shard{}), 2);
@@ -106,11 +106,11 @@ TEST(PegTransferBatch, AnOperatorWhoseGripCannotHoldTriesEachRingThreeTimesAndMo
   options.actuation = common::ActuationKind::Ideal;
   options.squeeze = -0.0003;
   const auto result = scenario::runPegTransfer(options);
-  std::printf("%s", scenario::pegTable(result).c_str());
+  std::printf("%s", scenario::ringTable(result).c_str());
   EXPECT_FALSE(result.timed_out);
   EXPECT_EQ(result.placed(), 0u);
   EXPECT_EQ(result.regrasps(), 12u);
-  for (const auto& p : result.pegs) EXPECT_EQ(p.regrasps, 2) << p.ring;
+  for (const auto& p : result.rings) EXPECT_EQ(p.regrasps, 2) << p.ring;
   EXPECT_EQ(result.json()["regrasps"], 12);
 }
 

@@ -64,6 +64,12 @@ class CheckRooms(unittest.TestCase):
                    "auto& x = things[static_cast<std::size_t>(" + "raven::index(arm))];\n")
         self.assert_fails_with("twin/include/twin/user.hpp:3: an arm's place cast by hand")
 
+    def test_the_other_arms_place_counted_by_hand_fails(self):
+        self.write("twin/include/twin/user.hpp",
+                   '#pragma once\n#include "common/thing.hpp"\n'
+                   "auto& y = things[1 - " + "slot(arm)];\n")
+        self.assert_fails_with("twin/include/twin/user.hpp:3: an arm's place cast by hand")
+
     def test_an_include_that_climbs_fails(self):
         self.write("common/include/common/thing.hpp", '#pragma once\n#include "twin/user.hpp"\n')
         self.assert_fails_with('common/include/common/thing.hpp:2: common includes "twin/user.hpp"')

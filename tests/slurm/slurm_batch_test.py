@@ -104,7 +104,7 @@ class SlurmBatch(unittest.TestCase):
         summary = json.loads((out / "summary.json").read_text())
         self.assertTrue(summary["whole"])
         self.assertEqual(summary["runs"], RUNS)
-        self.assertEqual(summary["pegs_placed"],
+        self.assertEqual(summary["rings_placed"],
                          sum(r["placed"] for r in self.reference.values()))
         self.assertEqual(summary["steps"], sum(r["steps"] for r in self.reference.values()))
 

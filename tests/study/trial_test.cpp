@@ -154,7 +154,7 @@ TEST(Trial, ThePegTransferTaskWatchesTheRingsAndTheBoard) {
   study::TrialSettings s;
   s.task.kind = study::TaskKind::PegTransfer;
   s.task.time_limit = 15.0;
-  s.dir = dir.path() / "pegs";
+  s.dir = dir.path() / "rings";
   s.pad = &pad;
   s.before_turn = [&](double, const auto&, const auto&) { pad.poll(); };
   const study::TrialRun run = study::runTrial(s);

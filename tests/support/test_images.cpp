@@ -23,7 +23,7 @@ bool isBackground(const unsigned char* p) {
   return std::abs(p[0] - 232) < 4 && std::abs(p[1] - 237) < 4 && std::abs(p[2] - 242) < 4;
 }
 
-bool isPegRed(const unsigned char* p) {
+bool isRingRed(const unsigned char* p) {
   return p[0] > p[1] + 40 && p[0] > p[2] + 30;
 }
 

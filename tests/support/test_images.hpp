@@ -22,7 +22,7 @@ struct Image {
 /// The viewer's clear colour (0.91, 0.93, 0.95).
 bool isBackground(const unsigned char* p);
 /// A soft body (the rings), lit or in shade.
-bool isPegRed(const unsigned char* p);
+bool isRingRed(const unsigned char* p);
 /// The collision view's orange.
 bool isCollisionOrange(const unsigned char* p);
 

@@ -12,7 +12,7 @@
 
 namespace test_support {
 
-/// The peg scene after 200 steps, seen by a width x height headless viewer.
+/// The peg-transfer scene after 200 steps, seen by a width x height headless viewer.
 struct HeadlessPegScene {
   static constexpr int kWidth = 640, kHeight = 400;
   ambf_like::MeshLibrary meshes;

@@ -1,5 +1,5 @@
-// The peg scene's cameras as observations: images of the asked size, segmentation ids that find
-// every ring, post, arm and the board where they are, depth that agrees with the camera's
+// The peg-transfer scene's cameras as observations: images of the asked size, segmentation ids that
+// find every ring, post, arm and the board where they are, depth that agrees with the camera's
 // geometry, the same world rendered twice giving the same images, and a camera made while an
 // older one still exists drawing after that one is gone (an environment's reset does this).
 
@@ -33,7 +33,7 @@ TEST(PegCameras, SegmentationFindsEveryRingPostAndArmAndDepthIsMetres) {
   EXPECT_TRUE(seen.count(scenario::kFirstStartPost));
   EXPECT_TRUE(seen.count(scenario::kFirstTargetPost + 5));
   EXPECT_TRUE(seen.count(scenario::kLeftArm) || seen.count(scenario::kLeftJaws));
-  for (std::uint32_t id : seen) EXPECT_LT(id, scenario::kPegSegments);
+  for (std::uint32_t id : seen) EXPECT_LT(id, scenario::kRingSegments);
   // Depth: finite exactly where something was drawn, within the camera's near and far planes.
   const auto views = scenario::pegTransferViews(*scene.world);
   const viewer::Camera camera = viewer::findView(views, "overview").camera;
@@ -48,7 +48,7 @@ TEST(PegCameras, SegmentationFindsEveryRingPostAndArmAndDepthIsMetres) {
   // A ring's pixels lie about as far as the ring is along the camera's axis.
   const Eigen::Vector3d eye = camera.eye();
   const Eigen::Vector3d axis = (camera.target - eye).normalized();
-  const double ring_depth = (scene.world->softBody("peg1").centerOfMass() - eye).dot(axis);
+  const double ring_depth = (scene.world->softBody("ring1").centerOfMass() - eye).dot(axis);
   double sum = 0.0;
   int n = 0;
   for (std::size_t p = 0; p < overview.depth.size(); ++p) {

@@ -1,6 +1,6 @@
-// The peg scene's named views, rendered headless (no X server, no Xvfb): each view draws the
-// scene; in the task views every ring covers enough pixels to count, and a ring on a target post
-// is told from a ring on a start post by where its colour lands.
+// The peg-transfer scene's named views, rendered headless (no X server, no Xvfb): each view draws
+// the scene; in the task views every ring covers enough pixels to count, and a ring on a target
+// post is told from a ring on a start post by where its colour lands.
 
 #include "scenario/task_views.hpp"
 
@@ -23,7 +23,7 @@ namespace {
 
 using test_support::Image;
 using test_support::isBackground;
-using test_support::isPegRed;
+using test_support::isRingRed;
 using test_support::shareNear;
 
 constexpr int kWidth = test_support::HeadlessPegScene::kWidth;
@@ -65,7 +65,7 @@ int ringPixelsAt(const Image& image, const viewer::Camera& camera, const Eigen::
   const PostBox box = boxAt(image, camera, post);
   const int side = 2 * box.half + 1;
   return static_cast<int>(
-      std::lround(shareNear(image, box.centre, box.half, isPegRed) * side * side));
+      std::lround(shareNear(image, box.centre, box.half, isRingRed) * side * side));
 }
 
 /// The same as a share of the box.
@@ -115,7 +115,7 @@ TEST(TaskViews, RingsOnTargetPostsAreToldFromRingsOnStartPosts) {
     Image image = scene.shoot(view);
     int ring_pixels = 0;
     for (int y = 0; y < kHeight; ++y) {
-      for (int x = 0; x < kWidth; ++x) ring_pixels += isPegRed(image.at(x, y));
+      for (int x = 0; x < kWidth; ++x) ring_pixels += isRingRed(image.at(x, y));
     }
     EXPECT_GT(ring_pixels, 3 * kMinRingPixels) << view;
     for (const scenario::RingJob& job : layout.jobsOf(arm)) {

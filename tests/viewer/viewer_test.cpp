@@ -1,4 +1,4 @@
-// The viewer renders the peg-transfer scene headless (EGL, no X server, no Xvfb): robot and pegs
+// The viewer renders the peg-transfer scene headless (EGL, no X server, no Xvfb): robot and rings
 // where the camera puts them, a collision view that differs from the visual one, numbered
 // snapshot series. Without Mesa's EGL every rendering test skips, saying so.
 
@@ -26,7 +26,7 @@ const std::filesystem::path kModels = RAVEN_MODELS_DIR;
 using test_support::Image;
 using test_support::isBackground;
 using test_support::isCollisionOrange;
-using test_support::isPegRed;
+using test_support::isRingRed;
 using test_support::shareNear;
 
 using Scene = test_support::HeadlessPegScene;
@@ -45,7 +45,7 @@ TEST(Viewer, RendersTheRobotAndThePegsWhereTheCameraPutsThem) {
   ASSERT_EQ(image.height, kHeight);
   const viewer::Camera& camera = scene.view->initialCamera();
 
-  // Every peg: its centre projects onto red pixels.
+  // Every ring: its centre projects onto red pixels.
   ASSERT_EQ(scene.world->softBodyCount(), 6u);
   for (std::size_t i = 0; i < scene.world->softBodyCount(); ++i) {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -53,8 +53,8 @@ TEST(Viewer, RendersTheRobotAndThePegsWhereTheCameraPutsThem) {
     for (const auto& n : nodes) centre += n;
     centre /= static_cast<double>(nodes.size());
     const auto pixel = camera.toPixel(centre, kWidth, kHeight);
-    ASSERT_TRUE(pixel) << "peg " << i << " is behind the camera";
-    EXPECT_GT(shareNear(image, *pixel, 4, isPegRed), 0.2)
+    ASSERT_TRUE(pixel) << "ring " << i << " is behind the camera";
+    EXPECT_GT(shareNear(image, *pixel, 4, isRingRed), 0.2)
         << scene.world->softBody(i).name() << " at pixel " << pixel->transpose();
   }
   // Each arm: the box its moving bodies project into is mostly drawn, not background.

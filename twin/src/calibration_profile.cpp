@@ -1,11 +1,25 @@
 #include "twin/calibration_profile.hpp"
 
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <stdexcept>
+
 #include "common/yaml_view.hpp"
 #include "yaml_joints.hpp"
 
 namespace twin {
 
 namespace {
+
+// The file's sections and keys, for the reader and the writer alike.
+constexpr const char* kActuation = "actuation";
+constexpr const char* kUncertainty = "uncertainty";
+constexpr const char* kCommands = "commands";
+constexpr const char* kServoJrDelivered = "servo_jr_delivered";
+constexpr const char* kReplay = "replay";
+constexpr const char* kIterationOverhead = "iteration_overhead";
+constexpr const char* kFit = "fit";
 
 /// One arm's lists: fitted `values` (inertia > 0, gravity_error > -1; MotorMechanics checks the
 /// rest when a twin is built) or uncertainties (all >= 0).
@@ -21,13 +35,40 @@ MotorMechanics readMechanics(const common::YamlView& node, bool values) {
 
 ArmsMechanics readArms(const common::YamlView& node, bool values,
                        std::vector<common::LoadIssue>& warnings) {
-  node.checkKeys({"left", "right"}, {true, warnings});
-  for (const char* arm : {"left", "right"}) {
-    node[arm].checkKeys(std::span(MotorMechanics::kNames.begin(), MotorMechanics::kNames.size()),
-                        {true, warnings});
+  node.checkKeys({raven::armName(Arm::Left), raven::armName(Arm::Right)}, {true, warnings});
+  for (Arm arm : raven::kArms) {
+    node[raven::armName(arm)].checkKeys(
+        std::span(MotorMechanics::kNames.begin(), MotorMechanics::kNames.size()), {true, warnings});
   }
   if (!warnings.empty()) throw common::LoadError(warnings);
-  return {readMechanics(node["left"], values), readMechanics(node["right"], values)};
+  return {readMechanics(node[raven::armName(Arm::Left)], values),
+          readMechanics(node[raven::armName(Arm::Right)], values)};
+}
+
+std::vector<double> listOf(const ArmJoints& joints) {
+  return {joints.data(), joints.data() + joints.size()};
+}
+
+void emitArms(YAML::Emitter& out, const char* key, const ArmsMechanics& arms) {
+  out << YAML::Key << key << YAML::Value << YAML::BeginMap;
+  for (Arm arm : raven::kArms) {
+    const MotorMechanics& m = arms[raven::slot(arm)];
+    out << YAML::Key << std::string(raven::armName(arm)) << YAML::Value << YAML::BeginMap;
+    for (std::size_t k = 0; k < MotorMechanics::kNames.size(); ++k) {
+      out << YAML::Key << std::string(MotorMechanics::kNames[k]) << YAML::Value << YAML::Flow
+          << listOf(m.field(k));
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+}
+
+/// One section of a single key and value.
+template <typename T>
+void emitSection(YAML::Emitter& out, const char* section, const char* key, const T& value) {
+  out << YAML::Key << section << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << key << YAML::Value << value;
+  out << YAML::EndMap;
 }
 
 }  // namespace
@@ -35,34 +76,62 @@ ArmsMechanics readArms(const common::YamlView& node, bool values,
 CalibrationProfile CalibrationProfile::load(const std::filesystem::path& file) {
   const auto root = common::YamlView::parseFile(file);
   std::vector<common::LoadIssue> warnings;
-  root.checkKeys({"actuation", "uncertainty", "commands", "replay", "fit"}, {true, warnings});
-  const auto replay = root.find("replay");
-  if (replay) replay->checkKeys({"iteration_overhead"}, {true, warnings});
-  const auto commands = root.find("commands");
-  if (commands) commands->checkKeys({"servo_jr_delivered"}, {true, warnings});
+  root.checkKeys({kActuation, kUncertainty, kCommands, kReplay, kFit}, {true, warnings});
+  const auto replay = root.find(kReplay);
+  if (replay) replay->checkKeys({kIterationOverhead}, {true, warnings});
+  const auto commands = root.find(kCommands);
+  if (commands) commands->checkKeys({kServoJrDelivered}, {true, warnings});
   if (!warnings.empty()) throw common::LoadError(warnings);
 
   CalibrationProfile profile;
-  profile.mechanics = readArms(root["actuation"], true, warnings);
-  if (const auto u = root.find("uncertainty")) {
+  profile.mechanics = readArms(root[kActuation], true, warnings);
+  if (const auto u = root.find(kUncertainty)) {
     profile.uncertainty = readArms(*u, false, warnings);
   } else {
     profile.uncertainty.fill(
         {ArmJoints::Zero(), ArmJoints::Zero(), ArmJoints::Zero(), ArmJoints::Zero()});
   }
   if (commands) {
-    profile.servo_jr_delivered = (*commands)["servo_jr_delivered"].asDouble();
+    profile.servo_jr_delivered = (*commands)[kServoJrDelivered].asDouble();
     if (!(profile.servo_jr_delivered > 0.5 && profile.servo_jr_delivered <= 1.0)) {
-      (*commands)["servo_jr_delivered"].fail("must be within 0.5..1 (a share of the increments)");
+      (*commands)[kServoJrDelivered].fail("must be within 0.5..1 (a share of the increments)");
     }
   }
   if (replay) {
-    profile.iteration_overhead = (*replay)["iteration_overhead"].asDouble();
+    profile.iteration_overhead = (*replay)[kIterationOverhead].asDouble();
     if (profile.iteration_overhead < 0.0 || profile.iteration_overhead > 1.0) {
-      (*replay)["iteration_overhead"].fail("must be within 0..1 s");
+      (*replay)[kIterationOverhead].fail("must be within 0..1 s");
     }
   }
   return profile;
+}
+
+void CalibrationProfile::save(const std::filesystem::path& file,
+                              const FitProvenance& provenance) const {
+  YAML::Emitter out;
+  out.SetDoublePrecision(6);
+  out << YAML::BeginMap;
+  emitArms(out, kActuation, mechanics);
+  emitArms(out, kUncertainty, uncertainty);
+  emitSection(out, kCommands, kServoJrDelivered, servo_jr_delivered);
+  emitSection(out, kReplay, kIterationOverhead, iteration_overhead);
+  out << YAML::Key << kFit << YAML::Value << YAML::BeginMap;
+  if (!provenance.inputs.empty()) out << YAML::Key << "inputs" << YAML::Value << provenance.inputs;
+  out << YAML::Key << "physical trials" << YAML::Value << provenance.physical;
+  out << YAML::Key << "notes" << YAML::Value << provenance.notes;
+  out << YAML::EndMap << YAML::EndMap;
+  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
+  std::ofstream stream(file);
+  stream
+      << "# The Raven-II twin's actuation, fitted by raven_calibrate to physical recordings:\n"
+         "# per arm and motor (shoulder, elbow, insertion, roll, wrist, jaw1, jaw2) the inertia\n"
+         "# (N m s^2 per motor rad at the gearbox output), Coulomb friction (N m, plus "
+         "load_friction\n"
+         "# per N m applied), viscous friction (N m s/rad) and the gravity compensation's "
+         "error\n"
+         "# (fraction). Use: --calibration FILE.\n"
+      << out.c_str() << "\n";
+  if (!stream) throw std::runtime_error(file.string() + ": cannot write");
 }
 
 void CalibrationProfile::applyTo(TwinOptions& options) const {

@@ -1,17 +1,24 @@
 #include "twin/gravity_compensation.hpp"
 
 #include <Eigen/Geometry>
-#include <cmath>
 
 #include "raven/design/firmware_links.hpp"
+#include "raven/platform_profile.hpp"
 
 namespace twin {
 
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+/// The robot's own firmware chain (profiles/physical.yaml's firmware_kinematics: the reference's
+/// section A), in each arm's base frame: the frames its gravity law works in.
+const raven::ArmConvention& firmwareChain(Arm arm) {
+  static const raven::PerArm<raven::ArmConvention> chains =
+      *raven::builtinProfile("physical").firmware_kinematics;
+  return chains[raven::slot(arm)];
+}
 
-/// One modified-DH link transform (raven2-kinematics.md: Rx(alpha) Tx(a) Rz(theta) Tz(d)).
+/// One modified-DH link transform (raven2-kinematics.md: Rx(alpha) Tx(a) Rz(theta) Tz(d)), a = 0
+/// on the first three rows.
 Eigen::Isometry3d link(double alpha, double theta, double d) {
   return Eigen::Isometry3d(Eigen::AngleAxisd(alpha, Eigen::Vector3d::UnitX())) *
          Eigen::Isometry3d(Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ())) *
@@ -21,13 +28,13 @@ Eigen::Isometry3d link(double alpha, double theta, double d) {
 }  // namespace
 
 ArmJoints gravityCompensation(Arm arm, const ArmJoints& q, const DriveTrain& drive) {
-  const bool gold = arm == Arm::Left;
-  // The first three rows of the robot's own DH (raven2-kinematics.md §A) with its joint offsets.
+  // The first three rows of the robot's own DH with its joint offsets.
+  const raven::ArmConvention& chain = firmwareChain(arm);
   const Eigen::Isometry3d t01 =
-      link(gold ? 0.0 : M_PI, q(raven::kShoulder) + (gold ? 205.0 : 25.0) * kDeg, 0.0);
-  const Eigen::Isometry3d t12 = link(75.0 * kDeg, q(raven::kElbow) + (gold ? M_PI : 0.0), 0.0);
-  const Eigen::Isometry3d t23 = link(gold ? M_PI - 52.0 * kDeg : 52.0 * kDeg,
-                                     gold ? M_PI / 2 : -M_PI / 2, q(raven::kInsertion));
+      link(chain.alpha[0], q(raven::kShoulder) + chain.theta_offset[raven::kShoulder], 0.0);
+  const Eigen::Isometry3d t12 =
+      link(chain.alpha[1], q(raven::kElbow) + chain.theta_offset[raven::kElbow], 0.0);
+  const Eigen::Isometry3d t23 = link(chain.alpha[2], chain.insertion_theta, q(raven::kInsertion));
   const auto links = raven::design::FirmwareLinks::of(arm);
   const auto& [m1, m2, m3] = links.mass;
   const Eigen::Vector3d& com1 = links.centre[0];

@@ -139,7 +139,7 @@ CommandResult RavenCore::servoTo(Arm arm, const ArmJoints& goal, bool check_jump
   m.move.reset();
   m.goal = clamped;
   ++commands_taken_;
-  if (machine_.status().is_busy && !arms_[1 - slot(arm)].move) machine_.setBusy(false);
+  if (machine_.status().is_busy && !arms_[slot(raven::other(arm))].move) machine_.setBusy(false);
   return CommandResult::ok(std::move(note));
 }
 

@@ -12,7 +12,7 @@ namespace twin {
 /// (for the tool velocities in jac_vel).
 struct TwinStateSources {
   const RavenCore& core;
-  const std::array<ActuatorReadings, 2>& readings;
+  const raven::PerArm<ActuatorReadings>& readings;
   const ArmPair& previous_position;
 };
 

@@ -6,7 +6,7 @@
 
 namespace twin {
 
-RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_row) {
+RecordedStart recordedStart(const raven::PerArm<recording::ArmSignals>& first_row) {
   RecordedStart out;
   for (Arm arm : raven::kArms) {
     const auto a = raven::slot(arm);
@@ -26,7 +26,7 @@ RecordedStart recordedStart(const recording::RsRecording& rs) {
   if (rs.rows.empty()) {
     throw recording::RecordingError(rs.path.string() + ": no rows to start from");
   }
-  const std::array<recording::ArmSignals, 2> first{rs.signals(0, Arm::Left),
+  const raven::PerArm<recording::ArmSignals> first{rs.signals(0, Arm::Left),
                                                    rs.signals(0, Arm::Right)};
   for (const auto& s : first) {
     for (const ArmJoints* v : {&s.joints, &s.joint_setpoint, &s.motor, &s.motor_velocity,

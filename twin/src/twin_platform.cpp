@@ -44,7 +44,7 @@ ambf_like::LoadedScene loadScene(const TwinOptions& options) {
   return scene;
 }
 
-std::array<ActuatorReadings, 2> readAll(const Actuation& actuation) {
+raven::PerArm<ActuatorReadings> readAll(const Actuation& actuation) {
   return {actuation.read(Arm::Left), actuation.read(Arm::Right)};
 }
 
@@ -137,7 +137,7 @@ std::optional<RavenStateSnapshot> TwinPlatform::ravenState() const {
 struct TwinPlatform::State {
   std::shared_ptr<const ambf_like::WorldState> world;
   std::any actuation;
-  std::array<ActuatorReadings, 2> readings;
+  raven::PerArm<ActuatorReadings> readings;
   ArmPair previous_position;
   RavenCore core;
   double requested;

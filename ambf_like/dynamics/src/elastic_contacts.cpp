@@ -8,7 +8,7 @@ namespace ambf_like::detail {
 namespace {
 
 /// Projected Gauss-Seidel stops when no impulse changed by more than this (N s: 10 micronewtons
-/// over a 1 ms step, a thousandth of a peg ring's weight; 1e-9 moved no force the tests read by
+/// over a 1 ms step, a thousandth of a ring's weight; 1e-9 moved no force the tests read by
 /// more than 1e-5 relative and took 1.6 times the sweeps over the main job), or after
 /// kMostContactSweeps sweeps.
 constexpr double kImpulseTolerance = 1e-8;

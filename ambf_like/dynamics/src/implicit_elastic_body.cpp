@@ -161,22 +161,10 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
                                             std::vector<ElasticContact>& contacts) {
   if (h != factored_step_) factor(h);
   const int count = body.m_nodes.size();
-  Eigen::VectorXd& start = start_;
-  Eigen::VectorXd& start_velocity = start_velocity_;
-  Eigen::VectorXd& weight = weight_;
-  start.resize(3 * count);
-  start_velocity.resize(3 * count);
-  weight.resize(3 * count);
-  for (int i = 0; i < count; ++i) {
-    start.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_x);
-    start_velocity.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_v);
-    weight.segment<3>(3 * i) = mass_(3 * i) * toEigen(acceleration[static_cast<std::size_t>(i)]);
-  }
-  // The last step ended where this one starts unless something moved the nodes since.
-  if (last_.positions.size() != start.size() || last_.positions != start) {
-    last_.positions = start;
-    evaluate(last_);
-  }
+  loadNodes(body, acceleration);
+  const Eigen::VectorXd& start = start_;
+  const Eigen::VectorXd& start_velocity = start_velocity_;
+  const Eigen::VectorXd& weight = weight_;
   const auto kinetic = [&](const Eigen::VectorXd& v) { return 0.5 * v.dot(mass_.cwiseProduct(v)); };
   const auto contactWork = [&](const Eigen::VectorXd& v) {
     double work = 0.0;
@@ -247,6 +235,31 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
       break;
     }
   }
+  storeNodes(body, h, contacts, velocity);
+  return report;
+}
+
+void ImplicitElasticBody::loadNodes(const btSoftBody& body,
+                                    const std::vector<btVector3>& acceleration) {
+  const int count = body.m_nodes.size();
+  start_.resize(3 * count);
+  start_velocity_.resize(3 * count);
+  weight_.resize(3 * count);
+  for (int i = 0; i < count; ++i) {
+    start_.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_x);
+    start_velocity_.segment<3>(3 * i) = toEigen(body.m_nodes[i].m_v);
+    weight_.segment<3>(3 * i) = mass_(3 * i) * toEigen(acceleration[static_cast<std::size_t>(i)]);
+  }
+  // The last step ended where this one starts unless something moved the nodes since.
+  if (last_.positions.size() != start_.size() || last_.positions != start_) {
+    last_.positions = start_;
+    evaluate(last_);
+  }
+}
+
+void ImplicitElasticBody::storeNodes(btSoftBody& body, double h,
+                                     const std::vector<ElasticContact>& contacts,
+                                     Eigen::VectorXd& velocity) const {
   // A node that began inside a surface was moved out: that is not motion it keeps.
   for (const auto& c : contacts) {
     if (c.pinned || c.start_depth <= 0.0) continue;
@@ -254,13 +267,12 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
     const double outward = c.normal.dot(v - c.surface_velocity);
     v -= c.normal * std::clamp(c.start_depth / h, 0.0, std::max(0.0, outward));
   }
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < body.m_nodes.size(); ++i) {
     btSoftBody::Node& node = body.m_nodes[i];
     node.m_q = node.m_x;
     node.m_x = toBt(last_.positions.segment<3>(3 * i));
     node.m_v = toBt(velocity.segment<3>(3 * i));
   }
-  return report;
 }
 
 }  // namespace ambf_like::detail

@@ -1,6 +1,7 @@
 #include <sstream>
 
 #include "adf_readers.hpp"
+#include "inertia_check.hpp"
 
 namespace ambf_like::detail {
 
@@ -71,19 +72,8 @@ constexpr std::string_view kBodyKeys[] = {
     "redundant", "detached"};
 // clang-format on
 
-}  // namespace
-
-BodySpec readBody(const YamlView& node, const std::string& identifier, const MeshDirectories& dirs,
-                  LoadContext& context) {
-  node.checkKeys(kBodyKeys, context.keyCheck());
-  noteNotSimulated(node, context);
-  BodySpec body;
-  body.where = node.where();
-  body.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
-  if (body.name.empty()) node["name"].fail("body name is empty");
-
-  const MeshDirectories local = meshDirectoriesOf(node, dirs);
-
+/// The body's mass, inertia, frames, scale, gravity and passivity.
+void readMassAndPlacement(const YamlView& node, BodySpec& body, LoadContext& context) {
   if (auto mass = node.find("mass")) {
     body.mass = nonNegative(*mass, 1e6, " kg");
   } else {  // AMBF warns and leaves the body's mass at its default: static
@@ -100,6 +90,9 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
     if (body.mass > 0.0 && (body.inertia->array() <= 0.0).any()) {
       inertia->fail("a body with mass needs every principal moment (ix, iy, iz) above zero");
     }
+    if (const auto why = impossibleInertia(*body.inertia); body.mass > 0.0 && why) {
+      inertia->fail(*why);
+    }
   }
   if (auto offset = node.find("inertial offset")) body.inertial_offset = offset->asPose();
   if (auto location = node.find("location")) body.location = location->asPose();
@@ -109,7 +102,10 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   }
   if (auto gravity = node.find("gravity")) body.gravity = gravity->asXyz();
   body.passive = node.getBool("passive", false);
+}
 
+/// Friction, damping and restitution.
+void readSurface(const YamlView& node, BodySpec& body, LoadContext& context) {
   if (auto friction = node.find("friction")) {
     friction->checkKeys({"static", "rolling"}, context.keyCheck());
     if (auto v = friction->find("static"))
@@ -127,7 +123,10 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   if (auto restitution = node.find("restitution")) {
     body.surface.restitution = nonNegative(*restitution, 1.0, "");
   }
+}
 
+/// The collision margin and groups, and the collision and visual primitives.
+void readCollisionSettings(const YamlView& node, BodySpec& body, LoadContext& context) {
   auto& collision = body.collision;
   if (auto margin = node.find("collision margin"))
     collision.margin = nonNegative(*margin, 1.0, " m");
@@ -140,7 +139,13 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   }
   collision.primitives = readCollisionPrimitives(node, context);
   body.visual_primitives = readVisualPrimitives(node, context);
+}
 
+/// Finds the visual and collision meshes in `local`'s folders, reporting the missing ones;
+/// returns whether the body's collision geometry was to come from a mesh that is missing.
+bool findMeshes(const YamlView& node, const MeshDirectories& local, BodySpec& body,
+                LoadContext& context) {
+  auto& collision = body.collision;
   const std::string mesh_name = node.has("mesh") ? node["mesh"].asString() : "";
   if (node.has("mesh") && mesh_name.empty()) {
     context.tolerate(node["mesh"].where(), "an empty mesh name: the body has no mesh");
@@ -180,9 +185,15 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
   }
   if (visual) body.visual_mesh = *visual;
   if (collision_mesh) collision.mesh = *collision_mesh;
+  return wants_collision_mesh && !collision_mesh;
+}
 
-  const bool missing_geometry = wants_collision_mesh && !collision_mesh;
-  if (body.mass > 0.0 && !body.inertia && (collision.empty() || missing_geometry)) {
+/// A dynamic body left without inertia gets a solid sphere's (AMBF computes it from the collision
+/// shape, which it lacks); a plane must be static.
+void checkDynamics(const YamlView& node, bool missing_geometry, BodySpec& body,
+                   LoadContext& context) {
+  const std::string body_label = "body '" + body.name + "': ";
+  if (body.mass > 0.0 && !body.inertia && (body.collision.empty() || missing_geometry)) {
     const double r = kFallbackInertiaRadius;
     body.inertia = Vec3::Constant(0.4 * body.mass * r * r);
     context.tolerate(node["mass"].where(),
@@ -193,11 +204,29 @@ BodySpec readBody(const YamlView& node, const std::string& identifier, const Mes
                          "; using a solid sphere's of its mass and " + std::to_string(r) +
                          " m radius (give 'inertia' to set it)");
   }
-  for (const auto& primitive : collision.primitives) {
+  for (const auto& primitive : body.collision.primitives) {
     if (primitive.type == PrimitiveType::Plane && body.mass > 0.0) {
       node["mass"].fail(body_label + "a PLANE collision shape needs a static body (mass 0)");
     }
   }
+}
+
+}  // namespace
+
+BodySpec readBody(const YamlView& node, const std::string& identifier, const MeshDirectories& dirs,
+                  LoadContext& context) {
+  node.checkKeys(kBodyKeys, context.keyCheck());
+  noteNotSimulated(node, context);
+  BodySpec body;
+  body.where = node.where();
+  body.name = node.has("name") ? node["name"].asString() : stripPrefix(identifier);
+  if (body.name.empty()) node["name"].fail("body name is empty");
+  const MeshDirectories local = meshDirectoriesOf(node, dirs);
+  readMassAndPlacement(node, body, context);
+  readSurface(node, body, context);
+  readCollisionSettings(node, body, context);
+  const bool missing_geometry = findMeshes(node, local, body, context);
+  checkDynamics(node, missing_geometry, body, context);
   return body;
 }
 

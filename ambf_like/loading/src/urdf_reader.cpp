@@ -11,6 +11,7 @@
 #include "common/farthest.hpp"
 #include "common/utf8.hpp"
 #include "common/xml_nesting.hpp"
+#include "inertia_check.hpp"
 #include "urdf_lines.hpp"
 
 namespace ambf_like::detail {
@@ -151,6 +152,9 @@ void readInertial(const urdf::Link& link, bool is_root, BodySpec& body, const Ur
   if (in.mass > 0.0 && (body.inertia->array() <= 0.0).any()) {
     ctx.fail(path, "a link with mass needs a positive definite inertia (a principal moment is " +
                        std::to_string(body.inertia->minCoeff()) + ")");
+  }
+  if (const auto why = impossibleInertia(*body.inertia); in.mass > 0.0 && why) {
+    ctx.fail(path, *why);
   }
 }
 

@@ -29,8 +29,9 @@ namespace ambf_like {
 namespace {
 
 /// Hash buckets of the soft-body sparse SDF. Bullet's default, 2383, is sized for its 0.25 m
-/// voxels; at millimetre voxels the peg scene holds 58,000 cells after 3 s and a lookup walked
-/// up to 11 of them (611 steps/s; with this table 1.05 and 1,187 steps/s). A prime near 2^18.
+/// voxels; at millimetre voxels the peg-transfer scene holds 58,000 cells after 3 s and a lookup
+/// walked up to 11 of them (611 steps/s; with this table 1.05 and 1,187 steps/s). A prime near
+/// 2^18.
 constexpr int kSdfHashBuckets = 262139;
 
 /// Finds an item by qualified name, or by plain name when that is unique.

@@ -17,7 +17,8 @@
 
 namespace ambf_like {
 
-namespace {
+// What WorldState holds of each object (named, not anonymous: WorldState's members are of them).
+namespace detail {
 
 /// A rigid body's motion.
 struct RigidState {
@@ -53,6 +54,14 @@ struct ManifoldState {
   const btCollisionObject* body1;
   std::vector<btManifoldPoint> points;
 };
+
+}  // namespace detail
+
+namespace {
+
+using detail::ManifoldState;
+using detail::RigidState;
+using detail::SoftState;
 
 RigidState rigidStateOf(const btRigidBody& b) {
   return {detail::motionOf(b), b.getLinearVelocity(), b.getAngularVelocity()};

@@ -78,8 +78,8 @@ void World::Impl::readJointCoordinates() {
 }
 
 /// The sparse SDF frees the cells unused for a number of collections; a collection walks every
-/// hash bucket (1.4 % of the peg scene's step when run every 64 steps), so it runs every 256
-/// steps and frees cells unused for 64 of them: 16k steps. With no cell at all (no soft body
+/// hash bucket (1.4 % of the peg-transfer scene's step when run every 64 steps), so it runs every
+/// 256 steps and frees cells unused for 64 of them: 16k steps. With no cell at all (no soft body
 /// has met a rigid one) there is nothing to walk for.
 void World::Impl::collectSdfCells() {
   if (soft_bodies.empty() || steps % 256 != 0) return;

@@ -101,6 +101,14 @@ class RavenRosClient::Impl {
   };
 
   void subscribe();
+  void advertiseCommands();
+  void subscribeStatus();
+  /// The arm's joint and pose topics (measured and setpoint).
+  void subscribeArm(Arm topic_arm);
+  /// The twin's grasp force topics (optional: the physical robot has none).
+  void subscribeForces(Arm arm);
+  /// A message's time: its stamp in lock-step (the simulated clock), else when it arrived.
+  double stampOf(const ::ros::Time& stamp) { return options_.lock_step ? stamp.toSec() : now(); }
   void waitForRobot();
   CommandResult publish(CommandTopic topic, const PlatformCommand& command);
   void streamMoves(double at);
@@ -213,6 +221,20 @@ void RavenRosClient::Impl::subscribe() {
   auto& c = connection_;
   c.node = ::ros::NodeHandle(options_.robot_namespace);
   c.node.setCallbackQueue(&c.queue);
+  advertiseCommands();
+  subscribeStatus();
+  for (Arm arm : raven::kArms) subscribeArm(arm);
+  for (Arm arm : raven::kArms) subscribeForces(arm);
+  if (options_.lock_step) {
+    c.step = c.node.advertise<raven_twin::Step>(std::string(kStepTopic), 100);
+    c.subscribers.push_back(c.node.subscribe<raven_twin::StepDone>(
+        std::string(kStepDoneTopic), 100,
+        [this](const raven_twin::StepDone::ConstPtr& m) { step_done_ = *m; }, {}, lowLatency()));
+  }
+}
+
+void RavenRosClient::Impl::advertiseCommands() {
+  auto& c = connection_;
   for (CommandTopic topic : allCommandTopics()) {
     const std::string name(topicName(topic));
     auto& publisher = c.commands[static_cast<std::size_t>(topic)];
@@ -231,10 +253,10 @@ void RavenRosClient::Impl::subscribe() {
         break;  // the client expresses increments as servo_cr
     }
   }
-  const bool lock_step = options_.lock_step;
-  auto stampOf = [this, lock_step](const ::ros::Time& stamp) {
-    return lock_step ? stamp.toSec() : now();
-  };
+}
+
+void RavenRosClient::Impl::subscribeStatus() {
+  auto& c = connection_;
   c.subscribers.push_back(c.node.subscribe<crtk_msgs::operating_state>(
       "operating_state", 10,
       [this](const crtk_msgs::operating_state::ConstPtr& m) {
@@ -254,81 +276,79 @@ void RavenRosClient::Impl::subscribe() {
         state_stamps_[kRavenStamp] = m->hdr.stamp;
       },
       {}, lowLatency()));
-  for (Arm topic_arm : raven::kArms) {
-    const std::string ns = armNamespace(topic_arm) + "/";
-    const Arm source = measuredJsSource(topic_arm, options_.arm_swap);
-    c.subscribers.push_back(c.node.subscribe<sensor_msgs::JointState>(
-        ns + "measured_js", 10,
-        [this, topic_arm, source, stampOf](const sensor_msgs::JointState::ConstPtr& m) {
-          auto parsed = jointSampleFromState(*m);
-          if (!parsed.value) {
-            ignored(armNamespace(topic_arm) + "/measured_js", parsed.error);
-            return;
-          }
-          const std::string colour(armColour(source));
-          if (!m->name.empty() && m->name[0].rfind(colour, 0) != 0 && !connection_.warned_names) {
-            connection_.warned_names = true;
-            spdlog::warn(
-                "{}/measured_js carries '{}' while the arm swap is {}: check the client's "
-                "arm_swap setting against the robot",
-                armNamespace(topic_arm), common::printable(m->name[0], 40),
-                options_.arm_swap ? "on" : "off");
-          }
-          parsed.value->time = stampOf(m->header.stamp);
-          measured_[slot(source)] = parsed.value;
-          state_stamps_[kMeasuredStamp + slot(topic_arm)] = m->header.stamp;
-          last_measured_ = Clock::now();
-        },
-        {}, lowLatency()));
-    c.subscribers.push_back(c.node.subscribe<sensor_msgs::JointState>(
-        ns + "setpoint_js", 10,
-        [this, topic_arm, stampOf](const sensor_msgs::JointState::ConstPtr& m) {
-          auto parsed = jointSampleFromState(*m);
-          if (!parsed.value) {
-            ignored(armNamespace(topic_arm) + "/setpoint_js", parsed.error);
-            return;
-          }
-          parsed.value->time = stampOf(m->header.stamp);
-          setpoint_[slot(topic_arm)] = parsed.value;
-          state_stamps_[kSetpointStamp + slot(topic_arm)] = m->header.stamp;
-        },
-        {}, lowLatency()));
-    for (const auto& [name, poses] :
-         {std::pair{"measured_cp", &measured_cp_}, {"setpoint_cp", &setpoint_cp_}}) {
-      auto* target = poses;  // a lambda may not capture a structured binding before C++20
-      c.subscribers.push_back(c.node.subscribe<geometry_msgs::TransformStamped>(
-          ns + name, 10,
-          [topic_arm, target, stampOf](const geometry_msgs::TransformStamped::ConstPtr& m) {
-            const auto pose = poseFromTransform(m->transform);
-            if (pose.value)
-              (*target)[slot(topic_arm)] = PoseSample{stampOf(m->header.stamp), *pose.value};
-          },
-          {}, lowLatency()));
-    }
-  }
-  for (Arm arm : raven::kArms) {
-    const std::string ns = graspNamespace(arm) + "/";
-    c.optional_subscribers.push_back(c.node.subscribe<raven_twin::GraspForces>(
-        ns + "jaw_forces", 10,
-        [this, arm, stampOf](const raven_twin::GraspForces::ConstPtr& m) {
-          jaw_forces_[slot(arm)] = *m;
-          readForces(arm, stampOf(m->header.stamp));
-        },
-        {}, lowLatency()));
-    c.optional_subscribers.push_back(c.node.subscribe<geometry_msgs::WrenchStamped>(
-        ns + "measured_cf", 10,
-        [this, arm, stampOf](const geometry_msgs::WrenchStamped::ConstPtr& m) {
-          wrench_[slot(arm)] = *m;
-          readForces(arm, stampOf(m->header.stamp));
+}
+
+void RavenRosClient::Impl::subscribeArm(Arm topic_arm) {
+  auto& c = connection_;
+  const std::string ns = armNamespace(topic_arm) + "/";
+  const Arm source = measuredJsSource(topic_arm, options_.arm_swap);
+  c.subscribers.push_back(c.node.subscribe<sensor_msgs::JointState>(
+      ns + "measured_js", 10,
+      [this, topic_arm, source](const sensor_msgs::JointState::ConstPtr& m) {
+        auto parsed = jointSampleFromState(*m);
+        if (!parsed.value) {
+          ignored(armNamespace(topic_arm) + "/measured_js", parsed.error);
+          return;
+        }
+        const std::string colour(armColour(source));
+        if (!m->name.empty() && m->name[0].rfind(colour, 0) != 0 && !connection_.warned_names) {
+          connection_.warned_names = true;
+          spdlog::warn(
+              "{}/measured_js carries '{}' while the arm swap is {}: check the client's "
+              "arm_swap setting against the robot",
+              armNamespace(topic_arm), common::printable(m->name[0], 40),
+              options_.arm_swap ? "on" : "off");
+        }
+        parsed.value->time = stampOf(m->header.stamp);
+        measured_[slot(source)] = parsed.value;
+        state_stamps_[kMeasuredStamp + slot(topic_arm)] = m->header.stamp;
+        last_measured_ = Clock::now();
+      },
+      {}, lowLatency()));
+  c.subscribers.push_back(c.node.subscribe<sensor_msgs::JointState>(
+      ns + "setpoint_js", 10,
+      [this, topic_arm](const sensor_msgs::JointState::ConstPtr& m) {
+        auto parsed = jointSampleFromState(*m);
+        if (!parsed.value) {
+          ignored(armNamespace(topic_arm) + "/setpoint_js", parsed.error);
+          return;
+        }
+        parsed.value->time = stampOf(m->header.stamp);
+        setpoint_[slot(topic_arm)] = parsed.value;
+        state_stamps_[kSetpointStamp + slot(topic_arm)] = m->header.stamp;
+      },
+      {}, lowLatency()));
+  for (const auto& [name, poses] :
+       {std::pair{"measured_cp", &measured_cp_}, {"setpoint_cp", &setpoint_cp_}}) {
+    auto* target = poses;  // a lambda may not capture a structured binding before C++20
+    c.subscribers.push_back(c.node.subscribe<geometry_msgs::TransformStamped>(
+        ns + name, 10,
+        [this, topic_arm, target](const geometry_msgs::TransformStamped::ConstPtr& m) {
+          const auto pose = poseFromTransform(m->transform);
+          if (pose.value)
+            (*target)[slot(topic_arm)] = PoseSample{stampOf(m->header.stamp), *pose.value};
         },
         {}, lowLatency()));
   }
-  if (lock_step) {
-    c.step = c.node.advertise<raven_twin::Step>(std::string(kStepTopic), 100);
-    c.subscribers.push_back(c.node.subscribe<raven_twin::StepDone>(
-        std::string(kStepDoneTopic), 100,
-        [this](const raven_twin::StepDone::ConstPtr& m) { step_done_ = *m; }, {}, lowLatency()));
-  }
+}
+
+void RavenRosClient::Impl::subscribeForces(Arm arm) {
+  auto& c = connection_;
+  const std::string ns = graspNamespace(arm) + "/";
+  c.optional_subscribers.push_back(c.node.subscribe<raven_twin::GraspForces>(
+      ns + "jaw_forces", 10,
+      [this, arm](const raven_twin::GraspForces::ConstPtr& m) {
+        jaw_forces_[slot(arm)] = *m;
+        readForces(arm, stampOf(m->header.stamp));
+      },
+      {}, lowLatency()));
+  c.optional_subscribers.push_back(c.node.subscribe<geometry_msgs::WrenchStamped>(
+      ns + "measured_cf", 10,
+      [this, arm](const geometry_msgs::WrenchStamped::ConstPtr& m) {
+        wrench_[slot(arm)] = *m;
+        readForces(arm, stampOf(m->header.stamp));
+      },
+      {}, lowLatency()));
 }
 
 void RavenRosClient::Impl::waitForRobot() {

@@ -41,7 +41,7 @@ struct MappingResult {
   /// Some joint target was saturated at a limit (the pad rumbles).
   bool clamped = false;
   /// IK found no solution for an arm: that arm keeps its previous target.
-  std::array<bool, 2> unreachable{};
+  raven::PerArm<bool> unreachable{};
 };
 
 /// The mapping's state between iterations: the scheme, the IK mode, and per arm the open-loop
@@ -86,7 +86,7 @@ class GamepadMapping {
   bool solve(Arm arm, IkMode mode, MappingResult& result);
 
   raven::PlatformProfile profile_;
-  std::array<raven::ArmKinematics, 2> kinematics_;
+  raven::PerArm<raven::ArmKinematics> kinematics_;
   MappingConstants constants_;
   MappingScheme scheme_;
   IkMode ik_mode_ = IkMode::WristLocked;

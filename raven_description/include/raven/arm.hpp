@@ -22,10 +22,10 @@ enum JointIndex { kShoulder = 0, kElbow, kInsertion, kRoll, kWrist, kJaw1, kJaw2
 inline constexpr std::array<std::string_view, kJointCount> kJointNames{
     "shoulder", "elbow", "insertion", "roll", "wrist", "jaw1", "jaw2"};
 
-inline int index(Arm arm) {
+constexpr int index(Arm arm) {
   return static_cast<int>(arm);
 }
-inline Arm other(Arm arm) {
+constexpr Arm other(Arm arm) {
   return arm == Arm::Left ? Arm::Right : Arm::Left;
 }
 /// One value per arm, the left first: the container every room keeps its two arms' things in.
@@ -34,7 +34,7 @@ using PerArm = std::array<T, 2>;
 /// Both arms' joint vectors.
 using ArmPair = PerArm<ArmJoints>;
 /// The arm's place in a PerArm.
-inline std::size_t slot(Arm arm) {
+constexpr std::size_t slot(Arm arm) {
   return static_cast<std::size_t>(arm);
 }
 

@@ -55,7 +55,7 @@ class ArmRoutine {
   /// Jobs finished (whatever their outcome).
   std::size_t finished() const { return job_; }
   /// Per job, how often the operator opened and grasped its ring again: it did not come up with
-  /// the jaws, slipped out on the way, or landed off its target post (at most twice a peg, each
+  /// the jaws, slipped out on the way, or landed off its target post (at most twice a ring, each
   /// time squeezing half the first squeeze harder).
   const std::vector<int>& regrasps() const { return regrasps_; }
   const std::vector<RingJob>& jobs() const { return jobs_; }
@@ -63,7 +63,7 @@ class ArmRoutine {
   const Eigen::Vector3d& graspPivot() const { return grasp_.pivot; }
 
  private:
-  /// Where the grasp of the current job sits, measured from the peg when it starts.
+  /// Where the grasp of the current job sits, measured from the ring when it starts.
   struct Grasp {
     Eigen::Matrix3d orientation;  ///< jaws down, turning about the ring's tangent
     Eigen::Vector3d pivot;        ///< the jaw axis at the grasp
@@ -73,7 +73,7 @@ class ArmRoutine {
   RingView ring(const bridge::ScenePerception& scene) const;
   void plan(const bridge::ScenePerception& scene);
   /// The joints (within the limits, nearest `target`) that hold the jaws open over the grasp.
-  std::optional<raven::ArmJoints> overPeg(const raven::ArmJoints& target) const;
+  std::optional<raven::ArmJoints> overRing(const raven::ArmJoints& target) const;
   /// Moves the tool point towards `goal` by at most `step`, the wrist locked.
   raven::ArmJoints translate(const raven::ArmJoints& target, const Eigen::Vector3d& goal,
                              double step, bool& arrived) const;
@@ -92,6 +92,18 @@ class ArmRoutine {
   /// Counts a re-grasp of the current job and marks it to be started again, unless it had its
   /// two; logs `why`.
   bool decideToRegrasp(const char* why);
+  /// The current phase's command from `target` (the controller's current one), and whether it
+  /// moves on; one step per phase below for the longer ones.
+  raven::ArmJoints stepPhase(const raven::ArmJoints& target, const raven::ArmJoints& measured,
+                             const bridge::ScenePerception& scene);
+  raven::ArmJoints orient(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
+  raven::ArmJoints align(const raven::ArmJoints& target, const raven::ArmJoints& measured);
+  raven::ArmJoints carry(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
+  raven::ArmJoints lower(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
+  raven::ArmJoints retreat(const raven::ArmJoints& target);
+  /// The debug line of a phase change of job `job`, the tool at `q`.
+  void logTransition(Phase before, std::size_t job, const raven::ArmJoints& q,
+                     const bridge::ScenePerception& scene) const;
 
   raven::Arm arm_;
   raven::PlatformProfile profile_;

@@ -8,7 +8,7 @@
 
 namespace scenario {
 
-/// Runs, runs with all six placed, pegs placed and lost, re-grasps, runs timed out, and the
+/// Runs, runs with all six placed, rings placed and lost, re-grasps, runs timed out, and the
 /// clocks summed with the rates over all runs, from each run's JSON row
 /// (PegTransferResult::json), so a merge of shards' JSON lines totals exactly as one process.
 nlohmann::json summarize(const std::vector<nlohmann::json>& rows);

@@ -10,14 +10,14 @@
 
 namespace scenario {
 
-/// Collects, per peg, each jaw's normal force (measured_cf) at every iteration its arm carries
+/// Collects, per ring, each jaw's normal force (measured_cf) at every iteration its arm carries
 /// it, and answers with the median per jaw.
 class CarriedSqueeze {
  public:
-  /// One iteration of `peg` carried by a grasper whose forces are `forces`.
-  void record(const std::string& peg, const bridge::GrasperForces& forces);
-  /// The median normal force (N) of each jaw on `peg` while carried; zeros if it never was.
-  std::array<double, 2> median(const std::string& peg) const;
+  /// One iteration of `ring` carried by a grasper whose forces are `forces`.
+  void record(const std::string& ring, const bridge::GrasperForces& forces);
+  /// The median normal force (N) of each jaw on `ring` while carried; zeros if it never was.
+  std::array<double, 2> median(const std::string& ring) const;
 
  private:
   std::map<std::string, std::array<std::vector<double>, 2>> samples_;

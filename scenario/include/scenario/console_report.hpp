@@ -1,5 +1,5 @@
 #pragma once
-// What the main job prints: a progress bar on a terminal, the per-peg table, the timing lines,
+// What the main job prints: a progress bar on a terminal, the per-ring table, the timing lines,
 // a batch's per-run table, and the rectangle task's summary.
 
 #include <chrono>
@@ -35,11 +35,11 @@ class ProgressBar {
   std::chrono::steady_clock::time_point last_{};
 };
 
-/// The per-peg table of one run, then the totals line.
-std::string pegTable(const PegTransferResult& result);
+/// The per-ring table of one run, then the totals line.
+std::string ringTable(const PegTransferResult& result);
 /// "simulated 85.9 s in 52.0 s of wall time: 1.65x real time; dynamic loop 1,710 Hz ..."
 std::string timingLine(const RunTiming& timing);
-/// One row per run (seed, pegs placed, lost, times, rates) and the batch's totals.
+/// One row per run (seed, rings placed, lost, times, rates) and the batch's totals.
 std::string batchTable(const std::vector<PegTransferResult>& results);
 /// The rectangle task's extents per arm, against the requested rectangle.
 std::string rectangleSummary(const RectangleResult& result, const RectangleOptions& options);

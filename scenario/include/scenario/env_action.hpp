@@ -40,13 +40,13 @@ ActionBounds actionBounds(EnvAction kind, const raven::JointLimits& limits);
 /// naming its index. A tool displacement out of reach leaves that arm's position where it is.
 controller::ArmPair targetsOf(EnvAction kind, const Eigen::VectorXd& action,
                               const controller::ArmPair& current,
-                              const std::array<raven::ArmKinematics, 2>& kinematics,
+                              const raven::PerArm<raven::ArmKinematics>& kinematics,
                               const raven::ArmJoints& home);
 
 /// The action of `kind` that asks for `targets` from `current` (tool deltas: the tool tips'
 /// displacement and the jaws' opening; a change of the wrist's joints is not expressible).
 Eigen::VectorXd actionFor(EnvAction kind, const controller::ArmPair& targets,
                           const controller::ArmPair& current,
-                          const std::array<raven::ArmKinematics, 2>& kinematics);
+                          const raven::PerArm<raven::ArmKinematics>& kinematics);
 
 }  // namespace scenario

@@ -1,5 +1,5 @@
 #pragma once
-// Whether the two arms can hand a peg over in mid-air: where each arm's tool point can go,
+// Whether the two arms can hand a ring over in mid-air: where each arm's tool point can go,
 // sampled over its whole joint space within the limits, along the x axis that separates them.
 
 #include <cstdint>

@@ -1,8 +1,8 @@
 #pragma once
 // The peg-transfer scene's cameras as observations: colour, depth and segmentation images of
 // its named views (task_views.hpp), with segmentation ids stable across runs and scenes:
-//   0 background, 1 the board's plate, 2-7 the start posts of peg1..peg6, 8-13 their target
-//   posts, 14-19 the rings peg1..peg6, 20 the left arm's links, 21 the left grasper's jaws,
+//   0 background, 1 the board's plate, 2-7 the start posts of ring1..ring6, 8-13 their target
+//   posts, 14-19 the rings ring1..ring6, 20 the left arm's links, 21 the left grasper's jaws,
 //   22 the right arm's links, 23 the right grasper's jaws, 24 anything else.
 
 #include <string>
@@ -28,7 +28,7 @@ enum PegSegment : std::uint32_t {
 };
 
 /// How many ids there are (the largest + 1).
-inline constexpr std::uint32_t kPegSegments = 25;
+inline constexpr std::uint32_t kRingSegments = 25;
 
 /// One world's cameras: built after each reset (the world is new), rendering on demand.
 class PegCameras {

@@ -1,5 +1,5 @@
 #pragma once
-// The peg-transfer scenario, the project's main job: both arms move the six soft pegs from the
+// The peg-transfer scenario, the project's main job: both arms move the six soft rings from the
 // start row to the target row, driven through the same controller path a gamepad uses
 // (DualPlatformController: velocity caps, wrist-locked IK), optionally recording the paper's rs
 // file. The job sees only a RavenPlatform and a ScenePerception, so it runs on the in-process
@@ -49,12 +49,12 @@ struct PegTransferOptions {
   bool stopRequested() const { return stop != nullptr && stop->load(); }
   /// Simulated seconds after which the run stops, whatever is left undone.
   double time_limit = 240.0;
-  /// Simulated seconds the pegs settle after the last release before they are judged.
+  /// Simulated seconds the rings settle after the last release before they are judged.
   double settle_time = 1.0;
   /// Called after every manual-loop iteration.
   ProgressCallback progress;
   /// Shown the world before the first move, after every manual-loop iteration (settling too)
-  /// and once the pegs are judged: the viewer's hook (in process only).
+  /// and once the rings are judged: the viewer's hook (in process only).
   WorldObserver observe;
 };
 
@@ -73,6 +73,6 @@ PegTransferResult runPegTransferOn(bridge::RavenPlatform& platform, bridge::Scen
 twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
                                   const SceneVariation& variation);
 /// The scripted operators of both arms (left first), each with its arm's jobs.
-std::array<ArmRoutine, 2> pegTransferOperators(const PegLayout& layout, double squeeze);
+raven::PerArm<ArmRoutine> pegTransferOperators(const PegLayout& layout, double squeeze);
 
 }  // namespace scenario

@@ -18,6 +18,7 @@
 #include "common/actuation_kind.hpp"
 #include "scenario/arm_routine.hpp"
 #include "scenario/env_action.hpp"
+#include "scenario/observation_layout.hpp"
 #include "scenario/peg_layout.hpp"
 #include "scenario/scripted_session.hpp"
 #include "twin/world_perception.hpp"
@@ -68,11 +69,8 @@ struct PegTransferStep {
 /// on the simulated clock (deterministic: the same seed and actions give the same episode).
 class PegTransferEnv {
  public:
-  /// Per arm (left first): measured joints (7), commanded targets (7), tool pose (x, y, z and
-  /// the quaternion w, x, y, z; measured_cp), grasp force and torque (6, measured_cf); then per
-  /// ring peg1..peg6 its centre (3). Layout: [0, 14) measured joints, [14, 28) targets,
-  /// [28, 42) tool poses, [42, 54) grasp wrenches, [54, 72) ring centres.
-  static constexpr int kObservationSize = 72;
+  /// The observation's size; what sits where: scenario/observation_layout.hpp.
+  static constexpr int kObservationSize = observation::kSize;
 
   explicit PegTransferEnv(PegTransferEnvOptions options = {});
   ~PegTransferEnv();
@@ -126,10 +124,10 @@ class PegTransferEnv {
 
   PegTransferEnvOptions options_;
   raven::PlatformProfile profile_;  ///< the controller's (the physical one), read once
-  std::array<raven::ArmKinematics, 2> kinematics_;
+  raven::PerArm<raven::ArmKinematics> kinematics_;
   PegLayout layout_;
   std::unique_ptr<ScriptedSession> session_;
-  std::optional<std::array<ArmRoutine, 2>> expert_;
+  std::optional<raven::PerArm<ArmRoutine>> expert_;
   std::array<const ambf_like::SoftBody*, 6> rings_{};
   std::unique_ptr<twin::WorldPerception> scene_;  ///< what the expert and the judge see
   int placed_ = 0;

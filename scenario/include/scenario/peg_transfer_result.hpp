@@ -15,14 +15,14 @@
 
 namespace scenario {
 
-/// Whether the grasp assist may pin a touched peg to the jaws (grasp_assist.hpp).
+/// Whether the grasp assist may pin a touched ring to the jaws (grasp_assist.hpp).
 enum class AssistMode { Off, Contact };
 
 std::string_view assistName(AssistMode mode);
 
-/// One peg's transfer, as the run's ScenePerception showed it.
+/// One ring's transfer, as the run's ScenePerception showed it.
 struct RingOutcome {
-  std::string ring;  ///< its soft body's name in the scene (peg1..peg6)
+  std::string ring;  ///< its soft body's name in the scene (ring1..ring6)
   raven::Arm arm = raven::Arm::Left;
   Eigen::Vector2d from = Eigen::Vector2d::Zero(), to = Eigen::Vector2d::Zero();
   bool grasped = false;  ///< the ring left the board (its bottom 5 mm above it)
@@ -45,11 +45,11 @@ struct PegTransferResult {
   SceneVariation variation;
   AssistMode assist = AssistMode::Off;
   common::ActuationKind actuation = common::ActuationKind::Motors;
-  std::array<RingOutcome, 6> pegs;
+  std::array<RingOutcome, 6> rings;
   bool timed_out = false;  ///< the simulated time limit ended it
   bool stopped = false;    ///< asked to stop (PegTransferOptions::stop) before it was done
   /// Why the run failed (the world's guard: ambf_like::SimulationDiverged), or empty. A failed
-  /// run's pegs have no outcome: nothing it measured after the world blew up is a result.
+  /// run's rings have no outcome: nothing it measured after the world blew up is a result.
   std::string failure;
   RunTiming timing;
   std::size_t iterations = 0;  ///< manual-loop iterations
@@ -61,7 +61,7 @@ struct PegTransferResult {
   std::size_t placed() const;
   std::size_t lost() const;
   std::size_t regrasps() const;
-  bool allPlaced() const { return failure.empty() && placed() == pegs.size(); }
+  bool allPlaced() const { return failure.empty() && placed() == rings.size(); }
   bool failed() const { return !failure.empty(); }
   /// One JSON object (a JSON-lines row).
   nlohmann::json json() const;

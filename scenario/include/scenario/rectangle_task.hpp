@@ -42,7 +42,7 @@ std::vector<recording::GamepadState> rectangleInputs(const RectangleOptions& opt
 struct RectangleResult {
   /// Per arm, the measured wrist point P5 (what M2 drives) at the start and after every
   /// manual-loop iteration (controller frame, m).
-  std::array<std::vector<Eigen::Vector3d>, 2> wrist_path;
+  raven::PerArm<std::vector<Eigen::Vector3d>> wrist_path;
   std::size_t iterations = 0;
   std::size_t refused = 0;  ///< commands the platform refused
   std::size_t clamped = 0;  ///< iterations where a target hit a joint limit

@@ -9,7 +9,7 @@
 
 namespace scenario {
 
-/// A snapshot of one soft peg's nodes.
+/// A snapshot of one soft ring's nodes.
 struct RingNodes {
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< mean of the nodes
   double bottom = 0.0;                               ///< lowest node z
@@ -17,6 +17,6 @@ struct RingNodes {
   bool finite = true;
 };
 
-RingNodes inspect(const ambf_like::SoftBody& peg);
+RingNodes inspect(const ambf_like::SoftBody& ring);
 
 }  // namespace scenario

@@ -1,5 +1,5 @@
 #pragma once
-// A ring peg as a ScenePerception sees it (a pose) with its design dimensions: how high it
+// A ring as a ScenePerception sees it (a pose) with its design dimensions: how high it
 // reaches, where its wall is, whether it is threaded on a post and resting on the board. What
 // the scripted operator and the run's judge read; the same on every perception backend.
 
@@ -10,12 +10,12 @@
 
 namespace scenario {
 
-/// A ring's size (raven/design/peg_scene_design.hpp's peg values).
+/// A ring's size (raven/design/peg_scene_design.hpp's ring values).
 struct RingDimensions {
   double major_radius = 0.0;     ///< centre line of the tube
   double tube_half_width = 0.0;  ///< radially
   double half_height = 0.0;      ///< along the ring's axis
-  /// Stations around the ring (the design's peg_ring_segments): its centre line is a polygon
+  /// Stations around the ring (the design's ring_segments): its centre line is a polygon
   /// with a vertex at each, the first on the ring frame's x axis; 0 for a smooth ring.
   int stations = 0;
 

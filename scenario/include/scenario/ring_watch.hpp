@@ -1,5 +1,5 @@
 #pragma once
-// Watches the six ring pegs through a run, as a ScenePerception shows them: how high each rose,
+// Watches the six rings through a run, as a ScenePerception shows them: how high each rose,
 // its volume's extremes (when the perception can tell), and whether it was lost (a non-finite
 // pose, volume off by more than 20 %, fallen through the board).
 
@@ -11,19 +11,19 @@
 
 namespace scenario {
 
-/// The limits a peg must stay within to count as whole.
+/// The limits a ring must stay within to count as whole.
 struct RingIntegrity {
   double volume_tolerance = 0.20;  ///< |volume / rest volume - 1|
   double below_board = 0.003;      ///< its bottom this far under the board top: tunnelled
 };
 
-/// Tracks the pegs' outcomes; call observe() after every manual-loop iteration.
+/// Tracks the rings' outcomes; call observe() after every manual-loop iteration.
 class RingWatch {
  public:
   explicit RingWatch(const PegLayout& layout, RingIntegrity limits = {});
 
   void observe(const bridge::ScenePerception& scene);
-  /// The final outcomes: each peg placed if whole and resting on its target post.
+  /// The final outcomes: each ring placed if whole and resting on its target post.
   std::array<RingOutcome, 6> finish(const bridge::ScenePerception& scene) const;
   std::size_t lost() const;
 

@@ -1,6 +1,6 @@
 #pragma once
 // Seeded variations of the peg-transfer scene for randomised batches: peg start poses, the
-// pegs' silicone and friction, board friction, each drawn from a stated range.
+// rings' silicone and friction, board friction, each drawn from a stated range.
 
 #include <array>
 #include <cstdint>
@@ -12,29 +12,29 @@ namespace scenario {
 
 /// The ranges the draws come from.
 struct VariationRanges {
-  double peg_offset = 0.001;                ///< start position jitter radius (m)
-  std::array<double, 2> peg_kDF{0.4, 0.9};  ///< soft-rigid friction factor
-  /// The pegs' Shore A hardness, drawn uniformly; their Young's modulus follows by Ruess'
-  /// relation (0.68-2.0 MPa): the casting silicones and PDMS a peg set is made of
+  double ring_offset = 0.001;                ///< start position jitter radius (m)
+  std::array<double, 2> ring_kDF{0.4, 0.9};  ///< soft-rigid friction factor
+  /// The rings' Shore A hardness, drawn uniformly; their Young's modulus follows by Ruess'
+  /// relation (0.68-2.0 MPa): the casting silicones and PDMS a ring set is made of
   /// (../shared/reference/soft-materials.md).
-  std::array<double, 2> peg_shore_a{20.0, 40.0};
+  std::array<double, 2> ring_shore_a{20.0, 40.0};
   std::array<double, 2> board_friction{0.4, 0.8};
 };
 
 /// One draw: everything a run varies.
 struct SceneVariation {
   std::uint64_t seed = 0;
-  bool nominal = true;              ///< the scene as designed, nothing varied
-  std::array<double, 6> peg_yaw{};  ///< rad, about the peg's own axis
-  std::array<Eigen::Vector2d, 6> peg_offset{};
+  bool nominal = true;               ///< the scene as designed, nothing varied
+  std::array<double, 6> ring_yaw{};  ///< rad, about the ring's own axis
+  std::array<Eigen::Vector2d, 6> ring_offset{};
   double kDF = 0.8, board_friction = 0.6;
-  double peg_shore_a = 30.0;
-  /// The pegs' Young's modulus (Pa) from their hardness, by Ruess' relation.
-  double pegYoungsModulus() const;
+  double ring_shore_a = 30.0;
+  /// The rings' Young's modulus (Pa) from their hardness, by Ruess' relation.
+  double ringYoungsModulus() const;
 
   /// Draws from `ranges` with `seed` (the same seed, the same draw, wherever libstdc++ runs it).
   static SceneVariation draw(std::uint64_t seed, const VariationRanges& ranges = {});
-  /// Applies to the peg-transfer scene's pegs (soft bodies peg1..peg6) and board.
+  /// Applies to the peg-transfer scene's rings (soft bodies ring1..ring6) and board.
   void apply(ambf_like::SceneSpec& scene) const;
   nlohmann::json json() const;
 };

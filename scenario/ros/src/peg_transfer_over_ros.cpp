@@ -16,7 +16,8 @@ namespace scenario::ros1 {
 
 namespace {
 
-/// The peg scene's namespace (raven_description's peg_transfer models): its objects' topics.
+/// The peg-transfer scene's namespace (raven_description's peg_transfer models): its objects'
+/// topics.
 constexpr const char* kSceneNamespace = "/peg_transfer/";
 
 void refuseWhatANodeCannotTake(const PegTransferOptions& options) {

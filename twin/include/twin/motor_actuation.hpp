@@ -16,7 +16,7 @@
 namespace twin {
 
 /// The mechanics of both arms' motors (per raven::slot(arm)).
-using ArmsMechanics = std::array<MotorMechanics, 2>;
+using ArmsMechanics = raven::PerArm<MotorMechanics>;
 
 /// Motor-level actuation of both arms of a TwinArms.
 class MotorActuation final : public Actuation {
@@ -36,7 +36,7 @@ class MotorActuation final : public Actuation {
   /// Both arms' drives: motors, controllers, encoders.
   std::any state() const override { return drives_; }
   void restore(const std::any& state) override {
-    drives_ = std::any_cast<const std::array<ArmDrive, 2>&>(state);
+    drives_ = std::any_cast<const raven::PerArm<ArmDrive>&>(state);
   }
 
  private:
@@ -44,7 +44,7 @@ class MotorActuation final : public Actuation {
                             const DriveTrain& drive, const MotorMechanics& mechanics, double cycle);
 
   TwinArms& arms_;
-  std::array<ArmDrive, 2> drives_;
+  raven::PerArm<ArmDrive> drives_;
 };
 
 }  // namespace twin

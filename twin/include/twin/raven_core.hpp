@@ -79,9 +79,9 @@ class RavenCore {
 
   raven::PlatformProfile profile_;
   ServoLimits limits_;
-  std::array<raven::ArmKinematics, 2> reporting_;
+  raven::PerArm<raven::ArmKinematics> reporting_;
   OperatingStateMachine machine_;
-  std::array<ArmMotion, 2> arms_;
+  raven::PerArm<ArmMotion> arms_;
   ArmPair measured_;
   std::uint64_t cycles_ = 0;
   std::uint64_t commands_taken_ = 0;

@@ -14,12 +14,12 @@ namespace twin {
 
 /// The robot's state at a recording's first row.
 struct RecordedStart {
-  std::array<ArmJoints, 2> setpoint;
-  std::array<ArmStart, 2> arms;
+  raven::PerArm<ArmJoints> setpoint;
+  raven::PerArm<ArmStart> arms;
 };
 
 /// From the first row's signals of each arm (per raven::slot(arm)).
-RecordedStart recordedStart(const std::array<recording::ArmSignals, 2>& first_row);
+RecordedStart recordedStart(const raven::PerArm<recording::ArmSignals>& first_row);
 /// From a recording's first row; throws recording::RecordingError naming the file when a column
 /// is missing or the row's signals are not numbers.
 RecordedStart recordedStart(const recording::RsRecording& rs);

@@ -22,7 +22,7 @@ struct JointBinding {
 
 /// The seven joints of each arm in a model.
 struct ArmBindings {
-  std::array<std::array<JointBinding, kJointCount>, 2> joints;
+  raven::PerArm<std::array<JointBinding, kJointCount>> joints;
 
   /// This project's Raven-II (raven_description/models): joints named /raven2/<arm>/<joint>.
   static ArmBindings ourRaven();
@@ -67,9 +67,9 @@ class TwinArms {
   };
   template <typename Read>
   ArmJoints read(Arm arm, Read read) const;
-  std::array<std::array<Bound, kJointCount>, 2> bound_;
+  raven::PerArm<std::array<Bound, kJointCount>> bound_;
   std::array<std::array<std::string, 2>, 2> jaws_;
-  std::array<std::vector<std::string>, 2> bodies_;
+  raven::PerArm<std::vector<std::string>> bodies_;
 };
 
 }  // namespace twin

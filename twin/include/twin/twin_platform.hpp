@@ -67,7 +67,7 @@ class TwinPlatform final : public RavenPlatform {
   /// setpoint stays where it is (send move_jp to the recorded one first).
   void place(Arm arm, const ArmStart& start);
 
-  /// The simulation, for scenes that need more than the arms (pegs, contacts).
+  /// The simulation, for scenes that need more than the arms (rings, contacts).
   ambf_like::World& world() { return world_; }
   const ambf_like::World& world() const { return world_; }
   const RavenCore& core() const { return core_; }
@@ -91,7 +91,7 @@ class TwinPlatform final : public RavenPlatform {
   twin::TwinArms arms_;
   DriveTrain drive_;
   std::unique_ptr<Actuation> actuation_;
-  std::array<ActuatorReadings, 2> readings_;
+  raven::PerArm<ActuatorReadings> readings_;
   ArmPair previous_position_;
   RavenCore core_;
   ClockKind clock_;

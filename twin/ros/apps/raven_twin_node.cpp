@@ -17,81 +17,101 @@
 #include "twin/ros/ambf_object_topics.hpp"
 #include "twin/twin_platform.hpp"
 
-int main(int argc, char** argv) {
-  bridge::ros1::initRos(argc, argv, "raven_twin");  // takes ROS remappings out of argv
+namespace {
 
-  CLI::App app{"The Raven-II twin on the physical robot's ROS 1 topics."};
+/// Everything the command line sets.
+struct NodeSettings {
   twin::TwinOptions twin;
   std::string launch = twin.launch_file.string();
-  app.add_option("--launch", launch, "launch file of the scene with the robot")
-      ->check(CLI::ExistingFile);
-  app.add_option("--profile", twin.profile, "platform profile: physical, ambf or a YAML file");
   bool ambf_model = false;
-  app.add_flag("--ambf-model", ambf_model,
-               "the launch file holds AMBF's blender-raven2.yaml (AMBF joint names)");
-  app.add_flag("--strict", twin.load.strict,
-               "refuse model files AMBF would load with warnings (unknown keys, missing meshes)");
-  common::ActuationKind actuation =
-      common::ActuationKind::Motors;  // ideal always with AMBF's model
-  common::addActuationFlag(app, actuation);
+  common::ActuationKind actuation = common::ActuationKind::Motors;  // ideal with AMBF's model
   std::string calibration;
-  app.add_option("--calibration", calibration,
+  bool soft_body_sleep = false;
+  bridge::ros1::RosServerOptions server;
+  bool no_arm_swap = false;
+  bridge::ros1::CrtkFaceOptions crtk;
+  std::vector<std::string> crtk_arms{crtk.arm_names.begin(), crtk.arm_names.end()};
+  bool no_crtk = false;
+  double duration = 0.0;
+};
+
+void addOptions(CLI::App& app, NodeSettings& s) {
+  app.add_option("--launch", s.launch, "launch file of the scene with the robot")
+      ->check(CLI::ExistingFile);
+  app.add_option("--profile", s.twin.profile, "platform profile: physical, ambf or a YAML file");
+  app.add_flag("--ambf-model", s.ambf_model,
+               "the launch file holds AMBF's blender-raven2.yaml (AMBF joint names)");
+  app.add_flag("--strict", s.twin.load.strict,
+               "refuse model files AMBF would load with warnings (unknown keys, missing meshes)");
+  common::addActuationFlag(app, s.actuation);
+  app.add_option("--calibration", s.calibration,
                  "the actuation fitted by raven_calibrate (YAML; default: "
                  "twin/config/raven2_calibration.yaml)")
       ->check(CLI::ExistingFile);
-  bool soft_body_sleep = false;
-  app.add_flag("--soft-body-sleep", soft_body_sleep,
+  app.add_flag("--soft-body-sleep", s.soft_body_sleep,
                "resting soft bodies sleep (as raven_peg_transfer runs them), whatever the world "
                "file says");
-  bridge::ros1::RosServerOptions server;
-  app.add_flag("--lock-step", server.lock_step,
+  app.add_flag("--lock-step", s.server.lock_step,
                "run on the simulated clock, one step per client request (raven_twin/step)");
-  bool no_arm_swap = false;
-  app.add_flag("--no-arm-swap", no_arm_swap,
+  app.add_flag("--no-arm-swap", s.no_arm_swap,
                "publish each arm on its own measured_js (upstream swaps them: arm1 = green)");
-  app.add_option("--command-wait", server.command_wait,
+  app.add_option("--command-wait", s.server.command_wait,
                  "lock-step: wall seconds a step waits for the commands it names before it is "
                  "refused")
       ->check(CLI::PositiveNumber);
-  bridge::ros1::CrtkFaceOptions crtk;
-  app.add_option("--crtk-namespace", crtk.ros_namespace,
+  app.add_option("--crtk-namespace", s.crtk.ros_namespace,
                  "namespace of the standard CRTK face, relative to the node's (absolute with a "
                  "leading /)")
       ->capture_default_str();
-  std::vector<std::string> crtk_arms{crtk.arm_names.begin(), crtk.arm_names.end()};
-  app.add_option("--crtk-arms", crtk_arms,
+  app.add_option("--crtk-arms", s.crtk_arms,
                  "the standard CRTK face's names of the gold (left) and green (right) arm, e.g. "
                  "PSM1 PSM2")
       ->expected(2)
       ->capture_default_str();
-  bool no_crtk = false;
-  app.add_flag("--no-crtk", no_crtk, "serve the robot's own topics only, no standard CRTK face");
-  double duration = 0.0;
-  app.add_option("--duration", duration,
+  app.add_flag("--no-crtk", s.no_crtk, "serve the robot's own topics only, no standard CRTK face");
+  app.add_option("--duration", s.duration,
                  "stop after this much platform time (s); 0: run until "
                  "interrupted")
       ->check(CLI::NonNegativeNumber);
+}
+
+/// The twin the settings ask for: its scene, clock, bindings and actuation.
+twin::TwinOptions twinOptionsOf(const NodeSettings& s) {
+  twin::TwinOptions twin = s.twin;
+  twin.launch_file = s.launch;
+  twin.clock = s.server.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
+  if (s.ambf_model) twin.bindings = twin::ArmBindings::ambfRaven();
+  if (s.soft_body_sleep) {
+    twin.adjust_scene = [](ambf_like::SceneSpec& scene) {
+      scene.world.soft_body_sleep.enabled = true;
+    };
+  }
+  // The motor model is the cable-driven robot's: in its joint convention, on our model.
+  if (s.actuation == common::ActuationKind::Motors && !s.ambf_model && twin.profile == "physical") {
+    (s.calibration.empty() ? twin::CalibrationProfile::shipped()
+                           : twin::CalibrationProfile::load(s.calibration))
+        .applyTo(twin);
+  }
+  return twin;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bridge::ros1::initRos(argc, argv, "raven_twin");  // takes ROS remappings out of argv
+  CLI::App app{"The Raven-II twin on the physical robot's ROS 1 topics."};
+  NodeSettings s;
+  addOptions(app, s);
   CLI11_PARSE(app, argc, argv);
 
   try {
-    twin.launch_file = launch;
-    twin.clock = server.lock_step ? bridge::ClockKind::Simulated : bridge::ClockKind::Wall;
-    if (ambf_model) twin.bindings = twin::ArmBindings::ambfRaven();
-    if (soft_body_sleep) {
-      twin.adjust_scene = [](ambf_like::SceneSpec& scene) {
-        scene.world.soft_body_sleep.enabled = true;
-      };
-    }
-    // The motor model is the cable-driven robot's: in its joint convention, on our model.
-    if (actuation == common::ActuationKind::Motors && !ambf_model && twin.profile == "physical") {
-      (calibration.empty() ? twin::CalibrationProfile::shipped()
-                           : twin::CalibrationProfile::load(calibration))
-          .applyTo(twin);
-    }
-    server.arm_swap = !no_arm_swap;
+    const twin::TwinOptions twin = twinOptionsOf(s);
+    bridge::ros1::RosServerOptions server = s.server;
+    server.arm_swap = !s.no_arm_swap;
     twin::TwinPlatform platform(twin);
-    if (!no_crtk) {
-      std::copy(crtk_arms.begin(), crtk_arms.end(), crtk.arm_names.begin());
+    bridge::ros1::CrtkFaceOptions crtk = s.crtk;
+    if (!s.no_crtk) {
+      std::copy(s.crtk_arms.begin(), s.crtk_arms.end(), crtk.arm_names.begin());
       crtk.profile = platform.core().profile();
       server.crtk = crtk;
     }
@@ -104,10 +124,10 @@ int main(int argc, char** argv) {
                  twin.motors ? "the twin (motor-level actuation)" : "the twin (ideal servos)",
                  bridge::ros1::masterUri(), twin.profile,
                  server.lock_step ? "lock-step simulated" : "wall", server.arm_swap ? "on" : "off",
-                 no_crtk ? "off"
-                         : "under " + crtk.ros_namespace + "/{" + crtk.arm_names[0] + "," +
-                               crtk.arm_names[1] + "}");
-    ros_server.spin(duration);
+                 s.no_crtk ? "off"
+                           : "under " + crtk.ros_namespace + "/{" + crtk.arm_names[0] + "," +
+                                 crtk.arm_names[1] + "}");
+    ros_server.spin(s.duration);
   } catch (const std::exception& e) {
     spdlog::error("{}", e.what());
     return 1;

@@ -36,7 +36,7 @@ class SimulationDiverged : public std::runtime_error {
 /// What a step is held to, from the scene as it was built. Its size L is the diagonal of the box
 /// around every body's centre of mass and every soft-body node, at least 1 m. Every moving body
 /// and node must move no faster than a tenth of L per step or than a fall across the scene and
-/// 10 L above and below it, whichever is more (the peg scene at 1 ms: 100 m/s, where its
+/// 10 L above and below it, whichever is more (the peg-transfer scene at 1 ms: 100 m/s, where its
 /// fastest real motion is under 1 m/s), and stay inside the bounds: the scene's box grown by
 /// 10 L on each side, and downwards (along gravity) by as far as a body falls before it reaches
 /// that speed (510 m at 100 m/s), so that a body falling off a scene with no floor (as AMBF

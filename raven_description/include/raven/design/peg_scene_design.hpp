@@ -1,6 +1,6 @@
 #pragma once
 // The peg-transfer scene's design: a board with twelve posts (six in each arm's reach) and six
-// tall soft ring pegs resting on the start posts. The one source of these values: the model
+// tall soft rings resting on the start posts. The one source of these values: the model
 // generator writes the scene's ADF files from them, and the scenario's layout reads them.
 
 #include <Eigen/Core>
@@ -10,16 +10,16 @@
 
 namespace raven::design {
 
-/// Dimensions and placement of the board, the posts and the pegs (our own design).
+/// Dimensions and placement of the board, the posts and the rings (our own design).
 struct PegSceneDesign {
   double board_top = -0.205;  ///< z of the board surface in {B} (m)
   Eigen::Vector3d board_size{0.90, 0.12, 0.01};
   Eigen::Vector2d board_centre{0.0, 0.08};
   double post_radius = 0.0025;
   double post_height = 0.022;
-  /// Post positions (x, y) in {B}, six per arm: a start row (y = 0.058, where the pegs begin)
+  /// Post positions (x, y) in {B}, six per arm: a start row (y = 0.058, where the rings begin)
   /// and a target row (y = 0.100), in the part of each arm's workspace where the grasper can
-  /// point straight down at every side of a peg (about 8 x 6 cm under its remote centre). The
+  /// point straight down at every side of a ring (about 8 x 6 cm under its remote centre). The
   /// two arms' workspaces do not overlap (their remote centres are 0.6 m apart).
   std::array<Eigen::Vector2d, 12> posts{
       Eigen::Vector2d(0.266, 0.058),  Eigen::Vector2d(0.300, 0.058),
@@ -28,22 +28,22 @@ struct PegSceneDesign {
       Eigen::Vector2d(0.266, 0.100),  Eigen::Vector2d(0.300, 0.100),
       Eigen::Vector2d(0.334, 0.100),  Eigen::Vector2d(-0.266, 0.100),
       Eigen::Vector2d(-0.300, 0.100), Eigen::Vector2d(-0.334, 0.100)};
-  /// The pegs start on the first six posts (the start rows).
-  std::size_t peg_count = 6;
+  /// The rings start on the first six posts (the start rows).
+  std::size_t ring_count = 6;
   /// A tall soft ring: centre line radius, and the tube's half-width and half-height, so the
   /// grasper can pinch its wall well above the board while the post passes through its hole.
-  double peg_major_radius = 0.008;
-  double peg_minor_radius = 0.002;
-  double peg_half_height = 0.005;
-  int peg_ring_segments = 16;  ///< 144 nodes: a station every 3.1 mm around the ring
-  int peg_tube_segments = 8;   ///< around the tube, about its axis node
+  double ring_major_radius = 0.008;
+  double ring_minor_radius = 0.002;
+  double ring_half_height = 0.005;
+  int ring_segments = 16;      ///< 144 nodes: a station every 3.1 mm around the ring
+  int ring_tube_segments = 8;  ///< around the tube, about its axis node
   /// The ring's silicone: Shore 30A (a casting silicone's), whose modulus by Ruess' relation
   /// log10(E / MPa) = 0.0235 S - 0.6403 is 1.16 MPa; silicone rubbers' Poisson's ratio and
   /// density (../shared/reference/soft-materials.md).
-  double peg_youngs_modulus = 1.0e6 * std::pow(10.0, 0.0235 * 30.0 - 0.6403);
-  double peg_poissons_ratio = 0.45;
-  double peg_density = 1100.0;  ///< kg/m^3
-  double peg_margin = 0.0005;
+  double ring_youngs_modulus = 1.0e6 * std::pow(10.0, 0.0235 * 30.0 - 0.6403);
+  double ring_poissons_ratio = 0.45;
+  double ring_density = 1100.0;  ///< kg/m^3
+  double ring_margin = 0.0005;
 };
 
 }  // namespace raven::design

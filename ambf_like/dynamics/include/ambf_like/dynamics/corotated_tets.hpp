@@ -24,7 +24,7 @@ namespace ambf_like::detail {
 /// the torque of Mueller, Bender, Chentanez and Macklin's (2016) iteration), started from the last
 /// one turned by the body's own turn (turnRotations), to within 1e-4 rad (at most 4 iterations a
 /// step). One of that paper's iterations per step let the rotations lag a ring that turned fast
-/// and blew 3 of 20 randomised peg scenes apart (seeds 6, 11 and 20 of the batch test).
+/// and blew 3 of 20 randomised peg-transfer scenes apart (seeds 6, 11 and 20 of the batch test).
 ///
 /// The tetrahedra are stored and worked on four at a time, lane by lane (TetPack): the same
 /// arithmetic per tetrahedron as one at a time, rotations followed too, in a quarter of the

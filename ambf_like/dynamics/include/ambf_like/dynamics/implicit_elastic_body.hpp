@@ -63,6 +63,13 @@ class ImplicitElasticBody {
   void followBodyRotation(const Eigen::VectorXd& positions);
   /// The forces and energy at `at.positions`, the body's rotation followed there.
   void evaluate(Elastic& at);
+  /// Reads the nodes' positions and velocities and their weights under `acceleration` into
+  /// start_, start_velocity_ and weight_, and the elastic state there into last_.
+  void loadNodes(const btSoftBody& body, const std::vector<btVector3>& acceleration);
+  /// Writes the step's end (last_'s positions, `velocity`) to the nodes, less the motion out of
+  /// a surface a node began inside.
+  void storeNodes(btSoftBody& body, double h, const std::vector<ElasticContact>& contacts,
+                  Eigen::VectorXd& velocity) const;
   /// The change of velocity one solve from `velocity` (zero when `from_rest`) makes, with
   /// `residual` the forces' and inertia's imbalance there (solved in the rest frame): A^-1
   /// residual, then the contacts' and pins' impulses on the velocity it reaches.

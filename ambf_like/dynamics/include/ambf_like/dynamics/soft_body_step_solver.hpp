@@ -73,8 +73,8 @@ class SoftBodyStepSolver final : public btDefaultSoftBodySolver {
   void predictMotion(btScalar solver_dt) override;
   void solveConstraints(btScalar solver_dt) override;
   /// Bullet's end of step (btSoftBody::integrateMotion) for the bodies whose normals the step
-  /// reads (normalsAreRead): it only recomputes the nodes' and faces' normals (5 % of the peg
-  /// scene's step, 11 % of AMBF's cloth's).
+  /// reads (normalsAreRead): it only recomputes the nodes' and faces' normals (5 % of the
+  /// peg-transfer scene's step, 11 % of AMBF's cloth's).
   void updateSoftBodies() override;
   /// The Coulomb contacts' impulses of the last step.
   const std::vector<NodeContactImpulse>& lastImpulses() const { return impulses_; }

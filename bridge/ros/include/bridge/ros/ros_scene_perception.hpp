@@ -23,7 +23,7 @@ enum class PoseSource {
 struct RosPerceptionOptions {
   PoseSource source = PoseSource::AmbfObjects;
   /// The topics' prefix: the scene's namespace for AMBF's topics ("/peg_transfer/" for this
-  /// project's peg scene), the tracker node's for a tracker ("/vrpn_client_node/").
+  /// project's peg-transfer scene), the tracker node's for a tracker ("/vrpn_client_node/").
   std::string topic_namespace = "/ambf/env/";
   /// The objects to watch (subscribed to when the perception is made).
   std::vector<std::string> objects;

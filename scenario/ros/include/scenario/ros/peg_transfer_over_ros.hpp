@@ -13,7 +13,7 @@ namespace scenario::ros1 {
 
 /// Where the robot is.
 struct OverRosOptions {
-  /// A twin node already serving the peg scene in lock-step under this namespace; empty:
+  /// A twin node already serving the peg-transfer scene in lock-step under this namespace; empty:
   /// start one (in a fresh namespace) and stop it after the run.
   std::string robot_namespace;
   /// The raven_twin_node program to start (default: the one built with this one).
