@@ -4,11 +4,14 @@
 # instead of everything: the quick start builds the main job alone first. RAVEN_UNITY=ON
 # compiles each library's files as a few large ones (CMake's unity build: the quick start's
 # first build, about 40 % faster on 2 cores); the whole build, the tests' included, turns it off.
+# RAVEN_MAIN_JOB_ONLY=ON configures without the tests, the bench and the Python module (and so
+# without GoogleTest, Google Benchmark and pybind11): the quick start's packages.
 # A new build tree uses Ninja when it is installed (it keeps both cores busy across targets).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 generator=()
 if [ ! -f build/CMakeCache.txt ] && command -v ninja > /dev/null; then generator=(-G Ninja); fi
 cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DRAVEN_WERROR=ON \
-  -DCMAKE_UNITY_BUILD="${RAVEN_UNITY:-OFF}" "$@" > build.log 2>&1 || { cat build.log; exit 1; }
+  -DCMAKE_UNITY_BUILD="${RAVEN_UNITY:-OFF}" -DRAVEN_MAIN_JOB_ONLY="${RAVEN_MAIN_JOB_ONLY:-OFF}" "$@" \
+  > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build -j"${RAVEN_JOBS:-2}" ${RAVEN_TARGET:+--target "$RAVEN_TARGET"}

@@ -11,7 +11,7 @@ main_job=(
   libsdl2-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libnlopt-cxx-dev libboost-dev
   libroscpp-dev libstd-msgs-dev libsensor-msgs-dev libgeometry-msgs-dev
   ros-std-msgs ros-sensor-msgs ros-geometry-msgs python3-gencpp python3-genmsg python3-genpy
-  libglfw3-dev libgl-dev libgl1-mesa-dri libstb-dev
+  libglfw3-dev libgl-dev libopengl-dev libglx-dev libgl1-mesa-dri libstb-dev
   libegl-dev libegl-mesa0 libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
 )
 the_rest=(

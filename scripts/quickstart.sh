@@ -7,5 +7,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh --main-job
-RAVEN_UNITY=ON RAVEN_TARGET=raven_peg_transfer ./scripts/build.sh
+RAVEN_MAIN_JOB_ONLY=ON RAVEN_UNITY=ON RAVEN_TARGET=raven_peg_transfer ./scripts/build.sh
 exec ./build/scenario/raven_peg_transfer "$@"
