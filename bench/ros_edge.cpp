@@ -30,7 +30,7 @@ struct Listener {
   std::mutex mutex;
   std::vector<Clock::time_point> measured;      ///< arm1/measured_js arrivals
   Clock::time_point setpoint_at;                ///< last setpoint_js arrival
-  std::array<std::vector<double>, 2> setpoint;  ///< arm1's and arm2's latest setpoint_js
+  raven::PerArm<std::vector<double>> setpoint;  ///< arm1's and arm2's latest setpoint_js
 
   void onMeasured(const sensor_msgs::JointState::ConstPtr&) {
     std::lock_guard<std::mutex> lock(mutex);
@@ -48,8 +48,8 @@ double seconds(Clock::duration d) {
 }
 
 /// True when any joint of either arm moved by more than 0.5 mrad (or 0.5 mm).
-bool differs(const std::array<std::vector<double>, 2>& a,
-             const std::array<std::vector<double>, 2>& b) {
+bool differs(const raven::PerArm<std::vector<double>>& a,
+             const raven::PerArm<std::vector<double>>& b) {
   for (std::size_t arm = 0; arm < 2; ++arm) {
     if (a[arm].size() != b[arm].size()) return true;
     for (std::size_t i = 0; i < a[arm].size(); ++i) {
@@ -114,7 +114,7 @@ void measureRosEdge(const BenchSettings& s, Report& report) {
   std::vector<double> latency_ms;
   for (int k = 0; k < 100; ++k) {
     client.advance(0.02);
-    std::array<std::vector<double>, 2> before;
+    raven::PerArm<std::vector<double>> before;
     {
       std::lock_guard<std::mutex> lock(listener.mutex);
       before = listener.setpoint;

@@ -82,9 +82,9 @@ SignalJoints zeroSignals() {
   return z;
 }
 
-std::array<raven::ArmJoints, 2> meanAbsoluteDifference(const ActuatorTrace& a,
+raven::PerArm<raven::ArmJoints> meanAbsoluteDifference(const ActuatorTrace& a,
                                                        const ActuatorTrace& b, ActuatorSignal s) {
-  std::array<raven::ArmJoints, 2> out{};
+  raven::PerArm<raven::ArmJoints> out{};
   const std::size_t rows = std::min(a.rows(), b.rows());
   const SignalColumn& c = columnOf(s);
   for (std::size_t arm = 0; arm < 2; ++arm) {
@@ -97,8 +97,8 @@ std::array<raven::ArmJoints, 2> meanAbsoluteDifference(const ActuatorTrace& a,
   return out;
 }
 
-double medianRatio(const std::array<raven::ArmJoints, 2>& value,
-                   const std::array<raven::ArmJoints, 2>& spread) {
+double medianRatio(const raven::PerArm<raven::ArmJoints>& value,
+                   const raven::PerArm<raven::ArmJoints>& spread) {
   std::vector<double> ratios;
   for (std::size_t arm = 0; arm < 2; ++arm) {
     for (int j = 0; j < raven::kJointCount; ++j) {

@@ -101,7 +101,7 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
                                    const analysis::ActuatorTrace& recording) {
   constexpr std::array<ActuatorSignal, 3> kSignals{
       ActuatorSignal::MotorPosition, ActuatorSignal::MotorVelocity, ActuatorSignal::Torque};
-  const std::array<std::array<raven::ArmJoints, 3>, 2> sigma{quantisationNoise(raven::Arm::Left),
+  const raven::PerArm<std::array<raven::ArmJoints, 3>> sigma{quantisationNoise(raven::Arm::Left),
                                                              quantisationNoise(raven::Arm::Right)};
   const auto base = replaySetpoints(recording, mechanics);
   // Every motor's value v moved at once: the motors are independent, so each motor's signals

@@ -18,6 +18,6 @@ from ._raven_sim import (Arm, CommandResult, Controller, ControllerSession, Mode
                          RecordingError, RsRecording, RsWriter, ServoCp, ServoCr, ServoJawJp,
                          SimulationDiverged,
                          ServoJawJr, ServoJp, ServoJr, StateCommand, Twin, World, ci_columns,
-                         observation_layout, peg_layout, read_ci, read_rs, tool_points,
+                         observation_layout, peg_layout, read_ci, read_rs, ring_placed, tool_points,
                          write_ci)
 from .env import SEGMENT_IDS, PegTransferEnv, VectorPegTransferEnv, part

@@ -53,7 +53,7 @@ ArmConvention readConvention(const YamlView& node, Arm arm,
   return c;
 }
 
-std::array<ArmConvention, 2> readConventions(const YamlView& node,
+raven::PerArm<ArmConvention> readConventions(const YamlView& node,
                                              std::vector<common::LoadIssue>& warnings) {
   return {readConvention(node, Arm::Left, warnings), readConvention(node, Arm::Right, warnings)};
 }

@@ -61,7 +61,7 @@ const std::vector<std::string>& CfWriter::columnNames() {
 CfWriter::CfWriter(const std::filesystem::path& path)
     : file_(path, fmt::format("{}", fmt::join(columnNames(), ","))) {}
 
-void CfWriter::write(double time, const std::array<std::optional<bridge::GrasperForces>, 2>& arms) {
+void CfWriter::write(double time, const raven::PerArm<std::optional<bridge::GrasperForces>>& arms) {
   if (rows_ == 0) t0_ = time;
   std::string line = fmt::format("{:.6f}", time - t0_);
   for (const auto& arm : arms) {

@@ -269,8 +269,8 @@ class SessionRun {
                  s_.seed ^ (0x9e3779b97f4a7c15ull * (planned.index + 1)));
     }
     const bool drill = s_.drill_after >= 0 && finished_here_ == s_.drill_after;
-    ts.before_turn = [&](double t, const std::array<ArmGoal, 2>& goals,
-                         const std::array<Eigen::Vector3d, 2>& tips) {
+    ts.before_turn = [&](double t, const raven::PerArm<ArmGoal>& goals,
+                         const raven::PerArm<Eigen::Vector3d>& tips) {
       if (drill && t >= 1.0) std::raise(s_.drill_signal);
       if (!vp) return;
       press(*s_.virtual_pad, vp->act(t, goals, tips));

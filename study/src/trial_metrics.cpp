@@ -73,10 +73,10 @@ struct TipPath {
   }
 };
 
-std::array<TipPath, 2> tipPaths(const fs::path& rs_file) {
+raven::PerArm<TipPath> tipPaths(const fs::path& rs_file) {
   const recording::RsRecording rs = recording::readRs(rs_file);
   const auto profile = raven::builtinProfile("physical");
-  std::array<TipPath, 2> paths;
+  raven::PerArm<TipPath> paths;
   for (raven::Arm arm : raven::kArms) {
     const auto kinematics = raven::ArmKinematics::of(profile, arm);
     TipPath& path = paths[raven::slot(arm)];
@@ -88,7 +88,7 @@ std::array<TipPath, 2> tipPaths(const fs::path& rs_file) {
   return paths;
 }
 
-double idleTime(const std::array<TipPath, 2>& paths) {
+double idleTime(const raven::PerArm<TipPath>& paths) {
   double idle = 0.0;
   const TipPath& l = paths[0];
   for (std::size_t i = 1; i < l.t.size(); ++i) {
@@ -105,7 +105,7 @@ double idleTime(const std::array<TipPath, 2>& paths) {
 
 /// Mean SPARC over the movements: per arm, each target from shown to reached (or to the end),
 /// or the whole trial for an arm without targets that moved.
-double meanSparc(const std::array<TipPath, 2>& paths, const std::vector<TrialEvent>& events,
+double meanSparc(const raven::PerArm<TipPath>& paths, const std::vector<TrialEvent>& events,
                  double end) {
   double sum = 0.0;
   int n = 0;
@@ -140,7 +140,7 @@ double meanSparc(const std::array<TipPath, 2>& paths, const std::vector<TrialEve
 /// Peak and mean (over the rows where that grasper touches something) jaw normal force.
 std::pair<double, double> graspForces(const fs::path& cf_file) {
   const recording::CfRecording cf = recording::readCf(cf_file);
-  std::array<std::array<std::size_t, 3>, 2> cols;
+  raven::PerArm<std::array<std::size_t, 3>> cols;
   for (std::size_t a = 0; a < 2; ++a) {
     const std::string arm = a == 0 ? "left_" : "right_";
     cols[a] = {cf.column(arm + "jaw1_normal"), cf.column(arm + "jaw2_normal"),

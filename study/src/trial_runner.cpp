@@ -27,7 +27,7 @@ recording::GamepadState gatePad(const Condition& condition, recording::GamepadSt
   return pad;
 }
 
-std::array<bool, 2> armsMoved(const Condition& condition) {
+raven::PerArm<bool> armsMoved(const Condition& condition) {
   if (condition.scheme == "m1-left") return {true, false};
   if (condition.scheme == "m1-right") return {false, true};
   return {true, true};
@@ -57,7 +57,7 @@ TrialRun runTrial(const TrialSettings& s) {
   controller::DualPlatformController& control = scripted.controller();
 
   const auto profile = raven::builtinProfile(s.condition.controllerOptions().profile);
-  const std::array<raven::ArmKinematics, 2> kinematics{
+  const raven::PerArm<raven::ArmKinematics> kinematics{
       raven::ArmKinematics::of(profile, raven::Arm::Left),
       raven::ArmKinematics::of(profile, raven::Arm::Right)};
   const double start = twin.now();

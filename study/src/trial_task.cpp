@@ -16,7 +16,7 @@ namespace {
 /// Per arm, a sequence of points to bring the tool tip onto and hold for the dwell time.
 class TargetsTask final : public TrialTask {
  public:
-  TargetsTask(const TaskSpec& spec, std::uint64_t seed, std::array<bool, 2> arms)
+  TargetsTask(const TaskSpec& spec, std::uint64_t seed, raven::PerArm<bool> arms)
       : spec_(spec), offsets_(targetOffsets(spec, seed)) {
     for (std::size_t a = 0; a < 2; ++a) {
       if (!arms[a]) offsets_[a].clear();
@@ -63,8 +63,8 @@ class TargetsTask final : public TrialTask {
     return arms_[0].next >= arms_[0].targets.size() && arms_[1].next >= arms_[1].targets.size();
   }
 
-  std::array<ArmGoal, 2> goals() const override {
-    std::array<ArmGoal, 2> out;
+  raven::PerArm<ArmGoal> goals() const override {
+    raven::PerArm<ArmGoal> out;
     for (std::size_t a = 0; a < 2; ++a) {
       if (arms_[a].next < arms_[a].targets.size()) {
         out[a] = {true, arms_[a].targets[arms_[a].next], spec_.tolerance};
@@ -101,8 +101,8 @@ class TargetsTask final : public TrialTask {
     double entered_at = 0.0;
   };
   TaskSpec spec_;
-  std::array<std::vector<Eigen::Vector3d>, 2> offsets_;
-  std::array<Arm, 2> arms_;
+  raven::PerArm<std::vector<Eigen::Vector3d>> offsets_;
+  raven::PerArm<Arm> arms_;
 };
 
 /// The six rings of the peg-transfer scene, each from its start post to the post behind it.
@@ -143,7 +143,7 @@ class PegTransferTask final : public TrialTask {
       if (placed) r.lifted = false;
       r.placed = placed;
     }
-    std::array<bool, 2> touching{};
+    raven::PerArm<bool> touching{};
     for (const ambf_like::Contact& c : view.world->contacts("peg_board")) {
       for (const std::string* name : {&c.body_a, &c.body_b}) {
         if (name->rfind("/raven2/left/", 0) == 0) touching[0] = true;
@@ -165,7 +165,7 @@ class PegTransferTask final : public TrialTask {
     return true;
   }
 
-  std::array<ArmGoal, 2> goals() const override { return {}; }
+  raven::PerArm<ArmGoal> goals() const override { return {}; }
 
   std::string status(const TaskView&) const override {
     int placed = 0, carried = 0;
@@ -188,12 +188,12 @@ class PegTransferTask final : public TrialTask {
   scenario::PegLayout layout_;
   std::array<const ambf_like::SoftBody*, 6> rings_{};
   std::array<Ring, 6> state_;
-  std::array<bool, 2> board_contact_{};
+  raven::PerArm<bool> board_contact_{};
 };
 
 }  // namespace
 
-std::array<std::vector<Eigen::Vector3d>, 2> targetOffsets(const TaskSpec& spec,
+raven::PerArm<std::vector<Eigen::Vector3d>> targetOffsets(const TaskSpec& spec,
                                                           std::uint64_t seed) {
   if (spec.pattern == "list") return {spec.left, spec.right};
   if (spec.pattern == "rectangle") {  // D_II: +x, +y, -x, -y, both arms alike
@@ -205,7 +205,7 @@ std::array<std::vector<Eigen::Vector3d>, 2> targetOffsets(const TaskSpec& spec,
   }
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> turn(0.0, 2.0 * M_PI), up(-spec.height, spec.height);
-  std::array<std::vector<Eigen::Vector3d>, 2> out;
+  raven::PerArm<std::vector<Eigen::Vector3d>> out;
   for (auto& arm : out) {
     for (int k = 0; k < spec.count; ++k) {
       const double angle = turn(rng);
@@ -216,7 +216,7 @@ std::array<std::vector<Eigen::Vector3d>, 2> targetOffsets(const TaskSpec& spec,
 }
 
 std::unique_ptr<TrialTask> makeTask(const TaskSpec& spec, std::uint64_t seed,
-                                    std::array<bool, 2> arms) {
+                                    raven::PerArm<bool> arms) {
   if (spec.kind == TaskKind::PegTransfer) return std::make_unique<PegTransferTask>();
   return std::make_unique<TargetsTask>(spec, seed, arms);
 }

@@ -137,8 +137,8 @@ void VirtualParticipant::plan(Hand& hand, int arm, const Seen& view, double t) {
       (expected / distance);
 }
 
-recording::GamepadState VirtualParticipant::act(double t, const std::array<ArmGoal, 2>& goals,
-                                                const std::array<Eigen::Vector3d, 2>& tips) {
+recording::GamepadState VirtualParticipant::act(double t, const raven::PerArm<ArmGoal>& goals,
+                                                const raven::PerArm<Eigen::Vector3d>& tips) {
   history_.push_back({t, goals, tips});
   while (history_.size() > 2 && history_[1].t <= t - traits_.delay) history_.pop_front();
   const Seen& view = seen(t - traits_.delay);

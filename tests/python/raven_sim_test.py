@@ -141,7 +141,25 @@ class PegTransferEnvironment(unittest.TestCase):
         again = self.run_steps(env, 5, 40)
         other = self.run_steps(env, 6, 40)
         self.assertTrue(np.array_equal(first, again))
-        self.assertFalse(np.array_equal(first[0, 54:], other[0, 54:]), "seeds 5 and 6 drew one scene")
+        rings = raven_sim.part("rings")
+        self.assertFalse(np.array_equal(first[0, rings], other[0, rings]),
+                         "seeds 5 and 6 drew one scene")
+
+    def test_the_state_is_read_by_the_cpp_layouts_names(self):
+        layout = raven_sim.observation_layout()
+        self.assertEqual(set(layout), {"joints", "targets", "tool_poses", "wrenches", "rings"})
+        spans = sorted((part.start, part.stop) for part, _ in layout.values())
+        self.assertEqual(spans[0][0], 0)
+        self.assertEqual(spans[-1][1], raven_sim.PegTransferCore.observation_size)
+        self.assertTrue(all(a[1] == b[0] for a, b in zip(spans, spans[1:])), "the parts tile it")
+        state, _ = raven_sim.PegTransferEnv().reset(seed=0)
+        # Every ring rests threaded on its start post and on no target post, by C++'s judgement.
+        for i, job in enumerate(raven_sim.peg_layout()["jobs"]):
+            centre = state[raven_sim.part("rings", i)]
+            self.assertTrue(raven_sim.ring_placed(centre, job["from"]), job["ring"])
+            self.assertFalse(raven_sim.ring_placed(centre, job["to"]), job["ring"])
+        quaternion = state[raven_sim.part("tool_poses", 1)][3:]
+        self.assertAlmostEqual(float(np.linalg.norm(quaternion)), 1.0, places=12)
 
     def test_pad_actions_and_bad_actions(self):
         env = raven_sim.PegTransferEnv(action_type="pad")

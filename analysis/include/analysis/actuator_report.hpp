@@ -29,7 +29,7 @@ std::vector<PlatformActuators> actuatorPlatforms(const TrialSet& set);
 struct ActuatorComparison {
   std::string symbol;       ///< T_PP, T_SS, T_PS
   std::string description;  ///< "twin vs physical"
-  std::array<std::array<raven::ArmJoints, 2>, 4> mean_abs;
+  std::array<raven::PerArm<raven::ArmJoints>, 4> mean_abs;
   /// Over the physical platform's T_PP (when it has two or more trials): per signal, the median
   /// over the joints the robot moves.
   std::optional<std::array<double, 4>> median_over_robot;

@@ -29,7 +29,7 @@ raven::ArmJoints logged(const recording::ArmSignals& row, ActuatorSignal s);
 struct ActuatorTrace {
   std::string name;
   std::vector<double> time;                                ///< s from the first row
-  std::array<std::vector<recording::ArmSignals>, 2> arms;  ///< per arm, one entry per row
+  raven::PerArm<std::vector<recording::ArmSignals>> arms;  ///< per arm, one entry per row
   std::size_t rows() const { return time.size(); }
 };
 
@@ -41,15 +41,15 @@ ActuatorTrace actuatorTrace(const recording::RsRecording& rs);
 std::optional<ActuatorTrace> loggedActuatorTrace(const recording::RsRecording& rs);
 
 /// Per signal (kActuatorSignals order) and arm, a value per joint.
-using SignalJoints = std::array<std::array<raven::ArmJoints, 2>, 4>;
+using SignalJoints = std::array<raven::PerArm<raven::ArmJoints>, 4>;
 SignalJoints zeroSignals();
 
 /// Mean |a - b| of one signal per arm and joint over the rows both have (logged units).
-std::array<raven::ArmJoints, 2> meanAbsoluteDifference(const ActuatorTrace& a,
+raven::PerArm<raven::ArmJoints> meanAbsoluteDifference(const ActuatorTrace& a,
                                                        const ActuatorTrace& b, ActuatorSignal s);
 /// The median over the arms' joints the robot moves (spread > 0) of value / spread.
-double medianRatio(const std::array<raven::ArmJoints, 2>& value,
-                   const std::array<raven::ArmJoints, 2>& spread);
+double medianRatio(const raven::PerArm<raven::ArmJoints>& value,
+                   const raven::PerArm<raven::ArmJoints>& spread);
 
 /// Per signal, arm and joint: the twin's difference from the physical trials over the robot's
 /// own spread (mean over trial pairs of mean |physical_i - physical_j|).

@@ -17,7 +17,7 @@ struct RavenStateSnapshot {
   std::int32_t runlevel = 0;
   std::int32_t sublevel = 0;
   std::int32_t last_seq = 0;
-  std::array<std::int32_t, 2> type{};
+  raven::PerArm<std::int32_t> type{};
   std::array<std::int32_t, 6> pos{};  ///< tool point, gold xyz then green xyz (microns)
   std::array<float, 18> ori{};        ///< row-major tool rotations, arm j at j*9
   std::array<float, 18> ori_d{};
@@ -32,7 +32,7 @@ struct RavenStateSnapshot {
   std::array<float, 16> jvel{};
   std::array<float, 16> mpos_d{};
   std::array<float, 16> jpos_d{};
-  std::array<float, 2> grasp_d{};  ///< desired grasper opening per arm (degrees)
+  raven::PerArm<float> grasp_d{};  ///< desired grasper opening per arm (degrees)
   std::array<float, 16> encoffsets{};
   std::array<float, 12> jac_vel{};  ///< per arm: tool linear (m/s) then angular (rad/s) velocity
   std::array<float, 12> jac_f{};

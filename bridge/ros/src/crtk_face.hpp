@@ -79,13 +79,13 @@ class CrtkFace {
   ::ros::NodeHandle& node_;
   CrtkFaceOptions options_;
   CommandInbox& inbox_;
-  std::array<raven::ArmKinematics, 2> kinematics_;
-  std::array<ArmPublishers, 2> publishers_;
+  raven::PerArm<raven::ArmKinematics> kinematics_;
+  raven::PerArm<ArmPublishers> publishers_;
   std::vector<::ros::Subscriber> subscribers_;
   std::vector<::ros::ServiceServer> services_;
   /// Where each arm's move (move_jp, move_cp, jaw/move_jp) ends, while it runs.
-  std::array<std::optional<ArmJoints>, 2> moving_to_;
-  std::array<std::optional<OperatingStatus>, 2> published_status_;
+  raven::PerArm<std::optional<ArmJoints>> moving_to_;
+  raven::PerArm<std::optional<OperatingStatus>> published_status_;
   ThrottledLog log_;
 };
 

@@ -123,16 +123,16 @@ class RavenRosClient::Impl {
   raven::JointLimits joint_limits_;
   Connection connection_;
   std::optional<OperatingStatus> status_;
-  std::array<std::optional<JointSample>, 2> measured_, setpoint_;
-  std::array<std::optional<PoseSample>, 2> measured_cp_, setpoint_cp_;
+  raven::PerArm<std::optional<JointSample>> measured_, setpoint_;
+  raven::PerArm<std::optional<PoseSample>> measured_cp_, setpoint_cp_;
   std::optional<RavenStateSnapshot> raven_state_;
   /// Per grasper: the latest jaw_forces and measured_cf (the twin's; a physical robot has none),
   /// and the forces read from the two once they carry the same cycle's stamp.
   std::array<std::optional<raven_twin::GraspForces>, 2> jaw_forces_;
-  std::array<std::optional<geometry_msgs::WrenchStamped>, 2> wrench_;
-  std::array<std::optional<GrasperForces>, 2> cf_;
+  raven::PerArm<std::optional<geometry_msgs::WrenchStamped>> wrench_;
+  raven::PerArm<std::optional<GrasperForces>> cf_;
   void readForces(Arm arm, double time);
-  std::array<std::optional<LocalMove>, 2> moves_;
+  raven::PerArm<std::optional<LocalMove>> moves_;
   std::vector<std::uint8_t> command_order_;  ///< lock-step: topics sent on since the last step
   std::uint64_t step_seq_ = 0;
   std::optional<raven_twin::StepDone> step_done_;  ///< lock-step: the node's latest answer

@@ -77,7 +77,7 @@ std::array<std::size_t, kLockStepIdCount> namedCommands(const raven_twin::Step& 
 /// Every topic the robot publishes.
 struct Publishers {
   ::ros::Publisher operating_state, ravenstate, joint_states, step_done, refusals;
-  std::array<::ros::Publisher, 2> arm_operating_state, measured_js, setpoint_js, measured_cp,
+  raven::PerArm<::ros::Publisher> arm_operating_state, measured_js, setpoint_js, measured_cp,
       setpoint_cp, grasp_measured_js, grasp_measured_cf, grasp_jaw_forces;
 };
 

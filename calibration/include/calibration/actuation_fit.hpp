@@ -36,7 +36,7 @@ twin::ArmsMechanics broadUncertainty(const twin::ArmsMechanics& mechanics);
 /// mvel and Tau of mean |model - recording| over the recordings' spread (`spread`: per signal
 /// and arm, analysis::ActuatorFidelity's).
 struct MechanicsScore {
-  std::array<raven::ArmJoints, 2> joint{raven::ArmJoints::Zero(), raven::ArmJoints::Zero()};
+  raven::PerArm<raven::ArmJoints> joint{raven::ArmJoints::Zero(), raven::ArmJoints::Zero()};
   double total() const;
 };
 MechanicsScore scoreMechanics(const twin::ArmsMechanics& mechanics,

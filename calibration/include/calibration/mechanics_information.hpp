@@ -20,7 +20,7 @@ inline constexpr int kMechanicsValues = 5;  ///< twin::MotorMechanics::kNames
 using InformationBlock = Eigen::Matrix<double, kMechanicsValues, kMechanicsValues>;
 
 struct MechanicsInformation {
-  std::array<std::array<InformationBlock, raven::kJointCount>, 2> blocks;
+  raven::PerArm<std::array<InformationBlock, raven::kJointCount>> blocks;
 
   /// No information at all.
   static MechanicsInformation none();

@@ -91,7 +91,7 @@ class GamepadMapping {
   MappingScheme scheme_;
   IkMode ik_mode_ = IkMode::WristLocked;
   ArmPair joints_;
-  std::array<ArmTarget, 2> targets_;
+  raven::PerArm<ArmTarget> targets_;
 };
 
 }  // namespace controller

@@ -22,10 +22,10 @@ struct PlatformProfile {
   std::string name;
   std::string description;
   /// The chain this project's controller uses for both arms (reference section B).
-  std::array<ArmConvention, 2> kinematics;
+  raven::PerArm<ArmConvention> kinematics;
   /// The physical robot's own firmware chain, as it reports poses (reference section A),
   /// in each arm's base frame; absent for simulated platforms.
-  std::optional<std::array<ArmConvention, 2>> firmware_kinematics;
+  std::optional<raven::PerArm<ArmConvention>> firmware_kinematics;
   ArmJoints home = ArmJoints::Zero();
   /// Where the robot's own `home` command takes the arms (the firmware's homing target);
   /// absent: `home`.

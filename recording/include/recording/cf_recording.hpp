@@ -37,7 +37,7 @@ CfRecording readCf(const std::filesystem::path& path);
 class CfWriter {
  public:
   explicit CfWriter(const std::filesystem::path& path);
-  void write(double time, const std::array<std::optional<bridge::GrasperForces>, 2>& arms);
+  void write(double time, const raven::PerArm<std::optional<bridge::GrasperForces>>& arms);
   std::size_t rows() const { return rows_; }
   const std::filesystem::path& path() const { return file_.path(); }
 

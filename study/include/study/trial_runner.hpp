@@ -19,8 +19,8 @@ namespace study {
 
 /// Called before every iteration with the time (s since the trial began), the task's goals and
 /// the tool tips: a virtual participant sets its pad here.
-using BeforeTurn = std::function<void(double, const std::array<ArmGoal, 2>&,
-                                      const std::array<Eigen::Vector3d, 2>&)>;
+using BeforeTurn = std::function<void(double, const raven::PerArm<ArmGoal>&,
+                                      const raven::PerArm<Eigen::Vector3d>&)>;
 
 /// What a trial runs with.
 struct TrialSettings {
@@ -55,7 +55,7 @@ recording::GamepadState gatePad(const Condition& condition, recording::GamepadSt
                                 bool first);
 
 /// The arms a condition's scheme can move (left, right).
-std::array<bool, 2> armsMoved(const Condition& condition);
+raven::PerArm<bool> armsMoved(const Condition& condition);
 
 TrialRun runTrial(const TrialSettings& settings);
 

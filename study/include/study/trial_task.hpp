@@ -20,7 +20,7 @@ namespace study {
 /// What the task sees after an iteration.
 struct TaskView {
   double time = 0.0;                    ///< s since the trial began
-  std::array<Eigen::Vector3d, 2> tips;  ///< tool tips, controller frame (m), left first
+  raven::PerArm<Eigen::Vector3d> tips;  ///< tool tips, controller frame (m), left first
   const ambf_like::World* world = nullptr;
 };
 
@@ -42,7 +42,7 @@ class TrialTask {
   /// Called after every iteration.
   virtual void observe(const TaskView& view, EventLog& events) = 0;
   virtual bool done() const = 0;
-  virtual std::array<ArmGoal, 2> goals() const = 0;
+  virtual raven::PerArm<ArmGoal> goals() const = 0;
   /// One line for the terminal: what is left, how far.
   virtual std::string status(const TaskView& view) const = 0;
   /// Whether the virtual participants of this kit can do the task.
@@ -51,9 +51,9 @@ class TrialTask {
 
 /// The task `spec` asks for; `seed` draws random targets; an arm `arms` leaves out gets none.
 std::unique_ptr<TrialTask> makeTask(const TaskSpec& spec, std::uint64_t seed,
-                                    std::array<bool, 2> arms = {true, true});
+                                    raven::PerArm<bool> arms = {true, true});
 
 /// The targets (offsets from each arm's start tip, m) a targets task shows, left arm first.
-std::array<std::vector<Eigen::Vector3d>, 2> targetOffsets(const TaskSpec& spec, std::uint64_t seed);
+raven::PerArm<std::vector<Eigen::Vector3d>> targetOffsets(const TaskSpec& spec, std::uint64_t seed);
 
 }  // namespace study

@@ -66,8 +66,8 @@ class VirtualParticipant {
 
   /// The pad at time `t` (s), having seen `goals` and the tool tips `tips` (controller frame)
   /// now; it acts on what it saw `delay` ago.
-  recording::GamepadState act(double t, const std::array<ArmGoal, 2>& goals,
-                              const std::array<Eigen::Vector3d, 2>& tips);
+  recording::GamepadState act(double t, const raven::PerArm<ArmGoal>& goals,
+                              const raven::PerArm<Eigen::Vector3d>& tips);
 
   /// The gain the person believes `arm` moves with (m/s at full stick), horizontally or along z.
   double believedGain(int arm, bool z) const {
@@ -77,8 +77,8 @@ class VirtualParticipant {
  private:
   struct Seen {
     double t;
-    std::array<ArmGoal, 2> goals;
-    std::array<Eigen::Vector3d, 2> tips;
+    raven::PerArm<ArmGoal> goals;
+    raven::PerArm<Eigen::Vector3d> tips;
   };
   /// One thumb: idle until `until`, or pushing `stick` (x, y) until `until`.
   struct Hand {
@@ -104,7 +104,7 @@ class VirtualParticipant {
   double believed_deadzone_;        ///< the stick travel it thinks does nothing
   std::mt19937_64 rng_;
   std::deque<Seen> history_;
-  std::array<Hand, 2> hands_;
+  raven::PerArm<Hand> hands_;
   int selected_arm_ = 0;           ///< M1: the arm the left stick drives
   double selecting_until_ = -1.0;  ///< M1: a Back / Start press in progress
   std::array<double, 4> tremor_phase_{};

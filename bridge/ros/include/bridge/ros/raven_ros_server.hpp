@@ -22,7 +22,7 @@ namespace bridge::ros1 {
 struct CrtkFaceOptions {
   std::string ros_namespace = "crtk";
   /// Left (gold) arm's name first: a dVRK user may call them "PSM1", "PSM2".
-  std::array<std::string, 2> arm_names{"arm1", "arm2"};
+  raven::PerArm<std::string> arm_names{"arm1", "arm2"};
   /// The served platform's profile: its reporting chain for query_cp / query_jp and move_cp,
   /// its joint limits for telling when a move has arrived.
   raven::PlatformProfile profile;
