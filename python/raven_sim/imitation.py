@@ -52,7 +52,9 @@ REST_Z = LAYOUT["board_top"] + LAYOUT["ring_height"] / 2  # a ring's centre lyin
 
 
 def joints_of(arm):
-    return slice(7 * arm, 7 * arm + 7)
+    """An arm's joints in a vector of both arms' (the targets, an action, a waypoint)."""
+    both, own = part("targets"), part("targets", arm)
+    return slice(own.start - both.start, own.stop - both.start)
 
 
 class SteppedExpert:
