@@ -17,8 +17,8 @@ namespace {
 TEST(PegTransferOverRos, PlacesAllSixAndItsTableIsTheInProcessRuns) {
   // The nominal scene, resting rings sleep; on ideal servos, whose runs are the same to the bit
   // either way. (On the motor twin both place all six, but not yet identically: 778 iterations
-  // over ROS against 777 in process, the rings within 0.7 mm; where they part is not found yet.
-  // The default's own test is the next one.)
+  // over ROS against 777 in process, the rings within 0.7 mm: the rings' orientations cross as
+  // quaternions, whose ulp the motor twin's decisions feel. The default's own test is the next.)
   scenario::PegTransferOptions options;
   options.actuation = common::ActuationKind::Ideal;
   options.time_limit = 150.0;
