@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Fails when a C++ function of the project is longer than LIMIT lines (its signature to its
-closing brace): long functions are split at their own headings into named steps (docs/architecture.md).
+closing brace): long functions are split at their own headings into named steps
+(docs/architecture.md).
 
 A function is found as its outermost body: a brace whose preceding text ends in a parameter list
 (with qualifiers, a trailing return type or a constructor's initialisers), at namespace or class
@@ -35,7 +36,8 @@ def functions(text):
     """(name, first line, line count) of each outermost function body in `text`."""
     code = blanked(text)
     found = []
-    # A stack of what each open brace is: "scope" (namespace, class...) or "function".
+    # What each open brace is: "scope" (namespace, class...), "function", or "inner" (a brace
+    # inside a function: a block, a lambda, a local class).
     stack = []
     head_start = 0  # where the text before the next brace began
     function_start = None

@@ -20,10 +20,10 @@ int32 ids (SEGMENT_IDS), the observation is a dict of them (keys "<kind>" for on
 state (72 values) is, per arm (left first), its measured joints, commanded targets, tool pose
 (x, y, z, qw, qx, qy, qz) and grasp force and torque; then each ring's centre (ring1..ring6):
 `state[part("targets")]`, `state[part("rings", 2)]` (the C++ layout's names and places,
-raven_sim.observation_layout()). The reward is the change in the number of rings resting threaded on their target
-posts (+1 as one comes to rest there, -1 if one leaves); an episode terminates with all six
-placed and is truncated at the time limit. The main job's scripted operator is the expert:
-`expert_action()`. The same seed and actions give the same episode.
+raven_sim.observation_layout()). The reward is the change in the number of rings resting
+threaded on their target posts (+1 as one comes to rest there, -1 if one leaves); an episode
+terminates with all six placed and is truncated at the time limit. The main job's scripted
+operator is the expert: `expert_action()`. The same seed and actions give the same episode.
 
 The twin is the Raven-II's motor-level one by default (actuation="motors": its motors, cables and
 control software drive the joints, and what the jaws touch loads the motors), or ideal joint

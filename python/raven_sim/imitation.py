@@ -20,12 +20,13 @@ are its own (the arm, its targets, its tool point in the world frame, the rings'
 raven_sim.tool_points; its grasp wrench), per ring of its jobs where the ring is from the tool,
 from its start and target posts and above the board, with whether it rests on its target (the
 layout's design values: raven_sim.peg_layout; the C++ judgement: raven_sim.ring_placed); which
-job is the first not done and that ring's offset within NEAR (the millimetres a grasp is decided on, at their own scale); and how many
-steps the targets have stood still (up to HOLD_MEMORY): the operator waits, and a policy that
-only saw the present could not count. The other arm is not seen: in the demonstrations the two
-arms keep in step, which a policy must not learn to rely on. Nor are the policy's own last
-moves (the targets' change, the joints' lag behind them): a clone that sees them learns to
-repeat them, and repeats its own errors (the copycat problem, Wen et al. 2020).
+job is the first not done and that ring's offset within NEAR (the millimetres a grasp is decided
+on, at their own scale); and how many steps the targets have stood still (up to HOLD_MEMORY):
+the operator waits, and a policy that only saw the present could not count. The other arm is
+not seen: in the demonstrations the two arms keep in step, which a policy must not learn to rely
+on. Nor are the policy's own last moves (the targets' change, the joints' lag behind them): a
+clone that sees them learns to repeat them, and repeats its own errors (the copycat problem, Wen
+et al. 2020).
 """
 
 import time

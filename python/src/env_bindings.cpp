@@ -26,8 +26,8 @@ struct SavedEpisode {
 void bindLayouts(py::module_& m) {
   m.def("tool_points", &scenario::PegTransferEnv::toolPoints, py::arg("joints"),
         "both arms' tool points (2 x 3, m) in the peg-transfer scene's world frame, the rings' "
-        "frame, for "
-        "14 joint values (left arm first); the state's tool poses are the robot's own report");
+        "frame, for 14 joint values (left arm first); the state's tool poses are the robot's own "
+        "report");
   m.def(
       "peg_layout",
       [] {
@@ -54,7 +54,7 @@ void bindLayouts(py::module_& m) {
   m.def(
       "ring_placed",
       [](const Eigen::Vector3d& centre, const Eigen::Vector2d& post) {
-        const scenario::PegLayout layout;
+        static const scenario::PegLayout layout;
         bridge::Sighting upright;
         upright.pose.translation() = centre;
         return scenario::restsOn(scenario::RingView(upright, layout.ring), post, layout.geometry);

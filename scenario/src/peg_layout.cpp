@@ -11,7 +11,7 @@ std::string legacyRingName(std::size_t i) {
 }
 
 std::optional<std::size_t> ringIndexOf(const std::string& body) {
-  for (std::size_t i = 0; i < 6; ++i) {
+  for (std::size_t i = 0; i < raven::design::PegSceneDesign{}.ring_count; ++i) {
     if (body == ringName(i) || body == legacyRingName(i)) return i;
   }
   return std::nullopt;

@@ -201,10 +201,12 @@ class PegTransferEnvironment(unittest.TestCase):
         for k in range(10):
             observation = env.step(push)[0]
             self.assertAlmostEqual(env.core.time - t0, 0.1 * (k + 1), places=9)
-        moved = np.linalg.norm(observation[LEFT_TOOL][:3] - start[LEFT_TOOL][:3])  # measured_cp's frame
+        # In measured_cp's frame.
+        moved = np.linalg.norm(observation[LEFT_TOOL][:3] - start[LEFT_TOOL][:3])
         self.assertGreater(moved, 0.002)  # under the caps: at most what ten pushes asked
         self.assertLess(moved, 0.041)
-        np.testing.assert_allclose(observation[RIGHT_TOOL][:3], start[RIGHT_TOOL][:3], atol=2e-4)  # right: still
+        # The right tool stands still.
+        np.testing.assert_allclose(observation[RIGHT_TOOL][:3], start[RIGHT_TOOL][:3], atol=2e-4)
         with self.assertRaisesRegex(ValueError, "8 values, not 14"):
             env.step(np.zeros(14))
         with self.assertRaisesRegex(ValueError, "period"):

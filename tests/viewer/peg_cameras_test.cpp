@@ -33,7 +33,7 @@ TEST(PegCameras, SegmentationFindsEveryRingPostAndArmAndDepthIsMetres) {
   EXPECT_TRUE(seen.count(scenario::kFirstStartPost));
   EXPECT_TRUE(seen.count(scenario::kFirstTargetPost + 5));
   EXPECT_TRUE(seen.count(scenario::kLeftArm) || seen.count(scenario::kLeftJaws));
-  for (std::uint32_t id : seen) EXPECT_LT(id, scenario::kRingSegments);
+  for (std::uint32_t id : seen) EXPECT_LT(id, scenario::kPegSegments);
   // Depth: finite exactly where something was drawn, within the camera's near and far planes.
   const auto views = scenario::pegTransferViews(*scene.world);
   const viewer::Camera camera = viewer::findView(views, "overview").camera;

@@ -28,7 +28,7 @@ enum PegSegment : std::uint32_t {
 };
 
 /// How many ids there are (the largest + 1).
-inline constexpr std::uint32_t kRingSegments = 25;
+inline constexpr std::uint32_t kPegSegments = 25;
 
 /// One world's cameras: built after each reset (the world is new), rendering on demand.
 class PegCameras {
