@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "raven/control_cycle.hpp"
+#include "twin/twin_arms.hpp"
 
 namespace calibration {
 
@@ -43,7 +44,9 @@ analysis::ActuatorTrace replaySetpoints(const analysis::ActuatorTrace& recording
   for (raven::Arm arm : raven::kArms) {
     const auto a = raven::slot(arm);
     const Rows& in = recording.arms[a];
-    twin::ArmDrive motors(arm, drive, mechanics[a], raven::kControlCycle, in.front().joints);
+    // The robot's jaws meet where our model's do; its joints' stops are never reached here.
+    twin::ArmDrive motors(arm, drive, mechanics[a], raven::kControlCycle, in.front().joints,
+                          {std::nullopt, twin::ArmBindings::ourRaven().jaws_meet});
     motors.place(start.arms[a]);
     std::size_t segment = 0;
     std::size_t cycle = 0;

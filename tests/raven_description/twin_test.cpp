@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <sstream>
 
 #include "ambf_like/scene_loader.hpp"
 #include "raven/arm_kinematics.hpp"
@@ -310,6 +311,57 @@ TEST(Twin, ArmLayerRefusesNonFiniteCommandsWithoutMoving) {
   EXPECT_THROW(twin.arms.command(Arm::Left, bad), std::invalid_argument);
   EXPECT_DOUBLE_EQ(twin.world.joint("/raven2/left/shoulder").target(),
                    test_support::physicalProfile().home(0));
+}
+
+/// The vertices of one of our collision meshes (an OBJ's `v` lines), in its body's frame.
+std::vector<Vector3d> objVertices(const std::filesystem::path& file) {
+  std::vector<Vector3d> vertices;
+  std::istringstream lines(test_support::readFile(file));
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string tag;
+    Vector3d v;
+    if (words >> tag && tag == "v" && words >> v.x() >> v.y() >> v.z()) vertices.push_back(v);
+  }
+  return vertices;
+}
+
+/// How far (m) jaw2's body reaches into jaw1's beyond jaw1's gripping face (the plane of its
+/// frame's x and z axes; jaw1's body lies on one side of it), with `arm`'s jaws at `opening`
+/// (jaw1 + jaw2) and the pair turned by `twist`: <= 0 where they only touch or stand apart.
+double jawOverlap(Twin& twin, Arm arm, double opening, double twist) {
+  const std::string side(raven::armName(arm));
+  ArmJoints q = test_support::physicalProfile().home;
+  q(raven::kJaw1) = 0.5 * opening + twist;
+  q(raven::kJaw2) = 0.5 * opening - twist;
+  twin.arms.command(arm, q);
+  twin.arms.place(arm, q, ArmJoints::Zero());
+  twin.world.step(1);  // the bodies' poses follow the joints in a step (1 ms: under 1 nm here)
+  const auto jaw1 = twin.world.body("/raven2/" + side + "/jaw1_link").pose();
+  const auto jaw2 = twin.world.body("/raven2/" + side + "/jaw2_link").pose();
+  const auto meshes = kModels / "raven2/meshes";
+  double jaw1_side = 0.0;
+  for (const Vector3d& v : objVertices(meshes / ("jaw1_" + side + ".obj"))) jaw1_side += v.y();
+  double overlap = -1.0;
+  for (const Vector3d& v : objVertices(meshes / ("jaw2_" + side + ".obj"))) {
+    const Vector3d in_jaw1 = jaw1.inverse() * (jaw2 * v);
+    overlap = std::max(overlap, std::copysign(1.0, jaw1_side) * in_jaw1.y());
+  }
+  return overlap;
+}
+
+TEST(Twin, OurJawsFacesMeetAtOpeningZero) {
+  // Where the twin's jaw stop sits (ArmBindings::ourRaven().jaws_meet): derived from the
+  // model's own jaws, whatever the pair's twist.
+  Twin twin(kModels / "raven2/launch.yaml");
+  ASSERT_EQ(twin::ArmBindings::ourRaven().jaws_meet, 0.0);
+  for (Arm arm : raven::kArms) {
+    for (double twist : {0.0, 0.3, -0.5}) {
+      EXPECT_LT(jawOverlap(twin, arm, 0.0, twist), 1e-8) << raven::armName(arm) << " " << twist;
+      // 0.02 rad further closed, the 11 mm jaws' tips pass 0.2 mm into each other.
+      EXPECT_GT(jawOverlap(twin, arm, -0.02, twist), 1.5e-4) << raven::armName(arm) << twist;
+    }
+  }
 }
 
 TEST(Twin, PegTransferSceneRestsTenSecondsWithEveryPegOnItsPost) {

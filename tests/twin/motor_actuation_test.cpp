@@ -162,7 +162,7 @@ TEST(ArmDrive, AJointDrivenPastItsHardStopRestsOnItAndSoDoItsMotors) {
   stops.high(raven::kShoulder) = M_PI / 2;
   ArmJoints start = home();
   start(raven::kShoulder) = M_PI / 2 - 0.01;
-  twin::ArmDrive arm(Arm::Left, drive, frictionless(2e-4), 0.001, start, stops);
+  twin::ArmDrive arm(Arm::Left, drive, frictionless(2e-4), 0.001, start, {stops, {}});
   ArmJoints setpoint = start;
   // 0.05 rad past the stop, from 0.01 rad before it: the PD asks up to 2.4 N m, the amplifiers
   // give their clip (0.68 N m), short of the overdrive that would e-stop the robot (5.4 N m).
@@ -175,6 +175,39 @@ TEST(ArmDrive, AJointDrivenPastItsHardStopRestsOnItAndSoDoItsMotors) {
   EXPECT_EQ(arm.readings().motor_velocity(raven::kShoulder), 0.0) << "resting on the stop";
   EXPECT_TRUE(arm.fault().empty());
   EXPECT_GT(arm.readings().torque(raven::kShoulder), 1.0) << "its motor keeps pushing";
+}
+
+TEST(ArmDrive, JawsClosedPastEachOtherRestWhereTheirFacesMeetAndWindTheirMotorsUp) {
+  // The motors alone (the calibration's model) with the jaws' stop at opening 0: commanded
+  // 0.1 rad each past it, the jaws rest with their faces together, twisted or not, and both
+  // motors keep pushing them closed (their integrators wind up on the error that stays).
+  const auto drive = twin::DriveTrain::raven2();
+  ArmJoints start = home();
+  start(raven::kJaw1) = start(raven::kJaw2) = 0.05;
+  twin::ArmDrive arm(Arm::Left, drive, frictionless(2e-4), 0.001, start, {{}, 0.0});
+  ArmJoints setpoint = start;
+  setpoint(raven::kJaw1) = setpoint(raven::kJaw2) = -0.1;
+  double tightest = 1.0;
+  for (int k = 0; k < 1000; ++k) {
+    const ArmJoints q = arm.cycle(setpoint).position;
+    tightest = std::min(tightest, q(raven::kJaw1) + q(raven::kJaw2));
+  }
+  // Readings are of quantised motor angles: two counts of each jaw.
+  const double counts = 2.0 * countInJoint(drive, raven::kJaw1);
+  EXPECT_GT(tightest, -2.0 * counts);
+  const ArmJoints tau_then = arm.readings().torque;
+  for (int k = 0; k < 500; ++k) arm.cycle(setpoint);
+  const ArmJoints& q = arm.readings().position;
+  EXPECT_NEAR(q(raven::kJaw1) + q(raven::kJaw2), 0.0, 2.0 * counts) << "resting on each other";
+  const ArmJoints growth = arm.readings().torque - tau_then;
+  const twin::MotorGains gains = twin::MotorGains::raven2(Arm::Left);
+  for (int jaw : {raven::kJaw1, raven::kJaw2}) {
+    // Over 0.5 s each motor's Tau grows by KI times its (steady) error: the error is the
+    // jaw's 0.1 rad or more past the faces, through its cables.
+    const double error = arm.readings().motor_setpoint(jaw) - arm.readings().motor_position(jaw);
+    EXPECT_NEAR(growth(jaw), gains.ki(jaw) * error * 0.5, 0.05 * std::abs(gains.ki(jaw) * error))
+        << raven::kJointNames[static_cast<std::size_t>(jaw)];
+  }
 }
 
 TEST(ArmDrive, AfterTheSoftEStopTheAmplifiersStayOffUntilTheFaultIsCleared) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <vector>
@@ -327,6 +328,77 @@ TEST(WorldMotors, JawsClosedOnARigidBallSqueezeItWithTheJawMotorsTorque) {
   EXPECT_GT(balance.by_contact(raven::kJaw1), 0.1) << "squeezed with less than 0.1 N m";
   EXPECT_GT(balance.by_contact(raven::kJaw2), 0.1) << "squeezed with less than 0.1 N m";
   expectMotorsHoldTheContacts(balance);
+}
+
+/// One arm's jaw motors (jaw1, jaw2) as the control software logs them: Tau (N m at the gearbox
+/// outputs) and the motor error mpos_d - mpos (rad).
+struct JawMotors {
+  Eigen::Vector2d tau, error;
+};
+
+JawMotors jawMotors(const twin::TwinPlatform& twin, Arm arm) {
+  const auto state = twin.ravenState();
+  JawMotors jaws;
+  for (int j = 0; j < 2; ++j) {
+    const auto at = static_cast<std::size_t>(bridge::ravenStateIndex(arm, raven::kJaw1 + j));
+    jaws.tau(j) = state->tau[at];
+    jaws.error(j) = (state->mpos_d[at] - state->mpos[at]) * M_PI / 180.0;
+  }
+  return jaws;
+}
+
+TEST(WorldMotors, JawsClosedOnEachOtherStopThereAndWindTheirIntegratorsUp) {
+  // Acceptance 1(d): both jaws commanded 0.1 rad past the faces' meeting (opening -0.2, a grasp
+  // closed hard on nothing, as the robot's recordings hold it for seconds). The faces stop the
+  // jaws at opening 0; the motors' error stays, and their integrators wind up by KI times it
+  // every second (raven2-actuation.md §3: no clamp), the stop bearing what the motors push.
+  const twin::TwinOptions options = frictionlessMotors();
+  auto twin = test_support::readyTwin(options);
+  const Arm arm = Arm::Left;
+  ArmJoints close = ArmJoints::Zero();
+  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;  // 1 rad/s each, as a pad closes them
+  while (twin->setpointJs(arm).position(raven::kJaw1) > -0.1) {
+    twin->send(bridge::ServoJr{arm, close});
+    twin->advance(0.001);
+  }
+  twin->advance(0.5);
+  const ambf_like::CoupledStop* stop = twin->arms().jawStop(arm);
+  ASSERT_NE(stop, nullptr);
+  const twin::MotorGains gains = twin::MotorGains::raven2(arm);
+  const auto drive = twin::DriveTrain::raven2();
+  const JawMotors before = jawMotors(*twin, arm);
+  Eigen::Vector2d error_integral = Eigen::Vector2d::Zero();
+  double widest_overlap = 0.0, stop_force = 0.0;
+  ArmJoints by_motors = ArmJoints::Zero();
+  constexpr int kCycles = 500;
+  for (int k = 0; k < kCycles; ++k) {
+    twin->advance(0.001);
+    error_integral += jawMotors(*twin, arm).error * 0.001;
+    const ArmJoints q = twin->measuredJs(arm).position;
+    widest_overlap = std::max(widest_overlap, -(q(raven::kJaw1) + q(raven::kJaw2)));
+    stop_force += stop->force() / kCycles;
+    by_motors += drive.coupling(arm).transpose() *
+                 appliedTorque(*twin, arm).cwiseQuotient(drive.gearbox) / kCycles;
+  }
+  const JawMotors after = jawMotors(*twin, arm);
+  std::printf(
+      "jaws on each other: overlap <= %.2g rad, stop %.4f N m, motors %.4f/%.4f N m, "
+      "Tau %+.4f/%+.4f -> %+.4f/%+.4f N m in 0.5 s\n",
+      widest_overlap, stop_force, -by_motors(raven::kJaw1), -by_motors(raven::kJaw2), before.tau(0),
+      before.tau(1), after.tau(0), after.tau(1));
+  EXPECT_LT(widest_overlap, 2e-3) << "the jaws passed through each other (rad)";
+  for (int j = 0; j < 2; ++j) {
+    const int motor = raven::kJaw1 + j;
+    // The control law, cycle by cycle: KP on the error, KI on its integral (no D: KD is 0).
+    const double law =
+        gains.kp(motor) * (after.error(j) - before.error(j)) + gains.ki(motor) * error_integral(j);
+    EXPECT_NEAR(after.tau(j) - before.tau(j), law, 0.05 * std::abs(law)) << "jaw " << j + 1;
+    // Held at the stop, each motor stays about 0.1 rad of jaw (0.9 motor rad) from its setpoint:
+    // its integrator winds up by 0.02 N m or more in the half second.
+    EXPECT_GT(std::abs(gains.ki(motor) * error_integral(j)), 0.02) << "jaw " << j + 1;
+    // The faces bear what the motors push, through the cables (frictionless motors).
+    EXPECT_NEAR(-by_motors(motor), stop_force, 0.05 * stop_force) << "jaw " << j + 1;
+  }
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 namespace twin {
 
 ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
-                   const ArmJoints& joints, const std::optional<raven::JointLimits>& stops)
-    : ArmDrive(arm, drive, cycle, stops, MotorAxes(mechanics.checked(arm))) {
+                   const ArmJoints& joints, ArmStops stops)
+    : ArmDrive(arm, drive, cycle, std::move(stops), MotorAxes(mechanics.checked(arm))) {
   const ArmJoints motor = drive_.toMotor(arm, joints);
   std::get<MotorAxes>(motors_).place(motor, ArmJoints::Zero());
   last_count_ = drive_.quantise(motor);
@@ -16,14 +16,13 @@ ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mecha
 }
 
 ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, const WorldMotors& motors, double cycle)
-    : ArmDrive(arm, drive, cycle, std::nullopt, motors) {
+    : ArmDrive(arm, drive, cycle, {}, motors) {
   last_count_ = drive_.quantise(motors.position());
   sense();
   readings_.motor_setpoint = readings_.motor_position;
 }
 
-ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, double cycle,
-                   std::optional<raven::JointLimits> stops,
+ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, double cycle, ArmStops stops,
                    std::variant<MotorAxes, WorldMotors> motors)
     : arm_(arm),
       drive_(drive),
@@ -85,19 +84,38 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
 
 void ArmDrive::holdAtStops() {
   auto* motors = std::get_if<MotorAxes>(&motors_);
-  if (!stops_ || motors == nullptr) return;
-  const raven::JointLimits& stops = *stops_;
+  if (motors == nullptr) return;
   ArmJoints q = drive_.toJoints(arm_, motors->position());
-  if ((q.array() >= stops.low.array() && q.array() <= stops.high.array()).all()) return;
+  const bool within_joints =
+      !stops_.joints ||
+      (q.array() >= stops_.joints->low.array() && q.array() <= stops_.joints->high.array()).all();
+  const double closed_past =
+      stops_.jaws_meet ? *stops_.jaws_meet - (q(raven::kJaw1) + q(raven::kJaw2)) : 0.0;
+  if (within_joints && closed_past <= 0.0) return;
   ArmJoints v = drive_.toJoints(arm_, motors->velocity());  // linear: velocities map alike
-  for (int j = 0; j < kJointCount; ++j) {
-    if (q(j) < stops.low(j)) {
-      q(j) = stops.low(j);
-      v(j) = std::max(v(j), 0.0);
-    } else if (q(j) > stops.high(j)) {
-      q(j) = stops.high(j);
-      v(j) = std::min(v(j), 0.0);
+  if (!within_joints) {
+    for (int j = 0; j < kJointCount; ++j) {
+      if (q(j) < stops_.joints->low(j)) {
+        q(j) = stops_.joints->low(j);
+        v(j) = std::max(v(j), 0.0);
+      } else if (q(j) > stops_.joints->high(j)) {
+        q(j) = stops_.joints->high(j);
+        v(j) = std::min(v(j), 0.0);
+      }
     }
+  }
+  if (closed_past > 0.0) {
+    // The faces' impulse parts the jaws along (1, 1), each by its share of the pair's mobility
+    // (its motor's inverse inertia; the two jaws' cables and ratios are alike): the overlap
+    // and the closing speed are gone, the pair's twist kept.
+    const ArmJoints& inertia = motors->mechanics().inertia;
+    const double mobility1 = 1.0 / inertia(raven::kJaw1), mobility2 = 1.0 / inertia(raven::kJaw2);
+    const double share1 = mobility1 / (mobility1 + mobility2);
+    const double closing = std::min(v(raven::kJaw1) + v(raven::kJaw2), 0.0);
+    q(raven::kJaw1) += share1 * closed_past;
+    q(raven::kJaw2) += (1.0 - share1) * closed_past;
+    v(raven::kJaw1) -= share1 * closing;
+    v(raven::kJaw2) -= (1.0 - share1) * closing;
   }
   motors->place(drive_.toMotor(arm_, q), drive_.toMotor(arm_, v));
 }

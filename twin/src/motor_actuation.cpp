@@ -12,7 +12,8 @@ ArmDrive MotorActuation::makeDrive(Arm arm, TwinArms& arms, ambf_like::World& wo
                                    const DriveTrain& drive, const MotorMechanics& mechanics,
                                    double cycle) {
   if (!arms.articulated(arm)) {
-    return ArmDrive(arm, drive, mechanics, cycle, arms.measured(arm), arms.hardStops(arm));
+    return ArmDrive(arm, drive, mechanics, cycle, arms.measured(arm),
+                    {arms.hardStops(arm), arms.jawsMeet()});
   }
   return ArmDrive(arm, drive, WorldMotors(arm, drive, mechanics.checked(arm), arms, world), cycle);
 }

@@ -16,6 +16,7 @@ ArmBindings ArmBindings::ourRaven() {
           std::string(kJointNames[static_cast<std::size_t>(i)]);
     }
   }
+  b.jaws_meet = 0.0;
   return b;
 }
 
@@ -56,7 +57,8 @@ std::string bodyOf(const ambf_like::World& world, const std::string& joint_name,
 
 }  // namespace
 
-TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings) {
+TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings)
+    : jaws_meet_(bindings.jaws_meet) {
   for (std::size_t a = 0; a < 2; ++a) {
     for (std::size_t i = 0; i < kJointCount; ++i) {
       const auto& b = bindings.joints[a][i];
@@ -70,6 +72,17 @@ TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings) {
       }
       if (i == raven::kJaw1 || i == raven::kJaw2) jaws_[a][i - raven::kJaw1] = child;
     }
+  }
+  if (!bindings.jaws_meet) return;
+  for (Arm arm : kArms) {
+    if (!articulated(arm)) continue;
+    // jaw1 + jaw2 >= meet, each joint = (model value - offset) / scale.
+    const auto& jaw1 = bound_[raven::slot(arm)][raven::kJaw1];
+    const auto& jaw2 = bound_[raven::slot(arm)][raven::kJaw2];
+    jaw_stops_[raven::slot(arm)] = &world.addCoupledStop(
+        {{jaw1.name, jaw2.name},
+         {1.0 / jaw1.scale, 1.0 / jaw2.scale},
+         *bindings.jaws_meet + jaw1.offset / jaw1.scale + jaw2.offset / jaw2.scale});
   }
 }
 

@@ -21,10 +21,10 @@ bridge::Sighting WorldPerception::sight(const std::string& name) const {
   bridge::Sighting s;
   s.time = now_;
   if (const auto* soft = std::get_if<const ambf_like::SoftBody*>(&find(name))) {
-    s.pose = (*soft)->pose();
+    s.pose = bridge::asReported((*soft)->pose());
     if ((*soft)->restVolume() > 0.0) s.volume_ratio = (*soft)->volume() / (*soft)->restVolume();
   } else {
-    s.pose = std::get<const ambf_like::RigidBody*>(find(name))->pose();
+    s.pose = bridge::asReported(std::get<const ambf_like::RigidBody*>(find(name))->pose());
   }
   return s;
 }

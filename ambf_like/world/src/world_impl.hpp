@@ -49,6 +49,7 @@ struct World::Impl {
   std::vector<std::unique_ptr<detail::NamedJoint>> joints;
   std::vector<std::unique_ptr<detail::Articulation>> articulations;
   std::vector<std::unique_ptr<Transmission>> transmissions;
+  std::vector<std::unique_ptr<CoupledStop>> coupled_stops;
   std::vector<std::unique_ptr<ProximitySensor>> sensors;
   std::vector<std::unique_ptr<ConstraintActuator>> actuators;
   std::optional<detail::SoftBodySleeper> sleeper;  ///< unset when no soft body may sleep

@@ -20,6 +20,15 @@ struct Sighting {
   std::optional<double> volume_ratio;
 };
 
+/// `pose` as every source reports it: its rotation carried by a unit quaternion (AMBF's object
+/// topics, a tracker). A simulator that holds a rotation matrix hands it over this way too, so a
+/// task sees the same pose, to the bit, in process and over ROS.
+inline Eigen::Isometry3d asReported(const Eigen::Isometry3d& pose) {
+  Eigen::Isometry3d reported = pose;
+  reported.linear() = Eigen::Quaterniond(pose.linear()).normalized().toRotationMatrix();
+  return reported;
+}
+
 /// The scene has no object of that name, or it has not been seen (yet, or for too long).
 class PerceptionError : public std::runtime_error {
  public:

@@ -21,15 +21,21 @@
 
 namespace twin {
 
+/// The mechanical stops the motors alone (MotorAxes) are held to: each joint's, and the jaws'
+/// faces meeting (jaw1 + jaw2 >= jaws_meet). In a World the World's own stops hold the links.
+struct ArmStops {
+  std::optional<raven::JointLimits> joints;
+  std::optional<double> jaws_meet;
+};
+
 /// One arm's motors, encoders and motor-level control.
 class ArmDrive {
  public:
-  /// At rest at `joints` with empty integrators, the joints held within `stops`, their
-  /// mechanical stops (the motors move the joints through stiff cables, so a joint at its stop
-  /// stops its motors too); none without. Throws std::invalid_argument naming the arm and field
-  /// of invalid mechanics.
+  /// At rest at `joints` with empty integrators, the joints held by `stops` (the motors move
+  /// the joints through stiff cables, so a joint at its stop stops its motors too). Throws
+  /// std::invalid_argument naming the arm and field of invalid mechanics.
   ArmDrive(Arm arm, const DriveTrain& drive, const MotorMechanics& mechanics, double cycle,
-           const ArmJoints& joints, const std::optional<raven::JointLimits>& stops = {});
+           const ArmJoints& joints, ArmStops stops = {});
   /// The motors in a World, at rest where its joints are, with empty integrators (the joints'
   /// stops are the World's).
   ArmDrive(Arm arm, const DriveTrain& drive, const WorldMotors& motors, double cycle);
@@ -53,17 +59,17 @@ class ArmDrive {
   void clearFault() { fault_.clear(); }
 
  private:
-  ArmDrive(Arm arm, const DriveTrain& drive, double cycle, std::optional<raven::JointLimits> stops,
+  ArmDrive(Arm arm, const DriveTrain& drive, double cycle, ArmStops stops,
            std::variant<MotorAxes, WorldMotors> motors);
   void sense();
   /// A joint that passed its stop is put back on it, its speed into the stop gone (an
-  /// inelastic stop), and the motors with it.
+  /// inelastic stop), and the motors with it; jaws closed past each other are parted alike.
   void holdAtStops();
 
   Arm arm_;
   DriveTrain drive_;
   double cycle_;
-  std::optional<raven::JointLimits> stops_;
+  ArmStops stops_;
   std::variant<MotorAxes, WorldMotors> motors_;
   MotorController controller_;
   /// d(motor)/d(joint): joint loads are its transpose times motor torques.

@@ -51,6 +51,7 @@ class MotorAxes {
   }
   const ArmJoints& position() const { return position_; }  ///< motor rad
   const ArmJoints& velocity() const { return velocity_; }
+  const MotorMechanics& mechanics() const { return mechanics_; }
 
   /// Substeps per step: friction's stick-slip and the stiffest tool axis stay resolved.
   static constexpr int kSubsteps = 4;

@@ -3,6 +3,7 @@
 // convention, mapped onto a World's joints, whichever model (ours or AMBF's) is loaded.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,18 +24,27 @@ struct JointBinding {
 /// The seven joints of each arm in a model.
 struct ArmBindings {
   raven::PerArm<std::array<JointBinding, kJointCount>> joints;
+  /// The jaws' opening (jaw1 + jaw2, rad) at which their gripping faces meet, where the model's
+  /// jaws stop on each other; none where the model lets them pass through each other.
+  std::optional<double> jaws_meet;
 
   /// This project's Raven-II (raven_description/models): joints named /raven2/<arm>/<joint>.
+  /// Its jaws meet at opening 0: each jaw's gripping face is the plane of its frame's x and z
+  /// axes, the other jaw's body lies on the far side of it (jaw1 at y >= 0, jaw2 at y <= 0), and
+  /// opening 0 puts the two frames together.
   static ArmBindings ourRaven();
   /// AMBF's blender-raven2.yaml, driven with the `ambf` profile as the paper's controller drove
   /// it: joint values as they are, except the right arm's jaws, which AMBF turns the other way.
+  /// Its jaws pass through each other, as in AMBF.
   static ArmBindings ambfRaven();
 };
 
 /// Commands and reads both arms of a Raven-II inside a World.
 class TwinArms {
  public:
-  /// Throws std::out_of_range naming the first bound joint the World does not have.
+  /// Throws std::out_of_range naming the first bound joint the World does not have. Where the
+  /// bindings say the jaws meet and an arm is articulated, its jaws get their stop (a
+  /// CoupledStop on jaw1 + jaw2).
   TwinArms(ambf_like::World& world, const ArmBindings& bindings);
 
   /// Position command for every joint of `arm` (each clamped by its joint's limits in the model).
@@ -56,6 +66,11 @@ class TwinArms {
   ArmJoints efforts(Arm arm) const;
   /// The two jaw bodies of `arm` (the jaw joints' children), qualified names.
   const std::array<std::string, 2>& jawBodies(Arm arm) const { return jaws_[raven::slot(arm)]; }
+  /// The jaws' opening where their faces meet (ArmBindings::jaws_meet).
+  std::optional<double> jawsMeet() const { return jaws_meet_; }
+  /// The World's stop the jaws of `arm` meet at: null where they pass through each other or
+  /// the arm is not articulated.
+  const ambf_like::CoupledStop* jawStop(Arm arm) const { return jaw_stops_[raven::slot(arm)]; }
   /// Every body the arm's joints connect, qualified names.
   const std::vector<std::string>& bodies(Arm arm) const { return bodies_[raven::slot(arm)]; }
 
@@ -70,6 +85,8 @@ class TwinArms {
   raven::PerArm<std::array<Bound, kJointCount>> bound_;
   std::array<std::array<std::string, 2>, 2> jaws_;
   raven::PerArm<std::vector<std::string>> bodies_;
+  std::optional<double> jaws_meet_;
+  raven::PerArm<const ambf_like::CoupledStop*> jaw_stops_{};
 };
 
 }  // namespace twin

@@ -71,6 +71,8 @@ class TwinPlatform final : public RavenPlatform {
   ambf_like::World& world() { return world_; }
   const ambf_like::World& world() const { return world_; }
   const RavenCore& core() const { return core_; }
+  /// The arm layer over the simulation (joint bindings, jaw stops).
+  const TwinArms& arms() const { return arms_; }
 
   /// The twin's state between cycles: its World (World::saveState says what that holds and
   /// the caches it rebuilds), the actuation's motors and controllers, the command layer and the

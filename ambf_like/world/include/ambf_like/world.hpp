@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ambf_like/constraint_actuator.hpp"
+#include "ambf_like/coupled_stop.hpp"
 #include "ambf_like/elastic_solve_stats.hpp"
 #include "ambf_like/joint.hpp"
 #include "ambf_like/mesh.hpp"
@@ -143,6 +144,11 @@ class World {
   /// (maximal coordinates, a fixed joint, another articulation) or that articulation already has
   /// a transmission; std::out_of_range for an unknown joint.
   Transmission& addTransmission(const TransmissionSpec& spec);
+  /// Puts a stop on a sum of joint coordinates of one articulation (see CoupledStopSpec); the
+  /// World keeps it. Throws std::invalid_argument naming the joint when the sizes disagree, a
+  /// value is not finite or a joint is not of one articulation's coordinates; std::out_of_range
+  /// for an unknown joint.
+  CoupledStop& addCoupledStop(const CoupledStopSpec& spec);
   /// What the world built otherwise than its files asked, and why (e.g. a model asked to be
   /// articulated that stays in maximal coordinates).
   const std::vector<std::string>& warnings() const;

@@ -43,7 +43,7 @@ class JointDynamics {
   struct ServoDof {
     JointSpaceServo* servo = nullptr;
     int dof = -1;
-    const btMultiBody* multibody = nullptr;  ///< the articulation's
+    btMultiBody* multibody = nullptr;  ///< the articulation's
   };
   virtual ServoDof servoDof() const { return {}; }
   /// Puts the coordinate at `coordinate` moving at `velocity`; false where the formulation

@@ -1,0 +1,50 @@
+#pragma once
+// A stop on a sum of joint coordinates: where two parts that separate joints move meet, as a
+// gripper's jaws do when they close on each other.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+class btMultiBodyDynamicsWorld;
+
+namespace ambf_like {
+
+namespace detail {
+class CoupledLimitConstraint;
+}
+
+/// sum_i gains[i] * q_i >= lower, over joints of one articulation (reduced coordinates), q_i each
+/// joint's coordinate in its model's convention (rad or m).
+struct CoupledStopSpec {
+  std::vector<std::string> joints;  ///< the World's joint names (qualified or unique plain)
+  std::vector<double> gains;        ///< one per joint, finite
+  double lower = 0.0;
+};
+
+/// A CoupledStop in a World (World::addCoupledStop): it pushes the joints apart along the gains
+/// when their sum reaches `lower`, and never pulls.
+class CoupledStop {
+ public:
+  /// Puts `constraint` into `world` until destroyed.
+  CoupledStop(CoupledStopSpec spec, std::unique_ptr<detail::CoupledLimitConstraint> constraint,
+              btMultiBodyDynamicsWorld& world, double step);
+  ~CoupledStop();
+  CoupledStop(const CoupledStop&) = delete;
+  CoupledStop& operator=(const CoupledStop&) = delete;
+
+  const CoupledStopSpec& spec() const { return spec_; }
+  /// The generalised force (N m or N, >= 0) the stop applied along the gains in the last step:
+  /// joint i felt gains[i] times it.
+  double force() const;
+  /// sum_i gains[i] q_i - lower now (< 0: pressed past the stop by that much).
+  double gap() const;
+
+ private:
+  CoupledStopSpec spec_;
+  std::unique_ptr<detail::CoupledLimitConstraint> constraint_;
+  btMultiBodyDynamicsWorld& world_;
+  double step_;
+};
+
+}  // namespace ambf_like
