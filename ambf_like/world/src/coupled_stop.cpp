@@ -15,16 +15,32 @@ namespace ambf_like {
 CoupledStop::CoupledStop(CoupledStopSpec spec,
                          std::unique_ptr<detail::CoupledLimitConstraint> constraint,
                          btMultiBodyDynamicsWorld& world, double step)
-    : spec_(std::move(spec)), constraint_(std::move(constraint)), world_(world), step_(step) {
-  world_.addMultiBodyConstraint(constraint_.get());
-}
+    : spec_(std::move(spec)), constraint_(std::move(constraint)), world_(world), step_(step) {}
 
 CoupledStop::~CoupledStop() {
-  world_.removeMultiBodyConstraint(constraint_.get());
+  if (engaged()) world_.removeMultiBodyConstraint(constraint_.get());
+}
+
+bool CoupledStop::engaged() const {
+  for (int i = 0; i < world_.getNumMultiBodyConstraints(); ++i) {
+    if (world_.getMultiBodyConstraint(i) == constraint_.get()) return true;
+  }
+  return false;
+}
+
+void CoupledStop::watch(double dt) {
+  constexpr double kWatchBand = 1e-3;
+  const bool near = constraint_->gap() <= 2.0 * dt * std::abs(constraint_->rate()) + kWatchBand;
+  if (near == engaged()) return;
+  if (near) {
+    world_.addMultiBodyConstraint(constraint_.get());
+  } else {
+    world_.removeMultiBodyConstraint(constraint_.get());
+  }
 }
 
 double CoupledStop::force() const {
-  return constraint_->getAppliedImpulse(0) / step_;
+  return engaged() ? constraint_->getAppliedImpulse(0) / step_ : 0.0;
 }
 
 double CoupledStop::gap() const {

@@ -28,9 +28,11 @@ void World::Impl::driveJoints(double h) {
   for (auto& j : joints) j->joint->applyControl(h);
 }
 
-/// Reduced-coordinate trees take those efforts as their joints' torques for the step.
+/// Reduced-coordinate trees take those efforts as their joints' torques for the step; stops on
+/// sums of their coordinates join the solve when near their bound.
 void World::Impl::loadArticulations(double h) {
   for (auto& a : articulations) a->beforeStep(h);
+  for (auto& stop : coupled_stops) stop->watch(h);
 }
 
 /// Sleeping soft bodies that something moving approaches, or an anchor holds, wake and rejoin

@@ -26,7 +26,7 @@ struct CoupledStopSpec {
 /// when their sum reaches `lower`, and never pulls.
 class CoupledStop {
  public:
-  /// Puts `constraint` into `world` until destroyed.
+  /// Its `constraint` goes into `world` while near its bound (watch), until destroyed.
   CoupledStop(CoupledStopSpec spec, std::unique_ptr<detail::CoupledLimitConstraint> constraint,
               btMultiBodyDynamicsWorld& world, double step);
   ~CoupledStop();
@@ -39,8 +39,14 @@ class CoupledStop {
   double force() const;
   /// sum_i gains[i] q_i - lower now (< 0: pressed past the stop by that much).
   double gap() const;
+  /// Before a step of `dt`: in the world's solve within two steps' travel and a millimetre (or
+  /// milliradian) of the bound, out of it beyond (an engaged constraint costs the solver's
+  /// set-up every step). Which constraints are in the world is part of World::saveState.
+  void watch(double dt);
 
  private:
+  bool engaged() const;  ///< in the world's solve now
+
   CoupledStopSpec spec_;
   std::unique_ptr<detail::CoupledLimitConstraint> constraint_;
   btMultiBodyDynamicsWorld& world_;
