@@ -3,6 +3,7 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -54,10 +55,10 @@ double CoupledLimitConstraint::gap() const {
   return sum - lower_;
 }
 
-double CoupledLimitConstraint::rate() const {
-  double sum = 0.0;
-  for (const Term& term : terms_) sum += term.gain * m_bodyA->getJointVel(term.link);
-  return sum;
+bool CoupledLimitConstraint::near(double dt, double band) const {
+  double rate = 0.0;
+  for (const Term& term : terms_) rate += term.gain * m_bodyA->getJointVel(term.link);
+  return gap() <= 2.0 * dt * std::abs(rate) + band;
 }
 
 void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& rows,
@@ -65,10 +66,8 @@ void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& ro
                                                   const btContactSolverInfo& info) {
   if (m_numDofsFinalized != m_jacSizeBoth) finalizeMultiDof();
   const double dt = info.m_timeStep;
-  const double gap = this->gap();
-  setPosition(0, gap);
   internalSetAppliedImpulse(0, 0.0);
-  if (gap > 2.0 * dt * std::abs(rate()) + kRowBand) return;
+  if (!near(dt, kRowBand)) return;
 
   btMultiBodySolverConstraint& row = rows.expandNonInitializing();
   row.m_orgConstraint = this;
@@ -83,24 +82,14 @@ void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& ro
   row.m_relpos1CrossNormal.setZero();
   row.m_relpos2CrossNormal.setZero();
   // Apart: the sum may close by the gap in this step, no more (a speculative contact's row).
-  // Past the bound: it stops, and the error is pushed out at the solver's error-reduction rate.
-  double velocity_error = -closing;
-  double position_error = 0.0;
-  if (gap > 0.0) {
-    velocity_error = -gap / dt - closing;
-  } else {
-    const bool split = info.m_splitImpulse && -gap <= info.m_splitImpulsePenetrationThreshold;
-    position_error = -gap * (split ? info.m_erp2 : info.m_erp) / dt;
-  }
-  const double velocity_impulse = velocity_error * row.m_jacDiagABInv;
-  const double position_impulse = position_error * row.m_jacDiagABInv;
-  if (info.m_splitImpulse && -gap <= info.m_splitImpulsePenetrationThreshold) {
-    row.m_rhs = velocity_impulse;
-    row.m_rhsPenetration = position_impulse;
-  } else {
-    row.m_rhs = velocity_impulse + position_impulse;
-    row.m_rhsPenetration = 0.0;
-  }
+  // Past the bound: it stops, and the error is pushed out at the solver's error-reduction rate
+  // (a shallow one as a separate push when the solver splits impulses, as Bullet's limits do).
+  const double gap = this->gap();
+  const bool split = info.m_splitImpulse && -gap <= info.m_splitImpulsePenetrationThreshold;
+  const double velocity_error = -closing - std::max(gap, 0.0) / dt;
+  const double position_error = std::max(-gap, 0.0) * (split ? info.m_erp2 : info.m_erp) / dt;
+  row.m_rhs = (velocity_error + (split ? 0.0 : position_error)) * row.m_jacDiagABInv;
+  row.m_rhsPenetration = (split ? position_error : 0.0) * row.m_jacDiagABInv;
 }
 
 }  // namespace ambf_like::detail

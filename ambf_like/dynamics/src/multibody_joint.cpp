@@ -7,16 +7,12 @@
 #include <cmath>
 #include <limits>
 
+#include "ambf_like/dynamics/coupled_limit_constraint.hpp"
 #include "ambf_like/dynamics/joint_space_servo.hpp"
 
 namespace ambf_like::detail {
 
 namespace {
-
-/// How near a bound (rad or m), beyond two steps of travel, a joint's limit is put into the
-/// world. Each engaged limit costs the solver's set-up and island work every step even while
-/// its bound is far (Bullet makes its rows only once the bound is reached).
-constexpr double kLimitWatchBand = 1e-3;
 
 /// A MultiBodyJoint's memory.
 struct LimitMemory final : JointDynamicsMemory {

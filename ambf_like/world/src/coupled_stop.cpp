@@ -29,8 +29,7 @@ bool CoupledStop::engaged() const {
 }
 
 void CoupledStop::watch(double dt) {
-  constexpr double kWatchBand = 1e-3;
-  const bool near = constraint_->gap() <= 2.0 * dt * std::abs(constraint_->rate()) + kWatchBand;
+  const bool near = constraint_->near(dt, detail::kLimitWatchBand);
   if (near == engaged()) return;
   if (near) {
     world_.addMultiBodyConstraint(constraint_.get());

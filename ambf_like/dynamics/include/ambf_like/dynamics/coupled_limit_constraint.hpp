@@ -1,12 +1,17 @@
 #pragma once
 // Bullet's side of a CoupledStop: one one-sided row on a weighted sum of an articulation's
-// joint coordinates.
+// joint coordinates; and how near their bounds limits join the world's solve.
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 
 #include <vector>
 
 namespace ambf_like::detail {
+
+/// How near a bound (rad or m), beyond two steps of travel, a limit is put into the world. Each
+/// engaged limit costs the solver's set-up and island work every step even while its bound is
+/// far (Bullet makes its rows only once the bound is reached).
+inline constexpr double kLimitWatchBand = 1e-3;
 
 /// Keeps sum_i gain_i q_i >= lower on one multibody (q in Bullet's coordinates, from the load
 /// pose), as btMultiBodyJointLimitConstraint keeps one joint within its bounds: a row is made
@@ -28,8 +33,9 @@ class CoupledLimitConstraint final : public btMultiBodyConstraint {
 
   /// sum_i gain_i q_i - lower: how far the coordinates are from the stop (< 0: past it).
   double gap() const;
-  /// The rate of the weighted sum (per second).
-  double rate() const;
+  /// Whether the sum is within `band` (rad or m) of its bound beyond two steps of `dt` at its
+  /// present rate.
+  bool near(double dt, double band) const;
 
  private:
   std::vector<Term> terms_;
