@@ -38,6 +38,7 @@ std::vector<MechanicsParameter> mechanicsParameters(int joint) {
       {1, 0.0, big ? 0.3 : 0.05, false},
       {2, 0.0, 0.8, false},
       {3, 0.0, big ? 0.02 : 0.002, false},
+      {twin::MotorMechanics::kOffset, big ? -0.15 : -0.025, big ? 0.15 : 0.025, false},
   };
   if (big) p.push_back({twin::MotorMechanics::kGravityError, -0.8, 0.8, false});
   return p;
@@ -66,6 +67,7 @@ twin::ArmsMechanics broadUncertainty(const twin::ArmsMechanics& mechanics) {
       sd[a].field(k) = 0.5 * mechanics[a].field(k).cwiseAbs();
     }
     sd[a].load_friction.setConstant(0.2);
+    sd[a].offset = 0.5 * mechanics[a].coulomb;
     sd[a].gravity_error.setZero();
     sd[a].gravity_error.head<3>().setConstant(0.2);
   }

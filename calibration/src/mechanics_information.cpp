@@ -85,7 +85,7 @@ double MechanicsInformation::logDet(const twin::ArmsMechanics& fitted) const {
     for (int j = 0; j < raven::kJointCount; ++j) {
       std::vector<int> used;
       for (int v = 0; v < kMechanicsValues; ++v) {
-        if (m.field(static_cast<std::size_t>(v))(j) > 0.0) used.push_back(v);
+        if (m.field(static_cast<std::size_t>(v))(j) != 0.0) used.push_back(v);
       }
       if (used.empty()) continue;
       const Eigen::MatrixXd sub = blocks[a][static_cast<std::size_t>(j)](used, used);
@@ -115,9 +115,12 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
       h[a] = m[a];
       for (int j = 0; j < raven::kJointCount; ++j) {
         double& x = m[a].field(static_cast<std::size_t>(v))(j);
-        // Relative steps, absolute where the value may be 0 (friction, gravity error).
-        const double d =
-            v == 0 ? 0.05 * x : (v == 3 ? 0.02 : std::max(0.05 * x, v == 1 ? 1e-3 : 1e-5));
+        // Relative steps, absolute where the value may be 0 (friction, offset, gravity error).
+        const double d = v == 0   ? 0.05 * x
+                         : v == 3 ? 0.02
+                         : v == twin::MotorMechanics::kOffset
+                             ? 1e-3
+                             : std::max(0.05 * x, v == 1 ? 1e-3 : 1e-5);
         h[a].field(static_cast<std::size_t>(v))(j) = d;
         x += d;
       }

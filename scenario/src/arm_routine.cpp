@@ -38,9 +38,13 @@ constexpr double kAlignReach = 0.002;
 // The measured tool lags the command by up to 3 mm while it moves (the motors' tracking); twice
 // that means something stops it, and pushing on only winds the arm's amplifiers up.
 constexpr double kBlockedLag = 0.006;
-constexpr double kJawReached = 0.01;       ///< each measured jaw this near its command (rad)
-constexpr int kJawIterations = 30;         ///< ... or this many iterations of waiting for them
-constexpr double kCentred = 0.0005;        ///< the ring's centre this near the post's axis (m)
+constexpr double kJawReached = 0.01;  ///< each measured jaw this near its command (rad)
+constexpr int kJawIterations = 30;    ///< ... or this many iterations of waiting for them
+constexpr double kCentred = 0.0005;   ///< the ring's centre this near the post's axis (m)
+// A ring held by its wall swings on the grip by a few millimetres as it is carried; one whose
+// centre strays further from the jaws than this since it came up is held by something else (its
+// post, the board) and is not coming along: centring by sight would chase it without end.
+constexpr double kCarriedStray = 0.005;
 constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
 constexpr int kMaxRegrasps = 2;            ///< per ring, as an operator would before moving on
 constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much more (of the first)
@@ -225,6 +229,8 @@ raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
       if (!ringFollows(scene) && decideToRegrasp("did not come up with the jaws")) {
         advance(Phase::Open);
       } else {
+        grasp_.lifted_offset =
+            kinematics_.toolPose(q).translation().head<2>() - ring(scene).centre().head<2>();
         advance(Phase::Carry);
       }
       return q;
@@ -305,8 +311,15 @@ raven::ArmJoints ArmRoutine::carry(const raven::ArmJoints& target,
     advance(Phase::Open);
     return target;
   }
-  const Eigen::Vector2d offset =
+  Eigen::Vector2d offset =
       carried ? Eigen::Vector2d(tool.head<2>() - seen.centre().head<2>()) : grasp_.offset;
+  if (carried && (offset - grasp_.lifted_offset).norm() > kCarriedStray) {
+    if (decideToRegrasp("does not follow the jaws")) {
+      advance(Phase::Open);
+      return target;
+    }
+    offset = grasp_.lifted_offset;  // no re-grasp left: carry on where it hung when lifted
+  }
   const Eigen::Vector2d over = jobs_[job_].to + offset;
   bool arrived = false;
   const raven::ArmJoints q = translate(

@@ -80,6 +80,7 @@ TEST(CalibrationFile, WhatIsWrittenIsReadBack) {
   profile.mechanics[1].coulomb(raven::kJaw2) = 0.0123;
   profile.mechanics[0].gravity_error(raven::kElbow) = -0.25;
   profile.mechanics[1].load_friction(raven::kShoulder) = 0.3;
+  profile.mechanics[0].offset(raven::kElbow) = -0.07;
   profile.uncertainty = filled(1e-4);
   profile.iteration_overhead = 0.001;
   profile.save(dir.path() / "c.yaml", {"inputs_ci.csv", {"a_physical_1.csv"}, {"a note"}});
@@ -120,6 +121,28 @@ TEST(CalibrationFile, BadValuesAreRefusedNamingFileAndKey) {
   refused("inertia: [", "inertia: [-1, ", "inertia");
   refused("coulomb:", "friction:", "friction");
   refused("right:", "middle:", "middle");
+  refused("offset: [0", "offset: [.nan", "offset");
+}
+
+TEST(CalibrationFile, AProfileWrittenBeforeTheOffsetWasFittedHasNone) {
+  test_support::TempDir dir;
+  twin::CalibrationProfile profile;
+  profile.mechanics = calibration::startingMechanics();
+  profile.mechanics[0].offset.setConstant(0.01);
+  profile.mechanics[1].offset.setConstant(0.01);
+  profile.uncertainty = filled(0.0);
+  profile.save(dir.path() / "c.yaml", {});
+  std::ifstream in(dir.path() / "c.yaml");
+  std::string older;
+  for (std::string line; std::getline(in, line);) {
+    if (line.find("offset:") == std::string::npos) older += line + "\n";
+  }
+  std::ofstream(dir.path() / "older.yaml") << older;
+  const auto read = twin::CalibrationProfile::load(dir.path() / "older.yaml");
+  for (std::size_t a = 0; a < 2; ++a) {
+    EXPECT_TRUE(read.mechanics[a].offset.isZero());
+    EXPECT_TRUE(read.mechanics[a].coulomb.isApprox(profile.mechanics[a].coulomb, 1e-5));
+  }
 }
 
 TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {

@@ -112,6 +112,22 @@ TEST(MotorAxes, FrictionHoldsBelowItsLevelAndDragsAboveIt) {
   EXPECT_NEAR(axes.velocity()(1), 50.0, 1e-6);
 }
 
+TEST(MotorAxes, AnOffsetMakesFrictionAsymmetric) {
+  // Coulomb 0.05 with offset -0.03: moving up takes 0.02, moving down 0.08.
+  twin::MotorMechanics m = frictionless(2e-4);
+  m.coulomb.setConstant(0.05);
+  m.offset.setConstant(-0.03);
+  twin::MotorAxes axes(m);
+  const ArmJoints torque =
+      (ArmJoints() << 0.019, 0.021, -0.079, -0.081, 0.0, -0.02, 0.0).finished();
+  for (int k = 0; k < 100; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_EQ(axes.velocity()(0), 0.0) << "up, below 0.02";
+  EXPECT_NEAR(axes.velocity()(1), 0.001 * 0.1 / 2e-4, 1e-9) << "up, 0.001 above it";
+  EXPECT_EQ(axes.velocity()(2), 0.0) << "down, below 0.08";
+  EXPECT_NEAR(axes.velocity()(3), -0.001 * 0.1 / 2e-4, 1e-9) << "down, 0.001 above it";
+  EXPECT_EQ(axes.velocity()(4), 0.0) << "at rest with no torque: the offset is within friction";
+}
+
 TEST(MotorAxes, TheGravityTheCompensationMissesPullsTheMotor) {
   twin::MotorMechanics m = frictionless(2e-4);
   m.gravity_error(0) = 0.5;  // the arm weighs 1.5 times the firmware's estimate

@@ -23,14 +23,15 @@ namespace {
 using raven::Arm;
 using raven::ArmJoints;
 
-/// The shipped mechanics without friction or gravity error: at rest the motors then carry the
-/// links' weight alone.
+/// The shipped mechanics without friction, offset or gravity error: at rest the motors then carry
+/// the links' weight alone.
 twin::TwinOptions frictionlessMotors() {
   twin::TwinOptions options;
   options.motors = twin::CalibrationProfile::shipped().mechanics;
   for (auto& m : *options.motors) {
     m.coulomb.setZero();
     m.load_friction.setZero();
+    m.offset.setZero();
     m.gravity_error.setZero();
   }
   return options;
@@ -58,20 +59,25 @@ ArmJoints loggedTau(const twin::TwinPlatform& twin, Arm arm) {
   return tau;
 }
 
-/// The weight the calibration says `arm`'s motors carry at `joints` (at the gearbox outputs):
-/// the firmware's gravity estimate times one plus the fitted gravity error.
-ArmJoints fittedWeight(const twin::TwinOptions& options, Arm arm, const ArmJoints& joints) {
+/// The load the calibration says `arm`'s motors carry at `joints` (at the gearbox outputs): the
+/// firmware's gravity estimate times one plus the fitted gravity error, and the fitted offset.
+ArmJoints fittedLoad(const twin::TwinOptions& options, Arm arm, const ArmJoints& joints) {
   const auto& m = (*options.motors)[raven::slot(arm)];
   return (ArmJoints::Ones() + m.gravity_error)
-      .cwiseProduct(twin::gravityCompensation(arm, joints, twin::DriveTrain::raven2()));
+             .cwiseProduct(twin::gravityCompensation(arm, joints, twin::DriveTrain::raven2())) +
+         m.offset;
 }
 
-TEST(WorldMotors, HeldStillTheMotorsCarryTheFittedWeight) {
-  // Acceptance 1(c): frictionless, at rest, Tau is the weight the calibration fitted (the
-  // firmware's estimate and the fitted gravity error), whatever the links of the model weigh.
+TEST(WorldMotors, HeldStillTheMotorsCarryTheFittedWeightAndOffset) {
+  // Acceptance 1(c): frictionless, at rest, Tau is the load the calibration fitted (the
+  // firmware's weight estimate, the fitted gravity error and offset), whatever the links of the
+  // model weigh.
   twin::TwinOptions options = frictionlessMotors();
   auto shipped = twin::CalibrationProfile::shipped().mechanics;
-  for (std::size_t a = 0; a < 2; ++a) (*options.motors)[a].gravity_error = shipped[a].gravity_error;
+  for (std::size_t a = 0; a < 2; ++a) {
+    (*options.motors)[a].gravity_error = shipped[a].gravity_error;
+    (*options.motors)[a].offset = shipped[a].offset;
+  }
   auto motors = test_support::readyTwin(options);
   motors->advance(3.0);  // the integrators take up what the compensation misses
   // Held, a motor hunts by an encoder count about its setpoint (kp x 1.6 mrad is about 0.015
@@ -85,7 +91,7 @@ TEST(WorldMotors, HeldStillTheMotorsCarryTheFittedWeight) {
     }
   }
   for (Arm arm : raven::kArms) {
-    const ArmJoints expected = fittedWeight(options, arm, motors->measuredJs(arm).position);
+    const ArmJoints expected = fittedLoad(options, arm, motors->measuredJs(arm).position);
     const ArmJoints tau = mean_tau[raven::slot(arm)];
     const double scale = expected.cwiseAbs().maxCoeff();
     for (int i = 0; i < raven::kJointCount; ++i) {
@@ -226,7 +232,7 @@ JointBalance balanceAtRest(twin::TwinPlatform& twin, const twin::TwinOptions& op
   }
   balance.weight =
       c.transpose() *
-      fittedWeight(options, arm, twin.measuredJs(arm).position).cwiseQuotient(drive.gearbox);
+      fittedLoad(options, arm, twin.measuredJs(arm).position).cwiseQuotient(drive.gearbox);
   return balance;
 }
 

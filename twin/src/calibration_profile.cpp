@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -21,14 +22,18 @@ constexpr const char* kReplay = "replay";
 constexpr const char* kIterationOverhead = "iteration_overhead";
 constexpr const char* kFit = "fit";
 
-/// One arm's lists: fitted `values` (inertia > 0, gravity_error > -1; MotorMechanics checks the
-/// rest when a twin is built) or uncertainties (all >= 0).
+/// One arm's lists: fitted `values` (inertia > 0, gravity_error > -1, offset of either sign;
+/// MotorMechanics checks the rest when a twin is built) or uncertainties (all >= 0). A profile
+/// written before the offset was fitted has none: 0.
 MotorMechanics readMechanics(const common::YamlView& node, bool values) {
   MotorMechanics m;
   for (std::size_t k = 0; k < MotorMechanics::kNames.size(); ++k) {
-    const auto field = node[MotorMechanics::kNames[k]];
     const bool gravity = k == MotorMechanics::kGravityError;
-    m.field(k) = readJoints(field, values && gravity ? -1.0 : 0.0, values && (k == 0 || gravity));
+    const bool offset = k == MotorMechanics::kOffset;
+    if (offset && !node.find(MotorMechanics::kNames[k])) continue;
+    const double minimum = !values ? 0.0 : gravity ? -1.0 : offset ? -INFINITY : 0.0;
+    m.field(k) =
+        readJoints(node[MotorMechanics::kNames[k]], minimum, values && (k == 0 || gravity));
   }
   return m;
 }
@@ -127,9 +132,9 @@ void CalibrationProfile::save(const std::filesystem::path& file,
          "# per arm and motor (shoulder, elbow, insertion, roll, wrist, jaw1, jaw2) the inertia\n"
          "# (N m s^2 per motor rad at the gearbox output), Coulomb friction (N m, plus "
          "load_friction\n"
-         "# per N m applied), viscous friction (N m s/rad) and the gravity compensation's "
-         "error\n"
-         "# (fraction). Use: --calibration FILE.\n"
+         "# per N m applied), viscous friction (N m s/rad), the constant torque every move\n"
+         "# overcomes (offset, N m: up takes coulomb + offset, down coulomb - offset) and the\n"
+         "# gravity compensation's error (fraction). Use: --calibration FILE.\n"
       << out.c_str() << "\n";
   if (!stream) throw std::runtime_error(file.string() + ": cannot write");
 }

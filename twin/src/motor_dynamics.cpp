@@ -19,6 +19,8 @@ const ArmJoints& MotorMechanics::field(std::size_t k) const {
       return load_friction;
     case 3:
       return viscous;
+    case kOffset:
+      return offset;
     default:
       return gravity_error;
   }
@@ -35,6 +37,7 @@ std::string MotorMechanics::invalidReason() const {
                                                       {0.0, INFINITY, false, ">= 0"},
                                                       {0.0, 0.9, false, "within 0..0.9"},
                                                       {0.0, INFINITY, false, ">= 0"},
+                                                      {-INFINITY, INFINITY, false, "finite"},
                                                       {-1.0, INFINITY, true, "> -1"}}};
   for (std::size_t k = 0; k < kNames.size(); ++k) {
     const Range& r = kRanges[k];
@@ -60,8 +63,8 @@ const MotorMechanics& MotorMechanics::checked(Arm arm) const {
 
 void MotorAxes::step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds) {
   const double h = seconds / kSubsteps;
-  const ArmJoints drive =
-      torque - (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
+  const ArmJoints drive = torque - mechanics_.offset -
+                          (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
   for (int s = 0; s < kSubsteps; ++s) {
     for (int i = 0; i < kJointCount; ++i) {
       const double inertia = mechanics_.inertia(i);

@@ -39,7 +39,7 @@ void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, d
   const ArmJoints model_weight = weight_to_motors_ * transmission_->linkWeight();
   const ArmJoints fitted_weight =
       (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
-  const ArmJoints drive = torque + model_weight - fitted_weight;
+  const ArmJoints drive = torque - mechanics_.offset + model_weight - fitted_weight;
   const ArmJoints coulomb =
       mechanics_.coulomb + mechanics_.load_friction.cwiseProduct(torque.cwiseAbs());
   transmission_->drive(drive, coulomb);

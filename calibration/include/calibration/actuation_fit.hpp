@@ -1,10 +1,10 @@
 #pragma once
 // Fits the mechanics behind the Raven-II's motors (twin::MotorMechanics: inertia, Coulomb
-// friction and its load-dependent part, viscous friction, the gravity compensation's error) to
-// physical recordings: each recording's
-// joint setpoints drive the motor-level model from the state the robot was in
-// (replaySetpoints), and a bounded derivative-free optimiser (NLopt's BOBYQA) brings its motor
-// angles, velocities and torques to the robot's, each over the robot's own trial-to-trial spread.
+// friction, its load-dependent part and its asymmetry, viscous friction, the gravity
+// compensation's error) to physical recordings: each recording's joint setpoints drive the
+// motor-level model from the state the robot was in (replaySetpoints), and a bounded
+// derivative-free optimiser (NLopt's BOBYQA) brings its motor angles, velocities and torques to
+// the robot's, each over the robot's own trial-to-trial spread.
 
 #include <functional>
 #include <string>
@@ -29,7 +29,7 @@ std::vector<MechanicsParameter> mechanicsParameters(int joint);
 twin::ArmsMechanics startingMechanics();
 
 /// A broad prior for mechanics nobody has fitted yet: half of each value, 0.2 for the load
-/// friction and (arm motors only) the gravity error.
+/// friction and (arm motors only) the gravity error, half the Coulomb friction for its offset.
 twin::ArmsMechanics broadUncertainty(const twin::ArmsMechanics& mechanics);
 
 /// Per arm and joint, how far the model's signals sit from the recordings: the mean over mpos,

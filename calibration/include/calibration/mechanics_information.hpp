@@ -16,7 +16,7 @@
 namespace calibration {
 
 /// The order of each motor's values in its block.
-inline constexpr int kMechanicsValues = 5;  ///< twin::MotorMechanics::kNames
+inline constexpr int kMechanicsValues = 6;  ///< twin::MotorMechanics::kNames
 using InformationBlock = Eigen::Matrix<double, kMechanicsValues, kMechanicsValues>;
 
 struct MechanicsInformation {

@@ -68,6 +68,8 @@ class ArmRoutine {
     Eigen::Matrix3d orientation;  ///< jaws down, turning about the ring's tangent
     Eigen::Vector3d pivot;        ///< the jaw axis at the grasp
     Eigen::Vector2d offset;       ///< the jaw axis from the ring's centre, horizontally
+    /// The same when the ring came up with the jaws: a ring in the jaws stays near it.
+    Eigen::Vector2d lifted_offset = Eigen::Vector2d::Zero();
   };
   /// The current job's ring as `scene` sees it.
   RingView ring(const bridge::ScenePerception& scene) const;

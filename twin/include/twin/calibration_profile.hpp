@@ -36,7 +36,8 @@ struct CalibrationProfile {
   /// steps (its pad read, IK and recorder), in seconds.
   double iteration_overhead = 0.0;
 
-  /// Reads `actuation: {left|right: {inertia, coulomb, load_friction, viscous, gravity_error}}`
+  /// Reads `actuation: {left|right: {inertia, coulomb, load_friction, viscous, offset,
+  /// gravity_error}}` (offset optional: 0)
   /// (7 values each), `uncertainty` (the same shape, optional), `commands: {servo_jr_delivered}`
   /// (optional), `replay: {iteration_overhead}`, and ignores `fit` (what the values were fitted
   /// on). Throws common::LoadError naming file, line and key.

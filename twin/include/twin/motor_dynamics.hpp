@@ -2,8 +2,8 @@
 // The mechanics behind each Raven-II motor, on the scale the robot logs torques (N m at the
 // gearbox output, per motor radian): the inertia the motor moves (rotor, gearbox and the link
 // reflected through its cable), Coulomb friction (a constant part and a part that grows with the
-// torque transmitted: the gearbox's and capstans' efficiency loss), viscous friction, and how far
-// the firmware's gravity compensation is from the arm's real weight.
+// torque transmitted: the gearbox's and capstans' efficiency loss), its asymmetry, viscous
+// friction, and how far the firmware's gravity compensation is from the arm's real weight.
 
 #include <array>
 #include <string>
@@ -21,13 +21,18 @@ struct MotorMechanics {
   /// Coulomb friction per N m of torque the motor applies (0 .. 0.9): efficiency loss.
   ArmJoints load_friction = ArmJoints::Zero();
   ArmJoints viscous = ArmJoints::Zero();  ///< N m s per motor rad
+  /// A constant torque every move overcomes (N m): moving up takes coulomb + offset, moving down
+  /// coulomb - offset. Asymmetric Coulomb friction and the amplifier's zero offset, the offset
+  /// term of the standard identification model (Gautier & Khalil).
+  ArmJoints offset = ArmJoints::Zero();
   /// The arm's weight over the firmware's estimate, minus one (joints 1-3): 0 = exact.
   ArmJoints gravity_error = ArmJoints::Zero();
 
   /// The fields in a fixed order: calibration files, fits and their uncertainty use it.
-  static constexpr std::array<std::string_view, 5> kNames{"inertia", "coulomb", "load_friction",
-                                                          "viscous", "gravity_error"};
-  static constexpr int kGravityError = 4;  ///< its index: only the arm motors have one
+  static constexpr std::array<std::string_view, 6> kNames{"inertia", "coulomb", "load_friction",
+                                                          "viscous", "offset",  "gravity_error"};
+  static constexpr int kOffset = 4;        ///< its index: the one value that may be negative
+  static constexpr int kGravityError = 5;  ///< its index (the last): only the arm motors have one
   ArmJoints& field(std::size_t k);
   const ArmJoints& field(std::size_t k) const;
 
@@ -43,7 +48,8 @@ class MotorAxes {
   explicit MotorAxes(const MotorMechanics& mechanics) : mechanics_(mechanics) {}
 
   /// Advances `seconds` with `torque` held (N m at the gearbox output) against gravity's
-  /// `gravity_load` (the firmware's estimate; the real weight is (1 + gravity_error) times it).
+  /// `gravity_load` (the firmware's estimate; the real weight is (1 + gravity_error) times it)
+  /// and the constant `offset`.
   void step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds);
   void place(const ArmJoints& position, const ArmJoints& velocity) {
     position_ = position;
