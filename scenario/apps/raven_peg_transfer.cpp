@@ -55,6 +55,7 @@ struct Settings {
   std::string jsonl;
   /// The robot's motors, as every program's default; ideal servos on request.
   common::ActuationKind actuation = common::ActuationKind::Motors;
+  std::string calibration;  ///< empty: the shipped profile
   double time_limit = 240.0;
   double squeeze_mm = scenario::ArmRoutine::kDefaultSqueeze * 1e3;
   double rect_width_mm = 0.0, rect_depth_mm = 0.0;  ///< 0: the task's default
@@ -108,6 +109,7 @@ scenario::PegTransferOptions pegTransferOptions(const Settings& s) {
   options.assist =
       s.assist == "contact" ? scenario::AssistMode::Contact : scenario::AssistMode::Off;
   options.actuation = s.actuation;
+  options.calibration = s.calibration;
   options.launch_file = s.launch;
   options.time_limit = s.time_limit;
   options.squeeze = s.squeeze_mm * 1e-3;
@@ -304,6 +306,10 @@ void addOptions(CLI::App& app, Settings& s) {
       ->check(CLI::IsMember({"auto", "yes", "no"}));
   app.add_option("--jsonl", s.jsonl, "JSON-lines file, one line per run (default: in --out)");
   common::addActuationFlag(app, s.actuation);
+  app.add_option("--calibration", s.calibration,
+                 "the motors' calibration profile (raven_calibrate fit's YAML; default: the "
+                 "shipped one)")
+      ->check(CLI::ExistingFile);
   app.add_option("--time-limit", s.time_limit, "simulated seconds a run may take")
       ->check(CLI::PositiveNumber);
   app.add_option("--rect-width", s.rect_width_mm, "rectangle task: the side along x (mm)")
@@ -355,6 +361,12 @@ int main(int argc, char** argv) {
   try {
     if ((s.gui || !s.snapshot.empty()) && (s.runs > 1 || s.task != "peg")) {
       spdlog::error("--gui and --snapshot watch a single peg transfer (no --runs, no --task)");
+      return 2;
+    }
+    if (!s.calibration.empty() &&
+        (s.actuation != common::ActuationKind::Motors || s.task != "peg")) {
+      spdlog::error(
+          "--calibration is the motors' profile for the peg transfer (--actuation motors)");
       return 2;
     }
     if (!s.video.file.empty() && s.task != "peg") {

@@ -37,8 +37,11 @@ twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
     // The assist's jaw sensors and actuators, after the arms whose jaws carry them.
     if (assist) ambf_like::appendModelFiles(scene, {GraspAssist::modelFile()});
   };
-  if (options.actuation == common::ActuationKind::Motors)
-    twin::CalibrationProfile::shipped().applyTo(twin);
+  if (options.actuation == common::ActuationKind::Motors) {
+    (options.calibration.empty() ? twin::CalibrationProfile::shipped()
+                                 : twin::CalibrationProfile::load(options.calibration))
+        .applyTo(twin);
+  }
   return twin;
 }
 

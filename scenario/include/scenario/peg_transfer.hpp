@@ -31,6 +31,8 @@ struct PegTransferOptions {
   double squeeze = ArmRoutine::kDefaultSqueeze;
   /// The Raven-II's motor-level actuation (the shipped calibration), or ideal joint servos.
   common::ActuationKind actuation = common::ActuationKind::Motors;
+  /// The motors' calibration profile (raven_calibrate's YAML); empty: the shipped one.
+  std::filesystem::path calibration;
   /// The scene's launch file; empty: raven_description's peg_transfer (the benchmarks pass the
   /// dense-collision variant).
   std::filesystem::path launch_file;

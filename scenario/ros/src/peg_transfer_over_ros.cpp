@@ -53,6 +53,10 @@ std::vector<std::string> twinNodeCommand(const std::filesystem::path& program,
           .string()};
   argv.push_back("--actuation");
   argv.emplace_back(common::actuationWord(options.actuation));
+  if (!options.calibration.empty()) {
+    argv.push_back("--calibration");
+    argv.push_back(options.calibration.string());
+  }
   if (options.soft_body_sleep) argv.push_back("--soft-body-sleep");
   return argv;
 }
