@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -52,6 +53,18 @@ TEST(PegTransferOverRos, TheDefaultTwinPlacesAllSixAsItDoesInProcess) {
     EXPECT_TRUE(b.volume_seen);
     EXPECT_FALSE(a.volume_seen);
   }
+}
+
+TEST(PegTransferOverRos, TheNodeRunsOnTheCalibrationTheRunWasGiven) {
+  scenario::PegTransferOptions options;
+  const auto flag = [](const std::vector<std::string>& argv) {
+    const auto at = std::find(argv.begin(), argv.end(), "--calibration");
+    return at == argv.end() || at + 1 == argv.end() ? std::string() : *(at + 1);
+  };
+  EXPECT_EQ(flag(scenario::ros1::twinNodeCommand("node", "/ns", options)), "")
+      << "the shipped profile: the node's own default";
+  options.calibration = "/profiles/fitted.yaml";
+  EXPECT_EQ(flag(scenario::ros1::twinNodeCommand("node", "/ns", options)), "/profiles/fitted.yaml");
 }
 
 TEST(PegTransferOverRos, RefusesWhatOnlyAnInProcessWorldCanDo) {

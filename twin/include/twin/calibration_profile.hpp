@@ -37,10 +37,10 @@ struct CalibrationProfile {
   double iteration_overhead = 0.0;
 
   /// Reads `actuation: {left|right: {inertia, coulomb, load_friction, viscous, offset,
-  /// gravity_error}}` (offset optional: 0)
-  /// (7 values each), `uncertainty` (the same shape, optional), `commands: {servo_jr_delivered}`
-  /// (optional), `replay: {iteration_overhead}`, and ignores `fit` (what the values were fitted
-  /// on). Throws common::LoadError naming file, line and key.
+  /// gravity_error}}` (7 values each; offset optional, 0 when absent), `uncertainty` (the same
+  /// shape, optional), `commands: {servo_jr_delivered}` (optional), `replay: {iteration_overhead}`,
+  /// and ignores `fit` (what the values were fitted on). Throws common::LoadError naming file, line
+  /// and key.
   static CalibrationProfile load(const std::filesystem::path& file);
   /// Writes the profile in the layout load() reads, with `provenance` as its `fit` section;
   /// throws std::runtime_error when it cannot.

@@ -49,7 +49,7 @@ class MotorAxes {
 
   /// Advances `seconds` with `torque` held (N m at the gearbox output) against gravity's
   /// `gravity_load` (the firmware's estimate; the real weight is (1 + gravity_error) times it)
-  /// and the constant `offset`.
+  /// and the mechanics' constant offset.
   void step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds);
   void place(const ArmJoints& position, const ArmJoints& velocity) {
     position_ = position;
