@@ -22,7 +22,13 @@ constexpr double kStep = 0.001;    ///< tool travel per iteration (m)
 // hinge, the narrower the wedge: 5 mm up, the closed outer jaw stands 0.47 rad from the inner
 // one (0.58 rad 3.5 mm up, where the ideal twin re-grasped 34 rings of 120 on seeds 1-20).
 constexpr double kAboveTop = 0.005;
-constexpr double kGap = 0.0002;      ///< the inner jaw's face from the wall
+constexpr double kGap = 0.0002;  ///< the inner jaw's face from the wall
+// The inner jaw goes down between the tube and the post, about 1 mm from each on a centred
+// ring; a ring pushed off its post's axis leaves less room on one side. A re-grasp takes the
+// side away from the target row unless another side of that half has this much more room.
+constexpr double kRoomier = 0.0004;
+const Eigen::Vector2d kAwayFromTargets(0.0, -1.0);  ///< the target row is at +y
+constexpr std::array<double, 4> kOtherSides{-M_PI / 4, M_PI / 4, -M_PI / 2, M_PI / 2};
 constexpr double kApproach = 0.025;  ///< the orientation move ends this far above the grasp
 constexpr double kLift = 0.030;      ///< the ring's bottom clears the 22 mm post
 constexpr double kRetreat = 0.025;
@@ -75,11 +81,10 @@ RingView ArmRoutine::ring(const bridge::ScenePerception& scene) const {
   return RingView(scene.sight(jobs_[job_].ring), layout_.ring);
 }
 
-void ArmRoutine::plan(const bridge::ScenePerception& scene) {
-  const RingView seen = ring(scene);
+void ArmRoutine::plan(const RingView& seen, const Eigen::Vector2d& toward) {
   const Eigen::Vector2d centre = seen.centre().head<2>();
-  // The station: the tube's centre line on the ring's -y side, away from the target row.
-  const Eigen::Vector3d station = seen.stationToward(-Eigen::Vector2d::UnitY());
+  // The station: the tube's centre line on that side.
+  const Eigen::Vector3d station = seen.stationToward(toward);
   const Eigen::Vector2d inward = (centre - station.head<2>()).normalized();
   // Jaws down; jaw 1 (the inner one) swings towards grasp_scale's side of the tool's y axis.
   const double side = profile_.arm(arm_).grasp_scale > 0 ? 1.0 : -1.0;
@@ -90,6 +95,21 @@ void ArmRoutine::plan(const bridge::ScenePerception& scene) {
   const Eigen::Vector2d face = station.head<2>() + inward * (layout_.ring.tube_half_width + kGap);
   grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), seen.top() + kAboveTop);
   grasp_.offset = face - centre;
+}
+
+Eigen::Vector2d ArmRoutine::graspSide(const RingView& seen) const {
+  const RingJob& job = jobs_[job_];
+  const Eigen::Vector2d centre = seen.centre().head<2>();
+  const Eigen::Vector2d post =
+      (centre - job.from).norm() <= (centre - job.to).norm() ? job.from : job.to;
+  // The room between the tube and the post on side u grows by (centre - post) . u.
+  const Eigen::Vector2d off = centre - post;
+  Eigen::Vector2d side = kAwayFromTargets;
+  for (const double turn : kOtherSides) {
+    const Eigen::Vector2d u = Eigen::Rotation2Dd(turn) * kAwayFromTargets;
+    if (off.dot(u) > off.dot(side) + (side == kAwayFromTargets ? kRoomier : 0.0)) side = u;
+  }
+  return side;
 }
 
 double ArmRoutine::jawAngleFor(double squeeze) const {
@@ -260,13 +280,23 @@ raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
 
 raven::ArmJoints ArmRoutine::orient(const raven::ArmJoints& target,
                                     const bridge::ScenePerception& scene) {
-  // One capped move: over the ring, jaws down and open.
-  plan(scene);
+  // One capped move: over the ring, jaws down and open. A first grasp comes from the side away
+  // from the target row; a failed grasp has often pushed the ring against its post, so a
+  // re-grasp takes the side with the most room for the inner jaw (or, out of reach, the first
+  // side again). Taking the roomiest side on every grasp placed all six in only 9 of seeds 1-20
+  // on the motor twin (three amplifier e-stops, rings out of reach); why is not yet known.
   inner_ = 0.0;
   outer_ = kOpen;
-  if (const auto above = overRing(target)) {
-    advance(Phase::Descend);
-    return *above;
+  const RingView seen = ring(scene);
+  std::vector<Eigen::Vector2d> sides{kAwayFromTargets};
+  if (regrasps_[job_] > 0 && graspSide(seen) != kAwayFromTargets)
+    sides.insert(sides.begin(), graspSide(seen));
+  for (const Eigen::Vector2d& side : sides) {
+    plan(seen, side);
+    if (const auto above = overRing(target)) {
+      advance(Phase::Descend);
+      return *above;
+    }
   }
   // Out of reach: leave this ring (its outcome shows it).
   spdlog::warn("{} arm: no joint solution within the limits over {}; skipping it",

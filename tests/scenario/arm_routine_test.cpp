@@ -1,9 +1,13 @@
 // The scripted operator against a scene the test scripts: a ring lifted a little and caught on its
-// start post does not come along with the tool, and the operator must not chase it.
+// start post does not come along with the tool, and the operator must not chase it; a ring pushed
+// off its post's axis is grasped again where the post leaves the inner jaw room.
 
 #include "scenario/arm_routine.hpp"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
 
 #include "bridge/scene_perception.hpp"
 #include "raven/platform_profile.hpp"
@@ -27,16 +31,22 @@ struct ScriptedRing : bridge::ScenePerception {
   }
 };
 
+/// Ring `job` flat on the board at its start post, its centre `off` from the post's axis.
+Eigen::Isometry3d restingAt(const scenario::PegLayout& layout, const scenario::RingJob& job,
+                            const Eigen::Vector2d& off = Eigen::Vector2d::Zero()) {
+  Eigen::Isometry3d resting = Eigen::Isometry3d::Identity();
+  resting.translation() << job.from.x() + off.x(), job.from.y() + off.y(), 0.0;
+  resting.translation().z() =
+      layout.geometry.board_top - scenario::RingView({0.0, resting, 1.0}, layout.ring).bottom();
+  return resting;
+}
+
 TEST(ArmRoutine, ARingCaughtOnItsPostWhenLiftedIsGraspedAgainNotChased) {
   const scenario::PegLayout layout;
   const auto profile = raven::builtinProfile("physical");
   const auto jobs = layout.jobsOf(raven::Arm::Left);
   scenario::ArmRoutine routine(raven::Arm::Left, profile, layout, jobs);
-  // Flat on the board at its start post.
-  Eigen::Isometry3d resting = Eigen::Isometry3d::Identity();
-  resting.translation() << jobs[0].from.x(), jobs[0].from.y(), 0.0;
-  resting.translation().z() =
-      layout.geometry.board_top - scenario::RingView({0.0, resting, 1.0}, layout.ring).bottom();
+  const Eigen::Isometry3d resting = restingAt(layout, jobs[0]);
   ScriptedRing scene(jobs[0].ring, resting);
   const auto kinematics = raven::ArmKinematics::of(profile, raven::Arm::Left);
 
@@ -62,6 +72,33 @@ TEST(ArmRoutine, ARingCaughtOnItsPostWhenLiftedIsGraspedAgainNotChased) {
   // stops within the 5 mm a carried ring swings on its grip, one 1 mm step more at most.
   EXPECT_LE(farthest, 0.006);
   EXPECT_GT(farthest, 0.004) << "it carried the ring for a few steps before it gave up";
+}
+
+TEST(ArmRoutine, ARingPushedOffItsPostIsGraspedAgainWhereThePostLeavesRoom) {
+  const scenario::PegLayout layout;
+  const auto profile = raven::builtinProfile("physical");
+  const auto jobs = layout.jobsOf(raven::Arm::Left);
+  scenario::ArmRoutine routine(raven::Arm::Left, profile, layout, jobs);
+  // 1 mm towards the target row: on its -y side the tube presses towards the post, leaving the
+  // inner jaw 1 mm less room there and as much as on a centred ring on its -x and +x sides.
+  ScriptedRing scene(jobs[0].ring, restingAt(layout, jobs[0], {0.0, 0.001}));
+  const Eigen::Vector3d centre = scene.pose.translation();
+  std::vector<Eigen::Vector3d> pivots;  // where each attempt went down, from the ring's centre
+  raven::ArmJoints target = profile.home;
+  for (int i = 0; i < 20000 && pivots.size() < 2; ++i) {
+    const Phase before = routine.phase();
+    target = routine.next(target, target, scene);  // the ring never comes up
+    if (before == Phase::Orient && routine.phase() == Phase::Descend)
+      pivots.push_back(routine.graspPivot() - centre);
+  }
+  ASSERT_EQ(pivots.size(), 2u);
+  EXPECT_EQ(routine.regrasps()[0], 1);
+  // The first grasp as always, on the side away from the target row; the second on a side
+  // with room, the inner jaw's face 5.8 mm from the centre (the tube's inner face and the gap).
+  EXPECT_LT(pivots[0].y(), -0.005);
+  EXPECT_NEAR(pivots[0].x(), 0.0, 1e-6);
+  EXPECT_NEAR(std::abs(pivots[1].x()), 0.0058, 1e-4);
+  EXPECT_NEAR(pivots[1].y(), 0.0, 1e-4);
 }
 
 }  // namespace

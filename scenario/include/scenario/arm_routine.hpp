@@ -73,7 +73,11 @@ class ArmRoutine {
   };
   /// The current job's ring as `scene` sees it.
   RingView ring(const bridge::ScenePerception& scene) const;
-  void plan(const bridge::ScenePerception& scene);
+  /// The grasp of the current job on `seen`'s side `toward` (a horizontal direction).
+  void plan(const RingView& seen, const Eigen::Vector2d& toward);
+  /// The horizontal direction from the ring's centre to the side its grasp takes: the one with
+  /// the most room between the tube and the post the ring is on.
+  Eigen::Vector2d graspSide(const RingView& seen) const;
   /// The joints (within the limits, nearest `target`) that hold the jaws open over the grasp.
   std::optional<raven::ArmJoints> overRing(const raven::ArmJoints& target) const;
   /// Moves the tool point towards `goal` by at most `step`, the wrist locked.
