@@ -104,12 +104,13 @@ Eigen::Vector2d ArmRoutine::graspSide(const RingView& seen) const {
       (centre - job.from).norm() <= (centre - job.to).norm() ? job.from : job.to;
   // The room between the tube and the post on side u grows by (centre - post) . u.
   const Eigen::Vector2d off = centre - post;
-  Eigen::Vector2d side = kAwayFromTargets;
+  const auto room = [&](const Eigen::Vector2d& side) { return off.dot(side); };
+  Eigen::Vector2d roomiest = kAwayFromTargets;
   for (const double turn : kOtherSides) {
-    const Eigen::Vector2d u = Eigen::Rotation2Dd(turn) * kAwayFromTargets;
-    if (off.dot(u) > off.dot(side) + (side == kAwayFromTargets ? kRoomier : 0.0)) side = u;
+    const Eigen::Vector2d side = Eigen::Rotation2Dd(turn) * kAwayFromTargets;
+    if (room(side) > room(roomiest)) roomiest = side;
   }
-  return side;
+  return room(roomiest) > room(kAwayFromTargets) + kRoomier ? roomiest : kAwayFromTargets;
 }
 
 double ArmRoutine::jawAngleFor(double squeeze) const {
@@ -289,8 +290,9 @@ raven::ArmJoints ArmRoutine::orient(const raven::ArmJoints& target,
   outer_ = kOpen;
   const RingView seen = ring(scene);
   std::vector<Eigen::Vector2d> sides{kAwayFromTargets};
-  if (regrasps_[job_] > 0 && graspSide(seen) != kAwayFromTargets)
-    sides.insert(sides.begin(), graspSide(seen));
+  if (const Eigen::Vector2d roomiest = graspSide(seen);
+      regrasps_[job_] > 0 && roomiest != kAwayFromTargets)
+    sides.insert(sides.begin(), roomiest);
   for (const Eigen::Vector2d& side : sides) {
     plan(seen, side);
     if (const auto above = overRing(target)) {
