@@ -1,6 +1,7 @@
 // raven_analyze: how far each simulated platform's replays sit from the physical robot's and from
 // each other (the paper's T_SS, T_PP, T_PS), per joint and, where the recordings log them, per
-// actuator signal (mpos, mvel, Tau, dac_vals), with correlating factors and figures.
+// actuator signal (mpos, mvel, Tau, dac_vals), with correlating factors and figures; and
+// `raven_analyze forces`, the forces behind a recording's motor signals.
 
 #include <CLI/CLI.hpp>
 #include <cmath>
@@ -10,6 +11,7 @@
 #include "analysis/metrics.hpp"
 #include "analysis/report.hpp"
 #include "analysis/trial_set.hpp"
+#include "forces_command.hpp"
 
 namespace {
 
@@ -66,7 +68,7 @@ int main(int argc, char** argv) {
   std::string align = "index";
   double period = 0.02;
   bool figures = true;
-  app.add_option("inputs", inputs, "rs files, or directories of them")->required();
+  app.add_option("inputs", inputs, "rs files, or directories of them");
   app.add_option("--out", out, "report directory");
   app.add_option("--profiles", profiles_file, "platform profiles (YAML)")->check(CLI::ExistingFile);
   app.add_option("--align", align, "index: rows by index (the paper's); time: resample on time")
@@ -74,9 +76,17 @@ int main(int argc, char** argv) {
   app.add_option("--period", period, "resampling period for --align time (s)")
       ->check(CLI::Range(1e-4, 10.0));
   app.add_flag("!--no-figures", figures, "write the data only, draw nothing");
+  analysis::ForcesArgs forces_args;
+  const CLI::App& forces = analysis::addForcesCommand(app, forces_args);
+  app.require_subcommand(0, 1);
   CLI11_PARSE(app, argc, argv);
 
   try {
+    if (forces.parsed()) return analysis::runForces(forces_args);
+    if (inputs.empty()) {
+      std::fprintf(stderr, "raven_analyze: no inputs (rs files or directories; --help)\n");
+      return 1;
+    }
     const auto profiles = analysis::readRecordingSources(profiles_file);
     analysis::TrialSet set = analysis::loadTrials(inputs, profiles);
     analysis::ReportSettings settings;

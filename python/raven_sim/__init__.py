@@ -10,13 +10,14 @@
 
 The same command objects and results as the C++ RavenPlatform; errors keep their messages
 (LoadError names file, line and key). World loads AMBF's files; read_ci / read_rs / RsWriter
-handle the paper's recordings; PegTransferEnv is the peg transfer as a learning environment.
+handle the paper's recordings; estimate_forces reads a recording's motor signals back into
+the forces behind them (docs/forces.md); PegTransferEnv is the peg transfer as a learning environment.
 """
 
 from ._raven_sim import (Arm, CommandResult, Controller, ControllerSession, Mode, GrasperForces, JointSample, LoadError, MoveJp,
                          OperatingStatus, PegCameras, PegTransferCore, PegTransferStep, RavenState,
                          RecordingError, RsRecording, RsWriter, ServoCp, ServoCr, ServoJawJp,
-                         SimulationDiverged,
+                         SimulationDiverged, estimate_forces,
                          ServoJawJr, ServoJp, ServoJr, StateCommand, Twin, World, ci_columns,
                          observation_layout, peg_layout, read_ci, read_rs, ring_placed, tool_points,
                          write_ci)

@@ -22,6 +22,7 @@ struct WorldHandle {
 void bindWorld(pybind11::module_& m);
 void bindTwin(pybind11::module_& m);
 void bindRecordings(pybind11::module_& m);
+void bindForces(pybind11::module_& m);
 void bindController(pybind11::module_& m);
 void bindPegTransferEnv(pybind11::module_& m);
 

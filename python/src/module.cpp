@@ -18,6 +18,7 @@ PYBIND11_MODULE(_raven_sim, m) {
   raven_python::bindWorld(m);
   raven_python::bindTwin(m);
   raven_python::bindRecordings(m);
+  raven_python::bindForces(m);
   raven_python::bindController(m);
   raven_python::bindPegTransferEnv(m);
 }

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """raven_sim, the twin in process from Python: the world, the twin's commands and refusals, a
-bad model file's error, the paper's 2arm replay identical to raven_controller's, and the peg
+bad model file's error, the paper's 2arm replay identical to raven_controller's, the forces
+read back from a robot recording's motors, and the peg
 transfer environment (a whole episode placing all six, the same seed the same episode, N at once).
 
 Usage: raven_sim_test.py <raven_controller>; PYTHONPATH must hold build/python.
@@ -109,6 +110,22 @@ class ReplayFromPython(unittest.TestCase):
             self.assertEqual(len(rs), 1)
             self.assertEqual(pathlib.Path(rs[0]).read_bytes(), pathlib.Path(expected[0]).read_bytes())
             self.assertEqual(len(raven_sim.read_rs(rs[0]).rows), 1351)
+
+
+class ForcesFromPython(unittest.TestCase):
+    def test_a_robot_recording_gives_each_cf_column_with_its_sd(self):
+        trial = os.path.join(os.path.dirname(PAPER_CI), "2arm_physical_1.csv")
+        if not os.path.exists(trial):
+            self.skipTest(f"{trial} is absent (../shared/data holds the paper's recordings)")
+        forces = raven_sim.estimate_forces(trial)
+        for arm in ("left", "right"):
+            for channel in ("fx", "fy", "fz", "jaw1_normal", "jaw2_normal"):
+                self.assertEqual(len(forces[f"{arm}_{channel}"]), 1351)
+                self.assertTrue((forces[f"{arm}_{channel}_sd"] > 0).all(), channel)
+        with self.assertRaisesRegex(ValueError, "no_such_rs.csv"):
+            raven_sim.estimate_forces("no_such_rs.csv")
+        with self.assertRaisesRegex(ValueError, "no_such_profile.yaml"):
+            raven_sim.estimate_forces(trial, calibration="no_such_profile.yaml")
 
 
 class PegTransferEnvironment(unittest.TestCase):

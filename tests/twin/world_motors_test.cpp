@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "ambf_like/bullet_conversions.hpp"
+#include "arm_contacts.hpp"
 #include "bridge/raven_state.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/gravity_compensation.hpp"
@@ -22,20 +23,12 @@ namespace {
 
 using raven::Arm;
 using raven::ArmJoints;
-
-/// The shipped mechanics without friction, offset or gravity error: at rest the motors then carry
-/// the links' weight alone.
-twin::TwinOptions frictionlessMotors() {
-  twin::TwinOptions options;
-  options.motors = twin::CalibrationProfile::shipped().mechanics;
-  for (auto& m : *options.motors) {
-    m.coulomb.setZero();
-    m.load_friction.setZero();
-    m.offset.setZero();
-    m.gravity_error.setZero();
-  }
-  return options;
-}
+using test_support::ArmChain;
+using test_support::chainOf;
+using test_support::contactLoads;
+using test_support::frictionlessMotors;
+using test_support::touching;
+using test_support::withObstacle;
 
 /// The torque the amplifiers apply (at the gearbox outputs): the logged DAC counts back in N m
 /// (Tau itself may pass the DAC's clip).
@@ -102,104 +95,6 @@ TEST(WorldMotors, HeldStillTheMotorsCarryTheFittedWeightAndOffset) {
           << raven::armName(arm) << " " << raven::kJointNames[static_cast<std::size_t>(i)];
     }
   }
-}
-
-/// `arm`'s joints and, per joint, the bodies it moves (its child and everything beyond).
-struct ArmChain {
-  std::vector<const ambf_like::Joint*> joints;
-  std::vector<std::vector<std::string>> moves;  ///< qualified body names, per joint
-};
-
-ArmChain chainOf(twin::TwinPlatform& twin, Arm arm) {
-  ambf_like::World& world = twin.world();
-  ArmChain chain;
-  const auto names = twin::ArmBindings::ourRaven().joints[raven::slot(arm)];
-  std::map<std::string, std::string> parent_of;  // child body -> parent body (plain names)
-  for (const auto& b : names) {
-    const auto& spec = world.joint(b.name).spec();
-    chain.joints.push_back(&world.joint(b.name));
-    parent_of[spec.child] = spec.parent;
-  }
-  const std::string prefix = "/raven2/" + std::string(raven::armName(arm)) + "/";
-  for (const auto* joint : chain.joints) {
-    std::vector<std::string> moved;
-    for (const auto& [body, parent] : parent_of) {
-      // `body` moves with the joint when the joint's child is on its way to the base.
-      for (std::string at = body;; at = parent_of.at(at)) {
-        if (at == joint->spec().child) {
-          moved.push_back(prefix + body);
-          break;
-        }
-        if (!parent_of.contains(at)) break;
-      }
-    }
-    chain.moves.push_back(moved);
-  }
-  return chain;
-}
-
-/// J^T F: the joint loads (N m, N) the last step's contacts on `arm`'s bodies put on its joints,
-/// each contact force taken about the joint's axis through its pivot as the World has them now.
-ArmJoints contactLoads(twin::TwinPlatform& twin, Arm arm) {
-  ambf_like::World& world = twin.world();
-  const ArmChain chain = chainOf(twin, arm);
-  ArmJoints loads = ArmJoints::Zero();
-  for (int j = 0; j < raven::kJointCount; ++j) {
-    const auto& spec = chain.joints[static_cast<std::size_t>(j)]->spec();
-    const ambf_like::Transform parent =
-        world.body("/raven2/" + std::string(raven::armName(arm)) + "/" + spec.parent).pose();
-    const Eigen::Vector3d axis = parent.linear() * spec.parent_axis.normalized();
-    const Eigen::Vector3d pivot = parent * spec.parent_pivot;
-    for (const auto& body : chain.moves[static_cast<std::size_t>(j)]) {
-      for (const auto& c : world.contacts(body)) {
-        const bool on_a = c.body_a == body;
-        const Eigen::Vector3d impulse = c.normal_impulse * c.normal_on_b + c.friction_impulse;
-        const Eigen::Vector3d force = (on_a ? 1.0 : -1.0) * impulse / world.stepSize();
-        const Eigen::Vector3d at = c.position_on_b;
-        loads(j) += spec.type == ambf_like::JointType::Prismatic
-                        ? force.dot(axis)
-                        : force.dot(axis.cross(at - pivot));
-      }
-    }
-  }
-  return loads;
-}
-
-/// Our Raven-II with one static obstacle of `shape` at `pose` (world), and no rolling friction
-/// anywhere: Bullet's rolling friction puts a couple on a pressed contact (AMBF's default 0.01 m
-/// times the normal force) that no contact point reports, and the statics here are of point forces.
-twin::TwinOptions withObstacle(const twin::TwinOptions& base,
-                               const ambf_like::PrimitiveShape& shape,
-                               const ambf_like::Transform& pose, double friction) {
-  twin::TwinOptions options = base;
-  options.adjust_scene = [shape, pose, friction](ambf_like::SceneSpec& scene) {
-    for (auto& model : scene.models) {
-      for (auto& body : model.bodies) body.surface.rolling_friction = 0.0;
-    }
-    ambf_like::ModelSpec obstacle;
-    obstacle.name_space = "/test/";
-    ambf_like::BodySpec body;
-    body.name = "obstacle";
-    body.surface.rolling_friction = 0.0;
-    body.surface.static_friction = friction;
-    body.collision.primitives.push_back(shape);
-    body.collision.primitives.back().offset = ambf_like::Transform::Identity();
-    body.location = pose;
-    obstacle.bodies.push_back(body);
-    scene.models.push_back(obstacle);
-  };
-  return options;
-}
-
-/// Whether any body that `joint` of `arm` moves presses on something.
-bool touching(twin::TwinPlatform& twin, Arm arm, int joint) {
-  const ArmChain chain = chainOf(twin, arm);
-  for (const auto& body : chain.moves[static_cast<std::size_t>(joint)]) {
-    for (const auto& c : twin.world().contacts(body)) {
-      if (c.normal_impulse > 0.0) return true;
-    }
-  }
-  return false;
 }
 
 /// `arm` at rest against an obstacle, averaged over `cycles` 1 ms cycles: the joint loads its

@@ -139,11 +139,6 @@ void CalibrationProfile::save(const std::filesystem::path& file,
   if (!stream) throw std::runtime_error(file.string() + ": cannot write");
 }
 
-void CalibrationProfile::applyTo(TwinOptions& options) const {
-  options.motors = mechanics;
-  options.limits.servo_jr_delivered = servo_jr_delivered;
-}
-
 std::filesystem::path CalibrationProfile::shippedFile() {
   return std::filesystem::path(RAVEN_TWIN_CONFIG_DIR) / "raven2_calibration.yaml";
 }

@@ -10,11 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "twin/motor_actuation.hpp"
-#include "twin/twin_platform.hpp"
+#include "twin/motor_dynamics.hpp"
 #include "twin/vocabulary.hpp"
 
 namespace twin {
+
+struct TwinOptions;
 
 /// What a profile was fitted on, written beside its values as its `fit` section (free text, one
 /// line per entry).
@@ -45,7 +46,8 @@ struct CalibrationProfile {
   /// Writes the profile in the layout load() reads, with `provenance` as its `fit` section;
   /// throws std::runtime_error when it cannot.
   void save(const std::filesystem::path& file, const FitProvenance& provenance) const;
-  /// Makes `options` a twin of the calibrated robot: its motors and its command delivery.
+  /// Makes `options` a twin of the calibrated robot: its motors and its command delivery
+  /// (defined with the twin, twin/src/calibration_apply.cpp).
   void applyTo(TwinOptions& options) const;
   /// twin/config/raven2_calibration.yaml: the fit to the paper's physical recordings.
   static std::filesystem::path shippedFile();

@@ -16,7 +16,6 @@
 namespace twin {
 
 /// The mechanics of both arms' motors (per raven::slot(arm)).
-using ArmsMechanics = raven::PerArm<MotorMechanics>;
 
 /// Motor-level actuation of both arms of a TwinArms.
 class MotorActuation final : public Actuation {

@@ -42,6 +42,9 @@ struct MotorMechanics {
   const MotorMechanics& checked(Arm arm) const;
 };
 
+/// Both arms' mechanics, the left first.
+using ArmsMechanics = raven::PerArm<MotorMechanics>;
+
 /// Motor angles and speeds of one arm, stepped under the amplifiers' torque.
 class MotorAxes {
  public:

@@ -1,0 +1,46 @@
+#pragma once
+// raven_analyze forces: a recording's motor signals read back into the forces behind them
+// (twin::ArmForceEstimator for each arm), written beside the twin's own cf columns.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "twin/calibration_profile.hpp"
+#include "twin/force_estimator.hpp"
+
+namespace analysis {
+
+/// Estimated forces per row: `time`, then per arm (left_, right_) fx, fy, fz, jaw1_normal,
+/// jaw2_normal (the cf file's names and meaning), then the same with `_sd` appended, then each
+/// arm's jaw opening (`left_opening`, `right_opening`: jaw1 + jaw2, rad).
+struct ForceTable {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  std::size_t column(const std::string& name) const;  ///< throws std::out_of_range
+};
+
+/// The estimates of `rs` under `profile` (its mechanics and their uncertainty).
+ForceTable estimateForces(const std::filesystem::path& rs, const twin::CalibrationProfile& profile,
+                          const twin::GripLever& grip);
+
+void writeForces(const ForceTable& table, const std::filesystem::path& csv);
+
+/// Per channel: over the rows, the mean estimate and the mean of its sd; the same over the rows
+/// where the arm's jaws are apart (faces more than 1 mm apart at their tips: not on each
+/// other); with a cf file, over the rows where the channel's truth is not zero (a held ring, a
+/// pressed tool), the median estimate and truth and the share of rows within 2 sd of it.
+struct ChannelSummary {
+  std::string name;
+  double mean = 0.0, mean_sd = 0.0;
+  std::size_t rows = 0;
+  double apart_mean = 0.0, apart_sd = 0.0;
+  std::size_t apart_rows = 0;
+  std::optional<double> truth_median, estimate_median, within_2sd;
+  std::size_t truth_rows = 0;
+};
+std::vector<ChannelSummary> summarise(const ForceTable& table,
+                                      const std::optional<std::filesystem::path>& truth_cf);
+
+}  // namespace analysis

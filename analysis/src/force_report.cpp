@@ -1,0 +1,159 @@
+#include "analysis/force_report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include "raven/arm_kinematics.hpp"
+#include "raven/platform_profile.hpp"
+#include "recording/cf_recording.hpp"
+
+namespace analysis {
+
+namespace {
+
+constexpr std::array<const char*, 5> kChannels{"fx", "fy", "fz", "jaw1_normal", "jaw2_normal"};
+/// A cf channel counts as touching above this (N): the solver's rounding is far below it.
+constexpr double kTouching = 0.05;
+/// Jaws opened more than this (rad, jaw1 + jaw2) have their faces apart: 1 mm at their tips.
+constexpr double kJawsApart = 0.1;
+
+double median(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
+}
+
+/// One arm's values of `e` in kChannels order, then their sd.
+std::array<double, 10> channels(const twin::ForceEstimate& e) {
+  return {e.tip.x(),    e.tip.y(),    e.tip.z(),    e.jaw[0],    e.jaw[1],
+          e.tip_sd.x(), e.tip_sd.y(), e.tip_sd.z(), e.jaw_sd[0], e.jaw_sd[1]};
+}
+
+}  // namespace
+
+std::size_t ForceTable::column(const std::string& name) const {
+  const auto it = std::find(names.begin(), names.end(), name);
+  if (it == names.end()) throw std::out_of_range("no forces column '" + name + "'");
+  return static_cast<std::size_t>(it - names.begin());
+}
+
+ForceTable estimateForces(const std::filesystem::path& rs_path,
+                          const twin::CalibrationProfile& profile, const twin::GripLever& grip) {
+  const recording::RsRecording rs = recording::readRs(rs_path, recording::NonFiniteJoints::Keep);
+  const raven::PlatformProfile platform = raven::builtinProfile("physical");
+  std::vector<double> times;
+  for (std::size_t r = 0; r < rs.rows.size(); ++r) times.push_back(rs.time(r));
+  ForceTable table;
+  table.names.push_back("time");
+  for (const char* suffix : {"", "_sd"}) {
+    for (const char* arm : {"left_", "right_"}) {
+      for (const char* c : kChannels) table.names.push_back(std::string(arm) + c + suffix);
+    }
+  }
+  table.names.push_back("left_opening");
+  table.names.push_back("right_opening");
+  table.rows.assign(times.size(), std::vector<double>(table.names.size(), std::nan("")));
+  for (std::size_t r = 0; r < times.size(); ++r) table.rows[r][0] = times[r];
+  for (raven::Arm arm : raven::kArms) {
+    std::vector<recording::ArmSignals> signals;
+    for (std::size_t r = 0; r < rs.rows.size(); ++r) signals.push_back(rs.signals(r, arm));
+    const twin::ArmForceEstimator estimator(arm, profile.mechanics[raven::slot(arm)],
+                                            profile.uncertainty[raven::slot(arm)],
+                                            raven::ArmKinematics::of(platform, arm), grip);
+    const auto estimates = estimator.estimate(times, signals);
+    const std::size_t base = 1 + raven::slot(arm) * kChannels.size();
+    const std::size_t opening = table.names.size() - 2 + raven::slot(arm);
+    for (std::size_t r = 0; r < estimates.size(); ++r) {
+      table.rows[r][opening] = signals[r].joints(raven::kJaw1) + signals[r].joints(raven::kJaw2);
+      const auto values = channels(estimates[r]);
+      for (std::size_t c = 0; c < kChannels.size(); ++c) {
+        table.rows[r][base + c] = values[c];
+        table.rows[r][base + 2 * kChannels.size() + c] = values[kChannels.size() + c];
+      }
+    }
+  }
+  return table;
+}
+
+void writeForces(const ForceTable& table, const std::filesystem::path& csv) {
+  std::ofstream out(csv);
+  if (!out) throw std::runtime_error(csv.string() + ": cannot write");
+  for (std::size_t c = 0; c < table.names.size(); ++c) {
+    out << (c ? "," : "") << table.names[c];
+  }
+  out << '\n';
+  for (const auto& row : table.rows) {
+    for (std::size_t c = 0; c < row.size(); ++c)
+      out << (c ? "," : "") << fmt::format("{:.6g}", row[c]);
+    out << '\n';
+  }
+  if (!out) throw std::runtime_error(csv.string() + ": write failed");
+}
+
+std::vector<ChannelSummary> summarise(const ForceTable& table,
+                                      const std::optional<std::filesystem::path>& truth_cf) {
+  std::optional<recording::CfRecording> cf;
+  if (truth_cf) {
+    cf = recording::readCf(*truth_cf);
+    if (cf->rows.size() != table.rows.size()) {
+      throw std::invalid_argument(fmt::format(
+          "{}: {} rows where the recording has {}: a cf file pairs with its rs file row by row",
+          truth_cf->string(), cf->rows.size(), table.rows.size()));
+    }
+  }
+  std::vector<ChannelSummary> out;
+  for (const char* arm : {"left_", "right_"}) {
+    for (const char* c : kChannels) {
+      ChannelSummary s;
+      s.name = std::string(arm) + c;
+      const std::size_t value = table.column(s.name), sd = table.column(s.name + "_sd");
+      const std::size_t opening = table.column(std::string(arm) + "opening");
+      std::vector<double> estimates, truths;
+      std::size_t within = 0;
+      for (std::size_t r = 0; r < table.rows.size(); ++r) {
+        const auto& row = table.rows[r];
+        if (!std::isfinite(row[value]) || !std::isfinite(row[sd])) continue;
+        s.mean += row[value];
+        s.mean_sd += row[sd];
+        ++s.rows;
+        if (row[opening] > kJawsApart) {
+          s.apart_mean += row[value];
+          s.apart_sd += row[sd];
+          ++s.apart_rows;
+        }
+        if (!cf) continue;
+        const double truth = cf->rows[r][cf->column(s.name)];
+        const bool touching = std::string(c).starts_with("jaw")
+                                  ? truth > kTouching
+                                  : cf->rows[r][cf->column(std::string(arm) + "contacts")] > 0;
+        if (!touching) continue;
+        estimates.push_back(row[value]);
+        truths.push_back(truth);
+        if (std::abs(row[value] - truth) <= 2.0 * row[sd]) ++within;
+      }
+      if (s.rows) {
+        s.mean /= static_cast<double>(s.rows);
+        s.mean_sd /= static_cast<double>(s.rows);
+      }
+      if (s.apart_rows) {
+        s.apart_mean /= static_cast<double>(s.apart_rows);
+        s.apart_sd /= static_cast<double>(s.apart_rows);
+      }
+      s.truth_rows = truths.size();
+      if (!truths.empty()) {
+        s.truth_median = median(truths);
+        s.estimate_median = median(estimates);
+        s.within_2sd = static_cast<double>(within) / static_cast<double>(truths.size());
+      }
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
+}  // namespace analysis

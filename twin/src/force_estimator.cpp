@@ -1,0 +1,212 @@
+#include "twin/force_estimator.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "twin/gravity_compensation.hpp"
+
+namespace twin {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The firmware's velocity is one encoder count per 1 ms cycle at its finest (mvel's quantum).
+constexpr double kCycle = 0.001;
+
+bool finite(const ArmJoints& v) {
+  return v.allFinite();
+}
+
+ForceEstimate unknown() {
+  ForceEstimate e;
+  e.tip.setConstant(kNaN);
+  e.tip_sd.setConstant(kNaN);
+  e.jaw = {kNaN, kNaN};
+  e.jaw_sd = {kNaN, kNaN};
+  e.contact_load.setConstant(kNaN);
+  e.contact_load_sd.setConstant(kNaN);
+  return e;
+}
+
+}  // namespace
+
+ArmForceEstimator::ArmForceEstimator(Arm arm, const MotorMechanics& mechanics,
+                                     const MotorMechanics& uncertainty,
+                                     const raven::ArmKinematics& kinematics, GripLever grip)
+    : arm_(arm),
+      mechanics_(mechanics),
+      uncertainty_(uncertainty),
+      kinematics_(kinematics),
+      grip_(grip),
+      drive_(DriveTrain::raven2()),
+      dac_(DacConversion::raven2(arm)) {
+  to_joints_ = drive_.coupling(arm).transpose() * drive_.gearbox.cwiseInverse().asDiagonal();
+}
+
+ArmJoints ArmForceEstimator::appliedTorque(const recording::ArmSignals& row) const {
+  ArmJoints applied;
+  for (int i = 0; i < kJointCount; ++i) {
+    const double counts = std::isfinite(row.dac(i))
+                              ? row.dac(i)
+                              : std::clamp(std::trunc(row.torque(i) * dac_.counts_per_torque(i)),
+                                           -static_cast<double>(dac_.limit[std::size_t(i)]),
+                                           static_cast<double>(dac_.limit[std::size_t(i)]));
+    applied(i) = counts / dac_.counts_per_torque(i);
+  }
+  return applied;
+}
+
+Eigen::Matrix3d ArmForceEstimator::tipJacobian(const ArmJoints& joints) const {
+  constexpr double kStep = 1e-6;
+  const Eigen::Vector3d grip(grip_.depth, 0.0, 0.0);  // the tool frame's x runs along the jaws
+  Eigen::Matrix3d jacobian;
+  for (int j = 0; j <= raven::kInsertion; ++j) {
+    ArmJoints ahead = joints, behind = joints;
+    ahead(j) += kStep;
+    behind(j) -= kStep;
+    jacobian.col(j) =
+        (kinematics_.toolPose(ahead) * grip - kinematics_.toolPose(behind) * grip) / (2.0 * kStep);
+  }
+  return jacobian;
+}
+
+std::vector<MotorBalance> ArmForceEstimator::balances(
+    const std::vector<double>& times, const std::vector<recording::ArmSignals>& rows) const {
+  const std::size_t n = rows.size();
+  // Each row's window: the rows kSpeedWindow either side (at least one, where there is one).
+  std::vector<std::size_t> lo(n), hi(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    lo[k] = k;
+    while (lo[k] > 0 && times[k] - times[lo[k]] < kSpeedWindow) --lo[k];
+    hi[k] = k;
+    while (hi[k] + 1 < n && times[hi[k]] - times[k] < kSpeedWindow) ++hi[k];
+  }
+  std::vector<ArmJoints> speed(n, ArmJoints::Zero());
+  for (std::size_t k = 0; k < n; ++k) {
+    const double span = times[hi[k]] - times[lo[k]];
+    if (span > 0.0) speed[k] = (rows[hi[k]].motor - rows[lo[k]].motor) / span;
+  }
+  const double count = 2.0 * M_PI / drive_.encoder_counts_per_motor_rev;
+  std::vector<MotorBalance> out;
+  out.reserve(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double span = times[hi[k]] - times[lo[k]];
+    const ArmJoints acceleration =
+        span > 0.0 ? ArmJoints((speed[hi[k]] - speed[lo[k]]) / span) : ArmJoints::Zero();
+    MotorBalance b = balance(rows[k], speed[k], acceleration);
+    // Which way each motor slides at the row's instant, when the signals say: the cycle logged
+    // turned two counts or more (one alone is an encoder flickering at a count's edge as often
+    // as a turn), or the motor moved a count or more the same way on both sides of the row: 1
+    // or -1. A motor that does not slide but stands two counts or more from its setpoint is
+    // pushed towards it by the control law (its integrator winds on): +-0.5. Else 0.
+    for (int i = 0; i < kJointCount; ++i) {
+      const double now = rows[k].motor_velocity(i);
+      const double before = rows[k].motor(i) - rows[lo[k]].motor(i);
+      const double after = rows[hi[k]].motor(i) - rows[k].motor(i);
+      const double error = rows[k].motor_setpoint(i) - rows[k].motor(i);
+      if (std::abs(now) >= 1.5 * count / kCycle) {
+        b.sliding(i) = std::copysign(1.0, now);
+      } else if (before * after > 0.0 && std::min(std::abs(before), std::abs(after)) >= count) {
+        b.sliding(i) = std::copysign(1.0, before);
+      } else if (std::abs(error) >= 2.0 * count) {
+        b.sliding(i) = std::copysign(0.5, error);
+      }
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
+MotorBalance ArmForceEstimator::balance(const recording::ArmSignals& row, const ArmJoints& speed,
+                                        const ArmJoints& acceleration) const {
+  MotorBalance b;
+  b.applied = appliedTorque(row);
+  b.joints = row.joints;
+  b.finite = finite(row.joints) && finite(b.applied) && finite(speed) && finite(acceleration);
+  if (!b.finite) return b;
+  const MotorMechanics& m = mechanics_;
+  const MotorMechanics& u = uncertainty_;
+  const ArmJoints weight = gravityCompensation(arm_, row.joints, drive_);
+  b.band = m.coulomb + m.load_friction.cwiseProduct(b.applied.cwiseAbs());
+  for (int i = 0; i < kJointCount; ++i) {
+    b.known(i) = (1.0 + m.gravity_error(i)) * weight(i) + m.offset(i) +
+                 m.inertia(i) * acceleration(i) + m.viscous(i) * speed(i) - b.applied(i);
+    b.variance(i) = u.offset(i) * u.offset(i) + std::pow(u.gravity_error(i) * weight(i), 2) +
+                    std::pow(u.inertia(i) * acceleration(i), 2) +
+                    std::pow(u.viscous(i) * speed(i), 2);
+  }
+  return b;
+}
+
+void ArmForceEstimator::addFriction(std::vector<MotorBalance>& rows) const {
+  const MotorMechanics& u = uncertainty_;
+  for (int i = 0; i < kJointCount; ++i) {
+    // A motor's load while it sticks is the load it slid under last (held still, what it
+    // holds does not move): friction takes up what the applied torque changes, within what
+    // sticking or being pushed allows. Before its first slide, the interval's middle.
+    std::optional<double> slid_under;
+    for (MotorBalance& b : rows) {
+      if (!b.finite) continue;
+      const double s = b.sliding(i), band = b.band(i);
+      if (std::abs(s) == 1.0) {
+        b.friction(i) = s * band;
+        const double sd = u.coulomb(i) + u.load_friction(i) * std::abs(b.applied(i));
+        b.variance(i) += sd * sd;
+        slid_under = b.known(i) + b.friction(i);
+        continue;
+      }
+      const double low = s > 0.0 ? 0.0 : -band, high = s < 0.0 ? 0.0 : band;
+      b.friction(i) =
+          slid_under ? std::clamp(*slid_under - b.known(i), low, high) : 0.5 * (low + high);
+      b.variance(i) += (high - low) * (high - low) / 12.0;  // uniform over the interval
+    }
+  }
+}
+
+std::vector<ForceEstimate> ArmForceEstimator::estimate(
+    const std::vector<double>& times, const std::vector<recording::ArmSignals>& rows) const {
+  std::vector<MotorBalance> motors = balances(times, rows);
+  addFriction(motors);
+  std::vector<ForceEstimate> out;
+  out.reserve(motors.size());
+  for (const MotorBalance& b : motors) out.push_back(b.finite ? estimateRow(b) : unknown());
+  return out;
+}
+
+ForceEstimate ArmForceEstimator::estimateRow(const MotorBalance& b) const {
+  ForceEstimate e;
+  for (int i = 0; i < kJointCount; ++i) e.moving[std::size_t(i)] = std::abs(b.sliding(i)) == 1.0;
+  // What the motors push against, through the cables onto the joints.
+  e.contact_load = to_joints_ * (b.known + b.friction);
+  const Eigen::Matrix<double, kJointCount, kJointCount> covariance =
+      to_joints_ * b.variance.asDiagonal() * to_joints_.transpose();
+  e.contact_load_sd = covariance.diagonal().cwiseSqrt();
+  // At the grip: J^T F = the arm joints' contact loads, F the world's push on the tool.
+  const Eigen::Matrix3d jacobian = tipJacobian(b.joints);
+  const Eigen::FullPivLU<Eigen::Matrix3d> lu(jacobian.transpose());
+  if (lu.isInvertible()) {
+    const Eigen::Matrix3d inverse = lu.inverse();
+    e.tip = -inverse * e.contact_load.head<3>();
+    e.tip_sd =
+        (inverse * covariance.topLeftCorner<3, 3>() * inverse.transpose()).diagonal().cwiseSqrt();
+  } else {
+    e.tip.setConstant(kNaN);
+    e.tip_sd.setConstant(kNaN);
+  }
+  // A jaw's squeeze turns it open about its axis at the grip's lever.
+  const double lever_sd = grip_.spread / std::sqrt(3.0);
+  for (int j = 0; j < 2; ++j) {
+    const int joint = raven::kJaw1 + j;
+    const double squeeze = e.contact_load(joint) / grip_.depth;
+    e.jaw[std::size_t(j)] = squeeze;
+    e.jaw_sd[std::size_t(j)] =
+        std::hypot(e.contact_load_sd(joint) / grip_.depth, squeeze * lever_sd / grip_.depth);
+  }
+  return e;
+}
+
+}  // namespace twin
