@@ -77,6 +77,15 @@ ForceTable estimateForces(const std::filesystem::path& rs_path,
       }
     }
   }
+  const std::size_t left = table.column("left_fx"), right = table.column("right_fx");
+  if (std::none_of(table.rows.begin(), table.rows.end(), [&](const auto& row) {
+        return std::isfinite(row[left]) || std::isfinite(row[right]);
+      })) {
+    throw std::invalid_argument(
+        rs_path.string() +
+        ": no row has the motor signals the estimate reads (jpos, mpos, mvel, mpos_d and Tau or "
+        "dac_vals); AMBF's recordings log none");
+  }
   return table;
 }
 

@@ -95,6 +95,21 @@ TEST(RavenAnalyzeForces, InTheRobotsFreeMotionEveryChannelIsWithinTwoSdOfZero) {
   }
 }
 
+TEST(RavenAnalyzeForces, ARecordingWithoutMotorSignalsIsRefusedNamingIt) {
+  // AMBF logs joints only: nothing to read forces from, said so rather than a table of zeros.
+  const auto trial = physicalTrial();
+  if (trial.empty()) GTEST_SKIP() << "../shared/data is absent: the robot's recordings are needed";
+  const auto ambf = trial.parent_path() / "2arm_ambf_1.csv";
+  try {
+    analysis::estimateForces(ambf, twin::CalibrationProfile::shipped(), {});
+    FAIL() << "an AMBF recording gave forces";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("2arm_ambf_1.csv: no row has the motor signals"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(RavenAnalyzeForces, ATruthFileOfAnotherRunIsRefusedNamingIt) {
   const auto trial = physicalTrial();
   if (trial.empty()) GTEST_SKIP() << "../shared/data is absent: the robot's recordings are needed";

@@ -21,7 +21,9 @@ struct ForceTable {
   std::size_t column(const std::string& name) const;  ///< throws std::out_of_range
 };
 
-/// The estimates of `rs` under `profile` (its mechanics and their uncertainty).
+/// The estimates of `rs` under `profile` (its mechanics and their uncertainty). Throws
+/// recording::RecordingError for a file that is not an rs file, std::invalid_argument naming it
+/// when no row has the motor signals (an AMBF recording).
 ForceTable estimateForces(const std::filesystem::path& rs, const twin::CalibrationProfile& profile,
                           const twin::GripLever& grip);
 
