@@ -101,19 +101,16 @@ std::vector<MotorBalance> ArmForceEstimator::balances(
     // Which way each motor slides at the row's instant, when the signals say: the cycle logged
     // turned two counts or more (one alone is an encoder flickering at a count's edge as often
     // as a turn), or the motor moved a count or more the same way on both sides of the row: 1
-    // or -1. A motor that does not slide but stands two counts or more from its setpoint is
-    // pushed towards it by the control law (its integrator winds on): +-0.5. Else 0.
+    // or -1. Else 0: it may stick, and then its friction may be anywhere in its band, whichever
+    // way its controller pushes it (a load can hold it against the push).
     for (int i = 0; i < kJointCount; ++i) {
       const double now = rows[k].motor_velocity(i);
       const double before = rows[k].motor(i) - rows[lo[k]].motor(i);
       const double after = rows[hi[k]].motor(i) - rows[k].motor(i);
-      const double error = rows[k].motor_setpoint(i) - rows[k].motor(i);
       if (std::abs(now) >= 1.5 * count / kCycle) {
         b.sliding(i) = std::copysign(1.0, now);
       } else if (before * after > 0.0 && std::min(std::abs(before), std::abs(after)) >= count) {
         b.sliding(i) = std::copysign(1.0, before);
-      } else if (std::abs(error) >= 2.0 * count) {
-        b.sliding(i) = std::copysign(0.5, error);
       }
     }
     out.push_back(b);
@@ -146,23 +143,21 @@ void ArmForceEstimator::addFriction(std::vector<MotorBalance>& rows) const {
   const MotorMechanics& u = uncertainty_;
   for (int i = 0; i < kJointCount; ++i) {
     // A motor's load while it sticks is the load it slid under last (held still, what it
-    // holds does not move): friction takes up what the applied torque changes, within what
-    // sticking or being pushed allows. Before its first slide, the interval's middle.
+    // holds does not move): friction takes up what the applied torque changes, within its band.
+    // Before its first slide, the band's middle. Either way the band is its uncertainty.
     std::optional<double> slid_under;
     for (MotorBalance& b : rows) {
       if (!b.finite) continue;
       const double s = b.sliding(i), band = b.band(i);
-      if (std::abs(s) == 1.0) {
+      if (s != 0.0) {
         b.friction(i) = s * band;
         const double sd = u.coulomb(i) + u.load_friction(i) * std::abs(b.applied(i));
         b.variance(i) += sd * sd;
         slid_under = b.known(i) + b.friction(i);
         continue;
       }
-      const double low = s > 0.0 ? 0.0 : -band, high = s < 0.0 ? 0.0 : band;
-      b.friction(i) =
-          slid_under ? std::clamp(*slid_under - b.known(i), low, high) : 0.5 * (low + high);
-      b.variance(i) += (high - low) * (high - low) / 12.0;  // uniform over the interval
+      b.friction(i) = slid_under ? std::clamp(*slid_under - b.known(i), -band, band) : 0.0;
+      b.variance(i) += band * band / 3.0;  // uniform over the band
     }
   }
 }
@@ -179,7 +174,7 @@ std::vector<ForceEstimate> ArmForceEstimator::estimate(
 
 ForceEstimate ArmForceEstimator::estimateRow(const MotorBalance& b) const {
   ForceEstimate e;
-  for (int i = 0; i < kJointCount; ++i) e.moving[std::size_t(i)] = std::abs(b.sliding(i)) == 1.0;
+  for (int i = 0; i < kJointCount; ++i) e.moving[std::size_t(i)] = b.sliding(i) != 0.0;
   // What the motors push against, through the cables onto the joints.
   e.contact_load = to_joints_ * (b.known + b.friction);
   const Eigen::Matrix<double, kJointCount, kJointCount> covariance =

@@ -45,7 +45,7 @@ struct MotorBalance {
   ArmJoints applied = ArmJoints::Zero();   ///< the amplifiers' torque
   ArmJoints known = ArmJoints::Zero();     ///< fitted weight + offset + J a + b v - applied
   ArmJoints band = ArmJoints::Zero();      ///< each motor's Coulomb friction band
-  ArmJoints sliding = ArmJoints::Zero();   ///< +-1 sliding that way, +-0.5 pushed, 0 at rest
+  ArmJoints sliding = ArmJoints::Zero();   ///< +-1 sliding that way, 0 maybe stuck
   ArmJoints friction = ArmJoints::Zero();  ///< the friction taken
   ArmJoints variance = ArmJoints::Zero();  ///< of known + friction
 };
