@@ -10,6 +10,7 @@
 #include "raven/arm_kinematics.hpp"
 #include "raven/platform_profile.hpp"
 #include "recording/cf_recording.hpp"
+#include "recording/csv_text.hpp"
 
 namespace analysis {
 
@@ -47,7 +48,15 @@ ForceTable estimateForces(const std::filesystem::path& rs_path,
   const recording::RsRecording rs = recording::readRs(rs_path, recording::NonFiniteJoints::Keep);
   const raven::PlatformProfile platform = raven::builtinProfile("physical");
   std::vector<double> times;
-  for (std::size_t r = 0; r < rs.rows.size(); ++r) times.push_back(rs.time(r));
+  for (std::size_t r = 0; r < rs.rows.size(); ++r) {
+    times.push_back(rs.time(r));
+    // The motor speeds come from the rows around each row in time.
+    if (r > 0 && times[r] < times[r - 1]) {
+      throw std::invalid_argument(fmt::format("{}: time {} s runs back from {} s",
+                                              recording::rowWhere(rs_path, r + 2), times[r],
+                                              times[r - 1]));
+    }
+  }
   ForceTable table;
   table.names.push_back("time");
   for (const char* suffix : {"", "_sd"}) {

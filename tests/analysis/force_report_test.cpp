@@ -20,6 +20,17 @@ std::filesystem::path physicalTrial() {
   return shared.empty() ? shared : shared / "recordings/paper_2arm/2arm_physical_1.csv";
 }
 
+/// `call` must throw std::invalid_argument saying `says` (a file's name and what is wrong).
+template <typename Call>
+void expectRefusal(const Call& call, const std::string& says) {
+  try {
+    call();
+    ADD_FAILURE() << "not refused: " << says;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+  }
+}
+
 TEST(RavenAnalyzeForces, WritesTheCfColumnsWithTheirSdAndAFigure) {
   const auto trial = physicalTrial();
   if (trial.empty()) GTEST_SKIP() << "../shared/data is absent: the robot's recordings are needed";
@@ -100,14 +111,38 @@ TEST(RavenAnalyzeForces, ARecordingWithoutMotorSignalsIsRefusedNamingIt) {
   const auto trial = physicalTrial();
   if (trial.empty()) GTEST_SKIP() << "../shared/data is absent: the robot's recordings are needed";
   const auto ambf = trial.parent_path() / "2arm_ambf_1.csv";
-  try {
-    analysis::estimateForces(ambf, twin::CalibrationProfile::shipped(), {});
-    FAIL() << "an AMBF recording gave forces";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("2arm_ambf_1.csv: no row has the motor signals"),
-              std::string::npos)
-        << e.what();
-  }
+  expectRefusal([&] { analysis::estimateForces(ambf, twin::CalibrationProfile::shipped(), {}); },
+                "2arm_ambf_1.csv: no row has the motor signals");
+}
+
+TEST(RavenAnalyzeForces, ARecordingWhoseTimeRunsBackIsRefusedNamingTheRow) {
+  // The motor speeds come from the rows around each row in time: a clock running back is
+  // refused by row; one standing still costs no more than one that runs (windows are bounded).
+  const auto trial = physicalTrial();
+  if (trial.empty()) GTEST_SKIP() << "../shared/data is absent: the robot's recordings are needed";
+  const auto rs = recording::readRs(trial, recording::NonFiniteJoints::Keep);
+  const std::size_t time = rs.column("time");
+  test_support::TempDir dir;
+  const auto write = [&](const std::string& name, const auto& timeOf) {
+    std::ofstream out(dir.path() / name);
+    for (std::size_t c = 0; c < rs.names.size(); ++c) out << (c ? "," : "") << rs.names[c];
+    out << "\n";
+    for (std::size_t r = 0; r < rs.rows.size(); ++r) {
+      for (std::size_t c = 0; c < rs.names.size(); ++c) {
+        out << (c ? "," : "") << fmt::format("{}", c == time ? timeOf(r) : rs.rows[r][c]);
+      }
+      out << "\n";
+    }
+    return dir.path() / name;
+  };
+  const auto back =
+      write("back_rs.csv", [&](std::size_t r) { return r == 700 ? 0.0 : rs.rows[r][time]; });
+  // Data row 700 (from 0) is the file's row 702: the header is row 1.
+  expectRefusal([&] { analysis::estimateForces(back, twin::CalibrationProfile::shipped(), {}); },
+                "back_rs.csv: row 702: time 0 s runs back");
+  const auto still = write("still_rs.csv", [](std::size_t) { return 0.0; });
+  const auto table = analysis::estimateForces(still, twin::CalibrationProfile::shipped(), {});
+  EXPECT_EQ(table.rows.size(), rs.rows.size());
 }
 
 TEST(RavenAnalyzeForces, ATruthFileOfAnotherRunIsRefusedNamingIt) {
@@ -120,14 +155,8 @@ TEST(RavenAnalyzeForces, ATruthFileOfAnotherRunIsRefusedNamingIt) {
     writer.write(0.0, {std::nullopt, std::nullopt});
   }
   const auto table = analysis::estimateForces(trial, twin::CalibrationProfile::shipped(), {});
-  try {
-    analysis::summarise(table, cf);
-    FAIL() << "a one-row cf file was paired with 1351 rows";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("short_cf.csv: 1 rows where the recording has 1351"),
-              std::string::npos)
-        << e.what();
-  }
+  expectRefusal([&] { analysis::summarise(table, cf); },
+                "short_cf.csv: 1 rows where the recording has 1351");
 }
 
 }  // namespace

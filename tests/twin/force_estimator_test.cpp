@@ -10,6 +10,7 @@
 #include <Eigen/LU>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -101,6 +102,19 @@ TEST(ForceEstimator, WithoutFrictionTheStaticsComeBack) {
     EXPECT_NEAR(e.jaw[1], jaws(1), 0.03) << raven::armName(arm);
     EXPECT_LT(e.tip_sd.maxCoeff(), 1e-9) << "nothing uncertain was given";
   }
+}
+
+TEST(ForceEstimator, TimesThatRunBackOrDoNotMatchTheRowsAreRefused) {
+  const auto profile = twin::CalibrationProfile::shipped();
+  const twin::ArmForceEstimator estimator(
+      Arm::Left, profile.mechanics[0], noUncertainty(),
+      raven::ArmKinematics::of(test_support::physicalProfile(), Arm::Left));
+  const auto rows =
+      heldRows(Arm::Left, profile.mechanics[0], test_support::physicalProfile().home,
+               Eigen::Vector3d::Zero(), Eigen::Vector2d::Zero(), 0.007, ArmJoints::Zero(), 3);
+  EXPECT_THROW(estimator.estimate({0.0, 0.002, 0.001}, rows), std::invalid_argument);
+  EXPECT_THROW(estimator.estimate({0.0, 0.001}, rows), std::invalid_argument);
+  EXPECT_EQ(estimator.estimate({0.0, 0.0, 0.0}, rows).size(), 3u);  // a clock standing still
 }
 
 TEST(ForceEstimator, FrictionAtRestWidensTheEstimateToCoverIt) {

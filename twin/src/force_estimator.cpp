@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "twin/gravity_compensation.hpp"
 
@@ -81,9 +83,13 @@ std::vector<MotorBalance> ArmForceEstimator::balances(
   std::vector<std::size_t> lo(n), hi(n);
   for (std::size_t k = 0; k < n; ++k) {
     lo[k] = k;
-    while (lo[k] > 0 && times[k] - times[lo[k]] < kSpeedWindow) --lo[k];
+    while (lo[k] > 0 && k - lo[k] < kWindowRows && times[k] - times[lo[k]] < kSpeedWindow) {
+      --lo[k];
+    }
     hi[k] = k;
-    while (hi[k] + 1 < n && times[hi[k]] - times[k] < kSpeedWindow) ++hi[k];
+    while (hi[k] + 1 < n && hi[k] - k < kWindowRows && times[hi[k]] - times[k] < kSpeedWindow) {
+      ++hi[k];
+    }
   }
   std::vector<ArmJoints> speed(n, ArmJoints::Zero());
   for (std::size_t k = 0; k < n; ++k) {
@@ -164,6 +170,17 @@ void ArmForceEstimator::addFriction(std::vector<MotorBalance>& rows) const {
 
 std::vector<ForceEstimate> ArmForceEstimator::estimate(
     const std::vector<double>& times, const std::vector<recording::ArmSignals>& rows) const {
+  if (times.size() != rows.size()) {
+    throw std::invalid_argument("force estimate: " + std::to_string(times.size()) + " times for " +
+                                std::to_string(rows.size()) + " rows");
+  }
+  for (std::size_t k = 1; k < times.size(); ++k) {
+    if (!(times[k] >= times[k - 1])) {
+      throw std::invalid_argument("row " + std::to_string(k + 1) + ": time " +
+                                  std::to_string(times[k]) + " s runs back from " +
+                                  std::to_string(times[k - 1]) + " s");
+    }
+  }
   std::vector<MotorBalance> motors = balances(times, rows);
   addFriction(motors);
   std::vector<ForceEstimate> out;

@@ -58,12 +58,15 @@ class ArmForceEstimator {
   ArmForceEstimator(Arm arm, const MotorMechanics& mechanics, const MotorMechanics& uncertainty,
                     const raven::ArmKinematics& kinematics, GripLever grip = {});
 
-  /// One estimate per row; `times` (s) rise and match `rows`.
+  /// One estimate per row; `times` (s) never fall (std::invalid_argument naming the row
+  /// otherwise) and match `rows`.
   std::vector<ForceEstimate> estimate(const std::vector<double>& times,
                                       const std::vector<recording::ArmSignals>& rows) const;
 
-  /// Rows closer than this on either side are averaged into a row's motor speed (s).
+  /// Rows closer than this on either side are averaged into a row's motor speed (s), at most
+  /// kWindowRows of them (a file whose clock stands still costs no more than one that runs).
   static constexpr double kSpeedWindow = 0.01;
+  static constexpr std::size_t kWindowRows = 100;
 
  private:
   /// The torque the amplifier applied (gearbox-output scale): the DAC counts where logged, else
