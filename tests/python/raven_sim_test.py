@@ -126,6 +126,8 @@ class ForcesFromPython(unittest.TestCase):
             raven_sim.estimate_forces("no_such_rs.csv")
         with self.assertRaisesRegex(ValueError, "no_such_profile.yaml"):
             raven_sim.estimate_forces(trial, calibration="no_such_profile.yaml")
+        with self.assertRaisesRegex(ValueError, "grip depth 0"):
+            raven_sim.estimate_forces(trial, grip_depth=0.0)
 
 
 class PegTransferEnvironment(unittest.TestCase):

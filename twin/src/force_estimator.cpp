@@ -46,6 +46,12 @@ ArmForceEstimator::ArmForceEstimator(Arm arm, const MotorMechanics& mechanics,
       grip_(grip),
       drive_(DriveTrain::raven2()),
       dac_(DacConversion::raven2(arm)) {
+  if (!std::isfinite(grip.depth) || grip.depth == 0.0 || !(grip.spread >= 0.0) ||
+      !std::isfinite(grip.spread)) {
+    throw std::invalid_argument("grip depth " + std::to_string(grip.depth) + " m, spread " +
+                                std::to_string(grip.spread) +
+                                " m: the depth is a lever (finite, not 0), the spread >= 0");
+  }
   to_joints_ = drive_.coupling(arm).transpose() * drive_.gearbox.cwiseInverse().asDiagonal();
 }
 

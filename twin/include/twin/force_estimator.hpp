@@ -19,7 +19,9 @@ namespace twin {
 /// Where along the jaws the gripped object sits: the lever its squeeze acts on, and the point the
 /// tool's force is taken at.
 struct GripLever {
-  double depth = 0.007;   ///< m from the jaw axis: the main job's grip on a ring's wall
+  /// m along the jaws from their axis (the tool frame's x; below 0, behind it on the wrist):
+  /// the main job's grip on a ring's wall by default
+  double depth = 0.007;
   double spread = 0.002;  ///< m either side of it the contact may lie (a uniform band)
 };
 
@@ -55,6 +57,7 @@ struct MotorBalance {
 class ArmForceEstimator {
  public:
   /// `uncertainty`: the calibration's standard deviation of each fitted value (0: exact).
+  /// Throws std::invalid_argument for a grip depth of 0 or not finite, or a spread below 0.
   ArmForceEstimator(Arm arm, const MotorMechanics& mechanics, const MotorMechanics& uncertainty,
                     const raven::ArmKinematics& kinematics, GripLever grip = {});
 
