@@ -50,19 +50,13 @@ int main(int argc, char** argv) {
   std::vector<std::string> only;
   using Section = void (*)(const bench::BenchSettings&, bench::Report&);
   const std::vector<std::pair<std::string, Section>> sections{
-      {"loop", bench::measureLoopFrequency},
-      {"ambf", bench::measureAmbfScenes},
-      {"controller", bench::measureController},
-      {"replay", bench::measureReplay},
-      {"ros", bench::measureRosEdge},
-      {"viewer", bench::measureViewer},
-      {"video", bench::measureVideo},
-      {"memory", bench::measureMemory},
-      {"micro", bench::measureMicro},
-      {"python", bench::measurePython},
-      {"cameras", bench::measureCameras},
-      {"snapshots", bench::measureSnapshots},
-      {"soak", bench::measureSoak},
+      {"loop", bench::measureLoopFrequency},    {"ambf", bench::measureAmbfScenes},
+      {"controller", bench::measureController}, {"replay", bench::measureReplay},
+      {"forces", bench::measureForces},         {"ros", bench::measureRosEdge},
+      {"viewer", bench::measureViewer},         {"video", bench::measureVideo},
+      {"memory", bench::measureMemory},         {"micro", bench::measureMicro},
+      {"python", bench::measurePython},         {"cameras", bench::measureCameras},
+      {"snapshots", bench::measureSnapshots},   {"soak", bench::measureSoak},
       {"training", bench::measureTraining}};
   std::vector<std::string> names;
   for (const auto& section : sections) names.push_back(section.first);

@@ -45,6 +45,8 @@ void measureCameras(const BenchSettings& settings, Report& report);
 void measureSnapshots(const BenchSettings& settings, Report& report);
 /// scripts/soak.sh's ten-minute run: RSS and step-time growth over a long session and batch.
 void measureSoak(const BenchSettings& settings, Report& report);
+/// raven_analyze forces: rows per second of the force estimate on a robot recording.
+void measureForces(const BenchSettings& settings, Report& report);
 /// Learning at full size: demonstrations, training and success of the state policy.
 void measureTraining(const BenchSettings& settings, Report& report);
 
