@@ -1,9 +1,6 @@
 #include "forces_command.hpp"
 
-#include <fmt/format.h>
-
 #include <cstdio>
-#include <cstdlib>
 
 #include "analysis/force_report.hpp"
 
@@ -28,15 +25,6 @@ void printSummary(const std::vector<ChannelSummary>& channels, bool with_truth) 
     }
     std::printf("\n");
   }
-}
-
-std::string drawForces(const ForcesArgs& args) {
-  const std::string truth = args.truth ? fmt::format(" '{}'", args.truth->string()) : "";
-  const std::string command = fmt::format("/usr/bin/python3 '{}' '{}'{}", RAVEN_FORCES_DRAW_SCRIPT,
-                                          args.out.string(), truth);
-  const int status = std::system(command.c_str());
-  return status == 0 ? ""
-                     : fmt::format("{} exited with status {}", RAVEN_FORCES_DRAW_SCRIPT, status);
 }
 
 }  // namespace
@@ -80,7 +68,7 @@ int runForces(const ForcesArgs& args) {
   writeForces(table, args.out / "forces.csv");
   printSummary(summarise(table, args.truth), args.truth.has_value());
   if (args.figures) {
-    if (const auto why = drawForces(args); !why.empty()) {
+    if (const auto why = drawForces(args.out, args.truth); !why.empty()) {
       std::fprintf(stderr, "raven_analyze forces: no figure: %s\n", why.c_str());
       return 1;
     }

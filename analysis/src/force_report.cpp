@@ -7,10 +7,11 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "analysis/metrics.hpp"
+#include "analysis/report.hpp"
 #include "raven/arm_kinematics.hpp"
 #include "raven/platform_profile.hpp"
 #include "recording/cf_recording.hpp"
-#include "recording/csv_text.hpp"
 
 namespace analysis {
 
@@ -21,13 +22,6 @@ constexpr std::array<const char*, 5> kChannels{"fx", "fy", "fz", "jaw1_normal", 
 constexpr double kTouching = 0.05;
 /// Jaws opened more than this (rad, jaw1 + jaw2) have their faces apart: 1 mm at their tips.
 constexpr double kJawsApart = 0.1;
-
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  const auto mid = v.begin() + static_cast<long>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 /// One arm's values of `e` in kChannels order, then their sd.
 std::array<double, 10> channels(const twin::ForceEstimate& e) {
@@ -48,15 +42,7 @@ ForceTable estimateForces(const std::filesystem::path& rs_path,
   const recording::RsRecording rs = recording::readRs(rs_path, recording::NonFiniteJoints::Keep);
   const raven::PlatformProfile platform = raven::builtinProfile("physical");
   std::vector<double> times;
-  for (std::size_t r = 0; r < rs.rows.size(); ++r) {
-    times.push_back(rs.time(r));
-    // The motor speeds come from the rows around each row in time.
-    if (r > 0 && times[r] < times[r - 1]) {
-      throw std::invalid_argument(fmt::format("{}: time {} s runs back from {} s",
-                                              recording::rowWhere(rs_path, r + 2), times[r],
-                                              times[r - 1]));
-    }
-  }
+  for (std::size_t r = 0; r < rs.rows.size(); ++r) times.push_back(rs.time(r));
   ForceTable table;
   table.names.push_back("time");
   for (const char* suffix : {"", "_sd"}) {
@@ -74,7 +60,12 @@ ForceTable estimateForces(const std::filesystem::path& rs_path,
     const twin::ArmForceEstimator estimator(arm, profile.mechanics[raven::slot(arm)],
                                             profile.uncertainty[raven::slot(arm)],
                                             raven::ArmKinematics::of(platform, arm), grip);
-    const auto estimates = estimator.estimate(times, signals);
+    std::vector<twin::ForceEstimate> estimates;
+    try {
+      estimates = estimator.estimate(times, signals);
+    } catch (const std::invalid_argument& e) {  // a clock that runs back: say in which file
+      throw std::invalid_argument(rs_path.string() + ": " + e.what());
+    }
     const std::size_t base = 1 + raven::slot(arm) * kChannels.size();
     const std::size_t opening = table.names.size() - 2 + raven::slot(arm);
     for (std::size_t r = 0; r < estimates.size(); ++r) {
@@ -98,6 +89,13 @@ ForceTable estimateForces(const std::filesystem::path& rs_path,
   return table;
 }
 
+std::string drawForces(const std::filesystem::path& dir,
+                       const std::optional<std::filesystem::path>& truth_cf) {
+  std::vector<std::filesystem::path> args{dir};
+  if (truth_cf) args.push_back(*truth_cf);
+  return runDrawScript(RAVEN_FORCES_DRAW_SCRIPT, args);
+}
+
 void writeForces(const ForceTable& table, const std::filesystem::path& csv) {
   std::ofstream out(csv);
   if (!out) throw std::runtime_error(csv.string() + ": cannot write");
@@ -113,6 +111,58 @@ void writeForces(const ForceTable& table, const std::filesystem::path& csv) {
   if (!out) throw std::runtime_error(csv.string() + ": write failed");
 }
 
+namespace {
+
+/// One channel's summary: `arm` is "left_" or "right_", `channel` one of kChannels.
+ChannelSummary summariseChannel(const ForceTable& table, const recording::CfRecording* cf,
+                                const std::string& arm, const std::string& channel) {
+  ChannelSummary s;
+  s.name = arm + channel;
+  const std::size_t value = table.column(s.name), sd = table.column(s.name + "_sd");
+  const std::size_t opening = table.column(arm + "opening");
+  // The truth's column, and what says it is touching: a jaw's own force, the tool's contacts.
+  const bool jaw = channel.starts_with("jaw");
+  const std::size_t truth_column = cf ? cf->column(s.name) : 0;
+  const std::size_t touch_column = cf ? cf->column(jaw ? s.name : arm + "contacts") : 0;
+  const double touch_above = jaw ? kTouching : 0.0;
+  std::vector<double> estimates, truths;
+  std::size_t within = 0;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
+    if (!std::isfinite(row[value]) || !std::isfinite(row[sd])) continue;
+    s.mean += row[value];
+    s.mean_sd += row[sd];
+    ++s.rows;
+    if (row[opening] > kJawsApart) {
+      s.apart_mean += row[value];
+      s.apart_sd += row[sd];
+      ++s.apart_rows;
+    }
+    if (!cf || !(cf->rows[r][touch_column] > touch_above)) continue;
+    const double truth = cf->rows[r][truth_column];
+    estimates.push_back(row[value]);
+    truths.push_back(truth);
+    if (std::abs(row[value] - truth) <= 2.0 * row[sd]) ++within;
+  }
+  if (s.rows) {
+    s.mean /= static_cast<double>(s.rows);
+    s.mean_sd /= static_cast<double>(s.rows);
+  }
+  if (s.apart_rows) {
+    s.apart_mean /= static_cast<double>(s.apart_rows);
+    s.apart_sd /= static_cast<double>(s.apart_rows);
+  }
+  s.truth_rows = truths.size();
+  if (!truths.empty()) {
+    s.truth_median = median(truths);
+    s.estimate_median = median(estimates);
+    s.within_2sd = static_cast<double>(within) / static_cast<double>(truths.size());
+  }
+  return s;
+}
+
+}  // namespace
+
 std::vector<ChannelSummary> summarise(const ForceTable& table,
                                       const std::optional<std::filesystem::path>& truth_cf) {
   std::optional<recording::CfRecording> cf;
@@ -126,49 +176,8 @@ std::vector<ChannelSummary> summarise(const ForceTable& table,
   }
   std::vector<ChannelSummary> out;
   for (const char* arm : {"left_", "right_"}) {
-    for (const char* c : kChannels) {
-      ChannelSummary s;
-      s.name = std::string(arm) + c;
-      const std::size_t value = table.column(s.name), sd = table.column(s.name + "_sd");
-      const std::size_t opening = table.column(std::string(arm) + "opening");
-      std::vector<double> estimates, truths;
-      std::size_t within = 0;
-      for (std::size_t r = 0; r < table.rows.size(); ++r) {
-        const auto& row = table.rows[r];
-        if (!std::isfinite(row[value]) || !std::isfinite(row[sd])) continue;
-        s.mean += row[value];
-        s.mean_sd += row[sd];
-        ++s.rows;
-        if (row[opening] > kJawsApart) {
-          s.apart_mean += row[value];
-          s.apart_sd += row[sd];
-          ++s.apart_rows;
-        }
-        if (!cf) continue;
-        const double truth = cf->rows[r][cf->column(s.name)];
-        const bool touching = std::string(c).starts_with("jaw")
-                                  ? truth > kTouching
-                                  : cf->rows[r][cf->column(std::string(arm) + "contacts")] > 0;
-        if (!touching) continue;
-        estimates.push_back(row[value]);
-        truths.push_back(truth);
-        if (std::abs(row[value] - truth) <= 2.0 * row[sd]) ++within;
-      }
-      if (s.rows) {
-        s.mean /= static_cast<double>(s.rows);
-        s.mean_sd /= static_cast<double>(s.rows);
-      }
-      if (s.apart_rows) {
-        s.apart_mean /= static_cast<double>(s.apart_rows);
-        s.apart_sd /= static_cast<double>(s.apart_rows);
-      }
-      s.truth_rows = truths.size();
-      if (!truths.empty()) {
-        s.truth_median = median(truths);
-        s.estimate_median = median(estimates);
-        s.within_2sd = static_cast<double>(within) / static_cast<double>(truths.size());
-      }
-      out.push_back(s);
+    for (const char* channel : kChannels) {
+      out.push_back(summariseChannel(table, cf ? &*cf : nullptr, arm, channel));
     }
   }
   return out;

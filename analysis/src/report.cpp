@@ -219,16 +219,23 @@ void writeReportData(const TrialSet& set, const ReportSettings& settings,
   writeIssues(set, dir);
 }
 
-std::string drawFigures(const std::filesystem::path& dir) {
-  if (dir.string().find('\'') != std::string::npos) {
-    return "the report directory's name holds a quote: " + dir.string();
+std::string runDrawScript(const std::filesystem::path& script,
+                          const std::vector<std::filesystem::path>& args) {
+  std::string command = "/usr/bin/python3 '" + script.string() + "'";
+  for (const auto& arg : args) {
+    if (arg.string().find('\'') != std::string::npos) {
+      return "a path given to the drawing script holds a quote: " + arg.string();
+    }
+    command += " '" + arg.string() + "'";
   }
-  const std::string command =
-      fmt::format("/usr/bin/python3 '{}' '{}'", RAVEN_ANALYSIS_DRAW_SCRIPT, dir.string());
   const int status = std::system(command.c_str());
   if (status == 0) return {};
-  return fmt::format("{} exited with status {} (is python3-matplotlib installed?)",
-                     RAVEN_ANALYSIS_DRAW_SCRIPT, status);
+  return fmt::format("{} exited with status {} (is python3-matplotlib installed?)", script.string(),
+                     status);
+}
+
+std::string drawFigures(const std::filesystem::path& dir) {
+  return runDrawScript(RAVEN_ANALYSIS_DRAW_SCRIPT, {dir});
 }
 
 }  // namespace analysis

@@ -137,9 +137,9 @@ TEST(RavenAnalyzeForces, ARecordingWhoseTimeRunsBackIsRefusedNamingTheRow) {
   };
   const auto back =
       write("back_rs.csv", [&](std::size_t r) { return r == 700 ? 0.0 : rs.rows[r][time]; });
-  // Data row 700 (from 0) is the file's row 702: the header is row 1.
+  // Row 700 from 0 is data row 701, as the disparity analysis counts them.
   expectRefusal([&] { analysis::estimateForces(back, twin::CalibrationProfile::shipped(), {}); },
-                "back_rs.csv: row 702: time 0 s runs back");
+                "back_rs.csv: data row 701: time 0.000000 s comes before the row before it");
   const auto still = write("still_rs.csv", [](std::size_t) { return 0.0; });
   const auto table = analysis::estimateForces(still, twin::CalibrationProfile::shipped(), {});
   EXPECT_EQ(table.rows.size(), rs.rows.size());

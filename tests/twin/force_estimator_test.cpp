@@ -30,14 +30,15 @@ using raven::ArmJoints;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The position Jacobian in the shoulder, elbow and insertion of the point `depth` along the
-/// jaws from the tool point (the tool frame's x), from the kinematics' own twist (not the
-/// estimator's finite differences).
+/// jaws from the tool point (the tool frame's x): central differences of the kinematics' pose
+/// of that point (the estimator composes the tool's twist instead).
 Eigen::Matrix3d tipJacobian(const raven::ArmKinematics& k, const ArmJoints& q, double depth) {
-  const Eigen::Vector3d lever = k.toolPose(q).linear().col(0) * depth;
+  constexpr double kStep = 1e-6;
+  const Eigen::Vector3d grip(depth, 0.0, 0.0);
   Eigen::Matrix3d j;
   for (int c = 0; c < 3; ++c) {
-    const auto twist = k.toolTwist(q, ArmJoints::Unit(c));
-    j.col(c) = twist.head<3>() + twist.tail<3>().cross(lever);
+    const ArmJoints step = kStep * ArmJoints::Unit(c);
+    j.col(c) = (k.toolPose(q + step) * grip - k.toolPose(q - step) * grip) / (2.0 * kStep);
   }
   return j;
 }

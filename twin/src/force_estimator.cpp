@@ -69,15 +69,12 @@ ArmJoints ArmForceEstimator::appliedTorque(const recording::ArmSignals& row) con
 }
 
 Eigen::Matrix3d ArmForceEstimator::tipJacobian(const ArmJoints& joints) const {
-  constexpr double kStep = 1e-6;
-  const Eigen::Vector3d grip(grip_.depth, 0.0, 0.0);  // the tool frame's x runs along the jaws
+  // The grip point, `depth` along the tool frame's x (the jaws), moves with the tool's twist.
+  const Eigen::Vector3d lever = kinematics_.toolPose(joints).linear().col(0) * grip_.depth;
   Eigen::Matrix3d jacobian;
   for (int j = 0; j <= raven::kInsertion; ++j) {
-    ArmJoints ahead = joints, behind = joints;
-    ahead(j) += kStep;
-    behind(j) -= kStep;
-    jacobian.col(j) =
-        (kinematics_.toolPose(ahead) * grip - kinematics_.toolPose(behind) * grip) / (2.0 * kStep);
+    const auto twist = kinematics_.toolTwist(joints, ArmJoints::Unit(j));
+    jacobian.col(j) = twist.head<3>() + twist.tail<3>().cross(lever);
   }
   return jacobian;
 }
@@ -182,9 +179,10 @@ std::vector<ForceEstimate> ArmForceEstimator::estimate(
   }
   for (std::size_t k = 1; k < times.size(); ++k) {
     if (!(times[k] >= times[k - 1])) {
-      throw std::invalid_argument("row " + std::to_string(k + 1) + ": time " +
-                                  std::to_string(times[k]) + " s runs back from " +
-                                  std::to_string(times[k - 1]) + " s");
+      throw std::invalid_argument(
+          "data row " + std::to_string(k + 1) + ": time " + std::to_string(times[k]) +
+          " s comes before the row before it (" + std::to_string(times[k - 1]) +
+          " s): the motor speeds come from the rows around each row in time");
     }
   }
   std::vector<MotorBalance> motors = balances(times, rows);

@@ -29,6 +29,11 @@ ForceTable estimateForces(const std::filesystem::path& rs, const twin::Calibrati
 
 void writeForces(const ForceTable& table, const std::filesystem::path& csv);
 
+/// Draws `dir`/forces.png from `dir`/forces.csv, with the cf file's forces beside it when given:
+/// runDrawScript's answer (empty on success).
+std::string drawForces(const std::filesystem::path& dir,
+                       const std::optional<std::filesystem::path>& truth_cf);
+
 /// Per channel: over the rows, the mean estimate and the mean of its sd; the same over the rows
 /// where the arm's jaws are apart (faces more than 1 mm apart at their tips: not on each
 /// other); with a cf file, over the rows where the channel's truth is not zero (a held ring, a

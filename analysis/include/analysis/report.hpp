@@ -29,8 +29,13 @@ void writeReportData(const TrialSet& set, const ReportSettings& settings,
 std::size_t writePictures(const std::vector<std::filesystem::path>& inputs,
                           const std::filesystem::path& dir);
 
-/// Runs the drawing script on `dir` (PNG figures and index.html). Returns an empty string on
-/// success, otherwise why the figures are missing (the data files stay).
+/// Runs a drawing script (`/usr/bin/python3 script args...`; a path holding a quote is refused,
+/// not passed to the shell). Returns an empty string on success, otherwise why the figures are
+/// missing (the data files stay).
+std::string runDrawScript(const std::filesystem::path& script,
+                          const std::vector<std::filesystem::path>& args);
+
+/// Runs the drawing script on `dir` (PNG figures and index.html); runDrawScript's answer.
 std::string drawFigures(const std::filesystem::path& dir);
 
 }  // namespace analysis

@@ -61,8 +61,8 @@ class ArmForceEstimator {
   ArmForceEstimator(Arm arm, const MotorMechanics& mechanics, const MotorMechanics& uncertainty,
                     const raven::ArmKinematics& kinematics, GripLever grip = {});
 
-  /// One estimate per row; `times` (s) never fall (std::invalid_argument naming the row
-  /// otherwise) and match `rows`.
+  /// One estimate per row; `times` (s) never fall (std::invalid_argument naming the data row,
+  /// from 1, otherwise) and match `rows`.
   std::vector<ForceEstimate> estimate(const std::vector<double>& times,
                                       const std::vector<recording::ArmSignals>& rows) const;
 
