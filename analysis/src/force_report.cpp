@@ -22,6 +22,8 @@ constexpr std::array<const char*, 5> kChannels{"fx", "fy", "fz", "jaw1_normal", 
 constexpr double kTouching = 0.05;
 /// Jaws opened more than this (rad, jaw1 + jaw2) have their faces apart: 1 mm at their tips.
 constexpr double kJawsApart = 0.1;
+/// An estimate this close to the truth (N) counts as within 25 % of a smaller one (issue 65).
+constexpr double kCloseEnough = 0.15;
 
 /// One arm's values of `e` in kChannels order, then their sd.
 std::array<double, 10> channels(const twin::ForceEstimate& e) {
@@ -113,36 +115,43 @@ void writeForces(const ForceTable& table, const std::filesystem::path& csv) {
 
 namespace {
 
-/// One channel's summary: `arm` is "left_" or "right_", `channel` one of kChannels.
-ChannelSummary summariseChannel(const ForceTable& table, const recording::CfRecording* cf,
+/// One channel's summary over `runs` (their cf files read: `cfs`, null where a run has none):
+/// `arm` is "left_" or "right_", `channel` one of kChannels.
+ChannelSummary summariseChannel(const std::vector<ForceRun>& runs,
+                                const std::vector<std::optional<recording::CfRecording>>& cfs,
                                 const std::string& arm, const std::string& channel) {
   ChannelSummary s;
   s.name = arm + channel;
-  const std::size_t value = table.column(s.name), sd = table.column(s.name + "_sd");
-  const std::size_t opening = table.column(arm + "opening");
-  // The truth's column, and what says it is touching: a jaw's own force, the tool's contacts.
+  // What says the truth touches: a jaw's own force, the tool's contacts.
   const bool jaw = channel.starts_with("jaw");
-  const std::size_t truth_column = cf ? cf->column(s.name) : 0;
-  const std::size_t touch_column = cf ? cf->column(jaw ? s.name : arm + "contacts") : 0;
   const double touch_above = jaw ? kTouching : 0.0;
   std::vector<double> estimates, truths;
-  std::size_t within = 0;
-  for (std::size_t r = 0; r < table.rows.size(); ++r) {
-    const auto& row = table.rows[r];
-    if (!std::isfinite(row[value]) || !std::isfinite(row[sd])) continue;
-    s.mean += row[value];
-    s.mean_sd += row[sd];
-    ++s.rows;
-    if (row[opening] > kJawsApart) {
-      s.apart_mean += row[value];
-      s.apart_sd += row[sd];
-      ++s.apart_rows;
+  std::size_t within_2sd = 0, within_25 = 0;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const ForceTable& table = runs[k].table;
+    const auto& cf = cfs[k];
+    const std::size_t value = table.column(s.name), sd = table.column(s.name + "_sd");
+    const std::size_t opening = table.column(arm + "opening");
+    const std::size_t truth_column = cf ? cf->column(s.name) : 0;
+    const std::size_t touch_column = cf ? cf->column(jaw ? s.name : arm + "contacts") : 0;
+    for (std::size_t r = 0; r < table.rows.size(); ++r) {
+      const auto& row = table.rows[r];
+      if (!std::isfinite(row[value]) || !std::isfinite(row[sd])) continue;
+      s.mean += row[value];
+      s.mean_sd += row[sd];
+      ++s.rows;
+      if (row[opening] > kJawsApart) {
+        s.apart_mean += row[value];
+        s.apart_sd += row[sd];
+        ++s.apart_rows;
+      }
+      if (!cf || !(cf->rows[r][touch_column] > touch_above)) continue;
+      const double truth = cf->rows[r][truth_column], error = std::abs(row[value] - truth);
+      estimates.push_back(row[value]);
+      truths.push_back(truth);
+      if (error <= 2.0 * row[sd]) ++within_2sd;
+      if (error <= std::max(0.25 * std::abs(truth), kCloseEnough)) ++within_25;
     }
-    if (!cf || !(cf->rows[r][touch_column] > touch_above)) continue;
-    const double truth = cf->rows[r][truth_column];
-    estimates.push_back(row[value]);
-    truths.push_back(truth);
-    if (std::abs(row[value] - truth) <= 2.0 * row[sd]) ++within;
   }
   if (s.rows) {
     s.mean /= static_cast<double>(s.rows);
@@ -154,31 +163,32 @@ ChannelSummary summariseChannel(const ForceTable& table, const recording::CfReco
   }
   s.truth_rows = truths.size();
   if (!truths.empty()) {
+    const auto n = static_cast<double>(truths.size());
     s.truth_median = median(truths);
     s.estimate_median = median(estimates);
-    s.within_2sd = static_cast<double>(within) / static_cast<double>(truths.size());
+    s.within_2sd = static_cast<double>(within_2sd) / n;
+    s.within_25_percent = static_cast<double>(within_25) / n;
   }
   return s;
 }
 
 }  // namespace
 
-std::vector<ChannelSummary> summarise(const ForceTable& table,
-                                      const std::optional<std::filesystem::path>& truth_cf) {
-  std::optional<recording::CfRecording> cf;
-  if (truth_cf) {
-    cf = recording::readCf(*truth_cf);
-    if (cf->rows.size() != table.rows.size()) {
+std::vector<ChannelSummary> summarise(const std::vector<ForceRun>& runs) {
+  std::vector<std::optional<recording::CfRecording>> cfs;
+  for (const ForceRun& run : runs) {
+    cfs.emplace_back();
+    if (!run.truth_cf) continue;
+    cfs.back() = recording::readCf(*run.truth_cf);
+    if (cfs.back()->rows.size() != run.table.rows.size()) {
       throw std::invalid_argument(fmt::format(
           "{}: {} rows where the recording has {}: a cf file pairs with its rs file row by row",
-          truth_cf->string(), cf->rows.size(), table.rows.size()));
+          run.truth_cf->string(), cfs.back()->rows.size(), run.table.rows.size()));
     }
   }
   std::vector<ChannelSummary> out;
   for (const char* arm : {"left_", "right_"}) {
-    for (const char* channel : kChannels) {
-      out.push_back(summariseChannel(table, cf ? &*cf : nullptr, arm, channel));
-    }
+    for (const char* channel : kChannels) out.push_back(summariseChannel(runs, cfs, arm, channel));
   }
   return out;
 }

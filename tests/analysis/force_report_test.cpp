@@ -99,7 +99,7 @@ TEST(RavenAnalyzeForces, InTheRobotsFreeMotionEveryChannelIsWithinTwoSdOfZero) {
   for (const char* name : {"2arm_physical_1.csv", "2arm_physical_2.csv", "2arm_physical_3.csv"}) {
     const auto table = analysis::estimateForces(trial.parent_path() / name,
                                                 twin::CalibrationProfile::shipped(), {});
-    for (const auto& c : analysis::summarise(table, std::nullopt)) {
+    for (const auto& c : analysis::summarise({{table, std::nullopt}})) {
       EXPECT_GT(c.apart_rows, 900u) << name << " " << c.name;
       EXPECT_LE(std::abs(c.apart_mean), 2.0 * c.apart_sd) << name << " " << c.name;
     }
@@ -145,6 +145,43 @@ TEST(RavenAnalyzeForces, ARecordingWhoseTimeRunsBackIsRefusedNamingTheRow) {
   EXPECT_EQ(table.rows.size(), rs.rows.size());
 }
 
+TEST(RavenAnalyzeForces, TheSummaryPoolsRunsAndCountsEstimatesWithin25PercentOfTheirTruth) {
+  // A cf file whose left jaw 1 presses 1.2 times the estimate's size: an estimate above zero is
+  // 17 % under it (within 25 %), one below zero is 2.2 times its size off (within only under the
+  // 0.15 N floor); two runs of it pool row by row.
+  const auto trial = physicalTrial();
+  if (trial.empty()) GTEST_SKIP() << "../shared/data is absent: the robot's recordings are needed";
+  const auto table = analysis::estimateForces(trial, twin::CalibrationProfile::shipped(), {});
+  const std::size_t jaw = table.column("left_jaw1_normal");
+  test_support::TempDir dir;
+  const auto cf = dir.path() / "scaled_cf.csv";
+  std::size_t touching = 0, within = 0;
+  {
+    recording::CfWriter writer(cf);
+    for (const auto& row : table.rows) {
+      bridge::GrasperForces left;
+      const double truth = std::isfinite(row[jaw]) ? 1.2 * std::abs(row[jaw]) : 0.0;
+      left.jaws[0].normal = Eigen::Vector3d(truth, 0.0, 0.0);
+      writer.write(row[0], {left, std::nullopt});
+      if (truth > 0.05) {
+        ++touching;
+        within += row[jaw] > 0.0 || 2.2 * std::abs(row[jaw]) <= 0.15;
+      }
+    }
+  }
+  const auto one = analysis::summarise({{table, cf}});
+  const auto two = analysis::summarise({{table, cf}, {table, cf}});
+  ASSERT_EQ(one[3].name, "left_jaw1_normal");
+  ASSERT_GT(touching, 100u);
+  EXPECT_EQ(one[3].truth_rows, touching);
+  EXPECT_DOUBLE_EQ(*one[3].within_25_percent,
+                   static_cast<double>(within) / static_cast<double>(touching));
+  EXPECT_EQ(two[3].truth_rows, 2 * touching);
+  EXPECT_EQ(two[3].rows, 2 * one[3].rows);
+  EXPECT_DOUBLE_EQ(*two[3].within_25_percent, *one[3].within_25_percent);
+  EXPECT_NEAR(two[3].mean, one[3].mean, 1e-12);
+}
+
 TEST(RavenAnalyzeForces, ATruthFileOfAnotherRunIsRefusedNamingIt) {
   const auto trial = physicalTrial();
   if (trial.empty()) GTEST_SKIP() << "../shared/data is absent: the robot's recordings are needed";
@@ -155,8 +192,11 @@ TEST(RavenAnalyzeForces, ATruthFileOfAnotherRunIsRefusedNamingIt) {
     writer.write(0.0, {std::nullopt, std::nullopt});
   }
   const auto table = analysis::estimateForces(trial, twin::CalibrationProfile::shipped(), {});
-  expectRefusal([&] { analysis::summarise(table, cf); },
-                "short_cf.csv: 1 rows where the recording has 1351");
+  expectRefusal(
+      [&] {
+        analysis::summarise({{table, cf}});
+      },
+      "short_cf.csv: 1 rows where the recording has 1351");
 }
 
 }  // namespace

@@ -34,20 +34,27 @@ void writeForces(const ForceTable& table, const std::filesystem::path& csv);
 std::string drawForces(const std::filesystem::path& dir,
                        const std::optional<std::filesystem::path>& truth_cf);
 
-/// Per channel: over the rows, the mean estimate and the mean of its sd; the same over the rows
-/// where the arm's jaws are apart (faces more than 1 mm apart at their tips: not on each
-/// other); with a cf file, over the rows where the channel's truth is not zero (a held ring, a
-/// pressed tool), the median estimate and truth and the share of rows within 2 sd of it.
+/// One recording's estimates, with the twin's cf file of the same run when there is one.
+struct ForceRun {
+  ForceTable table;
+  std::optional<std::filesystem::path> truth_cf;
+};
+
+/// Per channel, over every run's rows: the mean estimate and the mean of its sd; the same over
+/// the rows where the arm's jaws are apart (faces more than 1 mm apart at their tips: not on
+/// each other); over the rows where a run's cf file says the channel touches (a jaw's force
+/// above 0.05 N, a tool with contacts), the median estimate and truth, the share of rows within
+/// 2 sd of the truth, and the share within 25 % of it or 0.15 N, whichever is larger.
 struct ChannelSummary {
   std::string name;
   double mean = 0.0, mean_sd = 0.0;
   std::size_t rows = 0;
   double apart_mean = 0.0, apart_sd = 0.0;
   std::size_t apart_rows = 0;
-  std::optional<double> truth_median, estimate_median, within_2sd;
+  std::optional<double> truth_median, estimate_median, within_2sd, within_25_percent;
   std::size_t truth_rows = 0;
 };
-std::vector<ChannelSummary> summarise(const ForceTable& table,
-                                      const std::optional<std::filesystem::path>& truth_cf);
+/// Throws std::invalid_argument naming a cf file whose rows do not pair with its run's.
+std::vector<ChannelSummary> summarise(const std::vector<ForceRun>& runs);
 
 }  // namespace analysis
