@@ -156,8 +156,9 @@ TEST(CoulombContact, APinchHoldsWhenSqueezedAndLetsGoWhenNot) {
 }
 
 /// A 100 g paddle 20 cm long, hinged about y at x = 0 to a static anchor and held level by its
-/// joint's position controller, with the cube resting on it `x` from the hinge.
-std::string cubeOnAPaddle(double x) {
+/// joint's position controller (or by nothing of its own), with the cube resting on it `x` from
+/// the hinge.
+std::string cubeOnAPaddle(double x, bool position_controlled = true) {
   std::ostringstream s;
   s << "bodies: [BODY anchor, BODY paddle]\njoints: [JOINT hinge]\nsoft bodies: [BODY cube]\n"
     << "ignore inter-collision: true\n"
@@ -170,9 +171,31 @@ std::string cubeOnAPaddle(double x) {
     << "JOINT hinge:\n  parent: BODY anchor\n  child: BODY paddle\n"
     << "  parent pivot: {x: 0, y: 0, z: 0}\n  child pivot: {x: -0.1, y: 0, z: 0}\n"
     << "  parent axis: {x: 0, y: 1, z: 0}\n  child axis: {x: 0, y: 1, z: 0}\n  type: revolute\n"
-    << "  controller output type: POSITION\n  max motor impulse: 0.05\n"
+    << (position_controlled ? "  controller output type: POSITION\n  max motor impulse: 0.05\n"
+                            : "")
     << softCube(x, 0.005 + 0.5 * kCubeSide + 0.001, 0.6);
   return s.str();
+}
+
+/// The paddle's hinge effort and the cube's centre x, each averaged over `steps` more steps.
+struct PaddleLoad {
+  double effort = 0.0;  ///< N m
+  double cube_x = 0.0;  ///< m
+};
+PaddleLoad meanLoad(ambf_like::World& world, int steps) {
+  PaddleLoad mean;
+  for (int i = 0; i < steps; ++i) {
+    world.step();
+    mean.effort += world.joint("hinge").effort() / steps;
+    mean.cube_x += world.softBody("cube").centerOfMass().x() / steps;
+  }
+  return mean;
+}
+
+/// What holds the level paddle and the cube (its centre `cube_x` from the hinge) at rest about
+/// the hinge: the paddle's weight at L/2 and the cube's at its centre (N m, about y).
+double holdingMoment(double cube_x) {
+  return -(0.1 * kGravity * 0.1 + kCubeMass * kGravity * cube_x);
 }
 
 TEST(CoulombContact, ACubeOnAnArticulatedPaddleLoadsItsJointWithItsWeightsMoment) {
@@ -194,22 +217,46 @@ TEST(CoulombContact, ACubeOnAnArticulatedPaddleLoadsItsJointWithItsWeightsMoment
     auto& hinge = world.joint("hinge");
     hinge.commandPosition(0.0);
     world.step(500);
-    double effort = 0.0;
-    double cube_x = 0.0;
-    const int steps = 200;
-    for (int i = 0; i < steps; ++i) {
-      world.step();
-      effort += hinge.effort() / steps;
-      cube_x += world.softBody("cube").centerOfMass().x() / steps;
-    }
-    const double cube_moment = kCubeMass * kGravity * cube_x;
-    const double expected = -(0.1 * kGravity * 0.1 + cube_moment);
-    std::cout << (reduced ? "reduced" : "maximal") << ": joint " << effort << " N m, expected "
+    const PaddleLoad load = meanLoad(world, 200);
+    const double cube_moment = kCubeMass * kGravity * load.cube_x;
+    const double expected = holdingMoment(load.cube_x);
+    std::cout << (reduced ? "reduced" : "maximal") << ": joint " << load.effort << " N m, expected "
               << expected << " (the cube's share " << cube_moment << ")\n";
-    EXPECT_NEAR(cube_x, 0.15, 0.005) << "the cube slid off its place";
-    EXPECT_NEAR(effort, expected, 0.05 * cube_moment) << (reduced ? "reduced" : "maximal");
+    EXPECT_NEAR(load.cube_x, 0.15, 0.005) << "the cube slid off its place";
+    EXPECT_NEAR(load.effort, expected, 0.05 * cube_moment) << (reduced ? "reduced" : "maximal");
     EXPECT_TRUE(world.softBody("cube").isFinite());
   }
+}
+
+TEST(CoulombContact, AGearedPaddleUnderACubeIsHeldByItsMotorsFrictionWithoutCreeping) {
+  // The paddle's hinge is turned by a geared motor (ratio 10) that applies no torque, and whose
+  // Coulomb friction (0.03 N m, 0.3 N m at the joint) is more than the weights' moment (about
+  // 0.13 N m): static friction holds it where it is, with just that moment. The cube's contacts
+  // act after the step's positions are integrated, so the link starts each step with a kick they
+  // gave it; friction resists how the motor turns, not that kick (it would push the paddle up).
+  test_support::TempDir dir;
+  dir.write("cube.obj", subdividedCubeObj(4));
+  auto sim = test_support::simulate({dir.write("scene.yaml", cubeOnAPaddle(0.15, false))},
+                                    test_support::noSoftBodySleep);
+  auto& world = *sim->world;
+  ASSERT_EQ(world.articulationCount(), 1u);
+  ambf_like::TransmissionSpec gear;
+  gear.joints = {"hinge"};
+  gear.coupling = Eigen::MatrixXd::Constant(1, 1, 10.0);
+  gear.rotor_inertia = Eigen::VectorXd::Constant(1, 2e-4);
+  gear.viscous = Eigen::VectorXd::Zero(1);
+  auto& motor = world.addTransmission(gear);
+  motor.drive(Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 0.03));
+  auto& hinge = world.joint("hinge");
+  world.step(500);
+  const double settled = hinge.position();
+  const PaddleLoad load = meanLoad(world, 1000);
+  const double expected = holdingMoment(load.cube_x);
+  std::cout << "held by friction: joint " << load.effort << " N m, expected " << expected
+            << "; moved " << hinge.position() - settled << " rad in 1 s\n";
+  EXPECT_NEAR(hinge.position(), settled, 1e-6) << "the paddle crept";
+  EXPECT_NEAR(load.effort, expected, 0.05 * kCubeMass * kGravity * load.cube_x);
+  EXPECT_TRUE(world.softBody("cube").isFinite());
 }
 
 }  // namespace

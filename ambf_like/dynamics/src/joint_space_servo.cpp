@@ -116,8 +116,9 @@ void JointSpaceServo::request(int dof, const JointActuation& actuation) {
 }
 
 const Eigen::VectorXd& JointSpaceServo::torques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                                                const Eigen::Ref<const Eigen::VectorXd>& position,
                                                 double dt) {
-  if (transmission_) return reflectedTorques(velocity, dt);
+  if (transmission_) return reflectedTorques(velocity, position, dt);
   // What the motors must add to where the joints coast: velocity + dt (a + M^-1 effort).
   velocity_change_.noalias() = motor_velocity_ - velocity - dt * free_acceleration_;
   velocity_change_.noalias() -= dt * inverse_inertia_ * effort_;
@@ -166,9 +167,18 @@ void JointSpaceServo::boundMotors(double dt) {
 }
 
 const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
-    const Eigen::Ref<const Eigen::VectorXd>& velocity, double dt) {
+    const Eigen::Ref<const Eigen::VectorXd>& velocity,
+    const Eigen::Ref<const Eigen::VectorXd>& position, double dt) {
   const Transmission& t = *transmission_;
-  const Eigen::VectorXd effort = effort_ + t.coupling.transpose() * t.torque - t.damping * velocity;
+  // The speed the joints moved at over the last step, as the encoders saw it. A soft body's
+  // contacts act after the positions are integrated: what they put on the links' speed then
+  // is a load (in `constrained`), not a motion, and a light jaw pressed by a ring starts the
+  // step with a speed it never moves at. The rotors' friction, viscous and Coulomb, resists how
+  // they turn, not the kick a contact gave their links.
+  const Eigen::VectorXd moved = last_position_ ? Eigen::VectorXd((position - *last_position_) / dt)
+                                               : Eigen::VectorXd(velocity);
+  last_position_ = position;
+  const Eigen::VectorXd effort = effort_ + t.coupling.transpose() * t.torque - t.damping * moved;
   // What contacts and limits put on the joints last step (they act on the links alone, after
   // the free motion): a load the rotors feel too, so that pressed on a surface the motors' whole
   // torque comes to rest against it, and Bullet, which applies it again, is not given it twice.
@@ -194,7 +204,7 @@ const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
   Eigen::VectorXd change = coasting;
   Eigen::VectorXd impulse = Eigen::VectorXd::Zero(count);
   if (count > 0) {
-    impulse = boundedImpulses(r.mass, r.factor, target - r.rows * (velocity + coasting), bound);
+    impulse = boundedImpulses(r.mass, r.factor, target - r.rows * (moved + coasting), bound);
     change.noalias() += r.response * impulse;
   }
   torque_ = inertia_ * (change / dt - free_acceleration_) - constrained;

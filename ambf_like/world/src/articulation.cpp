@@ -234,6 +234,7 @@ Articulation::Articulation(const ModelSpec& model, const JointTree& tree,
   unit_force_.assign(6 + dofs, 0.0);  // the base's six first
   acceleration_.assign(6 + dofs, 0.0);
   inverse_inertia_.resize(multibody_->getNumDofs(), multibody_->getNumDofs());
+  position_ = Eigen::VectorXd::Zero(multibody_->getNumDofs());
   multibody_->setLinearDamping(0.0);
   multibody_->setAngularDamping(0.0);
   multibody_->setHasSelfCollision(!model.ignore_inter_collision);
@@ -357,12 +358,20 @@ Eigen::Map<const Eigen::VectorXd> Articulation::jointVelocities() const {
   return {velocities, multibody_->getNumDofs()};
 }
 
+const Eigen::VectorXd& Articulation::jointPositions() {
+  for (int i = 0; i < multibody_->getNumLinks(); ++i) {
+    const auto& link = multibody_->getLink(i);
+    if (link.m_dofCount == 1) position_(link.m_dofOffset) = multibody_->getJointPos(i);
+  }
+  return position_;
+}
+
 void Articulation::afterFreeMotion() {
   servo_.observeFreeMotion(jointVelocities());
 }
 
 void Articulation::beforeStep(double dt) {
-  const auto& torque = servo_.torques(jointVelocities(), dt);
+  const auto& torque = servo_.torques(jointVelocities(), jointPositions(), dt);
   for (int i = 0; i < multibody_->getNumLinks(); ++i) {
     const auto& link = multibody_->getLink(i);
     if (link.m_dofCount == 1) multibody_->addJointTorque(i, torque(link.m_dofOffset));

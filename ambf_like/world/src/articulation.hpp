@@ -101,6 +101,8 @@ class Articulation {
   void refreshInverseInertia();
   void applyDampingAndOwnGravity();
   Eigen::Map<const Eigen::VectorXd> jointVelocities() const;
+  /// The joints' coordinates (Bullet's, from the load pose), in degree-of-freedom order.
+  const Eigen::VectorXd& jointPositions();
 
   btMultiBodyDynamicsWorld& world_;
   double step_size_;
@@ -116,6 +118,7 @@ class Articulation {
   std::vector<btVector3> velocity_;
   std::vector<btScalar> unit_force_;
   std::vector<btScalar> acceleration_;
+  Eigen::VectorXd position_;  ///< per degree of freedom (jointPositions)
   btAlignedObjectArray<btScalar> scratch_scalars_;
   btAlignedObjectArray<btVector3> scratch_vectors_;
   Eigen::MatrixXd inverse_inertia_;

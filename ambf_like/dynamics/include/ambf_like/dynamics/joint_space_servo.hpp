@@ -41,8 +41,12 @@ class JointSpaceServo {
   void setRotors(const Eigen::VectorXd& inertia, const Eigen::VectorXd& viscous);
   /// The transmission's torques and Coulomb friction for the coming steps.
   void driveTransmission(const Eigen::VectorXd& torque, const Eigen::VectorXd& coulomb);
-  /// The joints were put somewhere (Joint::place): their last free motion says nothing now.
-  void forgetPrediction() { free_velocity_.reset(); }
+  /// The joints were put somewhere (Joint::place): their last free motion and their last
+  /// coordinates say nothing now.
+  void forgetPrediction() {
+    free_velocity_.reset();
+    last_position_.reset();
+  }
   /// What holds the links still against gravity (refreshed with the inverse inertia).
   void setLinkWeight(const Eigen::VectorXd& weight) { link_weight_ = weight; }
   const Eigen::VectorXd& linkWeight() const { return link_weight_; }
@@ -53,8 +57,9 @@ class JointSpaceServo {
   void setInverseInertia(const Eigen::MatrixXd& inverse_inertia);
   /// Records one joint's request for the coming step.
   void request(int dof, const JointActuation& actuation);
-  /// The torques for the coming step, given the joints' velocities now.
-  const Eigen::VectorXd& torques(const Eigen::Ref<const Eigen::VectorXd>& velocity, double dt);
+  /// The torques for the coming step, given the joints' velocities and coordinates now.
+  const Eigen::VectorXd& torques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                                 const Eigen::Ref<const Eigen::VectorXd>& position, double dt);
   /// The joints' velocities once the step's free motion has been applied.
   void observeFreeMotion(const Eigen::Ref<const Eigen::VectorXd>& velocity);
   /// Torque given to `dof` for the last step (motor plus effort; with a transmission, its
@@ -68,6 +73,7 @@ class JointSpaceServo {
   /// dv = h (tau + f - D v), within the motors' and friction's bounded rows; Bullet, which knows
   /// only M, gets the torque that makes it move so.
   const Eigen::VectorXd& reflectedTorques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
+                                          const Eigen::Ref<const Eigen::VectorXd>& position,
                                           double dt);
   void refreshReflectedInertia();
   /// Picks this step's rows (motors on, motors with friction) and, when they or the inertia
@@ -95,6 +101,8 @@ class JointSpaceServo {
   /// With a transmission: the joints' speeds after the last step's free motion, before
   /// contacts and limits acted.
   std::optional<Eigen::VectorXd> free_velocity_;
+  /// With a transmission: the joints' coordinates at the last step's start.
+  std::optional<Eigen::VectorXd> last_position_;
   Eigen::VectorXd link_weight_;  ///< with a transmission: see setLinkWeight
   /// With a transmission: the bounded rows of the last step and what they cost to set up, kept
   /// while the rows and the inertia stay the same.
