@@ -156,34 +156,38 @@ TEST(ForceEstimator, FrictionAtRestWidensTheEstimateToCoverIt) {
 
 TEST(ForceEstimator, ASlidingMotorsFrictionIsAtItsBandsEdge) {
   // Motors turning steadily (5 encoder counts per ms) rub at the edge of their band, against the
-  // motion: the estimate takes it there and comes back to the force.
+  // motion, and drag by their viscous friction: the estimate takes both and comes back to the
+  // force. Logged every ms (the robot) or every 50 ms (a twin's batch recording, where a row's
+  // window holds no other row and its speed is the one the row logged).
   const auto profile = twin::CalibrationProfile::shipped();
   const Arm arm = Arm::Left;
-  twin::MotorMechanics m = profile.mechanics[raven::slot(arm)];
-  m.viscous.setZero();
+  const twin::MotorMechanics& m = profile.mechanics[raven::slot(arm)];
   const ArmJoints q = test_support::physicalProfile().home;
   const Eigen::Vector3d tip(0.0, 0.0, 2.0);
   const Eigen::Vector2d jaws(3.0, 3.0);
   const double count = 2.0 * M_PI / 4000.0;
-  auto rows = heldRows(arm, m, q, tip, jaws, 0.007, ArmJoints::Zero(), 40);
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    auto& s = rows[k];
-    s.motor_velocity.setConstant(5.0 * count / 0.001);
-    s.motor.array() += 5.0 * count * static_cast<double>(k);
-    // Turning forward, each motor applies its load plus the band's edge, which grows with what
-    // it applies: applied = load + coulomb + load_friction |applied|.
-    const ArmJoints load = s.torque;
-    for (int it = 0; it < 100; ++it) {
-      s.torque = load + m.coulomb + m.load_friction.cwiseProduct(s.torque.cwiseAbs());
+  const double speed = 5.0 * count / 0.001;
+  for (const double period : {0.001, 0.05}) {
+    auto rows = heldRows(arm, m, q, tip, jaws, 0.007, ArmJoints::Zero(), 40);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      auto& s = rows[k];
+      s.motor_velocity.setConstant(speed);
+      s.motor.array() += speed * period * static_cast<double>(k);
+      // Turning forward, each motor applies its load, its viscous drag and the band's edge,
+      // which grows with what it applies: applied = load + b w + coulomb + load_friction |applied|.
+      const ArmJoints load = s.torque + m.viscous * speed;
+      for (int it = 0; it < 100; ++it) {
+        s.torque = load + m.coulomb + m.load_friction.cwiseProduct(s.torque.cwiseAbs());
+      }
     }
+    const twin::ArmForceEstimator estimator(
+        arm, m, noUncertainty(), raven::ArmKinematics::of(test_support::physicalProfile(), arm));
+    const auto e = estimator.estimate(times(rows.size(), period), rows)[20];
+    for (bool moving : e.moving) EXPECT_TRUE(moving) << period;
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(e.tip(i), tip(i), 0.05) << i << " every " << period;
+    EXPECT_NEAR(e.jaw[0], jaws(0), 0.05) << "every " << period << " s";
+    EXPECT_NEAR(e.jaw[1], jaws(1), 0.05) << "every " << period << " s";
   }
-  const twin::ArmForceEstimator estimator(
-      arm, m, noUncertainty(), raven::ArmKinematics::of(test_support::physicalProfile(), arm));
-  const auto e = estimator.estimate(times(rows.size(), 0.001), rows)[20];
-  for (bool moving : e.moving) EXPECT_TRUE(moving);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(e.tip(i), tip(i), 0.05) << i;
-  EXPECT_NEAR(e.jaw[0], jaws(0), 0.05);
-  EXPECT_NEAR(e.jaw[1], jaws(1), 0.05);
 }
 
 /// `arm`'s signals now, as the robot logs them (the recorder's units undone).

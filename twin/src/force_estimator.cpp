@@ -94,18 +94,25 @@ std::vector<MotorBalance> ArmForceEstimator::balances(
       ++hi[k];
     }
   }
+  // Each row's motor speed: the logged speed (mvel, the last cycle's turn) averaged over its
+  // window; in a sparse recording (a window of the row alone) the row's own.
   std::vector<ArmJoints> speed(n, ArmJoints::Zero());
   for (std::size_t k = 0; k < n; ++k) {
-    const double span = times[hi[k]] - times[lo[k]];
-    if (span > 0.0) speed[k] = (rows[hi[k]].motor - rows[lo[k]].motor) / span;
+    for (std::size_t j = lo[k]; j <= hi[k]; ++j) speed[k] += rows[j].motor_velocity;
+    speed[k] /= static_cast<double>(hi[k] - lo[k] + 1);
   }
   const double count = 2.0 * M_PI / drive_.encoder_counts_per_motor_rev;
   std::vector<MotorBalance> out;
   out.reserve(n);
   for (std::size_t k = 0; k < n; ++k) {
-    const double span = times[hi[k]] - times[lo[k]];
+    // The acceleration across the window, or across the rows either side where it holds no
+    // other row.
+    const bool alone = lo[k] == hi[k];
+    const std::size_t a = alone && k > 0 ? k - 1 : lo[k];
+    const std::size_t z = alone && k + 1 < n ? k + 1 : hi[k];
+    const double span = times[z] - times[a];
     const ArmJoints acceleration =
-        span > 0.0 ? ArmJoints((speed[hi[k]] - speed[lo[k]]) / span) : ArmJoints::Zero();
+        span > 0.0 ? ArmJoints((speed[z] - speed[a]) / span) : ArmJoints::Zero();
     MotorBalance b = balance(rows[k], speed[k], acceleration);
     // Which way each motor slides at the row's instant, when the signals say: the cycle logged
     // turned two counts or more (one alone is an encoder flickering at a count's edge as often
