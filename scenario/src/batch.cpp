@@ -1,6 +1,8 @@
 #include "scenario/batch.hpp"
 
-#include <malloc.h>
+#if __has_include(<malloc.h>)
+#include <malloc.h>  // malloc_trim, glibc's
+#endif
 
 #include <atomic>
 #include <charconv>

@@ -70,8 +70,9 @@ class JointSpaceServo {
   void solveMotors(double dt);
   void boundMotors(double dt);
   /// torques() with a transmission: the joints move as links and rotors together, (M + A + h D)
-  /// dv = h (tau + f - D v), within the motors' and friction's bounded rows; Bullet, which knows
-  /// only M, gets the torque that makes it move so.
+  /// dv = h (tau + f - D v), within the motors' and friction's bounded rows, v and the rows taken
+  /// from the speed the coordinates moved at over the last step; Bullet, which knows only M, gets
+  /// the torque that makes it move so.
   const Eigen::VectorXd& reflectedTorques(const Eigen::Ref<const Eigen::VectorXd>& velocity,
                                           const Eigen::Ref<const Eigen::VectorXd>& position,
                                           double dt);
