@@ -53,7 +53,6 @@ constexpr double kCentred = 0.0005;   ///< the ring's centre this near the post'
 constexpr double kCarriedStray = 0.005;
 constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
 constexpr int kMaxRegrasps = 2;            ///< per ring, as an operator would before moving on
-constexpr double kFirmerPerRegrasp = 0.5;  ///< each re-grasp squeezes this much more (of the first)
 
 }  // namespace
 
@@ -72,7 +71,6 @@ ArmRoutine::ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile,
       layout_(layout),
       jobs_(std::move(jobs)),
       regrasps_(jobs_.size(), 0),
-      squeeze_(squeeze),
       closed_(jawAngleFor(squeeze)) {
   if (jobs_.empty()) phase_ = Phase::Done;
 }
@@ -170,8 +168,6 @@ bool ArmRoutine::decideToRegrasp(const char* why) {
   if (regrasps_[job_] >= kMaxRegrasps) return false;
   ++regrasps_[job_];
   retrying_ = true;
-  // A person whose grip slipped grips harder the next time.
-  closed_ = jawAngleFor(squeeze_ * (1.0 + kFirmerPerRegrasp * regrasps_[job_]));
   spdlog::info("{} arm: {} {}; grasping it again ({} of {})", raven::armName(arm_),
                jobs_[job_].ring, why, regrasps_[job_], kMaxRegrasps);
   return true;
@@ -386,10 +382,7 @@ raven::ArmJoints ArmRoutine::retreat(const raven::ArmJoints& target) {
   const raven::ArmJoints q =
       translate(target, Eigen::Vector3d(tool.x(), tool.y(), height), kStep, arrived);
   if (!arrived) return q;
-  if (!retrying_) {
-    ++job_;
-    closed_ = jawAngleFor(squeeze_);
-  }
+  if (!retrying_) ++job_;
   retrying_ = false;
   advance(job_ < jobs_.size() ? Phase::Orient : Phase::Done);
   return q;

@@ -55,8 +55,8 @@ class ArmRoutine {
   /// Jobs finished (whatever their outcome).
   std::size_t finished() const { return job_; }
   /// Per job, how often the operator opened and grasped its ring again: it did not come up with
-  /// the jaws, slipped out on the way, or landed off its target post (at most twice a ring, each
-  /// time squeezing half the first squeeze harder).
+  /// the jaws, slipped out on the way, or landed off its target post (at most twice a ring, with
+  /// the same squeeze: within the 0.5-3 N a grasp may press with).
   const std::vector<int>& regrasps() const { return regrasps_; }
   const std::vector<RingJob>& jobs() const { return jobs_; }
   /// Where the tool point goes for the current job's grasp (planned when the job starts).
@@ -123,8 +123,7 @@ class ArmRoutine {
   int waited_ = 0;
   Grasp grasp_;
   Eigen::Vector3d last_tool_ = Eigen::Vector3d::Zero();  ///< the measured tool, last iteration
-  double squeeze_;                                       ///< the first grasp's, m into the wall
-  double closed_;                     ///< the outer jaw's angle when closed, this attempt
+  double closed_;                     ///< the outer jaw's angle when closed
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
 };
 
