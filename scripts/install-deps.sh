@@ -9,6 +9,7 @@ main_job=(
   libbullet-dev libbullet-extras-dev libeigen3-dev libassimp-dev
   libyaml-cpp-dev liburdfdom-dev liburdfdom-headers-dev libtinyxml-dev
   libsdl2-dev libcli11-dev libspdlog-dev nlohmann-json3-dev libnlopt-cxx-dev libboost-dev
+  libcpp-httplib-dev
   libroscpp-dev libstd-msgs-dev libsensor-msgs-dev libgeometry-msgs-dev
   ros-std-msgs ros-sensor-msgs ros-geometry-msgs python3-gencpp python3-genmsg python3-genpy
   libglfw3-dev libgl-dev libopengl-dev libglx-dev libgl1-mesa-dri libstb-dev
@@ -20,7 +21,7 @@ the_rest=(
   python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag
   python3-sensor-msgs python3-geometry-msgs
   python3-rospy python3-pykdl python3-matplotlib python3-numpy python3-torch python3-h5py
-  xvfb xauth
+  xvfb xauth chromium chromium-driver python3-selenium
   clang libfuzzer-14-dev
   slurm-wlm parallel
 )

@@ -13,6 +13,7 @@
 
 #include "harness/virtual_gamepad.hpp"
 #include "study/participant_session.hpp"
+#include "study/questionnaire_server.hpp"
 #include "study/study_report.hpp"
 
 namespace {
@@ -41,7 +42,30 @@ struct RunOptions {
   bool video = false;
   int video_fps = 30;
   std::string video_size = "960x540";
+  std::string questionnaires = "terminal";  ///< or "browser"
+  std::string host = "127.0.0.1";
+  int port = 8765;
 };
+
+/// Where the named participant answers the questionnaires, and where the session's words go.
+struct Desk {
+  std::unique_ptr<study::QuestionnaireDesk> desk;
+  std::ostream* words = &std::cout;
+};
+
+Desk openDesk(const RunOptions& o) {
+  Desk d;
+  if (o.questionnaires == "terminal") {
+    d.desk = std::make_unique<study::TerminalDesk>(std::cin, std::cout);
+    return d;
+  }
+  auto server = std::make_unique<study::QuestionnaireServer>(o.host, o.port, &stop_requested);
+  fmt::print("the participant's pages (instructions, questionnaires): {}\n", server->url());
+  std::fflush(stdout);
+  d.words = &server->board(std::cout);
+  d.desk = std::move(server);
+  return d;
+}
 
 int run(const RunOptions& o) {
   const study::Protocol protocol = study::loadProtocol(o.protocol);
@@ -66,6 +90,7 @@ int run(const RunOptions& o) {
   } else {
     people.push_back(o.participant);
   }
+  const Desk desk = openDesk(o);
   bool all_done = true;
   for (std::size_t k = 0; k < people.size(); ++k) {
     study::SessionSettings s;
@@ -83,8 +108,8 @@ int run(const RunOptions& o) {
     }
     s.questionnaires = o.virtual_count == 0;
     s.rests = !simulated;
-    s.in = &std::cin;
-    s.out_text = &std::cout;
+    s.desk = desk.desk.get();
+    s.out_text = desk.words;
     s.stop = &stop_requested;
     s.drill_after = o.drill_after;
     s.drill_signal = o.drill_with == "kill" ? SIGKILL : SIGINT;
@@ -176,6 +201,15 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--video-fps", o.video_fps, "frames per simulated second (default 30)")
       ->check(CLI::Range(1, 240));
   run_cmd->add_option("--video-size", o.video_size, "WIDTHxHEIGHT, even (default 960x540)");
+  run_cmd
+      ->add_option("--questionnaires", o.questionnaires,
+                   "where a person answers them: terminal, or browser (pages served on --host "
+                   "and --port, with the session's instructions)")
+      ->check(CLI::IsMember({"terminal", "browser"}));
+  run_cmd->add_option("--host", o.host,
+                      "the pages' address (default 127.0.0.1; 0.0.0.0 for a tablet on the LAN)");
+  run_cmd->add_option("--port", o.port, "the pages' port (default 8765; 0: any free one)")
+      ->check(CLI::Range(0, 65535));
 
   std::vector<fs::path> dirs;
   fs::path report_out;

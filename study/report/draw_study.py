@@ -5,8 +5,8 @@ questionnaires.csv), with the figures inside the page.
   draw_study.py REPORT_DIR
 
 Per metric: each scheme's trials (box) and each participant's mean (dots joined across schemes).
-Learning curves: each scheme's metric against the trials the participant had done under it.
-Questionnaires: raw NASA-TLX and SUS per scheme and participant. Tuning: each participant's cost
+Learning curves: per task, each scheme's metric against the task's repetition under it.
+Questionnaires: each one's score per scheme and participant. Tuning: each participant's cost
 per tuning trial. Tables: the paired comparisons, the recommended settings, the power analysis.
 The numbers come from the C++ report; this script only draws them.
 """
@@ -27,6 +27,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 SHOWN = ["completion_time_s", "overshoots", "path_length_m", "idle_time_s", "sparc",
          "velocity_cap_hits", "joint_limit_hits", "rings_placed", "rings_dropped",
          "board_collisions", "peak_grasp_force_n", "mean_grasp_force_n"]
+
+
+QUESTIONNAIRE_TITLES = {"nasa-tlx": "NASA-TLX (lower: less workload)",
+                        "surg-tlx": "SURG-TLX (lower: less workload)",
+                        "sus": "SUS (higher: more usable)"}
 
 
 def number(text):
@@ -77,21 +82,30 @@ def metric_figures(rows, schemes, summary):
 
 
 def learning_figure(rows, schemes):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 3.5))
-    for ax, metric in zip(axes, ["completion_time_s", "overshoots"]):
-        for s in schemes:
-            points = defaultdict(list)
-            for r in rows:
-                v = number(r[metric])
-                if r["condition"] == s and v is not None:
-                    points[int(r["trials_before"])].append(v)
-            xs = sorted(points)
-            ax.plot([x + 1 for x in xs], [sum(points[x]) / len(points[x]) for x in xs], "o-",
-                    label=s)
-        ax.set_xlabel("trial under the scheme")
-        ax.set_ylabel(metric)
-        ax.legend(fontsize=8)
-    fig.suptitle("Learning curves (mean over participants and tasks)")
+    """Per task, a row of curves: each scheme's mean over participants against the task's
+    repetition under the scheme (tasks differ in scale, so they are never averaged together)."""
+    tasks = sorted({r["task"] for r in rows})
+    if not tasks:
+        return ""
+    fig, axes = plt.subplots(len(tasks), 2, figsize=(11, 3.3 * len(tasks)), squeeze=False)
+    for line, task in zip(axes, tasks):
+        of_task = [r for r in rows if r["task"] == task]
+        second = next((m for m in ("rings_placed", "overshoots")
+                       if any(number(r[m]) is not None for r in of_task)), "path_length_m")
+        for ax, metric in zip(line, ["completion_time_s", second]):
+            for s in schemes:
+                points = defaultdict(list)
+                for r in of_task:
+                    v = number(r[metric])
+                    if r["condition"] == s and v is not None:
+                        points[int(r["repetition"])].append(v)
+                xs = sorted(points)
+                ax.plot([x + 1 for x in xs], [sum(points[x]) / len(points[x]) for x in xs],
+                        "o-", label=s)
+            ax.set_title(f"{task}: {metric}", fontsize=9)
+            ax.set_xlabel(f"repetition of {task} under the scheme")
+            ax.legend(fontsize=8)
+    fig.suptitle("Learning curves per task and scheme (mean over participants)")
     return picture(fig)
 
 
@@ -109,9 +123,9 @@ def questionnaire_figure(answers, schemes):
             xs = [i for i, s in enumerate(schemes) if s in scores]
             ax.plot(xs, [scores[schemes[i]] for i in xs], "o-", alpha=0.5, label=person)
         ax.set_xticks(range(len(schemes)), schemes)
-        ax.set_title("raw NASA-TLX (lower: less workload)" if name == "nasa-tlx"
-                     else "SUS (higher: more usable)")
-        ax.set_ylim(0, 100)
+        ax.set_title(QUESTIONNAIRE_TITLES.get(name, f"{name} (mean of its items)"))
+        if name in QUESTIONNAIRE_TITLES:
+            ax.set_ylim(0, 100)
     return picture(fig)
 
 

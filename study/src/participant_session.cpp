@@ -11,7 +11,6 @@
 #include <thread>
 
 #include "harness/virtual_gamepad.hpp"
-#include "study/questionnaire.hpp"
 #include "study/settings_tuner.hpp"
 #include "study/trial_metrics.hpp"
 #include "study/trial_plan.hpp"
@@ -331,13 +330,15 @@ class SessionRun {
   /// After a scheme's last trial, its questionnaires not yet answered. False: the input ended.
   bool askQuestionnaires(std::size_t i) const {
     const PlannedTrial& planned = plan_[i];
-    if (!lastOfBlock(plan_, i) || planned.tuning || !s_.questionnaires || !s_.in || !s_.out_text) {
+    if (!lastOfBlock(plan_, i) || planned.tuning || !s_.questionnaires || !s_.desk ||
+        !s_.out_text) {
       return true;
     }
-    for (const std::string& name : protocol_.questionnaires) {
-      const fs::path file = home_ / "questionnaires" / (planned.condition + "_" + name + ".json");
+    for (const QuestionnaireForm& form : protocol_.questionnaires) {
+      const fs::path file =
+          home_ / "questionnaires" / (planned.condition + "_" + form.name + ".json");
       if (fs::exists(file)) continue;
-      const auto answers = ask(name, planned.condition, *s_.in, *s_.out_text);
+      const auto answers = s_.desk->ask(form, planned.condition);
       if (!answers) {
         *s_.out_text
             << "\nno more answers; the questionnaire is asked again when the session resumes\n";

@@ -199,6 +199,44 @@ TuningSpec readTuning(const YamlView& node, const Protocol& p) {
   return t;
 }
 
+/// A protocol's own Likert set: `{points: 2..11 (default 7), items: [statement, ...]}`.
+QuestionnaireForm readLikert(const std::string& name, const YamlView& node) {
+  checkKeys(node, {"points", "items"});
+  int points = 7;
+  if (auto v = node.find("points")) {
+    points = v->asInt();
+    if (points < 2 || points > 11) v->fail("must lie in [2, 11]");
+  }
+  std::vector<std::string> statements;
+  for (const YamlView& item : node["items"].elements()) statements.push_back(item.asString());
+  if (statements.empty()) node["items"].fail("list at least one statement");
+  return likertForm(name, statements, points);
+}
+
+/// The questionnaires asked after each condition, in order: built-in names or the protocol's
+/// Likert sets (`likert:`); `tlx_weights: true` adds the TLXs' pairwise comparisons.
+std::vector<QuestionnaireForm> readQuestionnaires(const YamlView& list, const YamlView& root) {
+  const bool weighted = root.find("tlx_weights") ? root["tlx_weights"].asBool() : false;
+  std::map<std::string, QuestionnaireForm> own;
+  if (auto likert = root.find("likert")) {
+    for (const std::string& name : likert->keys()) {
+      if (builtinForm(name, false)) (*likert)[name].fail("a built-in questionnaire's name");
+      own.emplace(name, readLikert(name, (*likert)[name]));
+    }
+  }
+  std::vector<QuestionnaireForm> forms;
+  std::set<std::string> seen;
+  for (const YamlView& q : list.elements()) {
+    const std::string name = q.asKeyword();
+    std::optional<QuestionnaireForm> form = builtinForm(name, weighted);
+    if (!form && own.contains(name)) form = own.at(name);
+    if (!form) q.fail("unknown questionnaire (nasa-tlx, surg-tlx, sus or a set under likert:)");
+    if (!seen.insert(name).second) q.fail("listed twice");
+    forms.push_back(*form);
+  }
+  return forms;
+}
+
 }  // namespace
 
 controller::ControllerOptions Condition::controllerOptions() const {
@@ -240,7 +278,7 @@ const Condition& Protocol::condition(const std::string& named) const {
 Protocol loadProtocol(const std::filesystem::path& file) {
   const YamlView root = YamlView::parseFile(file);
   checkKeys(root, {"study", "tasks", "conditions", "trials_per_condition", "rest", "countdown",
-                   "order", "questionnaires", "tuning"});
+                   "order", "questionnaires", "tlx_weights", "likert", "tuning"});
   Protocol p;
   p.file = file;
   {
@@ -274,15 +312,7 @@ Protocol loadProtocol(const std::filesystem::path& file) {
       v->fail("order is latin-square or fixed");
     }
   }
-  if (auto v = root.find("questionnaires")) {
-    std::set<std::string> seen;
-    for (const YamlView& q : v->elements()) {
-      const std::string name = q.asKeyword();
-      if (name != "nasa-tlx" && name != "sus") q.fail("unknown questionnaire (nasa-tlx or sus)");
-      if (!seen.insert(name).second) q.fail("listed twice");
-      p.questionnaires.push_back(name);
-    }
-  }
+  if (auto v = root.find("questionnaires")) p.questionnaires = readQuestionnaires(*v, root);
   if (auto v = root.find("tuning")) p.tuning = readTuning(*v, p);
   return p;
 }

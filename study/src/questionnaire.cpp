@@ -2,107 +2,170 @@
 
 #include <fmt/format.h>
 
-#include <array>
-#include <istream>
-#include <ostream>
 #include <stdexcept>
 
 namespace study {
 
 namespace {
 
-constexpr std::array<const char*, 6> kTlxScales{
-    "Mental demand: how mentally demanding was the task?",
-    "Physical demand: how physically demanding was the task?",
-    "Temporal demand: how hurried or rushed was the pace of the task?",
-    "Performance: how successful were you in doing what you were asked? (0 perfect, 100 "
-    "failure)",
-    "Effort: how hard did you have to work to reach your level of performance?",
-    "Frustration: how insecure, discouraged, irritated, stressed or annoyed were you?"};
-
-constexpr std::array<const char*, 10> kSusItems{
-    "I think that I would like to use this system frequently.",
-    "I found the system unnecessarily complex.",
-    "I thought the system was easy to use.",
-    "I think that I would need the support of a technical person to be able to use this system.",
-    "I found the various functions in this system were well integrated.",
-    "I thought there was too much inconsistency in this system.",
-    "I would imagine that most people would learn to use this system very quickly.",
-    "I found the system very cumbersome to use.",
-    "I felt very confident using the system.",
-    "I needed to learn a lot of things before I could get going with this system."};
-
-bool tlxValid(int a) {
-  return a >= 0 && a <= 100 && a % 5 == 0;
+/// The TLXs' 21 marks: 0 to 100 in fives.
+AnswerScale workloadScale(const char* high = "very high") {
+  return {.low = 0, .high = 100, .step = 5, .low_label = "very low", .high_label = high};
 }
-bool susValid(int a) {
-  return a >= 1 && a <= 5;
+
+const char* const kPairwiseNote =
+    " Then, for each pair of the scales, choose the one that contributed more to the workload of "
+    "the task.";
+
+QuestionnaireForm nasaTlx() {
+  return {
+      .name = "nasa-tlx",
+      .title = "NASA Task Load Index",
+      .instructions = "Rate each scale for the task you just did.",
+      .items = {{"Mental demand", "How mentally demanding was the task?"},
+                {"Physical demand", "How physically demanding was the task?"},
+                {"Temporal demand", "How hurried or rushed was the pace of the task?"},
+                {"Performance",
+                 "How successful were you in doing what you were asked? (0 perfect, 100 failure)"},
+                {"Effort", "How hard did you have to work to reach your level of performance?"},
+                {"Frustration",
+                 "How insecure, discouraged, irritated, stressed or annoyed were you?"}},
+      .scale = workloadScale(),
+  };
+}
+
+QuestionnaireForm surgTlx() {
+  return {
+      .name = "surg-tlx",
+      .title = "Surgery Task Load Index (SURG-TLX)",
+      .instructions = "Rate each demand of the task you just did.",
+      .items = {{"Mental demands", "How mentally fatiguing was the task?"},
+                {"Physical demands", "How physically fatiguing was the task?"},
+                {"Temporal demands", "How hurried or rushed was the pace of the task?"},
+                {"Task complexity", "How complex was the task?"},
+                {"Situational stress", "How anxious did you feel while doing the task?"},
+                {"Distractions", "How distracting was the place you worked in?"}},
+      .scale = workloadScale(),
+  };
+}
+
+QuestionnaireForm sus() {
+  const std::vector<std::string> statements{
+      "I think that I would like to use this system frequently.",
+      "I found the system unnecessarily complex.",
+      "I thought the system was easy to use.",
+      "I think that I would need the support of a technical person to be able to use this "
+      "system.",
+      "I found the various functions in this system were well integrated.",
+      "I thought there was too much inconsistency in this system.",
+      "I would imagine that most people would learn to use this system very quickly.",
+      "I found the system very cumbersome to use.",
+      "I felt very confident using the system.",
+      "I needed to learn a lot of things before I could get going with this system."};
+  QuestionnaireForm form = likertForm("sus", statements, 5);
+  form.title = "System Usability Scale";
+  form.scoring = Scoring::Sus;
+  return form;
 }
 
 }  // namespace
 
+bool AnswerScale::valid(int answer) const {
+  return answer >= low && answer <= high && (answer - low) % step == 0;
+}
+
+std::string AnswerScale::rule() const {
+  return step == 1 ? fmt::format("{}..{}", low, high)
+                   : fmt::format("{}..{} in steps of {}", low, high, step);
+}
+
+std::vector<std::pair<int, int>> QuestionnaireForm::pairs() const {
+  std::vector<std::pair<int, int>> out;
+  if (!pairwise_weights) return out;
+  const int n = static_cast<int>(items.size());
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) out.emplace_back(i, j);
+  }
+  return out;
+}
+
+std::optional<QuestionnaireForm> builtinForm(const std::string& name, bool weighted) {
+  std::optional<QuestionnaireForm> form;
+  if (name == "nasa-tlx") form = nasaTlx();
+  if (name == "surg-tlx") form = surgTlx();
+  if (name == "sus") return sus();
+  if (form && weighted) {
+    form->pairwise_weights = true;
+    form->instructions += kPairwiseNote;
+  }
+  return form;
+}
+
+QuestionnaireForm likertForm(const std::string& name, const std::vector<std::string>& statements,
+                             int points) {
+  QuestionnaireForm form{
+      .name = name,
+      .title = name,
+      .instructions = "How much do you agree with each statement?",
+      .items = {},
+      .scale = {.low = 1,
+                .high = points,
+                .step = 1,
+                .low_label = "strongly disagree",
+                .high_label = "strongly agree"},
+  };
+  for (const std::string& s : statements) form.items.push_back({s, s});
+  return form;
+}
+
 nlohmann::json QuestionnaireAnswers::json() const {
-  return {{"name", name}, {"answers", answers}, {"score", score}};
+  nlohmann::json j{{"name", name}, {"answers", answers}, {"score", score}};
+  if (!weights.empty()) j["weights"] = weights;
+  return j;
 }
 
 QuestionnaireAnswers QuestionnaireAnswers::fromJson(const nlohmann::json& j) {
   return {j.at("name").get<std::string>(), j.at("answers").get<std::vector<int>>(),
-          j.at("score").get<double>()};
+          j.value("weights", std::vector<int>{}), j.at("score").get<double>()};
 }
 
-double rawTlx(const std::vector<int>& answers) {
-  if (answers.size() != kTlxScales.size()) {
-    throw std::invalid_argument("the NASA-TLX has six scales");
+QuestionnaireAnswers scoreAnswers(const QuestionnaireForm& form, const std::vector<int>& answers,
+                                  const std::vector<int>& choices) {
+  if (answers.size() != form.items.size()) {
+    throw std::invalid_argument(
+        fmt::format("{} has {} items, not {}", form.name, form.items.size(), answers.size()));
   }
-  double sum = 0.0;
-  for (int a : answers) {
-    if (!tlxValid(a)) throw std::invalid_argument("a TLX answer is 0..100 in steps of 5");
-    sum += a;
-  }
-  return sum / 6.0;
-}
-
-double susScore(const std::vector<int>& answers) {
-  if (answers.size() != kSusItems.size()) throw std::invalid_argument("the SUS has ten items");
-  int sum = 0;
   for (std::size_t i = 0; i < answers.size(); ++i) {
-    if (!susValid(answers[i])) throw std::invalid_argument("a SUS answer is 1..5");
-    sum += i % 2 == 0 ? answers[i] - 1 : 5 - answers[i];
-  }
-  return 2.5 * sum;
-}
-
-std::optional<QuestionnaireAnswers> ask(const std::string& name, const std::string& condition,
-                                        std::istream& in, std::ostream& out) {
-  const bool tlx = name == "nasa-tlx";
-  if (!tlx && name != "sus") throw std::invalid_argument("unknown questionnaire " + name);
-  QuestionnaireAnswers result{name, {}, 0.0};
-  out << fmt::format("\n{} for condition {}: ", tlx ? "NASA-TLX" : "System Usability Scale",
-                     condition)
-      << (tlx ? "rate each from 0 (very low) to 100 (very high) in steps of 5.\n"
-              : "1 strongly disagree .. 5 strongly agree.\n");
-  const std::size_t count = tlx ? kTlxScales.size() : kSusItems.size();
-  for (std::size_t i = 0; i < count; ++i) {
-    for (;;) {
-      out << fmt::format("  {}/{} {} > ", i + 1, count, tlx ? kTlxScales[i] : kSusItems[i])
-          << std::flush;
-      std::string line;
-      if (!std::getline(in, line)) return std::nullopt;
-      try {
-        std::size_t used = 0;
-        const int a = std::stoi(line, &used);
-        if (line.find_first_not_of(" \t\r", used) == std::string::npos &&
-            (tlx ? tlxValid(a) : susValid(a))) {
-          result.answers.push_back(a);
-          break;
-        }
-      } catch (const std::exception&) {
-      }
-      out << (tlx ? "  please answer 0..100 in steps of 5\n" : "  please answer 1..5\n");
+    if (!form.scale.valid(answers[i])) {
+      throw std::invalid_argument(fmt::format("{} item {} ({}): {} is not {}", form.name, i + 1,
+                                              form.items[i].label, answers[i], form.scale.rule()));
     }
   }
-  result.score = tlx ? rawTlx(result.answers) : susScore(result.answers);
-  out << fmt::format("  score {:.1f}\n", result.score);
+  const auto pairs = form.pairs();
+  if (choices.size() != pairs.size()) {
+    throw std::invalid_argument(
+        fmt::format("{} asks {} pairs, not {}", form.name, pairs.size(), choices.size()));
+  }
+  QuestionnaireAnswers result{form.name, answers, {}, 0.0};
+  if (!pairs.empty()) result.weights.assign(answers.size(), 0);
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const auto [a, b] = pairs[k];
+    if (choices[k] != a && choices[k] != b) {
+      throw std::invalid_argument(fmt::format("{} pair {}: choose {} or {}", form.name, k + 1,
+                                              form.items[a].label, form.items[b].label));
+    }
+    ++result.weights[choices[k]];
+  }
+  double sum = 0.0;
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    if (form.scoring == Scoring::Sus) {
+      sum += i % 2 == 0 ? answers[i] - 1 : 5 - answers[i];
+    } else {
+      sum += answers[i] * (pairs.empty() ? 1.0 : result.weights[i]);
+    }
+  }
+  const double count = pairs.empty() ? static_cast<double>(answers.size()) : pairs.size();
+  result.score = form.scoring == Scoring::Sus ? 2.5 * sum : sum / count;
   return result;
 }
 

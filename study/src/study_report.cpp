@@ -159,13 +159,26 @@ void writeCsv(const StudyData& data, const fs::path& out) {
                    : "")
            << '\n';
   }
-  std::ofstream answers(out / "questionnaires.csv");
-  answers << "participant,condition,questionnaire,score,answers\n";
-  for (const AnsweredQuestionnaire& q : data.questionnaires) {
-    answers << fmt::format("{},{},{},{:.2f},{}\n", q.participant, q.condition, q.answers.name,
-                           q.answers.score, fmt::join(q.answers.answers, " "));
+  // The same trials in long form, one row per trial and metric (R's tidy data, pandas' melt):
+  // a metric that does not apply to a trial has no row.
+  std::ofstream tidy(out / "trial_metrics_long.csv");
+  tidy << "participant,virtual,condition,task,repetition,tuning,trials_before,metric,value\n";
+  for (const TrialRecord& r : data.trials) {
+    for (const auto& [metric, value] : r.metrics) {
+      if (!std::isfinite(value)) continue;
+      tidy << fmt::format("{},{},{},{},{},{},{},{},{:.6g}\n", r.participant, r.is_virtual ? 1 : 0,
+                          r.condition, r.task, r.repetition, r.tuning ? 1 : 0, r.trials_before,
+                          metric, value);
+    }
   }
-  if (!trials || !answers)
+  std::ofstream answers(out / "questionnaires.csv");
+  answers << "participant,condition,questionnaire,score,answers,weights\n";
+  for (const AnsweredQuestionnaire& q : data.questionnaires) {
+    answers << fmt::format("{},{},{},{:.2f},{},{}\n", q.participant, q.condition, q.answers.name,
+                           q.answers.score, fmt::join(q.answers.answers, " "),
+                           fmt::join(q.answers.weights, " "));
+  }
+  if (!trials || !tidy || !answers)
     throw std::runtime_error("cannot write the CSV files in " + out.string());
 }
 
@@ -260,12 +273,21 @@ void compareMetrics(const TrialsByScheme& by_condition, const PowerQuestion& pow
   }
 }
 
+/// Which way a questionnaire's score is better: the TLXs' workload lower, the SUS higher; a
+/// protocol's own Likert set says neither (its statements may point either way).
+int questionnaireSense(const std::string& name) {
+  if (name == "nasa-tlx" || name == "surg-tlx") return -1;
+  return name == "sus" ? +1 : 0;
+}
+
 /// The questionnaires' scores per scheme, compared as the metrics are (appended to
 /// `comparisons`).
 nlohmann::json compareQuestionnaires(const StudyData& data, const PowerQuestion& power,
                                      nlohmann::json& comparisons, nlohmann::json& power_rows) {
   nlohmann::json questionnaires = nlohmann::json::object();
-  for (const char* name : {"nasa-tlx", "sus"}) {
+  std::set<std::string> names;
+  for (const AnsweredQuestionnaire& q : data.questionnaires) names.insert(q.answers.name);
+  for (const std::string& name : names) {
     std::map<std::string, ParticipantMeans> means;
     std::map<std::string, std::vector<double>> scores;
     for (const AnsweredQuestionnaire& q : data.questionnaires) {
@@ -275,8 +297,7 @@ nlohmann::json compareQuestionnaires(const StudyData& data, const PowerQuestion&
     }
     for (const auto& [condition, s] : scores) questionnaires[name][condition] = describe(s);
     if (means.size() < 2) continue;
-    for (auto& row :
-         compare(name, std::string(name) == "sus" ? +1 : -1, means, power, power_rows)) {
+    for (auto& row : compare(name, questionnaireSense(name), means, power, power_rows)) {
       comparisons.push_back(row);
     }
   }

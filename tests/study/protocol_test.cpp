@@ -83,4 +83,28 @@ conditions: {A: {scheme: m3}}
   EXPECT_NE(errorOf("study: [unclosed\n").find("p.yaml"), std::string::npos);
 }
 
+TEST(Protocol, QuestionnairesAreFormsInTheProtocolsOrder) {
+  harness::TempDir dir;
+  const auto p =
+      study::loadProtocol(dir.write("p.yaml", kMinimal + R"(questionnaires: [sus, comfort, surg-tlx]
+tlx_weights: true
+likert:
+  comfort: {points: 5, items: [The pad felt natural, I could see the tool]}
+)"));
+  ASSERT_EQ(p.questionnaires.size(), 3u);
+  EXPECT_EQ(p.questionnaires[0].name, "sus");
+  EXPECT_EQ(p.questionnaires[1].items.size(), 2u);
+  EXPECT_EQ(p.questionnaires[1].scale.high, 5);
+  EXPECT_TRUE(p.questionnaires[2].pairwise_weights);
+  const std::string unknown = errorOf(kMinimal + "questionnaires: [nasa-tlx, tlx]\n");
+  EXPECT_NE(unknown.find("p.yaml:7"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("unknown questionnaire"), std::string::npos) << unknown;
+  const std::string taken =
+      errorOf(kMinimal + "questionnaires: [sus]\nlikert:\n  sus: {items: [a]}\n");
+  EXPECT_NE(taken.find("likert/sus"), std::string::npos) << taken;
+  EXPECT_NE(errorOf(kMinimal + "questionnaires: [own]\nlikert:\n  own: {points: 1, items: [a]}\n")
+                .find("must lie in [2, 11]"),
+            std::string::npos);
+}
+
 }  // namespace

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "harness/child_process.hpp"
@@ -95,6 +97,21 @@ TEST(StudyCli, TheExampleFindsTheDegradedSchemeWorseWithEightVirtualParticipants
   EXPECT_FALSE(summary.at("power").at("observed").empty());
   EXPECT_NE(text(dir.path() / "r" / "report.html").find("data:image/png;base64"),
             std::string::npos);
+  // The long CSV: a row per trial and metric, each task's rows kept apart by their task.
+  std::ifstream tidy(dir.path() / "r" / "trial_metrics_long.csv");
+  std::string line;
+  std::getline(tidy, line);
+  EXPECT_EQ(line,
+            "participant,virtual,condition,task,repetition,tuning,trials_before,metric,value");
+  std::map<std::string, int> rows_per_task;
+  while (std::getline(tidy, line)) {
+    ASSERT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
+    const auto task_start = line.find(',', line.find(',', line.find(',') + 1) + 1) + 1;
+    ++rows_per_task[line.substr(task_start, line.find(',', task_start) - task_start)];
+  }
+  EXPECT_EQ(rows_per_task.size(), 2u);
+  EXPECT_GT(rows_per_task["reach"], 8 * 3 * 3 * 5);  // 8 people, 3 schemes, 3 trials, metrics
+  EXPECT_GT(rows_per_task["rectangle"], 8 * 3 * 3 * 5);
 }
 
 /// An interrupted session resumed ends with the same trials as one never interrupted; the

@@ -15,6 +15,7 @@
 
 #include "controller/sdl_gamepad.hpp"
 #include "study/protocol.hpp"
+#include "study/questionnaire_desk.hpp"
 #include "study/virtual_participant.hpp"
 #include "viewer/video_recorder.hpp"
 
@@ -39,7 +40,7 @@ struct SessionSettings {
   harness::VirtualGamepad* virtual_pad = nullptr;
   bool questionnaires = true;  ///< asked after each condition (people; a virtual one skips them)
   bool rests = true;           ///< people rest between conditions
-  std::istream* in = nullptr;  ///< questionnaire answers
+  QuestionnaireDesk* desk = nullptr;        ///< where the questionnaires are answered
   std::ostream* out_text = nullptr;         ///< instructions, countdowns, status, questions
   const std::atomic<bool>* stop = nullptr;  ///< Ctrl-C
   /// Drill: raise `drill_signal` halfway into the trial after this many trials finished in this

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "controller/dual_platform_controller.hpp"
+#include "study/questionnaire.hpp"
 
 namespace study {
 
@@ -92,7 +93,7 @@ struct Protocol {
   double rest = 30.0;            ///< s between conditions (people only)
   double countdown = 3.0;        ///< s before each trial (people only)
   OrderKind order = OrderKind::LatinSquare;
-  std::vector<std::string> questionnaires;  ///< "nasa-tlx", "sus": after each condition
+  std::vector<QuestionnaireForm> questionnaires;  ///< asked after each condition, in order
   std::optional<TuningSpec> tuning;
   std::string text;  ///< the file's bytes: a resumed session refuses a changed protocol
 

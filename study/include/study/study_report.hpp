@@ -4,7 +4,8 @@
 // Cohen's d_z, the exact Wilcoxon signed-rank test beside it, Holm-corrected within each
 // metric), the questionnaires' scores compared the same way, each tuned participant's
 // recommended settings, and the participants a study needs (power of the paired t-test).
-// summary.json, trials.csv and questionnaires.csv hold the numbers; report.html draws them.
+// summary.json, trials.csv (and trial_metrics_long.csv, one row per trial and metric) and
+// questionnaires.csv hold the numbers; report.html draws them.
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -57,9 +58,9 @@ struct PowerQuestion {
 /// summary.json's content.
 nlohmann::json summarize(const StudyData& data, const PowerQuestion& power = {});
 
-/// Writes summary.json, trials.csv and questionnaires.csv into `out`, then report.html (drawn
-/// by report/draw_study.py with matplotlib). Returns the empty string, or why the drawing
-/// failed (the numbers are written either way).
+/// Writes summary.json, trials.csv, trial_metrics_long.csv and questionnaires.csv into `out`,
+/// then report.html (drawn by report/draw_study.py with matplotlib). Returns the empty string,
+/// or why the drawing failed (the numbers are written either way).
 std::string writeReport(const StudyData& data, const std::filesystem::path& out,
                         const PowerQuestion& power = {});
 
