@@ -23,6 +23,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 SHOWN = ["completion_time_s", "overshoots", "path_length_m", "idle_time_s", "sparc",
          "velocity_cap_hits", "joint_limit_hits", "rings_placed", "rings_dropped",
@@ -103,9 +104,11 @@ def learning_figure(rows, schemes):
                 ax.plot([x + 1 for x in xs], [sum(points[x]) / len(points[x]) for x in xs],
                         "o-", label=s)
             ax.set_title(f"{task}: {metric}", fontsize=9)
-            ax.set_xlabel(f"repetition of {task} under the scheme")
+            ax.set_xlabel(f"repetition of {task} under the scheme", fontsize=8)
+            ax.xaxis.set_major_locator(MaxNLocator(integer=True))
             ax.legend(fontsize=8)
     fig.suptitle("Learning curves per task and scheme (mean over participants)")
+    fig.tight_layout(rect=(0, 0, 1, 0.96))
     return picture(fig)
 
 
