@@ -8,9 +8,12 @@ Growth, the figure it prints and checks (under 5 %), is last tenth over first te
   grows its peak; a steady one repeats it), sampled every --interval wall seconds;
 - step time: the processes' CPU time (user and system) per simulated millisecond within the tenth,
   so that other work on the machine does not count as growth. The session's progress is the last
-  whole row of its rs recording; the batch's is its finished runs' steps (runs.jsonl). Beside it,
-  the share of the host's CPUs busy with other work in each tenth: a growth is the code's only
-  where that share stayed small.
+  whole row of its rs recording; the batch's is its finished runs' steps (runs.jsonl). A virtual
+  machine's cores change speed under it, which CPU time counts as the code's own (on a quiet
+  host a forty-minute session's node read 0.22 to 0.29 ms and back, its controller with it); so a fixed reference work is timed at every sample, and the growth checked is the
+  step time's over the reference's (both raw figures are printed). Beside it, the share of the
+  host's CPUs busy with other work in each tenth: a growth is the code's only where that share
+  stayed small.
 The session's tenths are of the steady dance after O5's ramp (the whole session when it is too
 short for that), by simulated time; the batch's are of its runs after the warm-up, by runs (its
 memory while the first tenth is running, and after all but the last tenth have finished). The
@@ -63,11 +66,22 @@ def usage(pid):
     return (rss, cpu) if rss is not None else None
 
 
+def reference_work():
+    """CPU seconds a fixed piece of work (about 10 ms) takes this process now. A virtual
+    machine's cores change speed under it (its host's other guests, their clocks), which CPU
+    time counts as the code's own; timed beside the soak, this says how much."""
+    start = time.process_time()
+    sum(i * i for i in range(200000))
+    return time.process_time() - start
+
+
 def host_usage():
-    """(monotonic wall seconds, CPU seconds the whole host has been busy) now, from /proc/stat."""
+    """(monotonic wall seconds, CPU seconds the whole host has been busy, the reference work's
+    CPU seconds) now; the first two from /proc/stat."""
     fields = [int(x) for x in Path("/proc/stat").read_text().split("\n")[0].split()[1:]]
     idle = fields[3] + fields[4]  # idle, iowait
-    return time.monotonic(), (sum(fields[:8]) - idle) / CLOCK_TICKS  # through steal
+    busy = (sum(fields[:8]) - idle) / CLOCK_TICKS  # through steal
+    return time.monotonic(), busy, reference_work()
 
 
 def last_row_time(csv_path):
@@ -96,8 +110,32 @@ def fresh_folder(path):
     return path
 
 
+def keep_samples(samples, path):
+    """The samples as JSON lines (progress, {process: [rss KiB, cpu s]}, [wall s, host busy s]),
+    for a look at how a figure grew over the run."""
+    with open(path, "w") as f:
+        for sample in samples:
+            f.write(json.dumps(sample) + "\n")
+
+
 def growth(first, last):
     return 100.0 * (last / first - 1.0)
+
+
+def figure(what, first_last, load=None, reference=None):
+    """One printed figure. A step time's growth is the code's: its CPU time per simulated ms
+    over the reference work's CPU time, from the first tenth to the last (the raw figure and
+    the reference's own change are in the detail); an RSS's is as measured."""
+    a, b = first_last
+    if what.startswith("rss"):
+        return {"what": what, "growth_percent": growth(a, b),
+                "detail": f"{a / 1024:.1f} -> {b / 1024:.1f} MiB"}
+    detail = f"{a:.4f} -> {b:.4f} ms of CPU per simulated ms, {growth(a, b):+.2f} %"
+    if load is not None:
+        detail += f"; other work on the host {load[0]:.0f} % -> {load[1]:.0f} %"
+    detail += f"; the reference work {growth(*reference):+.2f} %"
+    return {"what": what, "growth_percent": growth(a / reference[0], b / reference[1]),
+            "raw_growth_percent": growth(a, b), "detail": detail}
 
 
 class RosMaster:
@@ -156,12 +194,19 @@ class Tenths:
             return (cpu[-1] - cpu[0]) / (progress_of(part[-1][0]) - progress_of(part[0][0]))
         return slope(self.first), slope(self.last)
 
+    def reference(self):
+        """(first, last) median CPU seconds of the reference work: the host's own speed."""
+        def median(part):
+            times = sorted(sample[2][2] for sample in part)
+            return times[len(times) // 2]
+        return median(self.first), median(self.last)
+
     def other_load(self, names):
         """(first, last) share (%) of the host's CPUs busy with work other than the named
         processes': CPU time is the process's own, but another job on the same cores still slows
         it (caches, memory bandwidth), so a growth is the code's only on a quiet host."""
         def share(part):
-            (_, first, (wall0, busy0)), (_, last, (wall1, busy1)) = part[0], part[-1]
+            (_, first, (wall0, busy0, _)), (_, last, (wall1, busy1, _)) = part[0], part[-1]
             ours = sum(last[n][1] - first[n][1] for n in names)
             # The kernel counts a process's time and the CPUs' apart: a few % either way.
             return max(0.0, 100.0 * (busy1 - busy0 - ours) / ((wall1 - wall0) * os.cpu_count()))
@@ -237,9 +282,13 @@ def soak_session(build, work, seconds, interval):
     s0, s1 = steady[0][0], steady[-1][0]
     tenths = Tenths([s for s in steady if s[0] <= s0 + (s1 - s0) / 10],
                     [s for s in steady if s[0] >= s1 - (s1 - s0) / 10], "session")
-    rows = [(f"rss {name}", tenths.rss(name), None) for name in processes]
+    rows = [(f"rss {name}", tenths.rss(name)) for name in processes]
     rows.append(("cpu session", tenths.cpu_per_progress(list(processes)),
-                 tenths.other_load(list(processes))))
+                 tenths.other_load(list(processes)), tenths.reference()))
+    # Each process's own share, to tell which one grows.
+    rows += [(f"cpu {name}", tenths.cpu_per_progress([name]), None, tenths.reference())
+             for name in processes]
+    keep_samples(samples, work / "session-samples.jsonl")
     what = (f"{seconds:.0f} s simulated, {turns} turns, tenths "
             + (f"after O5's ramp ({ramp_end:.0f} s)" if after_ramp else "with O5's ramp"))
     return rows, problems, what
@@ -271,9 +320,10 @@ def soak_batch(build, work, runs, interval):
     tenth = max(BATCH_THREADS, (runs - warm) // 10)  # runs end together on parallel workers
     tenths = Tenths([s for s in samples if warm <= s[0] <= warm + tenth],
                     [s for s in samples if s[0] >= runs - tenth], "batch")
-    rows = [("rss batch", tenths.rss("batch"), None),
+    keep_samples(samples, work / "batch-samples.jsonl")
+    rows = [("rss batch", tenths.rss("batch")),
             ("cpu batch", tenths.cpu_per_progress(["batch"], lambda done: simulated_after[done]),
-             tenths.other_load(["batch"]))]
+             tenths.other_load(["batch"]), tenths.reference())]
     placed = sum(r["placed"] for r in results)
     return rows, f"{runs} nominal runs on {BATCH_THREADS} threads, {placed} of {6 * runs} placed"
 
@@ -287,6 +337,9 @@ def main():
     parser.add_argument("--interval", type=float, help="wall seconds between samples")
     parser.add_argument("--keep", type=Path, help="keep the logs and recordings in this folder")
     parser.add_argument("--json", type=Path, help="write the figures to this file")
+    parser.add_argument("--only", choices=["session", "batch"],
+                        help="run one part alone (a two-hour soak's session and batch take about "
+                        "four hours on two cores; each part's figures stand on their own)")
     parser.add_argument("--check", choices=["all", "memory"], default="all",
                         help="what fails the run: all (RSS, step time, the recording) or memory "
                         "(RSS and the recording; a short run's step time is the host's noise)")
@@ -301,28 +354,32 @@ def main():
     with tempfile.TemporaryDirectory(prefix="soak-") as tmp:
         work = args.keep or Path(tmp)
         work.mkdir(parents=True, exist_ok=True)
-        print(f"soak: a {seconds:.0f} s lock-step session at 1 kHz, then a {runs}-run batch "
-              f"(samples every {interval:g} s, logs in {work})", flush=True)
-        session_rows, problems, session_what = soak_session(args.build, work, seconds, interval)
-        print(f"session: {session_what}", flush=True)
-        batch_rows, batch_what = soak_batch(args.build, work, runs, interval)
-        print(f"batch: {batch_what}")
+        parts = {"session": f"a {seconds:.0f} s lock-step session at 1 kHz",
+                 "batch": f"a {runs}-run batch"}
+        if args.only:
+            parts = {args.only: parts[args.only]}
+        print(f"soak: {', then '.join(parts.values())} (samples every {interval:g} s, logs in "
+              f"{work})", flush=True)
+        session_rows, problems, session_what = [], [], None
+        if "session" in parts:
+            session_rows, problems, session_what = soak_session(args.build, work, seconds,
+                                                                interval)
+            print(f"session: {session_what}", flush=True)
+        batch_rows, batch_what = [], None
+        if "batch" in parts:
+            batch_rows, batch_what = soak_batch(args.build, work, runs, interval)
+            print(f"batch: {batch_what}")
 
-    figures = []
-    for name, (a, b), other in session_rows + batch_rows:
-        detail = (f"{a / 1024:.1f} -> {b / 1024:.1f} MiB" if name.startswith("rss")
-                  else f"{a:.4f} -> {b:.4f} ms of CPU per simulated ms")
-        if other is not None:
-            detail += f"; other work on the host {other[0]:.0f} % -> {other[1]:.0f} %"
-        figures.append({"what": name, "growth_percent": growth(a, b), "detail": detail})
-        print(f"  {name:<16} {growth(a, b):+6.2f} %  ({detail})")
+    figures = [figure(*row) for row in session_rows + batch_rows]
+    for f in figures:
+        print(f"  {f['what']:<16} {f['growth_percent']:+6.2f} %  ({f['detail']})")
     for problem in problems:
         print(f"  recording: {problem}")
     rss = max(f["growth_percent"] for f in figures if f["what"].startswith("rss"))
     step = max(f["growth_percent"] for f in figures if f["what"].startswith("cpu"))
     if args.json:
         args.json.write_text(json.dumps({
-            "hours": hours, "session": session_what, "batch": batch_what,
+            "hours": hours, "parts": list(parts), "session": session_what, "batch": batch_what,
             "rss_growth_percent": rss, "step_time_growth_percent": step,
             "recording_whole": not problems, "figures": figures}, indent=1))
     print(f"rss growth {rss:.2f} %, step time growth {step:.2f} %")

@@ -4,7 +4,8 @@
 # the session), each watched for RSS and step-time growth from its first tenth to its last; ends
 # with one line "rss growth X %, step time growth Y %" and fails when either is 5 % or more or the
 # session's recording is not whole. About ten minutes by default (a 10-minute session, 83 runs).
-#   scripts/soak.sh [--hours H | --minutes M] [--interval S] [--keep DIR] [--json FILE]
+#   scripts/soak.sh [--hours H | --minutes M] [--only session|batch] [--interval S] [--keep DIR]
+#                    [--json FILE]
 # Needs a build (scripts/build.sh).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
