@@ -51,8 +51,8 @@ constexpr double kCentred = 0.0005;   ///< the ring's centre this near the post'
 // centre strays further from the jaws than this since it came up is held by something else (its
 // post, the board) and is not coming along: centring by sight would chase it without end.
 constexpr double kCarriedStray = 0.005;
-constexpr int kCentringIterations = 40;    ///< ... or this many iterations of trying
-constexpr int kMaxRegrasps = 2;            ///< per ring, as an operator would before moving on
+constexpr int kCentringIterations = 40;  ///< ... or this many iterations of trying
+constexpr int kMaxRegrasps = 2;          ///< per ring, as an operator would before moving on
 
 }  // namespace
 

@@ -123,7 +123,7 @@ class ArmRoutine {
   int waited_ = 0;
   Grasp grasp_;
   Eigen::Vector3d last_tool_ = Eigen::Vector3d::Zero();  ///< the measured tool, last iteration
-  double closed_;                     ///< the outer jaw's angle when closed
+  double closed_;                                        ///< the outer jaw's angle when closed
   double inner_ = 0.0, outer_ = 1.3;  ///< jaw angles: the inner one stays near vertical
 };
 
