@@ -132,6 +132,20 @@ def questionnaire_figure(answers, schemes):
     return picture(fig)
 
 
+def proficiency_lines(summary):
+    """Per task with a proficiency time, per scheme: trials within it, participants twice in a
+    row (the FLS curriculum's consecutive rule)."""
+    lines = []
+    for task, line in sorted(summary.get("proficiency", {}).items()):
+        schemes = "; ".join(
+            f"{s}: {c['within']} of {c['trials']} trials within, {c['proficient']} of "
+            f"{c['participants']} participants twice in a row"
+            for s, c in sorted(line["schemes"].items()))
+        lines.append(f"<li><b>{html.escape(task)}</b> (proficiency {line['time_s']:g} s): "
+                     f"{html.escape(schemes)}</li>")
+    return f"<ul>{''.join(lines)}</ul>" if lines else "<p>No task states a proficiency time.</p>"
+
+
 def tuning_figure(rows):
     tuned = [r for r in rows if r["tuning"] == "1" and r["tuning_cost"]]
     if not tuned:
@@ -199,6 +213,7 @@ table{{border-collapse:collapse;font-size:12px}}td,th{{border:1px solid #ccc;pad
 {summary['trials']} trials. Multiple comparisons: {html.escape(summary['correction'])}.</p>
 <h2>Metrics per scheme</h2>{metric_figures(compared, schemes, summary)}
 <h2>Learning</h2>{learning_figure(compared, schemes)}
+<h2>Proficiency</h2>{proficiency_lines(summary)}
 <h2>Questionnaires</h2>{questionnaire_figure(answers, schemes)}
 <h2>Paired comparisons</h2><p>* significant at 0.05 after the correction.</p>{comparisons}
 <h2>Tuning</h2>{tuning_figure(rows)}{recommended}

@@ -314,6 +314,9 @@ class SessionRun {
     for (const auto& [name, v] : metrics) {
       sealed["metrics"][name] = std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
     }
+    if (const auto bar = protocol_.task(planned.task).proficiency_time) {
+      sealed["proficiency_time_s"] = *bar;
+    }
     if (planned.tuning) {
       sealed["tuning"] = {{"parameters", nlohmann::json::array()},
                           {"settings", tuned},

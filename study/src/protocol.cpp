@@ -48,8 +48,8 @@ std::vector<Eigen::Vector3d> points(const YamlView& node) {
 }
 
 TaskSpec readTask(const std::string& name, const YamlView& node) {
-  checkKeys(node, {"kind", "instructions", "time_limit", "pattern", "count", "distance", "height",
-                   "width", "depth", "left", "right", "tolerance", "dwell"});
+  checkKeys(node, {"kind", "instructions", "time_limit", "proficiency_time", "pattern", "count",
+                   "distance", "height", "width", "depth", "left", "right", "tolerance", "dwell"});
   TaskSpec t;
   t.name = name;
   const std::string kind = node["kind"].asKeyword();
@@ -62,6 +62,10 @@ TaskSpec readTask(const std::string& name, const YamlView& node) {
   }
   if (auto v = node.find("instructions")) t.instructions = v->asString();
   if (auto v = node.find("time_limit")) t.time_limit = positive(*v);
+  if (auto v = node.find("proficiency_time")) {
+    t.proficiency_time = positive(*v);
+    if (*t.proficiency_time > t.time_limit) v->fail("must not exceed the task's time_limit");
+  }
   if (t.kind == TaskKind::PegTransfer) {
     for (const char* key : {"pattern", "count", "distance", "height", "width", "depth", "left",
                             "right", "tolerance", "dwell"}) {

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "study/participant_session.hpp"
+#include "study/proficiency.hpp"
 #include "study/settings_tuner.hpp"
 #include "study/statistics.hpp"
 
@@ -46,6 +47,9 @@ void loadParticipant(const fs::path& home, StudyData& data) {
         r.metrics[name] = v.is_null() ? std::nan("") : v.get<double>();
       }
       if (j.contains("tuning")) r.tuning_record = j.at("tuning");
+      if (j.contains("proficiency_time_s")) {
+        r.proficiency_time = j.at("proficiency_time_s").get<double>();
+      }
       data.trials.push_back(r);
     }
   }
@@ -383,6 +387,7 @@ nlohmann::json summarize(const StudyData& data, const PowerQuestion& power) {
   j["questionnaires"] = compareQuestionnaires(data, power, comparisons, power_rows);
   j["comparisons"] = comparisons;
   j["recommended"] = recommendSettings(data);
+  j["proficiency"] = proficiencySummary(data.trials);
   j["power"] = powerSection(power, power_rows);
   return j;
 }

@@ -95,6 +95,14 @@ TEST(StudyCli, TheExampleFindsTheDegradedSchemeWorseWithEightVirtualParticipants
     EXPECT_LE(divisor, 4000.0);
   }
   EXPECT_FALSE(summary.at("power").at("observed").empty());
+  // The example states a proficiency time for reach only: its line has each scheme's counts.
+  ASSERT_EQ(summary.at("proficiency").size(), 1u);
+  for (const auto& [scheme, line] : summary.at("proficiency").at("reach").at("schemes").items()) {
+    EXPECT_EQ(line.at("trials"), 8 * 3) << scheme;
+    EXPECT_LE(line.at("within").get<int>(), 8 * 3) << scheme;
+    EXPECT_LE(line.at("proficient").get<int>(), 8) << scheme;
+  }
+  EXPECT_NE(text(dir.path() / "r" / "report.html").find("<h2>Proficiency</h2>"), std::string::npos);
   EXPECT_NE(text(dir.path() / "r" / "report.html").find("data:image/png;base64"),
             std::string::npos);
   // The long CSV: a row per trial and metric, each task's rows kept apart by their task.

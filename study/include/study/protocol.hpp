@@ -27,6 +27,9 @@ struct TaskSpec {
   TaskKind kind = TaskKind::Targets;
   std::string instructions;  ///< shown before each trial
   double time_limit = 60.0;  ///< s; a trial that reaches it is ended and marked not completed
+  /// s: the FLS-style bar the report counts trials and participants against (finished within
+  /// it; twice in a row), when the protocol states one.
+  std::optional<double> proficiency_time;
   // Targets only. Per arm, each target is relative to the arm's homed tool tip (controller
   // frame, m); arms with no targets hold still.
   std::string pattern = "random";            ///< "random", "rectangle" or "list"

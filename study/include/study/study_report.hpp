@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,7 @@ struct TrialRecord {
   int trials_before = 0;
   TrialMetrics metrics;
   nlohmann::json tuning_record;  ///< settings, cost, parameters (tuning trials)
+  std::optional<double> proficiency_time;  ///< s, the task's, when the protocol stated one
 };
 
 /// One questionnaire a participant answered after a condition.
