@@ -70,6 +70,16 @@ QuestionnaireForm sus() {
 
 }  // namespace
 
+std::optional<int> wholeNumber(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const int v = std::stoi(text, &used);
+    if (text.find_first_not_of(" \t\r\n", used) == std::string::npos) return v;
+  } catch (const std::exception&) {
+  }
+  return std::nullopt;
+}
+
 bool AnswerScale::valid(int answer) const {
   return answer >= low && answer <= high && (answer - low) % step == 0;
 }

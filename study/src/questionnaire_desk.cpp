@@ -14,12 +14,7 @@ std::optional<int> TerminalDesk::readAnswer(const std::string& prompt, const std
     out_ << prompt << std::flush;
     std::string line;
     if (!std::getline(in_, line)) return std::nullopt;
-    try {
-      std::size_t used = 0;
-      const int a = std::stoi(line, &used);
-      if (line.find_first_not_of(" \t\r", used) == std::string::npos && accept(a)) return a;
-    } catch (const std::exception&) {
-    }
+    if (const auto a = wholeNumber(line); a && accept(*a)) return a;
     out_ << "  please answer " << rule << '\n';
   }
 }

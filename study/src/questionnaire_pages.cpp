@@ -27,17 +27,6 @@ std::string valueOf(const Submission& submitted, const std::string& field) {
   return it == submitted.end() ? "" : it->second;
 }
 
-/// The whole number `text` holds (spaces around allowed), or none.
-std::optional<int> wholeNumber(const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const int v = std::stoi(text, &used);
-    if (text.find_first_not_of(" \t\r\n", used) == std::string::npos) return v;
-  } catch (const std::exception&) {
-  }
-  return std::nullopt;
-}
-
 std::string fieldset(const std::string& field, const std::string& legend, const std::string& body,
                      const std::map<std::string, std::string>& problems) {
   const auto problem = problems.find(field);

@@ -62,6 +62,10 @@ std::optional<QuestionnaireForm> builtinForm(const std::string& name, bool weigh
 QuestionnaireForm likertForm(const std::string& name, const std::vector<std::string>& statements,
                              int points);
 
+/// The whole number `text` holds (spaces around it allowed), or none: how a typed answer is read,
+/// in the terminal and from a page.
+std::optional<int> wholeNumber(const std::string& text);
+
 /// One questionnaire's answers and score.
 struct QuestionnaireAnswers {
   std::string name;
