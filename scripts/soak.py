@@ -34,7 +34,7 @@ import time
 from pathlib import Path
 
 LIMIT_PERCENT = 5.0
-BATCH_RUNS_PER_HOUR = 500  # 1,000 runs for a two-hour soak; about as long as the session
+BATCH_RUNS_PER_HOUR = 500  # 1,000 runs for a two-hour soak
 BATCH_THREADS = 2
 # A worker's first runs size its heap: glibc serves a world's large blocks by mmap until it frees
 # one, then raises its mmap threshold and keeps later worlds' blocks in the heap (about 15 % more
@@ -294,14 +294,16 @@ def soak_session(build, work, seconds, interval):
     return rows, problems, what
 
 
-def soak_batch(build, work, runs, interval):
+def soak_batch(build, work, runs, interval, run_seconds):
     """raven_peg_transfer's nominal scene `runs` times: every run the same work, so any change from
-    the first tenth of runs to the last is the process's own."""
+    the first tenth of runs to the last is the process's own. `run_seconds`: each run ends after
+    that much simulated time (None: when its six rings are done)."""
     out = fresh_folder(work / "batch")
     jsonl = out / "runs.jsonl"
+    limit = ["--time-limit", f"{run_seconds:g}"] if run_seconds else []
     batch = subprocess.Popen(
         [str(build / "scenario/raven_peg_transfer"), "--runs", str(runs), "--threads",
-         str(BATCH_THREADS), "--record", "no", "--out", str(out), "-q"],
+         str(BATCH_THREADS), "--record", "no", "--out", str(out), "-q"] + limit,
         stdout=open(work / "batch.log", "w"), stderr=subprocess.STDOUT)
 
     def finished():
@@ -325,7 +327,9 @@ def soak_batch(build, work, runs, interval):
             ("cpu batch", tenths.cpu_per_progress(["batch"], lambda done: simulated_after[done]),
              tenths.other_load(["batch"]), tenths.reference())]
     placed = sum(r["placed"] for r in results)
-    return rows, f"{runs} nominal runs on {BATCH_THREADS} threads, {placed} of {6 * runs} placed"
+    each = f", each cut at {run_seconds:g} s simulated" if run_seconds else ""
+    return rows, (f"{runs} nominal runs on {BATCH_THREADS} threads{each}, {placed} of {6 * runs} "
+                  "placed")
 
 
 def main():
@@ -340,6 +344,10 @@ def main():
     parser.add_argument("--only", choices=["session", "batch"],
                         help="run one part alone (a two-hour soak's session and batch take about "
                         "four hours on two cores; each part's figures stand on their own)")
+    parser.add_argument("--run-seconds", type=float,
+                        help="end each batch run after this many simulated seconds (a whole "
+                        "nominal run is 115 s, about 22 s of one core here: 1,000 whole runs take "
+                        "three hours on two cores; at 30 s each places two rings, in one hour)")
     parser.add_argument("--check", choices=["all", "memory"], default="all",
                         help="what fails the run: all (RSS, step time, the recording) or memory "
                         "(RSS and the recording; a short run's step time is the host's noise)")
@@ -347,6 +355,8 @@ def main():
     hours = args.hours if args.hours is not None else (args.minutes or 10.0) / 60.0
     if not hours > 0:
         raise SystemExit("soak: --hours / --minutes must be positive")
+    if args.run_seconds is not None and not args.run_seconds > 0:
+        raise SystemExit("soak: --run-seconds must be positive")
     seconds = 3600.0 * hours
     runs = max(BATCH_THREADS * (WARMUP_RUNS_PER_THREAD + 3), round(BATCH_RUNS_PER_HOUR * hours))
     interval = args.interval or min(5.0, max(0.2, seconds / 600.0))
@@ -367,7 +377,8 @@ def main():
             print(f"session: {session_what}", flush=True)
         batch_rows, batch_what = [], None
         if "batch" in parts:
-            batch_rows, batch_what = soak_batch(args.build, work, runs, interval)
+            batch_rows, batch_what = soak_batch(args.build, work, runs, interval,
+                                                args.run_seconds)
             print(f"batch: {batch_what}")
 
     figures = [figure(*row) for row in session_rows + batch_rows]

@@ -5,7 +5,7 @@
 # with one line "rss growth X %, step time growth Y %" and fails when either is 5 % or more or the
 # session's recording is not whole. About ten minutes by default (a 10-minute session, 83 runs).
 #   scripts/soak.sh [--hours H | --minutes M] [--only session|batch] [--interval S] [--keep DIR]
-#                    [--json FILE]
+#                    [--json FILE] [--run-seconds S (each batch run cut at S simulated seconds)]
 # Needs a build (scripts/build.sh).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"

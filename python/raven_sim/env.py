@@ -182,7 +182,8 @@ class PegTransferEnv(_Env):
             result = self.core.step_pad(action)
         else:
             result = self.core.step(action)
-        info = {"placed": result.placed, "refused": result.refused, "time": self.core.time}
+        info = {"placed": result.placed, "refused": result.refused, "time": self.core.time,
+                "faulted": result.faulted}  # e-stopped: truncated, every later command refused
         if result.failure:  # the world's guard stopped it: truncated, the last good observation
             info["failure"] = result.failure
         return (self._observe(result.observation), result.reward, result.terminated,

@@ -87,6 +87,7 @@ void bindEnvironment(py::module_& m) {
       .def_readonly("truncated", &scenario::PegTransferStep::truncated)
       .def_readonly("placed", &scenario::PegTransferStep::placed)
       .def_readonly("refused", &scenario::PegTransferStep::refused)
+      .def_readonly("faulted", &scenario::PegTransferStep::faulted)
       .def_readonly("failure", &scenario::PegTransferStep::failure);
 
   py::class_<SavedEpisode>(m, "PegTransferState",

@@ -150,7 +150,8 @@ PegTransferStep PegTransferEnv::finishStep(std::size_t refused) {
   out.reward = placed_ - before;
   out.placed = placed_;
   out.terminated = placed_ == static_cast<int>(rings_.size());
-  out.truncated = !out.terminated && time() >= options_.time_limit;
+  out.faulted = session_->twin().operatingStatus().state == bridge::OperatingState::Fault;
+  out.truncated = !out.terminated && (out.faulted || time() >= options_.time_limit);
   out.refused = refused;
   return out;
 }

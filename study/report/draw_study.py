@@ -27,7 +27,9 @@ from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 SHOWN = ["completion_time_s", "overshoots", "path_length_m", "idle_time_s", "sparc",
          "velocity_cap_hits", "joint_limit_hits", "rings_placed", "rings_dropped",
-         "board_collisions", "peak_grasp_force_n", "mean_grasp_force_n"]
+         "instrument_collisions", "excessive_force_time_s", "out_of_view_time_s",
+         "tip_range_left_m", "tip_range_right_m", "stick_range_left", "stick_range_right",
+         "peak_grasp_force_n", "mean_grasp_force_n"]
 
 
 QUESTIONNAIRE_TITLES = {"nasa-tlx": "NASA-TLX (lower: less workload)",

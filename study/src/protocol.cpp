@@ -48,8 +48,9 @@ std::vector<Eigen::Vector3d> points(const YamlView& node) {
 }
 
 TaskSpec readTask(const std::string& name, const YamlView& node) {
-  checkKeys(node, {"kind", "instructions", "time_limit", "proficiency_time", "pattern", "count",
-                   "distance", "height", "width", "depth", "left", "right", "tolerance", "dwell"});
+  checkKeys(node, {"kind", "instructions", "time_limit", "proficiency_time", "excessive_force",
+                   "pattern", "count", "distance", "height", "width", "depth", "left", "right",
+                   "tolerance", "dwell"});
   TaskSpec t;
   t.name = name;
   const std::string kind = node["kind"].asKeyword();
@@ -66,6 +67,7 @@ TaskSpec readTask(const std::string& name, const YamlView& node) {
     t.proficiency_time = positive(*v);
     if (*t.proficiency_time > t.time_limit) v->fail("must not exceed the task's time_limit");
   }
+  if (auto v = node.find("excessive_force")) t.excessive_force = positive(*v);
   if (t.kind == TaskKind::PegTransfer) {
     for (const char* key : {"pattern", "count", "distance", "height", "width", "depth", "left",
                             "right", "tolerance", "dwell"}) {

@@ -46,6 +46,9 @@ void loadParticipant(const fs::path& home, StudyData& data) {
       for (const auto& [name, v] : j.at("metrics").items()) {
         r.metrics[name] = v.is_null() ? std::nan("") : v.get<double>();
       }
+      for (const std::string& m : metricNames()) {
+        r.metrics.try_emplace(m, std::nan(""));  // measured before the metric existed
+      }
       if (j.contains("tuning")) r.tuning_record = j.at("tuning");
       if (j.contains("proficiency_time_s")) {
         r.proficiency_time = j.at("proficiency_time_s").get<double>();

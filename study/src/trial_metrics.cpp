@@ -11,6 +11,7 @@
 #include "raven/platform_profile.hpp"
 #include "recording/cf_recording.hpp"
 #include "recording/recording_io.hpp"
+#include "study/instrument_metrics.hpp"
 #include "study/trial_events.hpp"
 
 namespace study {
@@ -138,8 +139,7 @@ double meanSparc(const raven::PerArm<TipPath>& paths, const std::vector<TrialEve
 }
 
 /// Peak and mean (over the rows where that grasper touches something) jaw normal force.
-std::pair<double, double> graspForces(const fs::path& cf_file) {
-  const recording::CfRecording cf = recording::readCf(cf_file);
+std::pair<double, double> graspForces(const recording::CfRecording& cf) {
   raven::PerArm<std::array<std::size_t, 3>> cols;
   for (std::size_t a = 0; a < 2; ++a) {
     const std::string arm = a == 0 ? "left_" : "right_";
@@ -171,23 +171,34 @@ struct MetricInfo {
   const char* meaning;
   int sense;
 };
-constexpr std::array<MetricInfo, 16> kMetrics{{
+constexpr std::array<MetricInfo, 27> kMetrics{{
     {"completion_time_s", "s to finish (the time limit when not finished)", -1},
     {"completed", "1 when the task was finished within its time limit", +1},
     {"targets_reached", "targets held for the dwell time", +1},
     {"overshoots", "times a tip left its target before holding it", -1},
     {"rings_placed", "rings resting on their target posts at the end", +1},
     {"rings_dropped", "rings that fell back to the board off their target post", -1},
-    {"path_length_m", "both tool tips' path, m", -1},
+    {"path_length_m", "both tool tips' path (economy of motion), m", -1},
     {"path_length_left_m", "the left tool tip's path, m", -1},
     {"path_length_right_m", "the right tool tip's path, m", -1},
     {"idle_time_s", "s with both tips slower than 1 mm/s", -1},
     {"sparc", "spectral arc length per movement; closer to 0 is smoother", +1},
     {"joint_limit_hits", "iterations a target was clamped at a joint limit", -1},
     {"velocity_cap_hits", "iterations the velocity cap stretched", -1},
+    {"e_stops", "times the robot e-stopped (FAULT: an amplifier overdriven, a guard)", -1},
     {"peak_grasp_force_n", "largest jaw normal force, N (material forces)", 0},
     {"mean_grasp_force_n", "mean jaw normal force while grasping, N", 0},
-    {"board_collisions", "times a tool came into contact with the board", -1},
+    {"instrument_collisions", "contact episodes of a tool with the other or the board", -1},
+    {"tool_collisions", "contact episodes of the two arms with each other", -1},
+    {"board_collisions", "contact episodes of a tool with the board's surface", -1},
+    {"post_collisions", "contact episodes of a tool with a post", -1},
+    {"excessive_force_time_s", "s a jaw pressed on anything above the task's threshold", -1},
+    {"excessive_force_peak_n", "largest jaw force above the threshold, N (0: none)", -1},
+    {"out_of_view_time_s", "s a tool's jaws were outside the task camera's picture, summed", -1},
+    {"tip_range_left_m", "radius of the left tool tip's workspace, m", -1},
+    {"tip_range_right_m", "radius of the right tool tip's workspace, m", -1},
+    {"stick_range_left", "radius of the left stick's deflections (full tilt 1)", -1},
+    {"stick_range_right", "radius of the right stick's deflections (full tilt 1)", -1},
 }};
 
 const MetricInfo* infoOf(const std::string& name) {
@@ -282,10 +293,13 @@ TrialMetrics measureTrial(const fs::path& dir) {
   m["sparc"] = meanSparc(paths, events, end->time);
   m["joint_limit_hits"] = count("joint_limit");
   m["velocity_cap_hits"] = count("velocity_cap");
-  const auto [peak, mean] = graspForces(fileEnding(dir, "_cf.csv"));
+  m["e_stops"] = count("robot_fault");
+  const recording::CfRecording cf = recording::readCf(fileEnding(dir, "_cf.csv"));
+  const auto [peak, mean] = graspForces(cf);
   m["peak_grasp_force_n"] = peak;
   m["mean_grasp_force_n"] = mean;
-  m["board_collisions"] = rings ? count("board_contact") : kNaN;
+  measureInstruments(m, events, {paths[0].p, paths[1].p}, cf,
+                     recording::readCi(fileEnding(dir, "_ci.csv")), end->time);
   return m;
 }
 

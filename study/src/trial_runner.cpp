@@ -8,6 +8,8 @@
 #include "raven/arm_kinematics.hpp"
 #include "raven/platform_profile.hpp"
 #include "scenario/scripted_session.hpp"
+#include "study/collision_watch.hpp"
+#include "study/view_watch.hpp"
 #include "twin/calibration_profile.hpp"
 
 namespace study {
@@ -16,6 +18,11 @@ namespace {
 
 /// How long a homing may take (s of platform time).
 constexpr double kHomingLimit = 60.0;
+
+/// The body whose origin is each arm's jaw axis.
+std::string jawBody(raven::Arm arm) {
+  return "/raven2/" + std::string(raven::armName(arm)) + "/jaw1_link";
+}
 
 }  // namespace
 
@@ -41,13 +48,18 @@ TrialRun runTrial(const TrialSettings& s) {
   if (const auto launch = task->launchFile(); !launch.empty()) twin_options.launch_file = launch;
   twin_options.clock = s.wall_clock ? bridge::ClockKind::Wall : bridge::ClockKind::Simulated;
   twin::CalibrationProfile::shipped().applyTo(twin_options);  // the robot's own motors
-  std::unique_ptr<viewer::VideoRecorder> video;  // opened at the first step, when the world is
+  std::unique_ptr<viewer::VideoRecorder> video;  // opened at the first step of the trial
+  std::optional<viewer::View> camera;            // the task's, once the twin is homed
+  const viewer::VideoOptions video_options = s.video.value_or(viewer::VideoOptions{});
   if (s.video) {
-    viewer::VideoOptions options = *s.video;
-    options.file = s.dir / "trial.mp4";
-    options.visual_skin = raven::ravenVisualSkin();
-    twin_options.after_step = [&video, options](const ambf_like::World& world) {
-      if (!video) video = std::make_unique<viewer::VideoRecorder>(world, options, std::nullopt);
+    twin_options.after_step = [&](const ambf_like::World& world) {
+      if (!camera) return;  // homing is not filmed
+      if (!video) {
+        viewer::VideoOptions options = video_options;
+        options.file = s.dir / "trial.mp4";
+        options.visual_skin = raven::ravenVisualSkin();
+        video = std::make_unique<viewer::VideoRecorder>(world, options, camera);
+      }
       video->capture(world);
     };
   }
@@ -55,6 +67,9 @@ TrialRun runTrial(const TrialSettings& s) {
   scripted.makeReady(kHomingLimit);
   twin::TwinPlatform& twin = scripted.twin();
   controller::DualPlatformController& control = scripted.controller();
+  const raven::PerArm<const ambf_like::RigidBody*> jaws{
+      &twin.world().body(jawBody(raven::Arm::Left)),
+      &twin.world().body(jawBody(raven::Arm::Right))};
 
   const auto profile = raven::builtinProfile(s.condition.controllerOptions().profile);
   const raven::PerArm<raven::ArmKinematics> kinematics{
@@ -67,13 +82,14 @@ TrialRun runTrial(const TrialSettings& s) {
     for (raven::Arm arm : raven::kArms) {
       const auto a = raven::slot(arm);
       v.tips[a] = kinematics[a].toolPose(twin.measuredJs(arm).position).translation();
+      v.jaws[a] = jaws[a]->pose().translation();
     }
     v.world = &twin.world();
     return v;
   };
 
   EventLog events(s.dir / "events.csv");
-  bool first = true, clamped = false, capped = false;
+  bool first = true, clamped = false, capped = false, faulted = false;
   controller::SessionOptions options;
   options.out_dir = s.dir;
   options.record_name = "trial";
@@ -93,8 +109,13 @@ TrialRun runTrial(const TrialSettings& s) {
 
   TrialRun run;
   if (s.ready && !s.ready()) return run;
-  task->begin(view(), events);
+  const TaskView first_view = view();
+  camera = task->camera(first_view);
+  CollisionWatch collisions(task->board());
+  ViewWatch sight(camera->camera, video_options.width, video_options.height);
+  task->begin(first_view, events);
   events.add(0.0, "trial_start");
+  events.add(0.0, "force_threshold", -1, s.task.excessive_force);
   session.select(controller::Mode::Manual);
   session.startRecording();
   double next_status = 0.0;
@@ -108,9 +129,15 @@ TrialRun runTrial(const TrialSettings& s) {
     if (s.before_turn) s.before_turn(now.time, task->goals(), now.tips);
     session.turn();
     now = view();
+    const bool fault = twin.operatingStatus().state == bridge::OperatingState::Fault;
+    if (fault && !faulted) events.add(now.time, "robot_fault");
+    faulted = fault;
     task->observe(now, events);
+    collisions.observe(now.time, now.world->contacts(), events);
+    sight.observe(now.time, now.jaws, events);
     if (s.status && now.time >= next_status) {
-      s.status(task->status(now));
+      s.status(task->status(now) +
+               (collisions.touchingBoard() ? "  (a tool touches the board)" : ""));
       next_status = now.time + 0.1;
     }
   }

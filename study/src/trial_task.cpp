@@ -8,6 +8,8 @@
 #include "raven/platform_profile.hpp"
 #include "scenario/peg_layout.hpp"
 #include "scenario/ring_nodes.hpp"
+#include "scenario/task_views.hpp"
+#include "study/view_watch.hpp"
 
 namespace study {
 
@@ -91,6 +93,20 @@ class TargetsTask final : public TrialTask {
     return line;
   }
 
+  /// Framed on a ball around both start points that holds every target (each is an offset from
+  /// its arm's start point, so this holds in any frame), half as large again for the way there.
+  viewer::View camera(const TaskView& start) const override {
+    double reach = spec_.tolerance;
+    for (const auto& offsets : offsets_) {
+      for (const Eigen::Vector3d& offset : offsets) reach = std::max(reach, offset.norm());
+    }
+    const Eigen::Vector3d centre = (start.jaws[0] + start.jaws[1]) / 2.0;
+    const double radius = 1.5 * ((start.jaws[0] - centre).norm() + reach + spec_.tolerance);
+    return {"task", cameraHolding(centre, radius), std::nullopt};
+  }
+
+  std::optional<scenario::BoardGeometry> board() const override { return std::nullopt; }
+
   bool virtualParticipantsCan() const override { return true; }
 
  private:
@@ -143,19 +159,6 @@ class PegTransferTask final : public TrialTask {
       if (placed) r.lifted = false;
       r.placed = placed;
     }
-    raven::PerArm<bool> touching{};
-    for (const ambf_like::Contact& c : view.world->contacts("peg_board")) {
-      for (const std::string* name : {&c.body_a, &c.body_b}) {
-        if (name->rfind("/raven2/left/", 0) == 0) touching[0] = true;
-        if (name->rfind("/raven2/right/", 0) == 0) touching[1] = true;
-      }
-    }
-    for (int a = 0; a < 2; ++a) {
-      const auto s = static_cast<std::size_t>(a);
-      if (touching[s] && !board_contact_[s]) events.add(view.time, "board_contact", a, 0);
-      if (!touching[s] && board_contact_[s]) events.add(view.time, "board_contact_end", a, 0);
-      board_contact_[s] = touching[s];
-    }
   }
 
   bool done() const override {
@@ -173,10 +176,15 @@ class PegTransferTask final : public TrialTask {
       placed += r.placed ? 1 : 0;
       carried += r.lifted ? 1 : 0;
     }
-    return fmt::format(
-        "rings placed {}/6, off the board {}{}", placed, carried,
-        board_contact_[0] || board_contact_[1] ? "  (a tool touches the board)" : "");
+    return fmt::format("rings placed {}/6, off the board {}", placed, carried);
   }
+
+  /// The overview: both work areas, every ring on its post can be counted.
+  viewer::View camera(const TaskView& start) const override {
+    return scenario::pegTransferViews(*start.world, layout_).front();
+  }
+
+  std::optional<scenario::BoardGeometry> board() const override { return layout_.geometry; }
 
   bool virtualParticipantsCan() const override { return false; }
 
@@ -188,7 +196,6 @@ class PegTransferTask final : public TrialTask {
   scenario::PegLayout layout_;
   std::array<const ambf_like::SoftBody*, 6> rings_{};
   std::array<Ring, 6> state_;
-  raven::PerArm<bool> board_contact_{};
 };
 
 }  // namespace

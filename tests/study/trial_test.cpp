@@ -86,6 +86,17 @@ TEST(Trial, AVirtualParticipantReachesTargetsThroughTheVirtualPad) {
   EXPECT_LT(m.at("sparc"), 0.0);
   EXPECT_TRUE(std::isnan(m.at("rings_placed")));        // not a peg task
   EXPECT_TRUE(std::isnan(m.at("peak_grasp_force_n")));  // nothing was grasped
+  EXPECT_TRUE(std::isnan(m.at("board_collisions")));    // no board
+  EXPECT_EQ(m.at("instrument_collisions"), 0.0);
+  EXPECT_EQ(m.at("excessive_force_time_s"), 0.0);
+  EXPECT_EQ(m.at("out_of_view_time_s"), 0.0);  // the task camera holds every target
+  // Each tip went to targets 10 mm out and up to 5 mm up from its start (within 3 mm): a
+  // workspace radius of at least half of 10 - 3 mm, at most twice the 14.2 mm it can reach.
+  for (const char* range : {"tip_range_left_m", "tip_range_right_m"}) {
+    EXPECT_GT(m.at(range), 0.003) << range;
+    EXPECT_LT(m.at(range), 0.03) << range;
+  }
+  EXPECT_GT(m.at("stick_range_left"), 0.1);
 }
 
 TEST(Trial, TheGateKeepsTheConditionsSchemeAndIk) {
@@ -140,8 +151,8 @@ TEST(Trial, ABrokenEventsFileIsRefusedNamingTheRow) {
 namespace {
 
 TEST(Trial, ThePegTransferTaskWatchesTheRingsAndTheBoard) {
-  // No person and no virtual participant here: the left stick held down (bumper: along z) by a
-  // scripted reading takes the left tool into the board.
+  // No person and no virtual participant here: the left stick held down (bumper: along z) for
+  // the first 10 s by a scripted reading takes the left tool into the board, where it stays.
   controller::SdlGamepad pad(controller::TriggerScale::XboxOne, controller::Polling::Caller);
   harness::VirtualGamepad thumbs;
   ASSERT_TRUE(thumbs.ok()) << SDL_GetError();
@@ -156,7 +167,10 @@ TEST(Trial, ThePegTransferTaskWatchesTheRingsAndTheBoard) {
   s.task.time_limit = 15.0;
   s.dir = dir.path() / "rings";
   s.pad = &pad;
-  s.before_turn = [&](double, const auto&, const auto&) { pad.poll(); };
+  s.before_turn = [&](double t, const auto&, const auto&) {
+    if (t >= 10.0) thumbs.axis(SDL_CONTROLLER_AXIS_LEFTY, 0);
+    pad.poll();
+  };
   const study::TrialRun run = study::runTrial(s);
   ASSERT_TRUE(run.finished);
   EXPECT_FALSE(run.completed);
@@ -165,7 +179,20 @@ TEST(Trial, ThePegTransferTaskWatchesTheRingsAndTheBoard) {
   EXPECT_NEAR(m.at("completion_time_s"), 15.0, 0.1);  // ran to its time limit
   EXPECT_EQ(m.at("rings_placed"), 0.0);
   EXPECT_EQ(m.at("rings_dropped"), 0.0);
-  EXPECT_GE(m.at("board_collisions"), 1.0);
+  // One touch of the board, held: one collision; no post, the other arm untouched.
+  EXPECT_EQ(m.at("board_collisions"), 1.0);
+  EXPECT_EQ(m.at("post_collisions"), 0.0);
+  EXPECT_EQ(m.at("tool_collisions"), 0.0);
+  EXPECT_EQ(m.at("instrument_collisions"), 1.0);
+  EXPECT_EQ(m.at("out_of_view_time_s"), 0.0);  // the overview shows both work areas
+  // The stick at full tilt, then at rest: half its travel; the right one never moved.
+  EXPECT_NEAR(m.at("stick_range_left"), 0.5, 1e-4);
+  EXPECT_EQ(m.at("stick_range_right"), 0.0);
+  EXPECT_GT(m.at("tip_range_left_m"), 0.005);
+  EXPECT_GE(m.at("excessive_force_time_s"), 0.0);
+  // Held down on the board, the left arm's motors wind up against it until an amplifier passes
+  // its overdrive threshold and the robot e-stops, as the physical robot does.
+  EXPECT_EQ(m.at("e_stops"), 1.0);
   EXPECT_TRUE(std::isnan(m.at("targets_reached")));
 }
 

@@ -56,7 +56,11 @@ struct PegTransferStep {
   /// on its target post, -1 if one leaves it.
   double reward = 0.0;
   bool terminated = false;  ///< all six rest on their target posts
-  bool truncated = false;   ///< the time limit passed first, or the world failed
+  bool truncated = false;   ///< the time limit passed first, the robot faulted, or the world failed
+  /// The robot e-stopped (FAULT: an amplifier past its overdrive threshold, a guard tripped):
+  /// it refuses every command until enabled again, so the episode is truncated here rather than
+  /// run on, refused, to its time limit.
+  bool faulted = false;
   /// Why the world failed in this step (its guard: ambf_like::SimulationDiverged), or empty.
   /// Then the episode is truncated, the observation is the last good one and the reward 0;
   /// step() refuses to go on until reset().

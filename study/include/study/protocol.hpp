@@ -30,6 +30,9 @@ struct TaskSpec {
   /// s: the FLS-style bar the report counts trials and participants against (finished within
   /// it; twice in a row), when the protocol states one.
   std::optional<double> proficiency_time;
+  /// N: a jaw pressing on anything harder than this is excessive force. 3 N pinches bowel
+  /// against a 5 N pull (../shared/reference/soft-materials.md); a ring needs far less.
+  double excessive_force = 3.0;
   // Targets only. Per arm, each target is relative to the arm's homed tool tip (controller
   // frame, m); arms with no targets hold still.
   std::string pattern = "random";            ///< "random", "rectangle" or "list"

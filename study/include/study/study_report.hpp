@@ -28,7 +28,7 @@ struct TrialRecord {
   bool tuning = false;
   int trials_before = 0;
   TrialMetrics metrics;
-  nlohmann::json tuning_record;  ///< settings, cost, parameters (tuning trials)
+  nlohmann::json tuning_record;            ///< settings, cost, parameters (tuning trials)
   std::optional<double> proficiency_time;  ///< s, the task's, when the protocol stated one
 };
 

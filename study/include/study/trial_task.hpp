@@ -11,9 +11,11 @@
 #include <optional>
 #include <string>
 
+#include "scenario/ring_view.hpp"
 #include "study/protocol.hpp"
 #include "study/trial_events.hpp"
 #include "twin/twin_platform.hpp"
+#include "viewer/view.hpp"
 
 namespace study {
 
@@ -21,6 +23,7 @@ namespace study {
 struct TaskView {
   double time = 0.0;                    ///< s since the trial began
   raven::PerArm<Eigen::Vector3d> tips;  ///< tool tips, controller frame (m), left first
+  raven::PerArm<Eigen::Vector3d> jaws;  ///< the jaws' axes, world frame (m), left first
   const ambf_like::World* world = nullptr;
 };
 
@@ -45,6 +48,11 @@ class TrialTask {
   virtual raven::PerArm<ArmGoal> goals() const = 0;
   /// One line for the terminal: what is left, how far.
   virtual std::string status(const TaskView& view) const = 0;
+  /// The task camera, fixed in the world: what the trial's video shows, and what the jaws are
+  /// out of view of.
+  virtual viewer::View camera(const TaskView& start) const = 0;
+  /// The board the tools may collide with, if the scene has one.
+  virtual std::optional<scenario::BoardGeometry> board() const = 0;
   /// Whether the virtual participants of this kit can do the task.
   virtual bool virtualParticipantsCan() const = 0;
 };
