@@ -35,6 +35,10 @@ from pathlib import Path
 
 LIMIT_PERCENT = 5.0
 BATCH_RUNS_PER_HOUR = 500  # 1,000 runs for a two-hour soak
+# Each run ends after this much simulated time: its world built, homed, two rings grasped, carried
+# and placed, and torn down. A whole nominal run (115 s simulated, six rings) takes about 22 s of
+# a core here, so 1,000 of them would take three hours of both cores; cut, the batch takes one.
+BATCH_RUN_SECONDS = 30.0
 BATCH_THREADS = 2
 # A worker's first runs size its heap: glibc serves a world's large blocks by mmap until it frees
 # one, then raises its mmap threshold and keeps later worlds' blocks in the heap (about 15 % more
@@ -344,10 +348,9 @@ def main():
     parser.add_argument("--only", choices=["session", "batch"],
                         help="run one part alone (a two-hour soak's session and batch take about "
                         "four hours on two cores; each part's figures stand on their own)")
-    parser.add_argument("--run-seconds", type=float,
-                        help="end each batch run after this many simulated seconds (a whole "
-                        "nominal run is 115 s, about 22 s of one core here: 1,000 whole runs take "
-                        "three hours on two cores; at 30 s each places two rings, in one hour)")
+    parser.add_argument("--run-seconds", type=float, default=BATCH_RUN_SECONDS,
+                        help="end each batch run after this many simulated seconds; 0: whole runs "
+                        f"(default {BATCH_RUN_SECONDS:g})")
     parser.add_argument("--check", choices=["all", "memory"], default="all",
                         help="what fails the run: all (RSS, step time, the recording) or memory "
                         "(RSS and the recording; a short run's step time is the host's noise)")
@@ -355,8 +358,8 @@ def main():
     hours = args.hours if args.hours is not None else (args.minutes or 10.0) / 60.0
     if not hours > 0:
         raise SystemExit("soak: --hours / --minutes must be positive")
-    if args.run_seconds is not None and not args.run_seconds > 0:
-        raise SystemExit("soak: --run-seconds must be positive")
+    if not args.run_seconds >= 0:
+        raise SystemExit("soak: --run-seconds must be 0 (whole runs) or positive")
     seconds = 3600.0 * hours
     runs = max(BATCH_THREADS * (WARMUP_RUNS_PER_THREAD + 3), round(BATCH_RUNS_PER_HOUR * hours))
     interval = args.interval or min(5.0, max(0.2, seconds / 600.0))

@@ -24,6 +24,23 @@ std::string jawBody(raven::Arm arm) {
   return "/raven2/" + std::string(raven::armName(arm)) + "/jaw1_link";
 }
 
+/// When the settings ask for a video: the trial filmed from the task camera into `video`, from
+/// the first step after `camera` is set (homing is not filmed).
+void filmTrial(const TrialSettings& s, const std::optional<viewer::View>& camera,
+               std::unique_ptr<viewer::VideoRecorder>& video, twin::TwinOptions& options) {
+  if (!s.video) return;
+  options.after_step = [&s, &camera, &video](const ambf_like::World& world) {
+    if (!camera) return;
+    if (!video) {
+      viewer::VideoOptions film = *s.video;
+      film.file = s.dir / "trial.mp4";
+      film.visual_skin = raven::ravenVisualSkin();
+      video = std::make_unique<viewer::VideoRecorder>(world, film, camera);
+    }
+    video->capture(world);
+  };
+}
+
 }  // namespace
 
 recording::GamepadState gatePad(const Condition& condition, recording::GamepadState pad,
@@ -50,19 +67,7 @@ TrialRun runTrial(const TrialSettings& s) {
   twin::CalibrationProfile::shipped().applyTo(twin_options);  // the robot's own motors
   std::unique_ptr<viewer::VideoRecorder> video;  // opened at the first step of the trial
   std::optional<viewer::View> camera;            // the task's, once the twin is homed
-  const viewer::VideoOptions video_options = s.video.value_or(viewer::VideoOptions{});
-  if (s.video) {
-    twin_options.after_step = [&](const ambf_like::World& world) {
-      if (!camera) return;  // homing is not filmed
-      if (!video) {
-        viewer::VideoOptions options = video_options;
-        options.file = s.dir / "trial.mp4";
-        options.visual_skin = raven::ravenVisualSkin();
-        video = std::make_unique<viewer::VideoRecorder>(world, options, camera);
-      }
-      video->capture(world);
-    };
-  }
+  filmTrial(s, camera, video, twin_options);
   scenario::ScriptedSession scripted(twin_options, s.condition.controllerOptions());
   scripted.makeReady(kHomingLimit);
   twin::TwinPlatform& twin = scripted.twin();
@@ -112,7 +117,8 @@ TrialRun runTrial(const TrialSettings& s) {
   const TaskView first_view = view();
   camera = task->camera(first_view);
   CollisionWatch collisions(task->board());
-  ViewWatch sight(camera->camera, video_options.width, video_options.height);
+  const viewer::VideoOptions picture = s.video.value_or(viewer::VideoOptions{});
+  ViewWatch sight(camera->camera, picture.width, picture.height);
   task->begin(first_view, events);
   events.add(0.0, "trial_start");
   events.add(0.0, "force_threshold", -1, s.task.excessive_force);

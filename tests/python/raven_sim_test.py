@@ -148,6 +148,7 @@ class PegTransferEnvironment(unittest.TestCase):
         self.assertEqual(info["placed"], 6)
         self.assertEqual(total, 6.0)
         self.assertEqual(info["refused"], 0)
+        self.assertFalse(info["faulted"])  # no e-stop on the way
 
     def run_steps(self, env, seed, steps):
         observations = [env.reset(seed=seed)[0]]
