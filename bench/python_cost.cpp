@@ -53,6 +53,15 @@ void measurePython(const BenchSettings& s, Report& report) {
                         Spread::of(v.at("robot_s_per_s").get<std::vector<double>>()), "x real time",
                         "summed over the environments"));
   }
+  const auto& record = r.at("record");
+  const double one = record.at("seconds").at("1").get<double>();
+  const double two = record.at("seconds").at("2").get<double>();
+  const std::string demos = fmt::format(
+      "learn record, {} demonstrations of {} steps, randomised scenes; one worker {:.0f} s, two "
+      "{:.0f} s",
+      record.at("demos").get<int>(), record.at("steps").get<int>(), one, two);
+  report.add(atMost(kSection, "recording on two workers / on one", Spread::of({two / one}), "x",
+                    0.6, demos));
 }
 
 }  // namespace bench

@@ -3,16 +3,22 @@
 
 Per repetition, alternating: the twin (our Raven-II alone, homed) stepped one 1 ms cycle per
 Python call, and the same number of cycles in one call (the C++ loop); then N = 1, 2, 4
-peg-transfer environments stepped together on threads, each following the expert.
+peg-transfer environments stepped together on threads, each following the expert. Once: 60
+demonstrations recorded (`learn record`, --max-steps each) by one worker, then by two.
 
     PYTHONPATH=build/python /usr/bin/python3 bench/python_step_bench.py [--repeat 3]
 """
 
 import argparse
+import contextlib
+import io
 import json
+import os
+import tempfile
 import time
 
 import raven_sim
+from raven_sim import learn
 
 
 def per_step_us(repeat, cycles):
@@ -47,11 +53,23 @@ def vector_rates(repeat, n, steps):
     return rates, robot
 
 
+def record_seconds(workers, episodes, steps):
+    """Wall seconds `learn record` takes for `episodes` demonstrations of `steps` steps."""
+    with tempfile.TemporaryDirectory() as d, contextlib.redirect_stdout(io.StringIO()):
+        start = time.perf_counter()
+        learn.main(["record", "--episodes", str(episodes), "--seeds", f"1-{episodes}",
+                    "--max-steps", str(steps), "--workers", str(workers),
+                    "--out", os.path.join(d, "demos.hdf5")])
+        return time.perf_counter() - start
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--cycles", type=int, default=20000)
     parser.add_argument("--env-steps", type=int, default=100)
+    parser.add_argument("--demos", type=int, default=60)
+    parser.add_argument("--demo-steps", type=int, default=100)
     args = parser.parse_args()
     python, cpp = per_step_us(args.repeat, args.cycles)
     result = {"python_us": python, "cpp_us": cpp, "cycles": args.cycles,
@@ -59,6 +77,9 @@ def main():
     for n in (1, 2, 4):
         rates, robot = vector_rates(args.repeat, n, args.env_steps)
         result["vector"][str(n)] = {"steps_per_s": rates, "robot_s_per_s": robot}
+    result["record"] = {"demos": args.demos, "steps": args.demo_steps,
+                        "seconds": {str(w): record_seconds(w, args.demos, args.demo_steps)
+                                    for w in (1, 2)}}
     print(json.dumps(result))
 
 

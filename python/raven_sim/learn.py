@@ -107,22 +107,42 @@ def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None
     return placed
 
 
+def record_seed(kwargs, seed, noise, noise_seed, max_steps):
+    """One demonstration on `seed`'s scene in its own environment, its DART noise drawn from
+    (noise_seed, seed): the same episode whichever worker runs it, and beside which others."""
+    env = PegTransferEnv(**kwargs)
+    rng = np.random.default_rng([noise_seed, seed])
+
+    def noisy(_, label):
+        return label + rng.normal(0.0, 1.0, label.shape) * NOISE_SCALE * noise
+
+    return demos.run_episode(env, seed, noisy, SteppedExpert(env), max_steps)
+
+
 def record(args):
+    """Demonstrations on --workers threads (the twin steps without Python's lock), written to
+    the file in seed order by this thread alone."""
+    from concurrent.futures import ThreadPoolExecutor
     enough_seeds(args)
-    rng = np.random.default_rng(args.noise_seed)
+    if args.workers < 1:
+        sys.exit(f"record: --workers {args.workers}: at least one")
     kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation}
     if args.obs != ["state"]:
         kwargs = {**kwargs, "obs": args.obs, "camera": args.camera.split(","),
                   "image_size": args.image_size}
-    env = PegTransferEnv(**kwargs)
     source = f"expert, DART noise {args.noise}"
     f, data = demos.open_demos(args.out, kwargs, source)
-
-    def noisy(_, label):
-        return label + rng.normal(0.0, 1.0, label.shape) * NOISE_SCALE * args.noise
-
-    placed = collect(env, SteppedExpert(env), args.seeds[:args.episodes], noisy, data, source,
-                     args.max_steps)
+    seeds = args.seeds[:args.episodes]
+    placed = 0
+    with ThreadPoolExecutor(args.workers) as pool:
+        episodes = pool.map(
+            lambda seed: record_seed(kwargs, seed, args.noise, args.noise_seed, args.max_steps),
+            seeds)
+        for seed, e in zip(seeds, episodes):
+            demos.write_demo(data, seed, e.observations, e.actions, e.waypoints, e.rewards,
+                             source)
+            placed += e.info["placed"]
+            print(f"seed {seed}: {len(e.rewards)} steps, placed {e.info['placed']}/6", flush=True)
     total = int(data.attrs["total"])
     f.close()
     print(f"{args.episodes} demonstrations, {total} steps, placed {placed}/{6 * args.episodes}: "
@@ -237,7 +257,9 @@ def main(argv=None):
     p.add_argument("--image-size", type=image_size, default=(128, 96), help="WxH")
     p.add_argument("--max-steps", type=int, help="an episode's steps at most")
     p.add_argument("--noise", type=float, default=0.0, help="DART noise, times NOISE_SCALE")
-    p.add_argument("--noise-seed", type=int, default=0)
+    p.add_argument("--noise-seed", type=int, default=0,
+                   help="with the episode's seed, seeds its noise")
+    p.add_argument("--workers", type=int, default=2, help="episodes recorded side by side")
     p.add_argument("--out", required=True)
     add_actuation(p)
     p.set_defaults(run=record)

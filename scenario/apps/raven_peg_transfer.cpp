@@ -117,14 +117,8 @@ scenario::PegTransferOptions pegTransferOptions(const Settings& s) {
   return options;
 }
 
-/// The totals of the runs finished so far, of `asked` (rewritten as each run ends, so a killed
-/// batch keeps them).
-nlohmann::json summaryOf(const Settings& s, std::size_t asked,
-                         const std::vector<scenario::PegTransferResult>& finished) {
-  std::vector<nlohmann::json> rows;  // each run's JSON once: the totals and the results
-  rows.reserve(finished.size());
-  for (const auto& r : finished) rows.push_back(r.json());
-  nlohmann::json summary = scenario::summarize(rows);
+/// The summary's fields besides the totals: what was asked for.
+void describeBatch(const Settings& s, std::size_t asked, nlohmann::json& summary) {
   summary["task"] = "peg_transfer";
   summary["shard"] = s.shard;
   summary["first_seed"] = s.seed;
@@ -132,6 +126,16 @@ nlohmann::json summaryOf(const Settings& s, std::size_t asked,
   summary["grasp_assist"] = s.assist;
   summary["runs_asked"] = asked;
   summary["stopped"] = stop_requested.load();
+}
+
+/// The summary at the end: the totals of `finished` (of `asked`) and each run's results.
+nlohmann::json summaryOf(const Settings& s, std::size_t asked,
+                         const std::vector<scenario::PegTransferResult>& finished) {
+  std::vector<nlohmann::json> rows;  // each run's JSON once: the totals and the results
+  rows.reserve(finished.size());
+  for (const auto& r : finished) rows.push_back(r.json());
+  nlohmann::json summary = scenario::summarize(rows);
+  describeBatch(s, asked, summary);
   summary["results"] = std::move(rows);
   return summary;
 }
@@ -224,15 +228,21 @@ int runPegTransfers(const Settings& s) {
                                  : scenario::runPegTransfer(options));
     jsonl << results.back().json().dump() << '\n' << std::flush;
   } else {
-    std::vector<scenario::PegTransferResult> finished;
+    // While it runs, the summary holds the totals so far (constant memory however many runs;
+    // each run's row is in the runs file); the results join it at the end.
+    scenario::RunTotals totals;
+    std::size_t finished = 0;
     results = scenario::runBatch(
         options, seeds,
         s.threads > 0 ? s.threads : std::max(1u, std::thread::hardware_concurrency()),
         [&](const scenario::PegTransferResult& r) {
-          jsonl << r.json().dump() << '\n' << std::flush;
-          finished.push_back(r);
-          writeJson(files.summary, summaryOf(s, seeds.size(), finished));
-          bar.show({r.timing.sim_time, finished.size(), seeds.size()});
+          const nlohmann::json row = r.json();
+          jsonl << row.dump() << '\n' << std::flush;
+          totals.add(row);
+          nlohmann::json summary = totals.json();
+          describeBatch(s, seeds.size(), summary);
+          writeJson(files.summary, summary);
+          bar.show({r.timing.sim_time, ++finished, seeds.size()});
         });
   }
   bar.finish();

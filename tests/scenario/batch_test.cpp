@@ -78,6 +78,33 @@ TEST(BatchSummary, CountsRunsPegsAndRates) {
   EXPECT_DOUBLE_EQ(j["loop_frequency_hz"].get<double>(), 2000.0);
 }
 
+TEST(BatchSummary, TotalsAddUpOneRunAtATime) {
+  // A batch keeps only the running totals while it runs (constant memory); after every run they
+  // are what the rows so far sum to.
+  std::vector<scenario::PegTransferResult> results(3);
+  for (auto& p : results[0].rings) p.placed = true;
+  results[1].rings[3].lost = true;
+  results[2].failure = "the simulation diverged";
+  results[2].timed_out = true;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    results[i].timing = {5.0 * (i + 1), 2.0 + i, 1.5 + i, 5000 * (i + 1)};
+  }
+  scenario::RunTotals totals;
+  const std::array<int, 3> placed{6, 6, 6}, lost{0, 1, 1}, failed{0, 0, 1}, timed_out{0, 0, 1};
+  const std::array<double, 3> simulated{5.0, 15.0, 30.0};
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    totals.add(results[i].json());
+    const nlohmann::json j = totals.json();
+    EXPECT_EQ(j["runs"], i + 1);
+    EXPECT_EQ(j["runs_all_placed"], 1);
+    EXPECT_EQ(j["rings_placed"], placed[i]);
+    EXPECT_EQ(j["rings_lost"], lost[i]);
+    EXPECT_EQ(j["runs_failed"], failed[i]);
+    EXPECT_EQ(j["runs_timed_out"], timed_out[i]);
+    EXPECT_DOUBLE_EQ(j["sim_time_s"].get<double>(), simulated[i]);
+  }
+}
+
 TEST(BatchSummary, ARunWhoseWorldBlewUpIsCountedFailedAndPrintsNoPegNumbers) {
   std::vector<scenario::PegTransferResult> results(2);
   for (auto& p : results[0].rings) p.placed = true;
