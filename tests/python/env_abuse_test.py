@@ -47,8 +47,11 @@ class AbusivePolicy(unittest.TestCase):
         return observation
 
     def test_jaws_shut_on_a_lifted_ring_while_the_arms_wander_keep_every_ring_bounded(self):
+        # Ideal servos: they crush for as long as they are told to. The motor twin's jaw motors
+        # wind up against the ring until the robot e-stops, as the robot's would, and the
+        # episode then ends (info["faulted"]) before the world has been pushed this hard.
         for seed in (1, 2, 3):
-            env = raven_sim.PegTransferEnv(randomize=True, time_limit=1e4)
+            env = raven_sim.PegTransferEnv(randomize=True, time_limit=1e4, actuation="ideal")
             observation, _ = env.reset(seed=seed)
             start = observation[RINGS].reshape(6, 3).copy()
             low, high = env.action_space.low, env.action_space.high
@@ -64,6 +67,21 @@ class AbusivePolicy(unittest.TestCase):
                 action += rng.uniform(-0.01, 0.01, 14) * (high - low)
                 observation = self.step(env, action, seed)
                 self.check_rings(observation, start, seed)
+
+    def test_on_the_motor_twin_crushing_ends_in_an_e_stop_not_a_blow_up(self):
+        env = raven_sim.PegTransferEnv(randomize=True, time_limit=1e4)  # the motors
+        observation, _ = env.reset(seed=1)
+        start = observation[RINGS].reshape(6, 3).copy()
+        low = env.action_space.low
+        for _ in range(2000):
+            action = jaws_shut(np.asarray(env.expert_action()), low)
+            observation, _, _, truncated, info = env.step(
+                np.clip(action, low, env.action_space.high))
+            self.assertNotIn("failure", info)
+            self.check_rings(observation, start, 1)
+            if truncated:
+                break
+        self.assertTrue(truncated and info["faulted"], info)
 
 
 # A 0.1 kg arm on a hinge, to be driven far harder than anything in a scene of a metre allows.
