@@ -301,7 +301,7 @@ def soak_session(build, work, seconds, interval):
 def soak_batch(build, work, runs, interval, run_seconds):
     """raven_peg_transfer's nominal scene `runs` times: every run the same work, so any change from
     the first tenth of runs to the last is the process's own. `run_seconds`: each run ends after
-    that much simulated time (None: when its six rings are done)."""
+    that much simulated time (0: when its six rings are done)."""
     out = fresh_folder(work / "batch")
     jsonl = out / "runs.jsonl"
     limit = ["--time-limit", f"{run_seconds:g}"] if run_seconds else []

@@ -100,10 +100,16 @@ def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None
     for seed in seeds:
         if policy is not None:
             policy.reset()
-        e = demos.run_episode(env, seed, drive, expert, max_steps)
-        demos.write_demo(data, seed, e.observations, e.actions, e.waypoints, e.rewards, source)
-        placed += e.info["placed"]
-        print(f"seed {seed}: {len(e.rewards)} steps, placed {e.info['placed']}/6", flush=True)
+        placed += store(data, seed, demos.run_episode(env, seed, drive, expert, max_steps), source)
+    return placed
+
+
+def store(data, seed, episode, source):
+    """Writes `episode` (of `seed`) into `data`, prints it, and returns the rings it placed."""
+    demos.write_demo(data, seed, episode.observations, episode.actions, episode.waypoints,
+                     episode.rewards, source)
+    placed = episode.info["placed"]
+    print(f"seed {seed}: {len(episode.rewards)} steps, placed {placed}/6", flush=True)
     return placed
 
 
@@ -133,16 +139,11 @@ def record(args):
     source = f"expert, DART noise {args.noise}"
     f, data = demos.open_demos(args.out, kwargs, source)
     seeds = args.seeds[:args.episodes]
-    placed = 0
     with ThreadPoolExecutor(args.workers) as pool:
         episodes = pool.map(
             lambda seed: record_seed(kwargs, seed, args.noise, args.noise_seed, args.max_steps),
             seeds)
-        for seed, e in zip(seeds, episodes):
-            demos.write_demo(data, seed, e.observations, e.actions, e.waypoints, e.rewards,
-                             source)
-            placed += e.info["placed"]
-            print(f"seed {seed}: {len(e.rewards)} steps, placed {e.info['placed']}/6", flush=True)
+        placed = sum(store(data, seed, e, source) for seed, e in zip(seeds, episodes))
     total = int(data.attrs["total"])
     f.close()
     print(f"{args.episodes} demonstrations, {total} steps, placed {placed}/{6 * args.episodes}: "
