@@ -293,7 +293,10 @@ class SessionRun {
     ++finished_here_;
     if (out) {
       *out << fmt::format("\n{}: {} in {:.1f} s\n", heading,
-                          run.completed ? "done" : "time limit reached", run.duration)
+                          run.completed   ? "done"
+                          : run.e_stopped ? "ended by an e-stop"
+                                          : "time limit reached",
+                          run.duration)
            << std::flush;
     }
     return true;
@@ -375,15 +378,6 @@ class SessionRun {
 }  // namespace
 
 SessionProgress runSession(const Protocol& protocol, const SessionSettings& s) {
-  if (s.traits) {
-    for (const TaskSpec& task : protocol.tasks) {
-      if (!makeTask(task, 0)->virtualParticipantsCan()) {
-        throw std::runtime_error(protocol.file.string() +
-                                 ": the virtual participants cannot do task '" + task.name +
-                                 "' (they reach targets); run it with people");
-      }
-    }
-  }
   return SessionRun(protocol, s).run();
 }
 

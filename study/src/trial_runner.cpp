@@ -41,6 +41,71 @@ void filmTrial(const TrialSettings& s, const std::optional<viewer::View>& camera
   };
 }
 
+/// Brings the arms under the caps to the tools the task starts them at (the within-limits joints
+/// nearest the homed ones; a grasper turned half a turn about its jaws is the same grasper), and
+/// lets them settle for half a second.
+void placeArms(const TrialTask& task, const raven::PlatformProfile& profile,
+               twin::TwinPlatform& twin, controller::DualPlatformController& control) {
+  const auto tools = task.startTools();
+  if (!tools) return;
+  controller::ArmPair joints;
+  for (raven::Arm arm : raven::kArms) {
+    const auto a = raven::slot(arm);
+    const auto kinematics = raven::ArmKinematics::of(profile, arm);
+    const raven::ArmJoints homed = twin.measuredJs(arm).position;
+    std::optional<raven::ArmJoints> best;
+    for (const double turn : {0.0, M_PI}) {
+      Eigen::Isometry3d tool = (*tools)[a];
+      tool.linear() = tool.linear() * Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitX());
+      for (const auto& q : kinematics.inverseCandidates(tool, 1.0, homed)) {
+        const bool within = (q.array() >= profile.limits.low.array()).all() &&
+                            (q.array() <= profile.limits.high.array()).all();
+        if (within && (!best || raven::ArmKinematics::distance(q, homed) <
+                                    raven::ArmKinematics::distance(*best, homed))) {
+          best = q;
+        }
+      }
+    }
+    if (!best)
+      throw std::runtime_error("the task's start pose of the " + std::string(raven::armName(arm)) +
+                               " arm is out of reach");
+    joints[a] = *best;
+  }
+  control.moveTo(joints);
+  for (double t = 0.0; t < 0.5; t += control.period()) control.idle();
+}
+
+/// What the task sees of the twin: the tools from the encoders, the jaws from the world.
+class TwinSight {
+ public:
+  TwinSight(const twin::TwinPlatform& twin, const raven::PlatformProfile& profile)
+      : twin_(twin),
+        kinematics_{raven::ArmKinematics::of(profile, raven::Arm::Left),
+                    raven::ArmKinematics::of(profile, raven::Arm::Right)},
+        jaws_{&twin.world().body(jawBody(raven::Arm::Left)),
+              &twin.world().body(jawBody(raven::Arm::Right))} {}
+
+  /// The view at `time` s of trial time.
+  TaskView operator()(double time) const {
+    TaskView v;
+    v.time = time;
+    for (raven::Arm arm : raven::kArms) {
+      const auto a = raven::slot(arm);
+      const Eigen::Isometry3d tool = kinematics_[a].toolPose(twin_.measuredJs(arm).position);
+      v.tips[a] = tool.translation();
+      v.tool_axes[a] = tool.linear();
+      v.jaws[a] = jaws_[a]->pose().translation();
+    }
+    v.world = &twin_.world();
+    return v;
+  }
+
+ private:
+  const twin::TwinPlatform& twin_;
+  raven::PerArm<raven::ArmKinematics> kinematics_;
+  raven::PerArm<const ambf_like::RigidBody*> jaws_;
+};
+
 }  // namespace
 
 recording::GamepadState gatePad(const Condition& condition, recording::GamepadState pad,
@@ -72,29 +137,12 @@ TrialRun runTrial(const TrialSettings& s) {
   scripted.makeReady(kHomingLimit);
   twin::TwinPlatform& twin = scripted.twin();
   controller::DualPlatformController& control = scripted.controller();
-  const raven::PerArm<const ambf_like::RigidBody*> jaws{
-      &twin.world().body(jawBody(raven::Arm::Left)),
-      &twin.world().body(jawBody(raven::Arm::Right))};
-
   const auto profile = raven::builtinProfile(s.condition.controllerOptions().profile);
-  const raven::PerArm<raven::ArmKinematics> kinematics{
-      raven::ArmKinematics::of(profile, raven::Arm::Left),
-      raven::ArmKinematics::of(profile, raven::Arm::Right)};
-  const double start = twin.now();
-  const auto view = [&] {
-    TaskView v;
-    v.time = twin.now() - start;
-    for (raven::Arm arm : raven::kArms) {
-      const auto a = raven::slot(arm);
-      v.tips[a] = kinematics[a].toolPose(twin.measuredJs(arm).position).translation();
-      v.jaws[a] = jaws[a]->pose().translation();
-    }
-    v.world = &twin.world();
-    return v;
-  };
+  double start = twin.now();  // the trial's clock starts once the arms are placed
+  const auto view = [&, see = TwinSight(twin, profile)] { return see(twin.now() - start); };
 
   EventLog events(s.dir / "events.csv");
-  bool first = true, clamped = false, capped = false, faulted = false;
+  bool first = true, clamped = false, capped = false;
   controller::SessionOptions options;
   options.out_dir = s.dir;
   options.record_name = "trial";
@@ -114,6 +162,8 @@ TrialRun runTrial(const TrialSettings& s) {
 
   TrialRun run;
   if (s.ready && !s.ready()) return run;
+  placeArms(*task, profile, twin, control);
+  start = twin.now();
   const TaskView first_view = view();
   camera = task->camera(first_view);
   CollisionWatch collisions(task->board());
@@ -135,9 +185,11 @@ TrialRun runTrial(const TrialSettings& s) {
     if (s.before_turn) s.before_turn(now.time, task->goals(), now.tips);
     session.turn();
     now = view();
-    const bool fault = twin.operatingStatus().state == bridge::OperatingState::Fault;
-    if (fault && !faulted) events.add(now.time, "robot_fault");
-    faulted = fault;
+    run.e_stopped = twin.operatingStatus().state == bridge::OperatingState::Fault;
+    if (run.e_stopped) {  // an e-stop ends the trial: the robot needs the experimenter
+      events.add(now.time, "robot_fault");
+      break;
+    }
     task->observe(now, events);
     collisions.observe(now.time, now.world->contacts(), events);
     sight.observe(now.time, now.jaws, events);

@@ -6,9 +6,7 @@
 #include <random>
 
 #include "raven/platform_profile.hpp"
-#include "scenario/peg_layout.hpp"
-#include "scenario/ring_nodes.hpp"
-#include "scenario/task_views.hpp"
+#include "study/peg_transfer_task.hpp"
 #include "study/view_watch.hpp"
 
 namespace study {
@@ -107,7 +105,9 @@ class TargetsTask final : public TrialTask {
 
   std::optional<scenario::BoardGeometry> board() const override { return std::nullopt; }
 
-  bool virtualParticipantsCan() const override { return true; }
+  std::optional<raven::PerArm<Eigen::Isometry3d>> startTools() const override {
+    return std::nullopt;  // where homing left them
+  }
 
  private:
   struct Arm {
@@ -119,83 +119,6 @@ class TargetsTask final : public TrialTask {
   TaskSpec spec_;
   raven::PerArm<std::vector<Eigen::Vector3d>> offsets_;
   raven::PerArm<Arm> arms_;
-};
-
-/// The six rings of the peg-transfer scene, each from its start post to the post behind it.
-class PegTransferTask final : public TrialTask {
- public:
-  std::filesystem::path launchFile() const override {
-    return raven::modelDirectory() / "peg_transfer" / "launch.yaml";
-  }
-
-  void begin(const TaskView& view, EventLog& events) override {
-    for (std::size_t i = 0; i < 6; ++i) {
-      rings_[i] = &view.world->softBody(layout_.jobs[i].ring);
-    }
-    events.add(view.time, "rings", -1, 6);
-    observe(view, events);
-  }
-
-  void observe(const TaskView& view, EventLog& events) override {
-    const scenario::BoardGeometry& g = layout_.geometry;
-    for (std::size_t i = 0; i < 6; ++i) {
-      const scenario::RingJob& job = layout_.jobs[i];
-      const int arm = raven::index(job.arm);
-      const double ring = static_cast<double>(i + 1);
-      const scenario::RingNodes s = scenario::inspect(*rings_[i]);
-      const scenario::RingView seen({view.time, rings_[i]->pose(), std::nullopt}, layout_.ring);
-      const bool placed = scenario::restsOn(seen, job.to, g);
-      const bool off = g.offTheBoard(seen.bottom());
-      Ring& r = state_[i];
-      if (off && !r.lifted) events.add(view.time, "ring_lifted", arm, ring);
-      if (placed && !r.placed) events.add(view.time, "ring_placed", arm, ring);
-      if (!placed && r.placed) events.add(view.time, "ring_unplaced", arm, ring);
-      // Down on the board again, resting, somewhere other than its target post: dropped.
-      if (r.lifted && !off && !placed && s.speed < 0.01) {
-        events.add(view.time, "ring_dropped", arm, ring);
-        r.lifted = false;
-      }
-      if (off) r.lifted = true;
-      if (placed) r.lifted = false;
-      r.placed = placed;
-    }
-  }
-
-  bool done() const override {
-    for (const Ring& r : state_) {
-      if (!r.placed) return false;
-    }
-    return true;
-  }
-
-  raven::PerArm<ArmGoal> goals() const override { return {}; }
-
-  std::string status(const TaskView&) const override {
-    int placed = 0, carried = 0;
-    for (const Ring& r : state_) {
-      placed += r.placed ? 1 : 0;
-      carried += r.lifted ? 1 : 0;
-    }
-    return fmt::format("rings placed {}/6, off the board {}", placed, carried);
-  }
-
-  /// The overview: both work areas, every ring on its post can be counted.
-  viewer::View camera(const TaskView& start) const override {
-    return scenario::pegTransferViews(*start.world, layout_).front();
-  }
-
-  std::optional<scenario::BoardGeometry> board() const override { return layout_.geometry; }
-
-  bool virtualParticipantsCan() const override { return false; }
-
- private:
-  struct Ring {
-    bool lifted = false;  ///< off the board since it last rested
-    bool placed = false;
-  };
-  scenario::PegLayout layout_;
-  std::array<const ambf_like::SoftBody*, 6> rings_{};
-  std::array<Ring, 6> state_;
 };
 
 }  // namespace
@@ -224,7 +147,7 @@ raven::PerArm<std::vector<Eigen::Vector3d>> targetOffsets(const TaskSpec& spec,
 
 std::unique_ptr<TrialTask> makeTask(const TaskSpec& spec, std::uint64_t seed,
                                     raven::PerArm<bool> arms) {
-  if (spec.kind == TaskKind::PegTransfer) return std::make_unique<PegTransferTask>();
+  if (spec.kind == TaskKind::PegTransfer) return makePegTransferTask(arms);
   return std::make_unique<TargetsTask>(spec, seed, arms);
 }
 

@@ -7,6 +7,9 @@ namespace study {
 
 namespace {
 
+/// s over which the person judges how fast the tip moves.
+constexpr double kSpeedWindow = 0.1;
+
 /// A normal draw clipped to [low, high].
 double clipped(std::mt19937_64& rng, double mean, double sd, double low, double high) {
   return std::clamp(std::normal_distribution<double>(mean, sd)(rng), low, high);
@@ -53,6 +56,7 @@ ConditionFeel ConditionFeel::of(const Condition& condition, int trials_before) {
   f.gain = condition.translationGain();
   f.deadzone = condition.deadzone;
   f.scheme = condition.scheme;
+  f.trigger_full = condition.controllerOptions().mapping.trigger_full;
   f.trials_before = trials_before;
   return f;
 }
@@ -76,6 +80,35 @@ const VirtualParticipant::Seen& VirtualParticipant::seen(double t) const {
     if (s.t <= t) out = &s;
   }
   return *out;
+}
+
+void VirtualParticipant::watch(Hand& hand, const Seen& view, double t) const {
+  if (!hand.pushing || t >= hand.until || hand.meant.norm() == 0.0) return;
+  // How far the tip still has to go along the push, and how fast it was seen to go: the person
+  // lets go once what is left is what the tip covers in one visuomotor delay (an internal model
+  // of its own delay, Miall et al. 1993), so a long push stops on its aim, not past it.
+  const auto arm = static_cast<std::size_t>(hand.arm);
+  const Eigen::Vector3d along = hand.meant.normalized();
+  const Seen& before = seen(view.t - kSpeedWindow);
+  const double left = (hand.aim - view.tips[arm]).dot(along);
+  const double speed = view.t > before.t
+                           ? (view.tips[arm] - before.tips[arm]).dot(along) / (view.t - before.t)
+                           : 0.0;
+  if (left > std::max(speed, 0.0) * traits_.delay) return;
+  hand.meant *= (t - hand.started) / (hand.planned_until - hand.started);
+  hand.until = t;
+}
+
+double VirtualParticipant::squeeze(int arm, const ArmGoal& goal) {
+  Trigger& trigger = triggers_[static_cast<std::size_t>(arm)];
+  const double wanted = goal.active ? goal.grasp : 1.0;
+  if (wanted != trigger.wanted) {
+    trigger.wanted = wanted;
+    const double press = std::max(0.0, 1.0 - wanted) * feel_.trigger_full;
+    const double noise = 1.0 + traits_.deflection_cv * std::normal_distribution<double>()(rng_);
+    trigger.value = std::clamp(press * noise, 0.0, 0.999 * feel_.trigger_full);
+  }
+  return trigger.value;
 }
 
 Eigen::Vector2d VirtualParticipant::tremor(double t, int hand) const {
@@ -131,6 +164,9 @@ void VirtualParticipant::plan(Hand& hand, int arm, const Seen& view, double t) {
   hand.stick = Eigen::Vector2d(along.x(), -along.y());
   hand.pushing = true;
   hand.until = t + duration;
+  hand.started = t;
+  hand.planned_until = hand.until;
+  hand.aim = goal.point;
   hand.from = judged;
   hand.meant =
       (hand.z_plane ? Eigen::Vector3d(0.0, 0.0, d.y()) : Eigen::Vector3d(d.x(), d.y(), 0.0)) *
@@ -140,7 +176,9 @@ void VirtualParticipant::plan(Hand& hand, int arm, const Seen& view, double t) {
 recording::GamepadState VirtualParticipant::act(double t, const raven::PerArm<ArmGoal>& goals,
                                                 const raven::PerArm<Eigen::Vector3d>& tips) {
   history_.push_back({t, goals, tips});
-  while (history_.size() > 2 && history_[1].t <= t - traits_.delay) history_.pop_front();
+  while (history_.size() > 2 && history_[1].t <= t - traits_.delay - kSpeedWindow) {
+    history_.pop_front();
+  }
   const Seen& view = seen(t - traits_.delay);
 
   recording::GamepadState pad;
@@ -162,6 +200,7 @@ recording::GamepadState VirtualParticipant::act(double t, const raven::PerArm<Ar
   for (int h = 0; h < (m2 ? 2 : 1); ++h) {
     Hand& hand = hands_[static_cast<std::size_t>(h)];
     const int arm = m2 ? h : selected_arm_;
+    watch(hand, view, t);
     if (hand.pushing && t >= hand.until) {  // let go, then look at where it went
       hand.pushing = false;
       hand.until = t + traits_.delay + traits_.decision;
@@ -181,6 +220,12 @@ recording::GamepadState VirtualParticipant::act(double t, const raven::PerArm<Ar
   pad.right_x = right.x();
   pad.right_y = right.y();
   pad.right_bumper = m2 && hands_[1].pushing && hands_[1].z_plane;
+  if (m2) {
+    pad.left_trigger = squeeze(0, view.goals[0]);
+    pad.right_trigger = squeeze(1, view.goals[1]);
+  } else {
+    pad.right_trigger = squeeze(selected_arm_, view.goals[static_cast<std::size_t>(selected_arm_)]);
+  }
   return pad;
 }
 

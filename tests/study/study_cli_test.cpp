@@ -1,7 +1,7 @@
 // raven_study end to end: the README's example with eight virtual participants finds the
 // degraded scheme worse; a session interrupted (Ctrl-C or a crash) and resumed loses nothing and
 // ends as an uninterrupted one; the questionnaires asked in the terminal are kept, and asked
-// again after the input ran out.
+// again after the input ran out; a virtual participant does the peg transfer.
 
 #include <gtest/gtest.h>
 
@@ -26,6 +26,17 @@ conditions:
   B: {scheme: m2, divisor: 1500}
 trials_per_condition: 2
 questionnaires: [sus]
+countdown: 0
+rest: 0
+)";
+
+const std::string kPegTransfer = R"(study: rehearsal
+tasks:
+  peg: {kind: peg_transfer, time_limit: 150}
+conditions:
+  M2: {scheme: m2}
+trials_per_condition: 1
+questionnaires: []
 countdown: 0
 rest: 0
 )";
@@ -188,6 +199,24 @@ TEST(StudyCli, ASessionRefusesAChangedProtocol) {
   dir.write("drill.yaml", kDrill + "order: fixed\n");
   EXPECT_EQ(shell(dir, study() + protocol.string() + out), 1);
   EXPECT_NE(text(dir.path() / "log.txt").find("another protocol"), std::string::npos);
+}
+
+/// The main task rehearsed: a virtual participant (the one seed 2 draws) at the pad of the
+/// motor-level twin, the grasper started jaws down, moves rings onto their target posts with the
+/// sticks and the triggers alone.
+TEST(StudyCli, AVirtualParticipantMovesRingsInThePegTransfer) {
+  harness::TempDir dir;
+  dir.write("peg.yaml", kPegTransfer);
+  ASSERT_EQ(shell(dir, study() + (dir.path() / "peg.yaml").string() + " --out " +
+                           (dir.path() / "s").string() + " --virtual 1 --seed 2"),
+            0)
+      << text(dir.path() / "log.txt");
+  const auto trials = sealed(dir.path() / "s" / "V01");
+  ASSERT_EQ(trials.size(), 1u);
+  const nlohmann::json& m = trials.begin()->second;
+  EXPECT_GE(m.at("rings_placed").get<double>(), 4.0) << m.dump(1);
+  EXPECT_EQ(m.at("e_stops").get<double>(), 0.0) << m.dump(1);
+  EXPECT_GT(m.at("tip_range_left_m").get<double>(), 0.02);  // the rings are 42 mm apart
 }
 
 }  // namespace

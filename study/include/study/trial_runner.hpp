@@ -43,8 +43,9 @@ struct TrialSettings {
 
 /// How a trial ended.
 struct TrialRun {
-  bool finished = false;   ///< ran to its end (done or the time limit), not stopped
+  bool finished = false;   ///< ran to its end (done, the time limit or an e-stop), not stopped
   bool completed = false;  ///< the task was done within the time limit
+  bool e_stopped = false;  ///< the robot went to FAULT, which ends a trial
   double duration = 0.0;   ///< s of trial time
 };
 

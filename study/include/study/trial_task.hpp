@@ -5,6 +5,7 @@
 // participant aims for now (the goals a virtual participant steers to, the terminal's line).
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <array>
 #include <filesystem>
 #include <memory>
@@ -24,6 +25,9 @@ struct TaskView {
   double time = 0.0;                    ///< s since the trial began
   raven::PerArm<Eigen::Vector3d> tips;  ///< tool tips, controller frame (m), left first
   raven::PerArm<Eigen::Vector3d> jaws;  ///< the jaws' axes, world frame (m), left first
+  /// The tools' axes, controller frame, left first: x along the closed jaws, y the way jaw 1
+  /// opens.
+  raven::PerArm<Eigen::Matrix3d> tool_axes;
   const ambf_like::World* world = nullptr;
 };
 
@@ -32,6 +36,7 @@ struct ArmGoal {
   bool active = false;  ///< false: this arm has nothing (more) to do
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   double tolerance = 0.0;
+  double grasp = 1.0;  ///< the jaw opening wanted (jaw 1 + jaw 2, rad): 1 with the trigger let go
 };
 
 /// One task's progress through one trial.
@@ -53,8 +58,9 @@ class TrialTask {
   virtual viewer::View camera(const TaskView& start) const = 0;
   /// The board the tools may collide with, if the scene has one.
   virtual std::optional<scenario::BoardGeometry> board() const = 0;
-  /// Whether the virtual participants of this kit can do the task.
-  virtual bool virtualParticipantsCan() const = 0;
+  /// Where the trial starts each tool (controller frame, its jaws opened by the trigger let go),
+  /// if the task sets it up: the lab places the instrument before the participant starts.
+  virtual std::optional<raven::PerArm<Eigen::Isometry3d>> startTools() const = 0;
 };
 
 /// The task `spec` asks for; `seed` draws random targets; an arm `arms` leaves out gets none.

@@ -53,7 +53,8 @@ struct ConditionFeel {
   double deadzone = 0.15;
   double reference_deadzone = 0.15;
   std::string scheme = "m2";
-  int trials_before = 0;  ///< trials this person already did under this condition
+  double trigger_full = 4.0;  ///< the trigger's travel: grasp = 1 - trigger / trigger_full
+  int trials_before = 0;      ///< trials this person already did under this condition
 
   static ConditionFeel of(const Condition& condition, int trials_before);
 };
@@ -65,7 +66,9 @@ class VirtualParticipant {
                      std::uint64_t seed);
 
   /// The pad at time `t` (s), having seen `goals` and the tool tips `tips` (controller frame)
-  /// now; it acts on what it saw `delay` ago.
+  /// now; it acts on what it saw `delay` ago. A goal's grasp is squeezed on the arm's trigger
+  /// (M2: each arm's own; M1: the right one), pressed anew, with the push's noise, each time the
+  /// wanted grasp changes.
   recording::GamepadState act(double t, const raven::PerArm<ArmGoal>& goals,
                               const raven::PerArm<Eigen::Vector3d>& tips);
 
@@ -92,10 +95,24 @@ class VirtualParticipant {
     Eigen::Vector3d from = Eigen::Vector3d::Zero();
     Eigen::Vector3d meant = Eigen::Vector3d::Zero();
     double deflection = 0.0;  ///< of the last push, as meant
+    /// Where the push aims, and when it began and was planned to end: a push the person sees
+    /// reach its aim is let go at once.
+    Eigen::Vector3d aim = Eigen::Vector3d::Zero();
+    double started = 0.0, planned_until = 0.0;
+  };
+  /// How far an arm's trigger is pressed, and for which wanted grasp.
+  struct Trigger {
+    double wanted = 1.0;  ///< the trigger let go
+    double value = 0.0;
   };
   const Seen& seen(double t) const;
+  /// Arm `arm`'s trigger for the grasp `goal` wants.
+  double squeeze(int arm, const ArmGoal& goal);
   /// Plans the next push of `hand` for arm `arm` from what was seen.
   void plan(Hand& hand, int arm, const Seen& view, double t);
+  /// Ends a push early once `view` shows the tip about to reach its aim along the push (a long
+  /// move is watched, not timed blind); what it was meant to do shrinks to the time it lasted.
+  void watch(Hand& hand, const Seen& view, double t) const;
   Eigen::Vector2d tremor(double t, int hand) const;
 
   ParticipantTraits traits_;
@@ -105,6 +122,7 @@ class VirtualParticipant {
   std::mt19937_64 rng_;
   std::deque<Seen> history_;
   raven::PerArm<Hand> hands_;
+  raven::PerArm<Trigger> triggers_;
   int selected_arm_ = 0;           ///< M1: the arm the left stick drives
   double selecting_until_ = -1.0;  ///< M1: a Back / Start press in progress
   std::array<double, 4> tremor_phase_{};
