@@ -223,6 +223,17 @@ ClampReport ArmKinematics::clamp(ArmJoints& q) const {
   return report;
 }
 
+std::optional<ArmJoints> ArmKinematics::inverseWithinLimits(const Isometry3d& tool, double grasp,
+                                                            const ArmJoints& near) const {
+  std::optional<ArmJoints> best;
+  for (const ArmJoints& q : inverseCandidates(tool, grasp, near)) {
+    const bool within =
+        (q.array() >= limits_.low.array()).all() && (q.array() <= limits_.high.array()).all();
+    if (within && (!best || distance(q, near) < distance(*best, near))) best = q;
+  }
+  return best;
+}
+
 IkSolution ArmKinematics::inverse(const Isometry3d& tool, double grasp,
                                   const ArmJoints& current) const {
   IkSolution solution;

@@ -130,15 +130,7 @@ std::optional<raven::ArmJoints> ArmRoutine::overRing(const raven::ArmJoints& tar
   Eigen::Isometry3d above = Eigen::Isometry3d::Identity();
   above.linear() = grasp_.orientation;
   above.translation() = grasp_.pivot + Eigen::Vector3d(0, 0, kApproach);
-  std::optional<raven::ArmJoints> best;
-  for (const auto& c : kinematics_.inverseCandidates(above, opening(), target)) {
-    const bool within = (c.array() >= profile_.limits.low.array()).all() &&
-                        (c.array() <= profile_.limits.high.array()).all();
-    if (within && (!best || raven::ArmKinematics::distance(c, target) <
-                                raven::ArmKinematics::distance(*best, target))) {
-      best = c;
-    }
-  }
+  auto best = kinematics_.inverseWithinLimits(above, opening(), target);
   if (best) *best = withJaws(*best);
   return best;
 }

@@ -1,7 +1,6 @@
 #include "study/peg_arm_goals.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <utility>
 
@@ -36,6 +35,14 @@ constexpr double kStray = 0.005;
 // has to clear something.
 constexpr double kExact = 0.0006, kFine = 0.001, kCoarse = 0.0015, kLoose = 0.003;
 
+/// How far the back of a jaw turned `angle` from the vertical reaches sideways from the jaw axis
+/// at its tip: the face at the jaw's length, and the body beyond it, tapered to 60 % of its width
+/// there (raven_description's jaw hull).
+double jawBackAtTip(double angle) {
+  const raven::design::ArmDesign jaw;
+  return jaw.jaw_length * std::sin(angle) + 0.6 * jaw.jaw_width * std::cos(angle);
+}
+
 }  // namespace
 
 PegArmGoals::PegArmGoals(const scenario::PegLayout& layout, std::vector<std::size_t> rings)
@@ -58,23 +65,19 @@ double PegArmGoals::squeezingGrasp(const scenario::RingDimensions& ring) {
 }
 
 double PegArmGoals::openingGrasp(const scenario::RingDimensions& ring, double post_radius) {
-  // Each jaw's face runs from the axis to the tip on its side of the centre line; the jaw's body
-  // lies beyond its face, tapering to 60 % of its width at the tip (raven_description's jaw
-  // hull). Wide enough that the faces clear the tube where it is widest, a half-height under the
-  // ring's top; narrow enough that the inner jaw's back clears the post the ring is on. Half
-  // way between the two, each side has the same angle to spare.
+  // Each jaw's face runs from the axis to the tip on its side of the centre line. Wide enough
+  // that the faces clear the tube where it is widest, a half-height under the ring's top; narrow
+  // enough that the inner jaw's back clears the post the ring is on (jawBackAtTip, a sine of
+  // the angle plus its phase, solved exactly). Half way between the two, each side has the same
+  // angle to spare.
   const raven::design::ArmDesign jaw;
   const double widest = kAboveTop + ring.half_height;
   const double least = std::atan(ring.tube_half_width / widest);
-  const double room = ring.major_radius - post_radius - 0.6 * jaw.jaw_width;
-  const double most = std::asin(std::clamp(room / jaw.jaw_length, 0.0, 1.0));
+  const double taper = 0.6 * jaw.jaw_width, reach = std::hypot(jaw.jaw_length, taper);
+  const double room = ring.major_radius - post_radius;
+  const double most =
+      std::asin(std::clamp(room / reach, -1.0, 1.0)) - std::atan2(taper, jaw.jaw_length);
   return least + most;
-}
-
-std::string_view PegArmGoals::stepName() const {
-  static constexpr std::array<std::string_view, 9> names{
-      "over", "down", "squeeze", "lift", "carry", "lower", "release", "rise", "done"};
-  return names[static_cast<std::size_t>(step_)];
 }
 
 void PegArmGoals::enter(Step step, double time) {
@@ -106,7 +109,6 @@ Eigen::Vector3d PegArmGoals::graspFor(const Eigen::Matrix3d& axes, double openin
   // what it must: the faces the tube where it is widest (a half-height under its top), the
   // inner jaw's back (tapered to 60 % at its tip) the post, leaning kLeanSlack more; half way
   // between the nearest and the farthest place that does, or clear of the post if none does.
-  const raven::design::ArmDesign jaw;
   const Eigen::Vector3d x = axes.col(0);
   const Eigen::Vector2d tangent(-outward_.y(), outward_.x());
   const double down = std::max(-x.z(), 0.5);
@@ -116,10 +118,8 @@ Eigen::Vector3d PegArmGoals::graspFor(const Eigen::Matrix3d& axes, double openin
   const double w = layout_.ring.tube_half_width;
   double nearest = radius_ + w - widest * std::tan(outer);
   if (post_) {
-    const double swing = inner + kLeanSlack;
-    const double tip_back =
-        jaw.jaw_length * std::sin(swing) + 0.6 * jaw.jaw_width * std::cos(swing);
-    nearest = std::max(nearest, *post_ + layout_.geometry.post_radius + tip_back);
+    nearest =
+        std::max(nearest, *post_ + layout_.geometry.post_radius + jawBackAtTip(inner + kLeanSlack));
   }
   const double farthest = radius_ - w + widest * std::tan(inner);
   const double across = farthest >= nearest ? 0.5 * (nearest + farthest) : nearest;
@@ -185,8 +185,11 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
       break;
     case Step::Carry:
       goal_ = {true, around(job.to, grasp_.z() + kLift), kCoarse, squeeze_};
-      if (!held) enter(Step::Release, time);
-      if (reached(tip) || stuck) enter(Step::Lower, time);
+      if (!held) {
+        enter(Step::Release, time);
+      } else if (reached(tip) || stuck) {
+        enter(Step::Lower, time);
+      }
       break;
     case Step::Lower: {  // until the ring's bottom is just over the board
       const double drop = ring.bottom() - layout_.geometry.board_top - kReleaseHeight;

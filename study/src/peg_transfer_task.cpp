@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "raven/platform_profile.hpp"
 #include "scenario/peg_layout.hpp"
 #include "scenario/ring_nodes.hpp"
 #include "scenario/task_views.hpp"

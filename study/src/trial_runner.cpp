@@ -57,13 +57,10 @@ void placeArms(const TrialTask& task, const raven::PlatformProfile& profile,
     for (const double turn : {0.0, M_PI}) {
       Eigen::Isometry3d tool = (*tools)[a];
       tool.linear() = tool.linear() * Eigen::AngleAxisd(turn, Eigen::Vector3d::UnitX());
-      for (const auto& q : kinematics.inverseCandidates(tool, 1.0, homed)) {
-        const bool within = (q.array() >= profile.limits.low.array()).all() &&
-                            (q.array() <= profile.limits.high.array()).all();
-        if (within && (!best || raven::ArmKinematics::distance(q, homed) <
-                                    raven::ArmKinematics::distance(*best, homed))) {
-          best = q;
-        }
+      const auto q = kinematics.inverseWithinLimits(tool, 1.0, homed);
+      if (q && (!best || raven::ArmKinematics::distance(*q, homed) <
+                             raven::ArmKinematics::distance(*best, homed))) {
+        best = q;
       }
     }
     if (!best)

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <random>
 
-#include "raven/platform_profile.hpp"
 #include "study/peg_transfer_task.hpp"
 #include "study/view_watch.hpp"
 

@@ -3,6 +3,7 @@
 // point, the full closed-form IK, the wrist-locked IK C_W, joint <-> DH conversion and clamping.
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "raven/arm.hpp"
@@ -54,6 +55,10 @@ class ArmKinematics {
   /// signs, two elbows), unclamped, each revolute joint at the turn nearest `near`.
   std::vector<ArmJoints> inverseCandidates(const Eigen::Isometry3d& tool, double grasp,
                                            const ArmJoints& near) const;
+  /// The candidate within the limits nearest `near` (ArmKinematics::distance); none if no
+  /// candidate is within them.
+  std::optional<ArmJoints> inverseWithinLimits(const Eigen::Isometry3d& tool, double grasp,
+                                               const ArmJoints& near) const;
   /// The candidate closest to `current` (insertion weighted x100), rejected when that distance
   /// exceeds pi, then saturated to the limits.
   IkSolution inverse(const Eigen::Isometry3d& tool, double grasp, const ArmJoints& current) const;

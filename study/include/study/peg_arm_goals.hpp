@@ -9,7 +9,6 @@
 
 #include <Eigen/Core>
 #include <optional>
-#include <string_view>
 #include <vector>
 
 #include "scenario/peg_layout.hpp"
@@ -39,7 +38,6 @@ class PegArmGoals {
                const std::vector<scenario::RingView>& seen);
   ArmGoal goal() const { return goal_; }
   bool done() const { return step_ == Step::Done; }
-  std::string_view stepName() const;
 
  private:
   enum class Step { Over, Down, Squeeze, Lift, Carry, Lower, Release, Rise, Done };
