@@ -4,7 +4,8 @@ questionnaires.csv), with the figures inside the page.
 
   draw_study.py REPORT_DIR
 
-Per metric: each scheme's trials (box) and each participant's mean (dots joined across schemes).
+Per task and metric: each scheme's trials (box) and each participant's mean (dots joined across
+schemes).
 Learning curves: per task, each scheme's metric against the task's repetition under it.
 Questionnaires: each one's score per scheme and participant. Tuning: each participant's cost
 per tuning trial. Tables: the paired comparisons, the recommended settings, the power analysis.
@@ -23,7 +24,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 SHOWN = ["completion_time_s", "overshoots", "path_length_m", "idle_time_s", "sparc",
          "velocity_cap_hits", "joint_limit_hits", "rings_placed", "rings_dropped",
@@ -41,12 +41,12 @@ def number(text):
     return float(text) if text not in ("", None) else None
 
 
-def picture(fig):
+def picture(fig, alt):
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=90, bbox_inches="tight")
     plt.close(fig)
     data = base64.b64encode(buffer.getvalue()).decode("ascii")
-    return f'<img src="data:image/png;base64,{data}">'
+    return f'<img alt="{html.escape(alt)}" src="data:image/png;base64,{data}">'
 
 
 def by_scheme(rows, metric):
@@ -62,6 +62,13 @@ def by_scheme(rows, metric):
 
 
 def metric_figures(rows, schemes, summary):
+    """One figure per task: tasks differ in scale, so their trials are never pooled."""
+    tasks = sorted({r["task"] for r in rows})
+    return "".join(task_metric_figure(task, [r for r in rows if r["task"] == task], schemes,
+                                      summary) for task in tasks)
+
+
+def task_metric_figure(task, rows, schemes, summary):
     shown = [m for m in SHOWN if any(number(r[m]) is not None for r in rows)]
     if not shown:
         return ""
@@ -80,8 +87,8 @@ def metric_figures(rows, schemes, summary):
         ax.tick_params(labelsize=8)
     for ax in list(axes.flat)[len(shown):]:
         ax.axis("off")
-    fig.suptitle("Per scheme: trials (boxes) and each participant's mean (dots)")
-    return picture(fig)
+    fig.suptitle(f"{task}, per scheme: trials (boxes) and each participant's mean (dots)")
+    return picture(fig, f"metrics per scheme: {task}")
 
 
 def learning_figure(rows, schemes):
@@ -105,13 +112,15 @@ def learning_figure(rows, schemes):
                 xs = sorted(points)
                 ax.plot([x + 1 for x in xs], [sum(points[x]) / len(points[x]) for x in xs],
                         "o-", label=s)
+            repetitions = max(int(r["repetition"]) for r in of_task) + 1
             ax.set_title(f"{task}: {metric}", fontsize=9)
             ax.set_xlabel(f"repetition of {task} under the scheme", fontsize=8)
-            ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+            ax.set_xlim(0.5, repetitions + 0.5)  # one repetition: one column of points
+            ax.set_xticks(range(1, repetitions + 1))
             ax.legend(fontsize=8)
     fig.suptitle("Learning curves per task and scheme (mean over participants)")
     fig.tight_layout(rect=(0, 0, 1, 0.96))
-    return picture(fig)
+    return picture(fig, "learning curves: " + ", ".join(tasks))
 
 
 def questionnaire_figure(answers, schemes):
@@ -131,7 +140,7 @@ def questionnaire_figure(answers, schemes):
         ax.set_title(QUESTIONNAIRE_TITLES.get(name, f"{name} (mean of its items)"))
         if name in QUESTIONNAIRE_TITLES:
             ax.set_ylim(0, 100)
-    return picture(fig)
+    return picture(fig, "questionnaire scores per scheme: " + ", ".join(names))
 
 
 def proficiency_lines(summary):
@@ -161,7 +170,7 @@ def tuning_figure(rows):
     ax.set_xlabel("tuning trial")
     ax.set_ylabel("cost")
     ax.legend(fontsize=7, ncol=2)
-    return picture(fig)
+    return picture(fig, "tuning cost per trial")
 
 
 def table(header, rows):
@@ -189,9 +198,9 @@ def main(folder):
     compared = [r for r in rows if r["tuning"] == "0"]
     schemes = sorted(summary["schemes"])
     comparisons = table(
-        ["metric", "a", "b", "mean a", "mean b", "p (Holm)", "p raw", "d_z", "Wilcoxon p",
-         "better"],
-        [[c["metric"], c["a"], c["b"], fmt(c["mean_a"]), fmt(c["mean_b"]), fmt(c["p"]),
+        ["task", "metric", "a", "b", "mean a", "mean b", "p (Holm)", "p raw", "d_z",
+         "Wilcoxon p", "better"],
+        [[c["task"] or "(asked)", c["metric"], c["a"], c["b"], fmt(c["mean_a"]), fmt(c["mean_b"]), fmt(c["p"]),
           fmt(c["p_raw"]), fmt(c["effect_size"]), fmt(c["wilcoxon_p"]),
           (c["better"] or "-") + (" *" if c["significant"] else "")]
          for c in summary["comparisons"]])
@@ -202,8 +211,9 @@ def main(folder):
     power = summary["power"]
     stated = table(["effect d_z", "participants needed"],
                    [[s["effect_size"], s["participants_needed"]] for s in power["stated_effects"]])
-    observed = table(["metric", "a", "b", "observed d_z", "participants needed"],
-                     [[o["metric"], o["a"], o["b"], fmt(o["observed_effect"]),
+    observed = table(["task", "metric", "a", "b", "observed d_z", "participants needed"],
+                     [[o["task"] or "(asked)", o["metric"], o["a"], o["b"],
+                       fmt(o["observed_effect"]),
                        o["participants_needed"]] for o in power["observed"]])
     page = f"""<!doctype html><html><head><meta charset="utf-8">
 <title>Study {html.escape(summary['study'])}</title>

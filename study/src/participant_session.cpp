@@ -295,6 +295,7 @@ class SessionRun {
       *out << fmt::format("\n{}: {} in {:.1f} s\n", heading,
                           run.completed   ? "done"
                           : run.e_stopped ? "ended by an e-stop"
+                          : run.diverged  ? "ended: the simulation diverged"
                                           : "time limit reached",
                           run.duration)
            << std::flush;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "raven/design/arm_design.hpp"
@@ -28,6 +29,8 @@ constexpr double kStepLimit = 15.0;       ///< s a step may take before the pers
 // by that much more.
 constexpr double kLeanSlack = 0.15;
 constexpr int kAttempts = 3;  ///< grasps of one ring before it is left
+/// s without getting lower on the way down, pushing, before a person sees the jaws are held up.
+constexpr double kBlocked = 1.0;
 // A ring held by its wall swings on the grip by a few millimetres as it is carried; one whose
 // centre strays further from the jaws than this is held by something else (its post, the board).
 constexpr double kStray = 0.005;
@@ -83,6 +86,8 @@ double PegArmGoals::openingGrasp(const scenario::RingDimensions& ring, double po
 void PegArmGoals::enter(Step step, double time) {
   step_ = step;
   since_ = time;
+  lowest_ = lowered_to_ = std::numeric_limits<double>::infinity();
+  lower_at_ = time;
 }
 
 void PegArmGoals::planGrasp(const scenario::RingView& ring, const Eigen::Vector3d& tip,
@@ -97,8 +102,11 @@ void PegArmGoals::planGrasp(const scenario::RingView& ring, const Eigen::Vector3
   // The post inside the ring, if it is on one: the inner jaw goes down beside it.
   const auto& job = layout_.jobs[rings_[next_]];
   post_ = std::nullopt;
+  lift_along_ = centre_;
   for (const Eigen::Vector2d& p : {job.from, job.to}) {
-    if (ring.threadedOn(p)) post_ = (p - centre_).dot(outward_);
+    if (!ring.threadedOn(p)) continue;
+    post_ = (p - centre_).dot(outward_);
+    lift_along_ = p;
   }
   planned_ = true;
 }
@@ -118,8 +126,8 @@ Eigen::Vector3d PegArmGoals::graspFor(const Eigen::Matrix3d& axes, double openin
   const double w = layout_.ring.tube_half_width;
   double nearest = radius_ + w - widest * std::tan(outer);
   if (post_) {
-    nearest =
-        std::max(nearest, *post_ + layout_.geometry.post_radius + jawBackAtTip(inner + kLeanSlack));
+    nearest = std::max(nearest, *post_ + layout_.geometry.post_radius + post_clearance_ +
+                                    jawBackAtTip(inner + kLeanSlack));
   }
   const double farthest = radius_ - w + widest * std::tan(inner);
   const double across = farthest >= nearest ? 0.5 * (nearest + farthest) : nearest;
@@ -129,7 +137,7 @@ Eigen::Vector3d PegArmGoals::graspFor(const Eigen::Matrix3d& axes, double openin
   return Eigen::Vector3d(at.x(), at.y(), top_ + kAboveTop);
 }
 
-void PegArmGoals::nextAttempt(const scenario::RingView& ring, double time) {
+void PegArmGoals::retry(const scenario::RingView& ring, double time) {
   const auto& job = layout_.jobs[rings_[next_]];
   planned_ = false;
   if (!scenario::restsOn(ring, job.to, layout_.geometry) && ++attempts_ < kAttempts) {
@@ -137,6 +145,7 @@ void PegArmGoals::nextAttempt(const scenario::RingView& ring, double time) {
     return;
   }
   attempts_ = 0;
+  post_clearance_ = 0.0;
   enter(++next_ < rings_.size() ? Step::Over : Step::Done, time);
 }
 
@@ -156,6 +165,11 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
   };
   // Carried, the ring stays where it was in the jaws; one that strays is not coming along.
   const bool held = (held_at - carried_).norm() <= kStray;
+  // Going down, the tool is held up when it is shoved back up, or has not got lower for a while
+  // of pushing.
+  lowest_ = std::min(lowest_, tip.z());
+  if (tip.z() < lowered_to_ - kFine) lowered_to_ = tip.z(), lower_at_ = time;
+  const bool held_up = tip.z() > lowest_ + kFine || time - lower_at_ > kBlocked;
   switch (step_) {
     case Step::Over:
       if (!planned_) planGrasp(ring, tip, axes);
@@ -163,22 +177,33 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
       goal_ = {true, grasp_ + Eigen::Vector3d(0, 0, kApproach), kExact, open_};
       if (reached(tip) || stuck) enter(Step::Down, time);
       break;
-    case Step::Down:  // beside the post: aligned again before going lower whenever it drifts
+    case Step::Down: {  // beside the post: aligned again before going lower whenever it drifts
       grasp_ = graspFor(axes, open_);
-      goal_ = {true, grasp_, kFine, open_};
-      if ((grasp_ - tip).head<2>().norm() > kFine) {
+      // Held up on the way down (a jaw on the post's top or the ring's): up again, and down
+      // further from the post. It counts as a try of this ring.
+      if (held_up && tip.z() > grasp_.z() + kCoarse) {
+        post_clearance_ += kFine;
+        retry(ring, time);
+      } else if ((grasp_ - tip).head<2>().norm() > kFine) {
         goal_ = {true, Eigen::Vector3d(grasp_.x(), grasp_.y(), tip.z()), kExact, open_};
-      } else if (reached(tip) || stuck) {
-        enter(Step::Squeeze, time);
+        lower_at_ = time;
+      } else {
+        goal_ = {true, grasp_, kFine, open_};
+        if (reached(tip) || stuck) enter(Step::Squeeze, time);
       }
       break;
+    }
     case Step::Squeeze:
       goal_ = {true, grasp_, kLoose, squeeze_};
+      carried_ = held_at;
       if (time - since_ >= kSqueezeWait) enter(Step::Lift, time);
       break;
-    case Step::Lift:  // straight up its post
-      goal_ = {true, around(job.from, grasp_.z() + kLift), kCoarse, squeeze_};
-      carried_ = held_at;
+    case Step::Lift:  // the ring straight up its post (the tool straight up if it slipped out)
+      goal_ = {true,
+               held ? around(lift_along_, grasp_.z() + kLift)
+                    : Eigen::Vector3d(tip.x(), tip.y(), grasp_.z() + kLift),
+               kCoarse, squeeze_};
+      if (held) carried_ = held_at;
       if (reached(tip) || stuck) {
         enter(layout_.geometry.offTheBoard(ring.bottom()) ? Step::Carry : Step::Release, time);
       }
@@ -194,7 +219,7 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
     case Step::Lower: {  // until the ring's bottom is just over the board
       const double drop = ring.bottom() - layout_.geometry.board_top - kReleaseHeight;
       goal_ = {true, around(job.to, tip.z() - drop), kFine, squeeze_};
-      if (!held || drop <= kFine || stuck) enter(Step::Release, time);
+      if (!held || drop <= kFine || held_up || stuck) enter(Step::Release, time);
       break;
     }
     case Step::Release:
@@ -205,7 +230,7 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
       }
       break;
     case Step::Rise:
-      if (reached(tip) || stuck) nextAttempt(ring, time);
+      if (reached(tip) || stuck) retry(ring, time);
       break;
     case Step::Done:
       break;

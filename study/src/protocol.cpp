@@ -48,9 +48,9 @@ std::vector<Eigen::Vector3d> points(const YamlView& node) {
 }
 
 TaskSpec readTask(const std::string& name, const YamlView& node) {
-  checkKeys(node, {"kind", "instructions", "time_limit", "proficiency_time", "excessive_force",
-                   "pattern", "count", "distance", "height", "width", "depth", "left", "right",
-                   "tolerance", "dwell"});
+  checkKeys(node, {"kind", "instructions", "time_limit", "trials", "proficiency_time",
+                   "excessive_force", "pattern", "count", "distance", "height", "width", "depth",
+                   "left", "right", "tolerance", "dwell"});
   TaskSpec t;
   t.name = name;
   const std::string kind = node["kind"].asKeyword();
@@ -63,6 +63,10 @@ TaskSpec readTask(const std::string& name, const YamlView& node) {
   }
   if (auto v = node.find("instructions")) t.instructions = v->asString();
   if (auto v = node.find("time_limit")) t.time_limit = positive(*v);
+  if (auto v = node.find("trials")) {
+    t.trials = v->asInt();
+    if (*t.trials < 1 || *t.trials > 50) v->fail("must lie in [1, 50]");
+  }
   if (auto v = node.find("proficiency_time")) {
     t.proficiency_time = positive(*v);
     if (*t.proficiency_time > t.time_limit) v->fail("must not exceed the task's time_limit");

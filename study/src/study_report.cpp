@@ -20,7 +20,8 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kCorrection =
-    "holm: within each metric, over the pairwise comparisons of the schemes";
+    "holm: within each task's metric (and each questionnaire), over the pairwise comparisons of "
+    "the schemes";
 
 void loadParticipant(const fs::path& home, StudyData& data) {
   const nlohmann::json session = readJson(home / "session.json");
@@ -72,9 +73,10 @@ nlohmann::json nullable(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nullptr;
 }
 
-/// Paired comparisons of every pair of conditions on one measure, Holm-corrected together.
-nlohmann::json compare(const std::string& measure, int sense,
-                       const std::map<std::string, ParticipantMeans>& by_condition,
+/// Paired comparisons of every pair of conditions on one measure of one task (none: a
+/// questionnaire, asked per condition), Holm-corrected together.
+nlohmann::json compare(const std::string& measure, const std::optional<std::string>& task,
+                       int sense, const std::map<std::string, ParticipantMeans>& by_condition,
                        const PowerQuestion& power, nlohmann::json& power_rows) {
   std::vector<std::string> conditions;
   for (const auto& [c, _] : by_condition) conditions.push_back(c);
@@ -101,10 +103,12 @@ nlohmann::json compare(const std::string& measure, int sense,
       if (sense != 0 && t.p < 1.0 && difference != 0.0) {
         better = (difference < 0.0) == (sense < 0) ? conditions[i] : conditions[k];
       }
+      const nlohmann::json of_task = task ? nlohmann::json(*task) : nlohmann::json(nullptr);
       rows.push_back(nlohmann::json{
           {"a", conditions[i]},
           {"b", conditions[k]},
           {"metric", measure},
+          {"task", of_task},
           {"test", "paired t-test on the participants' means"},
           {"n", xa.size()},
           {"mean_a", mean(xa)},
@@ -124,6 +128,7 @@ nlohmann::json compare(const std::string& measure, int sense,
       power_rows.push_back({{"a", conditions[i]},
                             {"b", conditions[k]},
                             {"metric", measure},
+                            {"task", of_task},
                             {"observed_effect", nullable(t.dz)},
                             {"participants_needed",
                              std::isfinite(t.dz) ? pairsNeeded(t.dz, alpha, power.power) : 2}});
@@ -260,22 +265,30 @@ nlohmann::json describeSchemes(const TrialsByScheme& by_condition) {
   return schemes;
 }
 
-/// Paired comparisons of the schemes on the participants' means of each metric, appended to
-/// `comparisons` (and the observed power to `power_rows`).
+/// Paired comparisons of the schemes, per task and metric, on the participants' means over
+/// that task's trials (tasks differ in scale: a peg transfer's minutes would swamp a reach's
+/// seconds), appended to `comparisons` (and the observed power to `power_rows`).
 void compareMetrics(const TrialsByScheme& by_condition, const PowerQuestion& power,
                     nlohmann::json& comparisons, nlohmann::json& power_rows) {
-  for (const std::string& m : metricNames()) {
-    std::map<std::string, ParticipantMeans> means;
-    for (const auto& [condition, rows] : by_condition) {
-      std::map<std::string, std::vector<double>> values;
-      for (const TrialRecord* r : rows) {
-        if (std::isfinite(r->metrics.at(m))) values[r->participant].push_back(r->metrics.at(m));
+  std::set<std::string> tasks;
+  for (const auto& [condition, rows] : by_condition) {
+    for (const TrialRecord* r : rows) tasks.insert(r->task);
+  }
+  for (const std::string& task : tasks) {
+    for (const std::string& m : metricNames()) {
+      std::map<std::string, ParticipantMeans> means;
+      for (const auto& [condition, rows] : by_condition) {
+        std::map<std::string, std::vector<double>> values;
+        for (const TrialRecord* r : rows) {
+          const double v = r->metrics.at(m);
+          if (r->task == task && std::isfinite(v)) values[r->participant].push_back(v);
+        }
+        for (const auto& [participant, v] : values) means[condition][participant] = mean(v);
       }
-      for (const auto& [participant, v] : values) means[condition][participant] = mean(v);
-    }
-    if (means.size() < 2) continue;
-    for (auto& row : compare(m, metricSense(m), means, power, power_rows)) {
-      comparisons.push_back(row);
+      if (means.size() < 2) continue;
+      for (auto& row : compare(m, task, metricSense(m), means, power, power_rows)) {
+        comparisons.push_back(row);
+      }
     }
   }
 }
@@ -304,7 +317,8 @@ nlohmann::json compareQuestionnaires(const StudyData& data, const PowerQuestion&
     }
     for (const auto& [condition, s] : scores) questionnaires[name][condition] = describe(s);
     if (means.size() < 2) continue;
-    for (auto& row : compare(name, questionnaireSense(name), means, power, power_rows)) {
+    for (auto& row :
+         compare(name, std::nullopt, questionnaireSense(name), means, power, power_rows)) {
       comparisons.push_back(row);
     }
   }

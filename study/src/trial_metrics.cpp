@@ -172,7 +172,7 @@ struct MetricInfo {
   int sense;
 };
 constexpr std::array<MetricInfo, 27> kMetrics{{
-    {"completion_time_s", "s to finish (the time limit when not finished)", -1},
+    {"completion_time_s", "s to finish (the time limit when not finished or e-stopped)", -1},
     {"completed", "1 when the task was finished within its time limit", +1},
     {"targets_reached", "targets held for the dwell time", +1},
     {"overshoots", "times a tip left its target before holding it", -1},
@@ -279,8 +279,13 @@ TrialMetrics measureTrial(const fs::path& dir) {
   const auto paths = tipPaths(fileEnding(dir, "_rs.csv"));
   const bool rings = count("rings") > 0;
   const bool targets = count("target_shown") > 0;
+  // A trial not finished (out of time, or ended by an e-stop) counts at the task's time limit,
+  // as the FLS scores one that was cut off (the trial_start event's value; 0 in older trials).
+  const auto start = std::find_if(events.begin(), events.end(),
+                                  [](const TrialEvent& e) { return e.name == "trial_start"; });
+  const double limit = start != events.end() ? start->value : 0.0;
   TrialMetrics m;
-  m["completion_time_s"] = end->time;
+  m["completion_time_s"] = end->value > 0.0 ? end->time : std::max(end->time, limit);
   m["completed"] = end->value;
   m["targets_reached"] = targets ? count("target_reached") : kNaN;
   m["overshoots"] = targets ? count("target_left") : kNaN;

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "study/counterbalance.hpp"
 
 namespace study {
@@ -46,10 +48,18 @@ std::vector<PlannedTrial> planTrials(const Protocol& protocol, int position) {
     }
     return h;
   };
+  const auto trialsOf = [&](const TaskSpec& task) {
+    return task.trials.value_or(protocol.trials_per_condition);
+  };
+  int rounds = 0;
+  for (const TaskSpec& task : protocol.tasks) rounds = std::max(rounds, trialsOf(task));
   std::vector<PlannedTrial> plan;
   for (const std::string& condition : conditionSequence(protocol, position)) {
-    for (int rep = 0; rep < protocol.trials_per_condition; ++rep) {
+    for (int round = 0; round < rounds; ++round) {
       for (const TaskSpec& task : protocol.tasks) {
+        // A task done fewer times joins in the condition's last rounds.
+        const int rep = round - (rounds - trialsOf(task));
+        if (rep < 0) continue;
         plan.push_back({static_cast<int>(plan.size()), condition, task.name, rep, false,
                         seedOf(task.name, rep)});
       }

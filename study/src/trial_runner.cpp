@@ -4,6 +4,7 @@
 
 #include <chrono>
 
+#include "ambf_like/step_guard.hpp"
 #include "controller/session.hpp"
 #include "raven/arm_kinematics.hpp"
 #include "raven/platform_profile.hpp"
@@ -167,7 +168,7 @@ TrialRun runTrial(const TrialSettings& s) {
   const viewer::VideoOptions picture = s.video.value_or(viewer::VideoOptions{});
   ViewWatch sight(camera->camera, picture.width, picture.height);
   task->begin(first_view, events);
-  events.add(0.0, "trial_start");
+  events.add(0.0, "trial_start", -1, s.task.time_limit);
   events.add(0.0, "force_threshold", -1, s.task.excessive_force);
   session.select(controller::Mode::Manual);
   session.startRecording();
@@ -180,7 +181,14 @@ TrialRun runTrial(const TrialSettings& s) {
       return run;
     }
     if (s.before_turn) s.before_turn(now.time, task->goals(), now.tips);
-    session.turn();
+    try {
+      session.turn();
+    } catch (const ambf_like::SimulationDiverged& e) {  // the world cannot go on, nor the trial
+      spdlog::error("{}", e.what());
+      events.add(now.time, "simulation_diverged");
+      run.diverged = true;
+      break;
+    }
     now = view();
     run.e_stopped = twin.operatingStatus().state == bridge::OperatingState::Fault;
     if (run.e_stopped) {  // an e-stop ends the trial: the robot needs the experimenter

@@ -9,6 +9,8 @@ namespace {
 
 /// s over which the person judges how fast the tip moves.
 constexpr double kSpeedWindow = 0.1;
+/// A push whose tip is seen going slower than this share of the meant speed is not followed.
+constexpr double kStalled = 0.2;
 
 /// A normal draw clipped to [low, high].
 double clipped(std::mt19937_64& rng, double mean, double sd, double low, double high) {
@@ -94,7 +96,16 @@ void VirtualParticipant::watch(Hand& hand, const Seen& view, double t) const {
   const double speed = view.t > before.t
                            ? (view.tips[arm] - before.tips[arm]).dot(along) / (view.t - before.t)
                            : 0.0;
-  if (left > std::max(speed, 0.0) * traits_.delay) return;
+  // A push the tip is seen not to follow once it had time to show (the tool held by a post,
+  // the ring, the board; a stick inside the deadzone) is let go too: pushing on moves only the
+  // command, and the robot's controller would wind up against what holds the tool.
+  const double meant_speed = hand.meant.norm() / (hand.planned_until - hand.started);
+  const bool stalled = before.t >= hand.started + kSpeedWindow && speed < kStalled * meant_speed &&
+                       left > traits_.perception;
+  // And one whose aim the person sees moved (a new target, a step that asks for something else).
+  const ArmGoal& goal = view.goals[arm];
+  const bool aim_moved = !goal.active || (goal.point - hand.aim).norm() > goal.tolerance;
+  if (!stalled && !aim_moved && left > std::max(speed, 0.0) * traits_.delay) return;
   hand.meant *= (t - hand.started) / (hand.planned_until - hand.started);
   hand.until = t;
 }

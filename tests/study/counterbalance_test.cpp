@@ -55,4 +55,23 @@ TEST(Counterbalance, PlansShareTheirTargetsAcrossConditions) {
   EXPECT_NE(first[0].task_seed, first[2].task_seed);  // the next repetition draws anew
 }
 
+TEST(Counterbalance, ATaskDoneFewerTimesComesAtTheEndOfEachCondition) {
+  study::Protocol p;
+  p.tasks.resize(2);
+  p.tasks[0].name = "reach";
+  p.tasks[1].name = "peg";
+  p.tasks[1].trials = 1;
+  for (const char* name : {"A", "B"}) {
+    p.conditions.emplace_back();
+    p.conditions.back().name = name;
+  }
+  p.trials_per_condition = 3;
+  std::vector<std::string> order;
+  for (const auto& t : study::planTrials(p, 0)) {
+    order.push_back(t.condition + ":" + t.task + std::to_string(t.repetition));
+  }
+  EXPECT_EQ(order, (std::vector<std::string>{"A:reach0", "A:reach1", "A:reach2", "A:peg0",
+                                             "B:reach0", "B:reach1", "B:reach2", "B:peg0"}));
+}
+
 }  // namespace

@@ -2,8 +2,8 @@
 // exactly where it is asked to (no motors, no physics): a ring squeezed goes where the jaws go,
 // one let go falls onto the board below it. The answers are known by construction: each ring
 // ends on the post behind it after one grasp; a ring that never comes up is tried three times
-// and then left. And the jaw openings the goals ask for clear what the scene's geometry says
-// they must.
+// and then left; a way down held up on the post is tried again with more room from it. And the jaw
+// openings the goals ask for clear what the scene's geometry says they must.
 
 #include "study/peg_arm_goals.hpp"
 
@@ -108,6 +108,40 @@ TEST(PegArmGoals, ARingThatNeverComesUpIsTriedThreeTimesThenLeft) {
     EXPECT_EQ(run.squeezes[i], 3) << scene.layout.jobs[i].ring;
     EXPECT_EQ(scene.centres[i], scene.onBoard(scene.layout.jobs[i].from));
   }
+}
+
+TEST(PegArmGoals, ADescentHeldUpOnThePostIsTriedAgainFurtherFromIt) {
+  // The first way down stops 15 mm over the grasp (a jaw on the post's top): a second later the
+  // goal goes back up, and the next way down keeps 1 mm more room from the post.
+  Scene scene;
+  study::PegArmGoals goals(scene.layout, {0});
+  const Eigen::Vector2d post = scene.layout.jobs[0].from;
+  Eigen::Vector3d tip(0.300, 0.079, scene.layout.geometry.board_top + 0.045);
+  std::optional<double> floor;             // while set, the tip gets no lower
+  std::vector<double> descents;            // each way down: the goal's distance from the post
+  std::optional<double> blocked_at, over;  // over: the first goal's height, over the ring
+  for (double t = 0.0; t < 60.0 && descents.size() < 2; t += 0.02) {
+    goals.observe(t, tip, jawsDown(), scene.seen());
+    const study::ArmGoal goal = goals.goal();
+    if (!over) over = goal.point.z();
+    const bool going_down = goal.point.z() < *over - 0.01;
+    if (going_down && !floor && (descents.empty() || blocked_at)) {
+      descents.push_back((goal.point.head<2>() - post).norm());
+      if (descents.size() == 1) floor = goal.point.z() + 0.015;
+    }
+    if (floor && !going_down) {  // it went back up
+      blocked_at = t;
+      floor.reset();
+    }
+    tip = goal.point;
+    if (floor) tip.z() = std::max(tip.z(), *floor);
+  }
+  ASSERT_TRUE(blocked_at);
+  ASSERT_EQ(descents.size(), 2u);
+  // The inner jaw keeps 1 mm more from the post; the jaw axis goes half way between where the
+  // jaws clear the post and where they still clear the tube, so it moves by 0.5 to 1 mm.
+  EXPECT_GE(descents[1] - descents[0], 0.0005 - 1e-9);
+  EXPECT_LE(descents[1] - descents[0], 0.001 + 1e-9);
 }
 
 TEST(PegArmGoals, TheOpeningClearsTheTubeAndThePostAndTheSqueezeReachesIntoTheWall) {

@@ -34,6 +34,9 @@ TEST(Protocol, TheExampleComparesThreeSchemesWithTuning) {
   EXPECT_EQ(p.condition("M2-degraded").deadzone, 0.6);
   EXPECT_EQ(p.condition("M2-degraded").controllerOptions().caps.min_steps, 40);
   EXPECT_EQ(p.task("rectangle").pattern, "rectangle");
+  EXPECT_EQ(p.task("peg").kind, study::TaskKind::PegTransfer);
+  EXPECT_EQ(p.task("peg").trials, 1);  // once per scheme; the others trials_per_condition times
+  EXPECT_FALSE(p.task("reach").trials);
   EXPECT_EQ(p.order, study::OrderKind::LatinSquare);
   ASSERT_TRUE(p.tuning);
   EXPECT_EQ(p.tuning->costText(), "1 x completion_time_s + 2 x overshoots");
@@ -66,6 +69,12 @@ conditions: {A: {scheme: m3}}
   EXPECT_NE(scheme.find("conditions/A/scheme"), std::string::npos) << scheme;
   EXPECT_NE(scheme.find("unknown scheme 'm3'"), std::string::npos) << scheme;
   EXPECT_NE(errorOf(kMinimal + "order: random\n").find("latin-square or fixed"), std::string::npos);
+  const std::string trials = errorOf(R"(study: s
+tasks: {reach: {kind: targets, trials: 0}}
+conditions: {A: {scheme: m2}}
+)");
+  EXPECT_NE(trials.find("tasks/reach/trials"), std::string::npos) << trials;
+  EXPECT_NE(trials.find("must lie in [1, 50]"), std::string::npos) << trials;
   // A tuning block on the minimal protocol, one of its values wrong at a time.
   const auto tuning = [](const std::string& condition, const std::string& parameters,
                          const std::string& cost) {

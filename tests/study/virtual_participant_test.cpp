@@ -1,11 +1,13 @@
 // The virtual participant on a plain rate-controlled plant (the stick's deflection past a radial
 // deadzone sets the tip's speed, up to a cap): it reaches its targets, a faster mapping (stick
-// and speed cap) makes it overshoot more, and a wide deadzone costs it time until it has learnt
-// how wide it is.
+// and speed cap) makes it overshoot more, a wide deadzone costs it time until it has learnt how
+// wide it is, and a push the tip does not follow, or whose aim moved, is let go.
 
 #include "study/virtual_participant.hpp"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace {
 
@@ -13,6 +15,7 @@ namespace {
 /// the bumper.
 struct Plant {
   double gain = 0.025, cap = 0.025, deadzone = 0.15;
+  double wall = 1.0;  ///< m: the tip goes no further along x (a tool against a post)
   Eigen::Vector3d tip = Eigen::Vector3d::Zero();
 
   void step(const recording::GamepadState& pad, double dt) {
@@ -23,6 +26,7 @@ struct Plant {
     v *= gain;
     if (v.norm() > cap) v *= cap / v.norm();
     tip += v * dt;
+    tip.x() = std::min(tip.x(), wall);
   }
 };
 
@@ -96,6 +100,60 @@ TEST(VirtualParticipant, AWideDeadzoneCostsTime) {
   const Outcome wide = population(Plant{0.025, 0.025, 0.6});
   EXPECT_EQ(wide.reached, 48);
   EXPECT_GT(wide.time, paper.time * 1.1) << paper.time << " vs " << wide.time;
+}
+
+/// The longest time the person held the stick toward +x in one push while `blocked` said the
+/// push was in vain, over `seconds` of reaching for the aim `aim(t)` on `plant`.
+template <typename Blocked, typename Aim>
+double longestBlindPush(std::uint64_t person, Plant plant, Blocked blocked, Aim aim,
+                        double seconds) {
+  study::ConditionFeel feel;
+  study::VirtualParticipant vp(study::ParticipantTraits::draw(person), feel, person + 1000);
+  double longest = 0.0, since = -1.0;
+  const double dt = 0.002;
+  for (double t = 0.0; t < seconds; t += dt) {
+    std::array<study::ArmGoal, 2> goals;
+    goals[0] = {true, aim(t), 0.003};
+    const recording::GamepadState pad = vp.act(t, goals, {plant.tip, Eigen::Vector3d::Zero()});
+    const bool pushing = pad.left_x > plant.deadzone && !pad.left_bumper;
+    if (pushing && blocked(t, plant)) {
+      if (since < 0.0) since = t;
+      longest = std::max(longest, t - since + dt);
+    } else {
+      since = -1.0;
+    }
+    plant.step(pad, dt);
+  }
+  return longest;
+}
+
+TEST(VirtualParticipant, APushTheToolDoesNotFollowIsLetGo) {
+  // A wall 5 mm along x, the aim 30 mm: the first push is planned for about 1.2 s, and meets the
+  // wall after 0.2 s. The person sees the tip stop a delay later and lets go: pushing on would
+  // only wind the robot's command up against the wall.
+  for (std::uint64_t person = 1; person <= 6; ++person) {
+    const auto traits = study::ParticipantTraits::draw(person);
+    Plant walled;
+    walled.wall = 0.005;
+    const double pushed = longestBlindPush(
+        person, walled, [](double, const Plant& p) { return p.tip.x() >= p.wall; },
+        [](double) { return Eigen::Vector3d(0.03, 0, 0); }, 5.0);
+    EXPECT_GT(pushed, 0.0) << person;  // it does push into the wall, as a person would
+    // Seen stopped: the delay, the 0.1 s it judges speed over, and the tip's own slowing.
+    EXPECT_LT(pushed, traits.delay + 0.25) << person;
+  }
+}
+
+TEST(VirtualParticipant, APushWhoseAimMovesIsLetGo) {
+  // The aim 30 mm along +x, moved to 30 mm along -x 0.3 s into the first push (a new target):
+  // the push toward +x ends once the person sees the new aim, not at its planned end.
+  for (std::uint64_t person = 1; person <= 6; ++person) {
+    const auto traits = study::ParticipantTraits::draw(person);
+    const auto aim = [](double t) { return Eigen::Vector3d(t < 0.3 ? 0.03 : -0.03, 0, 0); };
+    const double pushed = longestBlindPush(
+        person, Plant{}, [](double t, const Plant&) { return t >= 0.3; }, aim, 3.0);
+    EXPECT_LT(pushed, traits.delay + 0.01) << person;
+  }
 }
 
 TEST(VirtualParticipant, PopulationDrawsAreReproducibleAndVaried) {

@@ -50,8 +50,8 @@ class PegArmGoals {
   /// `axes` says (the wrist-locked mapping keeps the wrist's joints, not its orientation, and
   /// the motors hold them only so well): every jaw clear of the tube and the post.
   Eigen::Vector3d graspFor(const Eigen::Matrix3d& axes, double opening) const;
-  /// After the rise: the same ring again, the next one, or done.
-  void nextAttempt(const scenario::RingView& ring, double time);
+  /// After the rise or a descent held up: the same ring again, the next one, or done.
+  void retry(const scenario::RingView& ring, double time);
   bool reached(const Eigen::Vector3d& tip) const {
     return (tip - goal_.point).norm() <= goal_.tolerance;
   }
@@ -61,17 +61,22 @@ class PegArmGoals {
   std::size_t next_ = 0;  ///< index into rings_
   int attempts_ = 0;      ///< of the current ring
   Step step_ = Step::Over;
-  bool planned_ = false;  ///< the current attempt's grasp is planned
-  double since_ = 0.0;    ///< s: when the current step began
-  double open_;           ///< the jaw opening going down on a ring and letting it go
-  double squeeze_;        ///< the jaw opening of a squeeze
+  bool planned_ = false;         ///< the current attempt's grasp is planned
+  double since_ = 0.0;           ///< s: when the current step began
+  double lowest_ = 0.0;          ///< the tip's lowest height in this step
+  double lowered_to_ = 0.0;      ///< the height where it last got a step (kFine) lower
+  double lower_at_ = 0.0;        ///< s: when it did (or was re-aligned)
+  double post_clearance_ = 0.0;  ///< more room from the post after a jaw was held up on it
+  double open_;                  ///< the jaw opening going down on a ring and letting it go
+  double squeeze_;               ///< the jaw opening of a squeeze
   // The planned grasp, horizontally: the ring's centre, the way out to the grasped side, the
   // centre line's radius there, the post's axis along that way (none: not on a post); its top.
   Eigen::Vector2d centre_ = Eigen::Vector2d::Zero(), outward_ = Eigen::Vector2d::UnitX();
   double radius_ = 0.0, top_ = 0.0;
   std::optional<double> post_;
-  Eigen::Vector3d grasp_ = Eigen::Vector3d::Zero();    ///< the jaw axis there
-  Eigen::Vector2d carried_ = Eigen::Vector2d::Zero();  ///< the tip from the ring as it came up
+  Eigen::Vector2d lift_along_ = Eigen::Vector2d::Zero();  ///< its post's axis, or its centre
+  Eigen::Vector3d grasp_ = Eigen::Vector3d::Zero();       ///< the jaw axis there
+  Eigen::Vector2d carried_ = Eigen::Vector2d::Zero();     ///< the tip from the ring as it came up
   ArmGoal goal_;
 };
 

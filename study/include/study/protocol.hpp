@@ -27,6 +27,9 @@ struct TaskSpec {
   TaskKind kind = TaskKind::Targets;
   std::string instructions;  ///< shown before each trial
   double time_limit = 60.0;  ///< s; a trial that reaches it is ended and marked not completed
+  /// Trials of this task per condition (none: the protocol's trials_per_condition); a task done
+  /// fewer times than the others takes the condition's last repetitions, after the practice.
+  std::optional<int> trials;
   /// s: the FLS-style bar the report counts trials and participants against (finished within
   /// it; twice in a row), when the protocol states one.
   std::optional<double> proficiency_time;

@@ -1,8 +1,8 @@
 #pragma once
 // The study's report from its sessions' sealed trials and questionnaires: per scheme the
-// metrics' means and SDs, paired comparisons between schemes per metric (paired t-test with
-// Cohen's d_z, the exact Wilcoxon signed-rank test beside it, Holm-corrected within each
-// metric), the questionnaires' scores compared the same way, each tuned participant's
+// metrics' means and SDs, paired comparisons between schemes per task and metric (paired t-test
+// with Cohen's d_z, the exact Wilcoxon signed-rank test beside it, Holm-corrected within each
+// task's metric), the questionnaires' scores compared the same way, each tuned participant's
 // recommended settings, and the participants a study needs (power of the paired t-test).
 // summary.json, trials.csv (and trial_metrics_long.csv, one row per trial and metric) and
 // questionnaires.csv hold the numbers; report.html draws them.

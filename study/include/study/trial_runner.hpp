@@ -43,9 +43,10 @@ struct TrialSettings {
 
 /// How a trial ended.
 struct TrialRun {
-  bool finished = false;   ///< ran to its end (done, the time limit or an e-stop), not stopped
+  bool finished = false;   ///< ran to its end (done, the time limit, an e-stop), not stopped
   bool completed = false;  ///< the task was done within the time limit
   bool e_stopped = false;  ///< the robot went to FAULT, which ends a trial
+  bool diverged = false;   ///< the simulation's guard stopped the world (a ring fell off it)
   double duration = 0.0;   ///< s of trial time
 };
 
