@@ -9,8 +9,10 @@ namespace {
 
 /// s over which the person judges how fast the tip moves.
 constexpr double kSpeedWindow = 0.1;
-/// A push whose tip is seen going slower than this share of the meant speed is not followed.
-constexpr double kStalled = 0.2;
+/// A push whose tip is seen going slower than this share of the meant speed is not followed: a
+/// halving, far above what a person tells apart (speeds differing by about 10 %, McKee 1981), so
+/// the ordinary lag of a tool that starts or slows does not count.
+constexpr double kStalled = 0.5;
 
 /// A normal draw clipped to [low, high].
 double clipped(std::mt19937_64& rng, double mean, double sd, double low, double high) {
