@@ -177,7 +177,7 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
       goal_ = {true, grasp_ + Eigen::Vector3d(0, 0, kApproach), kExact, open_};
       if (reached(tip) || stuck) enter(Step::Down, time);
       break;
-    case Step::Down: {  // beside the post: aligned again before going lower whenever it drifts
+    case Step::Down:  // beside the post: aligned again before going lower whenever it drifts
       grasp_ = graspFor(axes, open_);
       // Held up on the way down (a jaw on the post's top or the ring's): up again, and down
       // further from the post. It counts as a try of this ring.
@@ -192,7 +192,6 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
         if (reached(tip) || stuck) enter(Step::Squeeze, time);
       }
       break;
-    }
     case Step::Squeeze:
       goal_ = {true, grasp_, kLoose, squeeze_};
       carried_ = held_at;

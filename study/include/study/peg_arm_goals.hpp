@@ -4,7 +4,8 @@
 // down onto it, a squeeze of the trigger, up until the ring clears its post, over the target
 // post (the ring's hole, not the tool, lined up with it), down until the ring nearly touches the
 // board, the trigger let go, and up again. A ring that did not come up, fell, or missed its post
-// is taken again from where it lies (twice at most, then left), as a person watching it would.
+// is taken again from where it lies (twice at most, then left), as a person watching it would; a
+// way down held up on a post is such a try, the next with more room kept from the post.
 // These are the steps a trainer would call out; the hands (VirtualParticipant) do the steering.
 
 #include <Eigen/Core>
