@@ -111,7 +111,8 @@ class VirtualParticipant {
   /// Plans the next push of `hand` for arm `arm` from what was seen.
   void plan(Hand& hand, int arm, const Seen& view, double t);
   /// Ends a push early once `view` shows the tip about to reach its aim along the push (a long
-  /// move is watched, not timed blind); what it was meant to do shrinks to the time it lasted.
+  /// move is watched, not timed blind), not following it, or the aim moved; what it was meant to
+  /// do shrinks to the time it lasted.
   void watch(Hand& hand, const Seen& view, double t) const;
   Eigen::Vector2d tremor(double t, int hand) const;
 
