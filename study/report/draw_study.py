@@ -88,6 +88,7 @@ def task_metric_figure(task, rows, schemes, summary):
     for ax in list(axes.flat)[len(shown):]:
         ax.axis("off")
     fig.suptitle(f"{task}, per scheme: trials (boxes) and each participant's mean (dots)")
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.3 / fig.get_figheight()))  # the title just above
     return picture(fig, f"metrics per scheme: {task}")
 
 
