@@ -126,6 +126,12 @@ int run(const RunOptions& o) {
   return 0;
 }
 
+/// A comparison's measure as the console names it: "task/metric", or a questionnaire's name.
+std::string measureOf(const nlohmann::json& row) {
+  const std::string metric = row.at("metric").get<std::string>();
+  return row.at("task").is_null() ? metric : row.at("task").get<std::string>() + "/" + metric;
+}
+
 int report(const std::vector<fs::path>& dirs, const fs::path& out,
            const study::PowerQuestion& power) {
   const study::StudyData data = study::loadStudy(dirs);
@@ -134,10 +140,10 @@ int report(const std::vector<fs::path>& dirs, const fs::path& out,
   fmt::print("{} participants, {} trials\n", data.participants.size(), data.trials.size());
   for (const auto& row : summary.at("comparisons")) {
     if (!row.at("significant").get<bool>()) continue;
-    fmt::print("  {:<20} {} vs {}: p = {:.3g} ({}), d_z = {}, better: {}\n",
-               row.at("metric").get<std::string>(), row.at("a").get<std::string>(),
-               row.at("b").get<std::string>(), row.at("p").get<double>(), "holm",
-               row.at("effect_size").dump(), row.at("better").dump());
+    fmt::print("  {:<30} {} vs {}: p = {:.3g} ({}), d_z = {}, better: {}\n", measureOf(row),
+               row.at("a").get<std::string>(), row.at("b").get<std::string>(),
+               row.at("p").get<double>(), "holm", row.at("effect_size").dump(),
+               row.at("better").dump());
   }
   fmt::print("{}\n", (out / "summary.json").string());
   if (!failure.empty()) {
@@ -159,10 +165,9 @@ int power(const std::vector<fs::path>& dirs, const study::PowerQuestion& questio
   }
   fmt::print("observed in the pilot (alpha divided by the scheme pairs):\n");
   for (const auto& row : p.at("observed")) {
-    fmt::print("  {:<20} {} vs {}: d_z {} -> {} participants\n",
-               row.at("metric").get<std::string>(), row.at("a").get<std::string>(),
-               row.at("b").get<std::string>(), row.at("observed_effect").dump(),
-               row.at("participants_needed").dump());
+    fmt::print("  {:<30} {} vs {}: d_z {} -> {} participants\n", measureOf(row),
+               row.at("a").get<std::string>(), row.at("b").get<std::string>(),
+               row.at("observed_effect").dump(), row.at("participants_needed").dump());
   }
   return 0;
 }
