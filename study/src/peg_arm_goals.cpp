@@ -102,11 +102,8 @@ void PegArmGoals::planGrasp(const scenario::RingView& ring, const Eigen::Vector3
   // The post inside the ring, if it is on one: the inner jaw goes down beside it.
   const auto& job = layout_.jobs[rings_[next_]];
   post_ = std::nullopt;
-  lift_along_ = centre_;
   for (const Eigen::Vector2d& p : {job.from, job.to}) {
-    if (!ring.threadedOn(p)) continue;
-    post_ = (p - centre_).dot(outward_);
-    lift_along_ = p;
+    if (ring.threadedOn(p)) post_ = p;
   }
   planned_ = true;
 }
@@ -126,8 +123,8 @@ Eigen::Vector3d PegArmGoals::graspFor(const Eigen::Matrix3d& axes, double openin
   const double w = layout_.ring.tube_half_width;
   double nearest = radius_ + w - widest * std::tan(outer);
   if (post_) {
-    nearest = std::max(nearest, *post_ + layout_.geometry.post_radius + post_clearance_ +
-                                    jawBackAtTip(inner + kLeanSlack));
+    nearest = std::max(nearest, (*post_ - centre_).dot(outward_) + layout_.geometry.post_radius +
+                                    post_clearance_ + jawBackAtTip(inner + kLeanSlack));
   }
   const double farthest = radius_ - w + widest * std::tan(inner);
   const double across = farthest >= nearest ? 0.5 * (nearest + farthest) : nearest;
@@ -180,7 +177,7 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
     case Step::Down:  // beside the post: aligned again before going lower whenever it drifts
       grasp_ = graspFor(axes, open_);
       // Held up on the way down (a jaw on the post's top or the ring's): up again, and down
-      // further from the post. It counts as a try of this ring.
+      // keeping more room from the post. It counts as a try of this ring.
       if (held_up && tip.z() > grasp_.z() + kCoarse) {
         post_clearance_ += kFine;
         retry(ring, time);
@@ -199,7 +196,7 @@ void PegArmGoals::observe(double time, const Eigen::Vector3d& tip, const Eigen::
       break;
     case Step::Lift:  // the ring straight up its post (the tool straight up if it slipped out)
       goal_ = {true,
-               held ? around(lift_along_, grasp_.z() + kLift)
+               held ? around(post_.value_or(centre_), grasp_.z() + kLift)
                     : Eigen::Vector3d(tip.x(), tip.y(), grasp_.z() + kLift),
                kCoarse, squeeze_};
       if (held) carried_ = held_at;

@@ -68,16 +68,15 @@ class PegArmGoals {
   double lowered_to_ = 0.0;      ///< the height where it last got a step (kFine) lower
   double lower_at_ = 0.0;        ///< s: when it did (or was re-aligned)
   double post_clearance_ = 0.0;  ///< more room from the post after a jaw was held up on it
-  double open_;                  ///< the jaw opening going down on a ring and letting it go
+  double open_;                  ///< the jaw opening going down on a ring
   double squeeze_;               ///< the jaw opening of a squeeze
   // The planned grasp, horizontally: the ring's centre, the way out to the grasped side, the
-  // centre line's radius there, the post's axis along that way (none: not on a post); its top.
+  // centre line's radius there, the post it is on (none: not on a post); its top.
   Eigen::Vector2d centre_ = Eigen::Vector2d::Zero(), outward_ = Eigen::Vector2d::UnitX();
   double radius_ = 0.0, top_ = 0.0;
-  std::optional<double> post_;
-  Eigen::Vector2d lift_along_ = Eigen::Vector2d::Zero();  ///< its post's axis, or its centre
-  Eigen::Vector3d grasp_ = Eigen::Vector3d::Zero();       ///< the jaw axis there
-  Eigen::Vector2d carried_ = Eigen::Vector2d::Zero();     ///< the tip from the ring as it came up
+  std::optional<Eigen::Vector2d> post_;
+  Eigen::Vector3d grasp_ = Eigen::Vector3d::Zero();    ///< the jaw axis there
+  Eigen::Vector2d carried_ = Eigen::Vector2d::Zero();  ///< the tip from the ring as it came up
   ArmGoal goal_;
 };
 
