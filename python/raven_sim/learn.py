@@ -11,6 +11,8 @@
         --camera left-task,right-task --out images.hdf5
     python3 -m raven_sim.learn train --obs rgb --demos images.hdf5 --state-policy bc_state.pt \\
         --out bc_rgb.pt
+    python3 -m raven_sim.learn join --image-policy bc_rgb.pt --state-policy bc_state.pt \
+        --out bc_rgb.pt
 
 record: the main job's scripted operator on randomised scenes (one seed per episode), in small
 steps (imitation.SteppedExpert), into robomimic's HDF5 layout (raven_sim.demos). The actions are
@@ -27,6 +29,9 @@ train: behaviour cloning, one multilayer perceptron for either arm from its imit
 to its waypoint (standardised, mean squared error, Adam), on the CPU. With --obs rgb: an image
 policy (vision.ImagePolicy), a ring locator trained on the demos' task-camera images that the
 state policy --state-policy acts through.
+
+join: an image policy's ring locator acting through another state policy (the locator only
+sees rings; a state policy trained again needs no new locator).
 
 dagger: one round of DAgger (Ross et al. 2011): the policy drives on new seeds (the expert's
 action instead with probability --beta) while the expert labels every state it reaches; the
@@ -45,7 +50,8 @@ import numpy as np
 from . import demos
 from .env import OBSERVATIONS, PegTransferEnv
 from .imitation import Policy, SteppedExpert, fit
-from .vision import ImagePolicy, fit_locator, load_locator_samples, load_policy
+from .vision import KIND as IMAGE_POLICY
+from .vision import ImagePolicy, fit_locator, load_locator_samples, load_policy, locator_of
 
 # DART's noise scale per joint (rad; the insertion m), times --noise.
 NOISE_SCALE = np.array([0.004, 0.004, 0.0004, 0.02, 0.02, 0.02, 0.02] * 2)
@@ -186,6 +192,18 @@ def train_image_policy(args):
           f"epoch's ring error {error:.2f} mm), with {args.state_policy}: {args.out}")
 
 
+def join(args):
+    """An image policy's ring locator acting through another state policy: the locator sees
+    rings, whatever acts on them."""
+    import torch
+    saved = torch.load(args.image_policy)
+    if saved.get("kind") != IMAGE_POLICY:
+        sys.exit(f"join: {args.image_policy} is not an image policy (train --obs rgb makes one)")
+    joined = ImagePolicy(locator_of(saved), Policy.load(args.state_policy), saved["image_size"])
+    joined.save(args.out, state_policy=args.state_policy, locator_of=args.image_policy)
+    print(f"the ring locator of {args.image_policy} with {args.state_policy}: {args.out}")
+
+
 def single_threaded():
     """A small network's inference is fastest on one thread, and leaves the others free."""
     import torch
@@ -288,6 +306,11 @@ def main(argv=None):
                         "(scripts/retrain-image-policy.sh: --epochs 16 --batch 128 --lr 1e-3)")
     p.add_argument("--state-policy", help="with --obs rgb: the state policy that acts")
     p.set_defaults(run=train)
+    p = sub.add_parser("join", help="an image policy's ring locator with another state policy")
+    p.add_argument("--image-policy", required=True, help="the image policy whose locator is kept")
+    p.add_argument("--state-policy", required=True, help="the state policy that acts")
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=join)
     p = sub.add_parser("dagger", help="a DAgger round: the policy drives, the expert labels")
     p.add_argument("--policy", required=True, help="the policy that drives")
     p.add_argument("--episodes", type=int, required=True)

@@ -139,11 +139,16 @@ class ImagePolicy:
 
     @staticmethod
     def from_checkpoint(saved, path):
-        locator = make_locator()
-        locator.load_state_dict(saved["locator"])
-        locator.eval()
-        return ImagePolicy(locator, Policy.from_checkpoint(saved["policy"], path),
+        return ImagePolicy(locator_of(saved), Policy.from_checkpoint(saved["policy"], path),
                            saved["image_size"])
+
+
+def locator_of(saved):
+    """The ring locator an image policy's checkpoint holds (whatever its state policy)."""
+    locator = make_locator()
+    locator.load_state_dict(saved["locator"])
+    locator.eval()
+    return locator
 
 
 def load_policy(path):

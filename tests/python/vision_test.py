@@ -94,6 +94,7 @@ class ImagePolicyInputs(unittest.TestCase):
 
 class ImageDemonstrations(unittest.TestCase):
     def test_record_train_evaluate_from_images(self):
+        import torch
         task_cameras()  # skips without headless OpenGL
         with tempfile.TemporaryDirectory() as d:
             demos, policy = os.path.join(d, "images.hdf5"), os.path.join(d, "bc_rgb.pt")
@@ -111,6 +112,25 @@ class ImageDemonstrations(unittest.TestCase):
                 check=True)
             self.assertRegex(run.stdout.strip().splitlines()[-1],
                              r"^placed \d/6 rings; [01]/1 episodes all six$")
+            # Its locator joined to another state policy: the same locator, that state policy.
+            joined = os.path.join(d, "joined.pt")
+            other = os.path.join(d, "other_state.pt")
+            shipped = imitation.Policy.load(SHIPPED_STATE)
+            shipped.stats = {k: v + 1.0 for k, v in shipped.stats.items()}
+            shipped.save(other)
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["join", "--image-policy", policy, "--state-policy", other,
+                            "--out", joined])
+            rejoined = vision.load_policy(joined)
+            for a, b in zip(rejoined.locator.state_dict().values(),
+                            loaded.locator.state_dict().values()):
+                self.assertTrue(torch.equal(a, b))
+            self.assertTrue(np.array_equal(rejoined.policy.stats["input_mean"],
+                                           shipped.stats["input_mean"]))
+            self.assertEqual(rejoined.image_size, loaded.image_size)
+            with self.assertRaisesRegex(SystemExit, "not an image policy"):
+                learn.main(["join", "--image-policy", SHIPPED_STATE, "--state-policy", other,
+                            "--out", joined])
             # Without images in the demos the image policy cannot train, and says why.
             state_only = os.path.join(d, "state.hdf5")
             with contextlib.redirect_stdout(io.StringIO()):
