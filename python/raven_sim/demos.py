@@ -1,5 +1,5 @@
 """Demonstrations in robomimic's HDF5 layout: data/demo_<k>/{actions, rewards, dones, obs/state},
-each demo's num_samples and seed as attributes, the environment's arguments in
+each demo's num_samples, seed and scene draw (variation, JSON) as attributes, the environment's arguments in
 data.attrs["env_args"] (JSON); besides, data/demo_<k>/waypoints: where the expert was heading,
 relative to the current targets (the actions are these capped per step). Episodes are recorded by
 running a driver (the expert, a policy) while a labeller (the expert) says what it should have
@@ -29,12 +29,14 @@ def open_demos(path, env_kwargs, source, mode="w"):
     return f, data
 
 
-def write_demo(data, seed, observations, actions, waypoints, rewards, source):
+def write_demo(data, seed, observations, actions, waypoints, rewards, source, variation=None):
     k = len(data.keys())
     demo = data.create_group(f"demo_{k}")
     demo.attrs["num_samples"] = len(actions)
     demo.attrs["seed"] = seed
     demo.attrs["source"] = source
+    if variation is not None:  # the scene's draw, as reset's info["variation"] gives it
+        demo.attrs["variation"] = json.dumps(variation)
     if isinstance(observations[0], dict):  # images besides the state: obs/<camera>_<kind>
         for key in observations[0]:
             array = np.stack([o[key] for o in observations])
@@ -76,20 +78,22 @@ def load_all(paths):
 
 class Episode:
     """What one episode recorded: per step the observation, the expert's action and waypoint
-    (if an expert labelled it) and the reward; the last step's info."""
+    (if an expert labelled it) and the reward; the last step's info; the scene's draw."""
 
     def __init__(self):
         self.observations, self.actions, self.waypoints, self.rewards = [], [], [], []
         self.info = {}
+        self.variation = {}  # reset's info["variation"]
 
 
 def run_episode(env, seed, drive, expert=None, max_steps=None):
     """One episode: `drive(observation, label)` gives the executed action, the expert (if any)
     labels every step (`label`: its action, else None), until the episode ends or after
     `max_steps`. Returns the Episode."""
-    observation, _ = env.reset(seed=seed)
+    observation, started = env.reset(seed=seed)
     episode = Episode()
     episode.info = {"placed": env.core.placed}
+    episode.variation = started["variation"]
     if expert is not None:
         expert.reset()
     while max_steps is None or len(episode.rewards) < max_steps:

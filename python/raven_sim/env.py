@@ -25,11 +25,16 @@ threaded on their target posts (+1 as one comes to rest there, -1 if one leaves)
 terminates with all six placed and is truncated at the time limit. The main job's scripted
 operator is the expert: `expert_action()`. The same seed and actions give the same episode.
 
+randomize=True draws each episode's scene from its reset seed (the rings' start poses, silicone
+and friction, the board's friction: scenario/scene_variation.hpp's ranges), randomize="f.yaml"
+from that file's ranges; reset's info["variation"] is the draw.
+
 The twin is the Raven-II's motor-level one by default (actuation="motors": its motors, cables and
 control software drive the joints, and what the jaws touch loads the motors), or ideal joint
 servos (actuation="ideal").
 """
 
+import json
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
@@ -118,8 +123,10 @@ class PegTransferEnv(_Env):
         if action_type not in kinds:
             raise ValueError(f"action_type is '{action_type}': expected one of {kinds}")
         core_action = "joints" if action_type == "pad" else action_type
-        self.core = PegTransferCore(randomize, time_limit, launch_file, core_action, control,
-                                    period, actuation)
+        # randomize: True draws each scene from the shipped ranges, a path from that YAML's.
+        ranges = None if isinstance(randomize, bool) else str(randomize)
+        self.core = PegTransferCore(bool(randomize), time_limit, launch_file, core_action,
+                                    control, period, actuation, ranges)
         self.action_type = action_type
         self.obs = (obs,) if isinstance(obs, str) else tuple(obs)
         unknown = [k for k in self.obs if k not in OBSERVATIONS]
@@ -160,7 +167,8 @@ class PegTransferEnv(_Env):
         if self.obs != ("state",):  # the world is new: so are its cameras
             self._cameras = PegCameras(self.core, self.cameras, *self.image_size)
         return (self._observe(observation),
-                {"seed": seed, "placed": self.core.placed, "time": self.core.time})
+                {"seed": seed, "placed": self.core.placed, "time": self.core.time,
+                 "variation": json.loads(self.core.variation)})
 
     def _key(self, camera, kind):
         return kind if len(self.cameras) == 1 else f"{camera}/{kind}"

@@ -113,7 +113,7 @@ def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None
 def store(data, seed, episode, source):
     """Writes `episode` (of `seed`) into `data`, prints it, and returns the rings it placed."""
     demos.write_demo(data, seed, episode.observations, episode.actions, episode.waypoints,
-                     episode.rewards, source)
+                     episode.rewards, source, episode.variation)
     placed = episode.info["placed"]
     print(f"seed {seed}: {len(episode.rewards)} steps, placed {placed}/6", flush=True)
     return placed
@@ -138,7 +138,7 @@ def record(args):
     enough_seeds(args)
     if args.workers < 1:
         sys.exit(f"record: --workers {args.workers}: at least one")
-    kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation}
+    kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation, "randomize": args.randomize}
     if args.obs != ["state"]:
         kwargs = {**kwargs, "obs": args.obs, "camera": args.camera.split(","),
                   "image_size": args.image_size}
@@ -214,7 +214,7 @@ def dagger(args):
     enough_seeds(args)
     single_threaded()
     rng = np.random.default_rng(args.noise_seed)
-    kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation}
+    kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation, "randomize": args.randomize}
     env = PegTransferEnv(**kwargs)
     policy = Policy.load(args.policy)
 
@@ -230,14 +230,25 @@ def dagger(args):
           f"labels joined {args.collect}")
 
 
-def evaluate_seed(policy, seed, time_limit, actuation="motors"):
-    """One episode of the policy on `seed`'s scene: (rings placed, a line saying how it went)."""
+def drawn(variation):
+    """What a scene's draw varied, in a few words (reset's info["variation"])."""
+    if variation.get("nominal", True):
+        return "the nominal scene"
+    return (f"rings Shore A {variation['ring_shore_a']:.1f}, kDF {variation['ring_kDF']:.2f}, "
+            f"board friction {variation['board_friction']:.2f}")
+
+
+def evaluate_seed(policy, seed, time_limit, actuation="motors", randomize=True):
+    """One episode of the policy on `seed`'s scene: (rings placed, a line saying how it went and
+    on what scene)."""
     policy = policy.fresh()  # its own memory of the episode: episodes may run side by side
-    env = PegTransferEnv(**{**demos.ENV_KWARGS, **policy.env_kwargs,
-                            "time_limit": time_limit, "actuation": actuation})
-    info = demos.run_episode(env, seed, lambda observation, _: policy.act(observation)).info
+    env = PegTransferEnv(**{**demos.ENV_KWARGS, **policy.env_kwargs, "time_limit": time_limit,
+                            "actuation": actuation, "randomize": randomize})
+    episode = demos.run_episode(env, seed, lambda observation, _: policy.act(observation))
+    info = episode.info
     why = f" (the world failed: {info['failure']})" if "failure" in info else ""
-    return info["placed"], f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s{why}"
+    return info["placed"], (f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s"
+                            f"{why}; {drawn(episode.variation)}")
 
 
 def evaluate(args):
@@ -246,14 +257,21 @@ def evaluate(args):
     single_threaded()
     policy = load_policy(args.policy)
     with ThreadPoolExecutor(args.workers) as pool:
-        runs = pool.map(lambda seed: evaluate_seed(policy, seed, args.time_limit, args.actuation),
-                        args.seeds)
+        runs = pool.map(lambda seed: evaluate_seed(policy, seed, args.time_limit, args.actuation,
+                                                   args.randomize), args.seeds)
         placed = []
         for rings, line in runs:
             placed.append(rings)
             print(line, flush=True)
     print(f"placed {sum(placed)}/{6 * len(args.seeds)} rings; "
           f"{sum(p == 6 for p in placed)}/{len(args.seeds)} episodes all six")
+
+
+def add_randomize(parser):
+    parser.add_argument("--randomize", nargs="?", const=True, default=True, metavar="RANGES.yaml",
+                        help="each episode's scene drawn from its seed (the default): from the "
+                             "shipped ranges, or from RANGES.yaml's (ring_offset, ring_kDF, "
+                             "ring_shore_a, board_friction; docs/learning.md)")
 
 
 def add_actuation(parser):
@@ -281,6 +299,7 @@ def main(argv=None):
     p.add_argument("--workers", type=int, default=2, help="episodes recorded side by side")
     p.add_argument("--out", required=True)
     add_actuation(p)
+    add_randomize(p)
     p.set_defaults(run=record)
     p = sub.add_parser("convert", help="a gamepad session's ci file replayed into HDF5")
     p.add_argument("--ci", required=True)
@@ -322,6 +341,7 @@ def main(argv=None):
                    help="an episode's steps at most (the expert needs 500-900)")
     p.add_argument("--collect", required=True, help="the HDF5 file the episodes join")
     add_actuation(p)
+    add_randomize(p)
     p.set_defaults(run=dagger)
     p = sub.add_parser("evaluate", help="the policy on randomised scenes")
     p.add_argument("--policy", required=True)
@@ -329,6 +349,7 @@ def main(argv=None):
     p.add_argument("--time-limit", type=float, default=240.0)
     p.add_argument("--workers", type=int, default=1, help="episodes run side by side")
     add_actuation(p)
+    add_randomize(p)
     p.set_defaults(run=evaluate)
     args = parser.parse_args(argv)
     args.run(args)

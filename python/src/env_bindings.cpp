@@ -95,9 +95,11 @@ void bindEnvironment(py::module_& m) {
   py::class_<E>(m, "PegTransferCore", "the peg transfer, one manual-loop iteration per step")
       .def(py::init([](bool randomize, double time_limit,
                        std::optional<std::filesystem::path> launch_file, const std::string& action,
-                       const std::string& control, double period, const std::string& actuation) {
+                       const std::string& control, double period, const std::string& actuation,
+                       std::optional<std::filesystem::path> ranges) {
              scenario::PegTransferEnvOptions options;
              options.randomize = randomize;
+             if (ranges) options.ranges = scenario::readVariationRanges(*ranges);
              options.time_limit = time_limit;
              if (launch_file) options.launch_file = *launch_file;
              options.action = scenario::envActionNamed(action);
@@ -114,8 +116,11 @@ void bindEnvironment(py::module_& m) {
            py::arg("randomize") = false, py::arg("time_limit") = 240.0,
            py::arg("launch_file") = py::none(), py::arg("action") = "joints",
            py::arg("control") = "waypoint", py::arg("period") = 0.05,
-           py::arg("actuation") = "motors")
+           py::arg("actuation") = "motors", py::arg("ranges") = py::none())
       .def_readonly_static("observation_size", &E::kObservationSize)
+      .def_property_readonly(
+          "variation", [](const E& e) { return e.variation().json().dump(); },
+          "the episode's scene draw (JSON): the seed and each varied value, or nominal")
       .def_property_readonly("action_size", &E::actionSize)
       .def(
           "reset",

@@ -51,8 +51,10 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   run.seed = seed;
   run.launch_file = options_.launch_file;
   run.actuation = options_.actuation;
-  SceneVariation variation = options_.randomize ? SceneVariation::draw(seed) : SceneVariation{};
+  SceneVariation variation =
+      options_.randomize ? SceneVariation::draw(seed, options_.ranges) : SceneVariation{};
   variation.seed = seed;
+  variation_ = variation;
   expert_.reset();
   ++episode_;
   scene_.reset();

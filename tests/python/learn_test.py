@@ -181,6 +181,33 @@ class Demonstrations(unittest.TestCase):
             last = run.stdout.strip().splitlines()[-1]
             self.assertRegex(last, r"^placed \d+/12 rings; \d+/2 episodes all six$")
 
+    def test_a_ranges_file_sets_the_draws_each_demo_and_evaluation_line_records(self):
+        import h5py
+        with tempfile.TemporaryDirectory() as d:
+            ranges, demos = os.path.join(d, "ranges.yaml"), os.path.join(d, "demos.hdf5")
+            with open(ranges, "w") as f:
+                f.write("ring_shore_a: [22, 24]\nboard_friction: [0.45, 0.5]\n")
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["record", "--episodes", "2", "--seeds", "3-4", "--max-steps", "3",
+                            "--randomize", ranges, "--out", demos])
+            with h5py.File(demos, "r") as f:
+                draws = [json.loads(f[f"data/demo_{k}"].attrs["variation"]) for k in (0, 1)]
+            self.assertEqual([v["seed"] for v in draws], [3, 4])
+            for v in draws:
+                self.assertTrue(22 <= v["ring_shore_a"] <= 24, v)
+                self.assertTrue(0.45 <= v["board_friction"] <= 0.5, v)
+            self.assertNotEqual(draws[0]["ring_shore_a"], draws[1]["ring_shore_a"])
+            placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 3, 2.0,
+                                               randomize=ranges)
+            self.assertIn(f"rings Shore A {draws[0]['ring_shore_a']:.1f}", line)
+            placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 3, 2.0,
+                                               randomize=False)
+            self.assertTrue(line.endswith("; the nominal scene"), line)
+            with open(ranges, "w") as f:
+                f.write("ring_shore_a: [24, 22]\n")
+            with self.assertRaisesRegex(ValueError, "ring_shore_a"):
+                raven_sim.PegTransferEnv(randomize=ranges)
+
     def test_workers_record_the_same_noisy_demonstrations_in_seed_order(self):
         import h5py
         files = []

@@ -20,6 +20,7 @@
 #include "scenario/env_action.hpp"
 #include "scenario/observation_layout.hpp"
 #include "scenario/peg_layout.hpp"
+#include "scenario/scene_variation.hpp"
 #include "scenario/scripted_session.hpp"
 #include "twin/world_perception.hpp"
 
@@ -39,6 +40,8 @@ struct PegTransferEnvOptions {
   /// Draw each episode's scene from its reset seed (scene_variation.hpp's ranges); else the
   /// nominal scene every time.
   bool randomize = false;
+  /// What a randomised scene is drawn from.
+  VariationRanges ranges;
   /// Simulated seconds after which an episode is truncated.
   double time_limit = 240.0;
   /// The expert's squeeze (ArmRoutine).
@@ -113,6 +116,8 @@ class PegTransferEnv {
   /// poses are the robot's own report, in its frames.
   static Eigen::Matrix<double, 2, 3, Eigen::RowMajor> toolPoints(
       const Eigen::Matrix<double, 14, 1>& joints);
+  /// What the episode's scene was drawn as (nominal unless randomising), as reset() drew it.
+  const SceneVariation& variation() const { return variation_; }
   /// The last step's (or reset's, or restored) observation.
   const Eigen::VectorXd& observation() const { return last_observation_; }
   twin::TwinPlatform& twin();
@@ -138,6 +143,7 @@ class PegTransferEnv {
   std::uint64_t episode_ = 0;  ///< resets so far (a saved state names its episode)
   Eigen::VectorXd last_observation_;
   std::string failure_;  ///< why the episode's world failed, or empty
+  SceneVariation variation_;
 };
 
 }  // namespace scenario

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "ambf_like/scene_spec.hpp"
@@ -20,6 +21,13 @@ struct VariationRanges {
   std::array<double, 2> ring_shore_a{20.0, 40.0};
   std::array<double, 2> board_friction{0.4, 0.8};
 };
+
+/// The ranges a YAML file states, each key optional (the others keep their defaults):
+/// `ring_offset: 0.001` (m), `ring_kDF`, `ring_shore_a`, `board_friction`: [low, high]. Throws
+/// common::LoadError naming the file, line and key for an unknown key, a value that is not
+/// one, or one out of what it can be (kDF within 0..1, Shore A within 0..100, frictions and the
+/// offset >= 0, low <= high).
+VariationRanges readVariationRanges(const std::filesystem::path& file);
 
 /// One draw: everything a run varies.
 struct SceneVariation {

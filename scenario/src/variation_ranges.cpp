@@ -1,0 +1,54 @@
+// Reads the ranges a randomised scene is drawn from (scene_variation.hpp).
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/load_error.hpp"
+#include "common/yaml_view.hpp"
+#include "scenario/scene_variation.hpp"
+
+namespace scenario {
+
+namespace {
+
+constexpr std::array<std::string_view, 4> kKeys{"ring_offset", "ring_kDF", "ring_shore_a",
+                                                "board_friction"};
+
+/// The [low, high] at `key`, within [least, most], if the key is there.
+void readRange(const common::YamlView& node, const char* key, double least, double most,
+               std::array<double, 2>& range) {
+  const auto found = node.find(key);
+  if (!found) return;
+  const std::vector<double> v = found->asDoubleList(2);
+  if (v[0] > v[1] || v[0] < least || v[1] > most) {
+    throw common::LoadError(found->where(), std::string(key) + ": [" + std::to_string(v[0]) + ", " +
+                                                std::to_string(v[1]) + "] is not a range within [" +
+                                                std::to_string(least) + ", " +
+                                                std::to_string(most) + "] (low <= high)");
+  }
+  range = {v[0], v[1]};
+}
+
+}  // namespace
+
+VariationRanges readVariationRanges(const std::filesystem::path& file) {
+  const common::YamlView root = common::YamlView::parseFile(file);
+  if (!root.isMap()) throw common::LoadError(root.where(), "variation ranges: a mapping of ranges");
+  std::vector<common::LoadIssue> duplicates;
+  root.checkKeys(kKeys, {true, duplicates});
+  if (!duplicates.empty()) throw common::LoadError(duplicates);
+  VariationRanges r;
+  if (const auto offset = root.find("ring_offset")) {
+    r.ring_offset = offset->asDouble();
+    if (r.ring_offset < 0.0) throw common::LoadError(offset->where(), "ring_offset: must be >= 0");
+  }
+  constexpr double kUnbounded = 1e9;
+  readRange(root, "ring_kDF", 0.0, 1.0, r.ring_kDF);
+  readRange(root, "ring_shore_a", 0.0, 100.0, r.ring_shore_a);
+  readRange(root, "board_friction", 0.0, kUnbounded, r.board_friction);
+  return r;
+}
+
+}  // namespace scenario
