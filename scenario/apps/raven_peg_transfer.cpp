@@ -47,6 +47,7 @@ struct Settings {
   std::size_t runs = 1;
   std::string shard = "1/1";
   bool randomize = false;
+  std::string ranges;  ///< with --randomize: a YAML of ranges; empty: the shipped ones
   std::string assist = "off";
   std::string launch;  ///< empty: the shipped peg-transfer scene
   std::size_t threads = 0;
@@ -106,6 +107,7 @@ scenario::WatchOptions watchOptions(const Settings& s, bool batch) {
 scenario::PegTransferOptions pegTransferOptions(const Settings& s) {
   scenario::PegTransferOptions options;
   options.randomize = s.randomize;
+  if (!s.ranges.empty()) options.ranges = scenario::readVariationRanges(s.ranges);
   options.assist =
       s.assist == "contact" ? scenario::AssistMode::Contact : scenario::AssistMode::Off;
   options.actuation = s.actuation;
@@ -295,9 +297,11 @@ void addOptions(CLI::App& app, Settings& s) {
   app.add_option("--runs", s.runs, "how many runs in the whole batch")->check(CLI::PositiveNumber);
   app.add_option("--shard", s.shard,
                  "i/N: run only this shard's share of the batch (runs k with k mod N = i - 1)");
-  app.add_flag(
-      "--randomize", s.randomize,
-      "draw ring start poses, ring friction and softness and board friction from the seed");
+  app.add_option("--randomize", s.ranges,
+                 "draw ring start poses, ring friction and softness and board friction from the "
+                 "seed: from the shipped ranges, or from RANGES.yaml's (docs/learning.md)")
+      ->expected(0, 1)
+      ->type_name("[RANGES.yaml]");
   app.add_option("--grasp-assist", s.assist,
                  "off (default: friction only) or contact (pin a ring touched by both jaws)")
       ->check(CLI::IsMember({"off", "contact"}))
@@ -367,6 +371,7 @@ int main(int argc, char** argv) {
       "summary and JSON lines"};
   addOptions(app, s);
   CLI11_PARSE(app, argc, argv);
+  s.randomize = app.count("--randomize") > 0;
   setUpLogging(s);
   try {
     if ((s.gui || !s.snapshot.empty()) && (s.runs > 1 || s.task != "peg")) {

@@ -168,7 +168,8 @@ void runJob(bridge::RavenPlatform& platform, controller::DualPlatformController&
 
 PegTransferResult runPegTransfer(const PegTransferOptions& options) {
   PegTransferResult result;
-  result.variation = options.randomize ? SceneVariation::draw(options.seed) : SceneVariation{};
+  result.variation =
+      options.randomize ? SceneVariation::draw(options.seed, options.ranges) : SceneVariation{};
   result.variation.seed = options.seed;
   result.assist = options.assist;
   result.actuation = options.actuation;

@@ -1,5 +1,7 @@
 // Reads the ranges a randomised scene is drawn from (scene_variation.hpp).
 
+#include <fmt/format.h>
+
 #include <array>
 #include <string>
 #include <string_view>
@@ -23,10 +25,9 @@ void readRange(const common::YamlView& node, const char* key, double least, doub
   if (!found) return;
   const std::vector<double> v = found->asDoubleList(2);
   if (v[0] > v[1] || v[0] < least || v[1] > most) {
-    throw common::LoadError(found->where(), std::string(key) + ": [" + std::to_string(v[0]) + ", " +
-                                                std::to_string(v[1]) + "] is not a range within [" +
-                                                std::to_string(least) + ", " +
-                                                std::to_string(most) + "] (low <= high)");
+    throw common::LoadError(
+        found->where(), fmt::format("[{}, {}] is not a range within [{}, {}] (low <= high)", v[0],
+                                    v[1], least, most));
   }
   range = {v[0], v[1]};
 }
@@ -42,7 +43,7 @@ VariationRanges readVariationRanges(const std::filesystem::path& file) {
   VariationRanges r;
   if (const auto offset = root.find("ring_offset")) {
     r.ring_offset = offset->asDouble();
-    if (r.ring_offset < 0.0) throw common::LoadError(offset->where(), "ring_offset: must be >= 0");
+    if (r.ring_offset < 0.0) throw common::LoadError(offset->where(), "must be >= 0");
   }
   constexpr double kUnbounded = 1e9;
   readRange(root, "ring_kDF", 0.0, 1.0, r.ring_kDF);

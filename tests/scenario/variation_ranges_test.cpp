@@ -44,7 +44,8 @@ TEST(VariationRanges, ABadFileIsAnErrorNamingTheFileAndTheKey) {
   EXPECT_NE(errorFor("ring_shore_a: [25, 35]\nring_colour: [0, 1]\n").find("ring_colour"),
             std::string::npos);
   EXPECT_NE(errorFor("ring_kDF: [0.9, 0.4]\n").find("ring_kDF"), std::string::npos);
-  EXPECT_NE(errorFor("ring_kDF: [0.4, 1.5]\n").find("within [0"), std::string::npos);
+  EXPECT_NE(errorFor("ring_kDF: [0.4, 1.5]\n").find("is not a range within [0, 1]"),
+            std::string::npos);
   EXPECT_NE(errorFor("ring_shore_a: [25]\n").find("ring_shore_a"), std::string::npos);
   EXPECT_NE(errorFor("ring_offset: -0.001\n").find("ring_offset"), std::string::npos);
   EXPECT_NE(errorFor("board_friction: [nan, 1]\n").find("board_friction"), std::string::npos);

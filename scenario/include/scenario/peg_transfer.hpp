@@ -26,6 +26,8 @@ struct PegTransferOptions {
   std::uint64_t seed = 0;
   /// Draw the scene from `seed` (scene_variation.hpp's ranges); else the nominal scene.
   bool randomize = false;
+  /// What a randomised scene is drawn from.
+  VariationRanges ranges;
   AssistMode assist = AssistMode::Off;
   /// How far (m) the closed jaws reach into a ring's wall (ArmRoutine).
   double squeeze = ArmRoutine::kDefaultSqueeze;
