@@ -1,6 +1,6 @@
 """Demonstrations in robomimic's HDF5 layout: data/demo_<k>/{actions, rewards, dones, obs/state},
-each demo's num_samples, seed and scene draw (variation, JSON) as attributes, the environment's arguments in
-data.attrs["env_args"] (JSON); besides, data/demo_<k>/waypoints: where the expert was heading,
+each demo's num_samples, seed and scene draw (variation, JSON) as attributes, the environment's
+arguments in data.attrs["env_args"] (JSON); besides, data/demo_<k>/waypoints: where the expert was heading,
 relative to the current targets (the actions are these capped per step). Episodes are recorded by
 running a driver (the expert, a policy) while a labeller (the expert) says what it should have
 done."""

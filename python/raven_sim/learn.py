@@ -11,7 +11,7 @@
         --camera left-task,right-task --out images.hdf5
     python3 -m raven_sim.learn train --obs rgb --demos images.hdf5 --state-policy bc_state.pt \\
         --out bc_rgb.pt
-    python3 -m raven_sim.learn join --image-policy bc_rgb.pt --state-policy bc_state.pt \
+    python3 -m raven_sim.learn join --image-policy bc_rgb.pt --state-policy bc_state.pt \\
         --out bc_rgb.pt
 
 record: the main job's scripted operator on randomised scenes (one seed per episode), in small
