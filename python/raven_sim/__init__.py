@@ -11,12 +11,13 @@
 The same command objects and results as the C++ RavenPlatform; errors keep their messages
 (LoadError names file, line and key). World loads AMBF's files; read_ci / read_rs / RsWriter
 handle the paper's recordings; estimate_forces reads a recording's motor signals back into
-the forces behind them (docs/forces.md); PegTransferEnv is the peg transfer as a learning environment.
+the forces behind them (docs/forces.md); PegTransferEnv is the peg transfer as a learning environment;
+RobotOverRos the robot (or a twin node) over ROS as a policy meets it (docs/learning.md).
 """
 
 from ._raven_sim import (Arm, CommandResult, Controller, ControllerSession, Mode, GrasperForces, JointSample, LoadError, MoveJp,
                          OperatingStatus, PegCameras, PegTransferCore, PegTransferStep, RavenState,
-                         RecordingError, RsRecording, RsWriter, ServoCp, ServoCr, ServoJawJp,
+                         RecordingError, RobotOverRos, RsRecording, RsWriter, ServoCp, ServoCr, ServoJawJp,
                          SimulationDiverged, estimate_forces,
                          ServoJawJr, ServoJp, ServoJr, StateCommand, Twin, World, ci_columns,
                          observation_layout, peg_layout, read_ci, read_rs, ring_placed, tool_points,

@@ -40,6 +40,12 @@ episodes join --collect, and train on all the files gives the next policy.
 evaluate: the policy (state or image) on randomised scenes (--workers episodes side by side); its
 last line is
 "placed N/M rings; K/E episodes all six".
+
+run: the policy on a Raven-II over ROS (raven_sim.RobotOverRos): the twin node in another process
+(--platform twin: its rings' topics and its rendered cameras) or the physical robot (--platform
+physical: its own topics, and --camera-topics for an image policy), through the same client,
+controller, caps and limits as the gamepad path, on the wall clock. Its last line is
+"placed N rings".
 """
 
 import argparse
@@ -50,6 +56,7 @@ import numpy as np
 from . import demos
 from .env import OBSERVATIONS, PegTransferEnv
 from .imitation import Policy, SteppedExpert, fit
+from .robot import run
 from .vision import KIND as IMAGE_POLICY
 from .vision import ImagePolicy, fit_locator, load_locator_samples, load_policy, locator_of
 
@@ -351,6 +358,25 @@ def main(argv=None):
     add_actuation(p)
     add_randomize(p)
     p.set_defaults(run=evaluate)
+    p = sub.add_parser("run", help="the policy on a Raven-II over ROS (a twin node or the robot)")
+    p.add_argument("--policy", required=True)
+    p.add_argument("--platform", choices=["twin", "physical"], required=True,
+                   help="twin: a raven_twin_node serving the peg-transfer scene with --cameras "
+                        "(its rings' topics judge the run); physical: the robot's own topics")
+    p.add_argument("--robot-namespace", default="", help="the robot's (or node's) namespace")
+    p.add_argument("--camera-topics", nargs=2, metavar=("LEFT", "RIGHT"),
+                   help="the left and right arms' task cameras (sensor_msgs/Image; default on "
+                        "the twin: <namespace>/cameras/left_task/image_raw and right_task)")
+    p.add_argument("--scene-namespace",
+                   help="where the rings' poses are (AMBF's <ns><ring>/State; default on the "
+                        "twin: /peg_transfer/; none on the robot: the cameras judge)")
+    p.add_argument("--no-arm-swap", action="store_true",
+                   help="each arm on its own measured_js (upstream swaps them)")
+    p.add_argument("--time-limit", type=float, default=240.0, help="s of the robot's clock")
+    p.add_argument("--max-steps", type=int, default=3000)
+    p.add_argument("--connect-timeout", type=float, default=10.0,
+                   help="wall s to find the topics")
+    p.set_defaults(run=run)
     args = parser.parse_args(argv)
     args.run(args)
 

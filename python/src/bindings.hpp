@@ -25,5 +25,6 @@ void bindRecordings(pybind11::module_& m);
 void bindForces(pybind11::module_& m);
 void bindController(pybind11::module_& m);
 void bindPegTransferEnv(pybind11::module_& m);
+void bindRobotOverRos(pybind11::module_& m);
 
 }  // namespace raven_python

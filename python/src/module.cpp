@@ -21,4 +21,5 @@ PYBIND11_MODULE(_raven_sim, m) {
   raven_python::bindForces(m);
   raven_python::bindController(m);
   raven_python::bindPegTransferEnv(m);
+  raven_python::bindRobotOverRos(m);
 }

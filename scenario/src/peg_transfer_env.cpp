@@ -5,16 +5,11 @@
 #include <string>
 
 #include "scenario/peg_transfer.hpp"
+#include "scenario/robot_observation.hpp"
 
 namespace scenario {
 
 namespace {
-
-/// Item `i` of part P of the observation `o` (an arm's, or a ring's), as a fixed-size block.
-template <const observation::Part& P>
-auto itemOf(Eigen::VectorXd& o, std::size_t i) {
-  return o.segment<P.item_size>(observation::item(P, i).start);
-}
 
 /// Both arms' kinematics of `profile`, left first.
 raven::PerArm<raven::ArmKinematics> armsOf(const raven::PlatformProfile& profile) {
@@ -159,35 +154,15 @@ PegTransferStep PegTransferEnv::finishStep(std::size_t refused) {
 }
 
 int PegTransferEnv::countPlaced() const {
-  int placed = 0;
-  for (const RingJob& job : layout_.jobs) {
-    if (restsOn(RingView(scene_->sight(job.ring), layout_.ring), job.to, layout_.geometry))
-      ++placed;
-  }
-  return placed;
+  return ringsPlaced(*scene_, layout_);
 }
 
 Eigen::VectorXd PegTransferEnv::observe() const {
-  namespace obs = observation;
-  Eigen::VectorXd o(obs::kSize);
-  const twin::TwinPlatform& twin = session_->twin();
-  const controller::ArmPair& targets = session_->controller().commanded();
-  for (raven::Arm arm : raven::kArms) {
-    const std::size_t a = raven::slot(arm);
-    itemOf<obs::kJoints>(o, a) = twin.measuredJs(arm).position;
-    itemOf<obs::kTargets>(o, a) = targets[a];
-    const Eigen::Isometry3d tool = twin.measuredCp(arm).pose;
-    const Eigen::Quaterniond q(tool.linear());
-    auto pose = itemOf<obs::kToolPoses>(o, a);
-    pose.head<3>() = tool.translation();
-    pose.tail<4>() << q.w(), q.x(), q.y(), q.z();
-    const auto forces = twin.measuredCf(arm);
-    auto wrench = itemOf<obs::kWrenches>(o, a);
-    wrench.head<3>() = forces ? forces->force : Eigen::Vector3d::Zero();
-    wrench.tail<3>() = forces ? forces->torque : Eigen::Vector3d::Zero();
-  }
+  Eigen::VectorXd o(observation::kSize);
+  observeRobot(session_->twin(), session_->controller().commanded(), o);
   for (std::size_t i = 0; i < rings_.size(); ++i) {
-    itemOf<obs::kRings>(o, i) = rings_[i]->centerOfMass();
+    o.segment<observation::kRings.item_size>(observation::item(observation::kRings, i).start) =
+        rings_[i]->centerOfMass();
   }
   return o;
 }

@@ -11,63 +11,16 @@ Usage: standard_crtk_test.py <raven_twin_node>; PYTHONPATH must hold the build t
 
 import math
 import os
-import socket
 import subprocess
 import sys
-import tempfile
 import threading
 import time
 import unittest
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from ros_processes import RosMaster, TwinNode  # noqa: E402
+
 NODE = sys.argv.pop(1) if len(sys.argv) > 1 else ""
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
-class RosMaster:
-    """A private rosmaster on a free port; ROS_* point at it and at a temp dir."""
-
-    def __init__(self):
-        self.dir = tempfile.TemporaryDirectory()
-        port = free_port()
-        os.environ.update(ROS_MASTER_URI=f"http://127.0.0.1:{port}", ROS_HOME=self.dir.name,
-                          ROS_LOG_DIR=os.path.join(self.dir.name, "log"), ROS_IP="127.0.0.1")
-        self.log = open(os.path.join(self.dir.name, "rosmaster.log"), "w")
-        self.process = subprocess.Popen(
-            ["/usr/bin/python3", "/usr/bin/rosmaster", "--core", "-p", str(port)],
-            stdout=self.log, stderr=subprocess.STDOUT)
-        deadline = time.monotonic() + 30
-        while True:  # a child process coming up: nothing to wait on but its port
-            with socket.socket() as s:
-                if s.connect_ex(("127.0.0.1", port)) == 0:
-                    break
-            if time.monotonic() > deadline or self.process.poll() is not None:
-                raise RuntimeError("rosmaster did not come up")
-            time.sleep(0.05)
-
-    def stop(self):
-        self.process.terminate()
-        self.process.wait(10)
-        self.log.close()
-
-
-class TwinNode:
-    """raven_twin_node in namespace `ns`, logging to a file."""
-
-    def __init__(self, directory, ns, *args):
-        self.log_path = os.path.join(directory, ns.strip("/") + ".log")
-        self.log = open(self.log_path, "w")
-        self.process = subprocess.Popen([NODE, f"__ns:={ns}", "__name:=twin", *args],
-                                        stdout=self.log, stderr=subprocess.STDOUT)
-
-    def stop(self):
-        self.process.send_signal(2)
-        self.process.wait(20)
-        self.log.close()
 
 
 class Latest:
@@ -167,7 +120,7 @@ class StandardCrtkFace(unittest.TestCase):
         cls.rospy = rospy
         # Ideal servos: the face's semantics are checked to tight tolerances; the robot's own
         # friction band (the node's default actuation) would leave joints a few mrad short.
-        cls.node = TwinNode(MASTER.dir.name, "/s1", "--crtk-arms", "PSM1", "PSM2",
+        cls.node = TwinNode(NODE, MASTER.dir.name, "/s1", "--crtk-arms", "PSM1", "PSM2",
                             "--actuation", "ideal")
         cls.arm = CrtkArm(rospy, "/s1/crtk/PSM1")
         cls.other = CrtkArm(rospy, "/s1/crtk/PSM2")
@@ -344,7 +297,7 @@ class LockStepCrtk(unittest.TestCase):
         import rospy
         from raven_twin.msg import Step, StepDone
         from sensor_msgs.msg import JointState
-        node = TwinNode(MASTER.dir.name, "/s2", "--lock-step", "--actuation", "ideal")
+        node = TwinNode(NODE, MASTER.dir.name, "/s2", "--lock-step", "--actuation", "ideal")
         try:
             arm = CrtkArm(rospy, "/s2/crtk/arm1")
             done = Latest(rospy, "/s2/raven_twin/step_done", StepDone, arm.changed)

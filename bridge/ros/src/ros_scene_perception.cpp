@@ -6,6 +6,7 @@
 #include <ros/ros.h>
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "bridge/ros/low_latency.hpp"
@@ -49,7 +50,13 @@ class RosScenePerception::Impl {
   void update(double now) {
     now_ = now;
     queue_.callAvailable();
-    if (!options_.lock_step) return;
+    if (!options_.lock_step) {
+      // Wall clock: what has arrived, once every object has been heard from at all.
+      const double ever = -std::numeric_limits<double>::infinity();
+      waitFor([&] { return behind(ever).empty(); },
+              [&] { return "no pose yet of " + behind(ever); });
+      return;
+    }
     // Every object reported at `now` (stamps are the node's simulated clock, to the nanosecond).
     const double due = now - 0.5 * raven::kControlCycle;
     waitFor([&] { return behind(due).empty(); },

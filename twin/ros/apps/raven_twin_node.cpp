@@ -6,7 +6,10 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <optional>
+#include <sstream>
 #include <vector>
 
 #include "bridge/ros/master_watch.hpp"
@@ -15,6 +18,7 @@
 #include "common/actuation_flag.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/ros/ambf_object_topics.hpp"
+#include "twin/ros/camera_topics.hpp"
 #include "twin/twin_platform.hpp"
 
 namespace {
@@ -33,6 +37,8 @@ struct NodeSettings {
   std::vector<std::string> crtk_arms{crtk.arm_names.begin(), crtk.arm_names.end()};
   bool no_crtk = false;
   double duration = 0.0;
+  twin::ros1::CameraTopicOptions cameras;
+  std::string camera_size = "128x96";
 };
 
 void addOptions(CLI::App& app, NodeSettings& s) {
@@ -69,6 +75,15 @@ void addOptions(CLI::App& app, NodeSettings& s) {
       ->expected(2)
       ->capture_default_str();
   app.add_flag("--no-crtk", s.no_crtk, "serve the robot's own topics only, no standard CRTK face");
+  app.add_option("--cameras", s.cameras.views,
+                 "the peg-transfer scene's views to render and publish on "
+                 "cameras/<view>/image_raw (sensor_msgs/Image): overview, left-task, right-task, "
+                 "grasper-left, grasper-right")
+      ->delimiter(',');
+  app.add_option("--camera-size", s.camera_size, "the cameras' images, WxH")->capture_default_str();
+  app.add_option("--camera-rate", s.cameras.rate, "the cameras' frames per second of twin time")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--duration", s.duration,
                  "stop after this much platform time (s); 0: run until "
                  "interrupted")
@@ -95,6 +110,20 @@ twin::TwinOptions twinOptionsOf(const NodeSettings& s) {
   return twin;
 }
 
+/// "WxH" into the options' size; throws std::invalid_argument naming the flag.
+void readCameraSize(const std::string& text, twin::ros1::CameraTopicOptions& cameras) {
+  char x = 0;
+  std::istringstream in(text);
+  if (!(in >> cameras.width >> x >> cameras.height) || x != 'x' || !in.eof()) {
+    throw std::invalid_argument("--camera-size is WxH (e.g. 128x96), not '" + text + "'");
+  }
+}
+
+/// Seconds since the epoch: the stamps of a node on the wall clock, as a camera driver's.
+double wallStamp() {
+  return std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,7 +146,18 @@ int main(int argc, char** argv) {
     }
     // The scene's bodies, sensors and actuators on AMBF's topics, served after every cycle.
     twin::ros1::AmbfObjectTopics objects(platform.world(), server.lock_step);
-    server.after_cycle = [&] { objects.update(platform.now()); };
+    std::optional<twin::ros1::CameraTopics> cameras;
+    if (!s.cameras.views.empty()) {
+      readCameraSize(s.camera_size, s.cameras);
+      cameras.emplace(platform.world(), s.cameras);
+    }
+    server.after_cycle = [&] {
+      objects.update(platform.now());
+      if (cameras) {
+        cameras->update(platform.world(), platform.now(),
+                        server.lock_step ? platform.now() : wallStamp());
+      }
+    };
     bridge::ros1::RavenRosServer ros_server(platform, "", server);
     const bridge::ros1::MasterWatch master_watch;  // registers again with a restarted master
     spdlog::info("raven_twin: {} on {} ({}, {} clock, arm swap {}, standard CRTK {})",

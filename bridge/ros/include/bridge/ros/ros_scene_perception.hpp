@@ -29,9 +29,10 @@ struct RosPerceptionOptions {
   std::vector<std::string> objects;
   /// The source's stamps are the platform's simulated clock (a lock-step twin node): update(now)
   /// waits until every object has been reported at `now`. Else stamps are wall time and
-  /// update() takes what has arrived.
+  /// update() takes what has arrived (waiting only for an object never heard from yet).
   bool lock_step = false;
-  /// Wall seconds to find every object's topic, and (lock-step) to wait for a step's poses.
+  /// Wall seconds to find every object's topic, and to wait for a step's poses (lock-step) or
+  /// an object's first.
   double timeout = 10.0;
   /// Wall clock: a sighting older than this (s) is refused (the tracker lost the object).
   double stale_after = 0.5;

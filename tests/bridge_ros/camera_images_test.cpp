@@ -1,0 +1,136 @@
+// Camera images over ROS 1, against a real rosmaster: sensor_msgs/Image read back in every
+// encoding a camera driver uses (and refused, named, when it is not a whole image), the twin
+// node's rendered peg-transfer cameras taken in by the client a policy uses.
+
+#include <gtest/gtest.h>
+#include <ros/ros.h>
+
+#include <algorithm>
+
+#include "bridge/ros/image_conversions.hpp"
+#include "bridge/ros/ros_camera_images.hpp"
+#include "bridge/ros/ros_image_publisher.hpp"
+#include "raven/platform_profile.hpp"
+#include "twin/ros/camera_topics.hpp"
+#include "twin/twin_platform.hpp"
+#include "viewer/viewer.hpp"
+
+namespace {
+
+using bridge::CameraFrame;
+using bridge::ros1::frameFromImage;
+using bridge::ros1::toImage;
+
+/// A 3 x 2 frame whose every byte differs.
+CameraFrame smallFrame() {
+  CameraFrame f{3, 2, {}, 12.5};
+  for (int i = 0; i < 18; ++i) f.rgb.push_back(static_cast<std::uint8_t>(10 + i));
+  return f;
+}
+
+TEST(ImageConversions, AnRgbFrameComesBackAsItWent) {
+  const auto parsed = frameFromImage(toImage(smallFrame(), "left-task"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  EXPECT_EQ(parsed.value->rgb, smallFrame().rgb);
+  EXPECT_EQ(parsed.value->width, 3);
+  EXPECT_EQ(parsed.value->height, 2);
+  EXPECT_DOUBLE_EQ(parsed.value->time, 12.5);
+  EXPECT_EQ(toImage(smallFrame(), "left-task").header.frame_id, "left-task");
+}
+
+TEST(ImageConversions, BgrAlphaAndGreyImagesWithPaddedRowsBecomeRgb) {
+  sensor_msgs::Image bgra;
+  bgra.width = 2;
+  bgra.height = 1;
+  bgra.encoding = "bgra8";
+  bgra.step = 10;  // two bytes of padding
+  bgra.data = {1, 2, 3, 255, 4, 5, 6, 255, 0, 0};
+  const auto colour = frameFromImage(bgra);
+  ASSERT_TRUE(colour.value) << colour.error;
+  EXPECT_EQ(colour.value->rgb, (std::vector<std::uint8_t>{3, 2, 1, 6, 5, 4}));
+
+  sensor_msgs::Image grey;
+  grey.width = 2;
+  grey.height = 2;
+  grey.encoding = "mono8";
+  grey.step = 3;
+  grey.data = {7, 8, 0, 9, 10, 0};
+  const auto g = frameFromImage(grey);
+  ASSERT_TRUE(g.value) << g.error;
+  EXPECT_EQ(g.value->rgb, (std::vector<std::uint8_t>{7, 7, 7, 8, 8, 8, 9, 9, 9, 10, 10, 10}));
+}
+
+TEST(ImageConversions, WhatIsNotAWholeImageIsRefusedSayingWhy) {
+  sensor_msgs::Image m = toImage(smallFrame(), "x");
+  m.data.pop_back();
+  EXPECT_NE(frameFromImage(m).error.find("17 bytes of data, not step x height = 18"),
+            std::string::npos)
+      << frameFromImage(m).error;
+  m = toImage(smallFrame(), "x");
+  m.step = 8;
+  EXPECT_NE(frameFromImage(m).error.find("step 8 is shorter"), std::string::npos);
+  m = toImage(smallFrame(), "x");
+  m.encoding = "16UC1";
+  EXPECT_NE(frameFromImage(m).error.find("encoding '16UC1'"), std::string::npos);
+  m = toImage(smallFrame(), "x");
+  m.width = 0;
+  EXPECT_FALSE(frameFromImage(m).value);
+  CameraFrame short_frame = smallFrame();
+  short_frame.rgb.resize(5);
+  EXPECT_THROW(toImage(short_frame, "x"), std::invalid_argument);
+}
+
+TEST(CameraImagesOverRos, TheLatestImageAfterACountAndARefusedOneNamed) {
+  bridge::ros1::RosImagePublisher camera({"/test_camera/image_raw"}, {"test"});
+  ros::NodeHandle node;
+  ros::Publisher raw = node.advertise<sensor_msgs::Image>("/test_camera/image_raw", 2);
+  bridge::ros1::RosCameraImages images({{"/test_camera/image_raw"}, 2.0});
+  EXPECT_EQ(images.received(0), 0u);
+  camera.publish(0, smallFrame());
+  const CameraFrame first = images.latest(0, 0);  // waits for the first
+  EXPECT_EQ(first.rgb, smallFrame().rgb);
+  EXPECT_EQ(images.received(0), 1u);
+
+  sensor_msgs::Image cut = toImage(smallFrame(), "test");
+  cut.data.resize(4);
+  raw.publish(cut);
+  bridge::ros1::RosCameraImages impatient({{"/test_camera/image_raw"}, 0.3});
+  raw.publish(cut);
+  try {
+    impatient.latest(0, 0);
+    FAIL() << "a cut image was taken in";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("/test_camera/image_raw"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("refused: 4 bytes of data"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(CameraImagesOverRos, TheTwinNodesTaskCamerasReachAPolicysClient) {
+  twin::TwinOptions options;
+  options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
+  options.clock = bridge::ClockKind::Simulated;
+  twin::TwinPlatform twin(options);
+  std::optional<twin::ros1::CameraTopics> cameras;
+  try {
+    cameras.emplace(twin.world(),
+                    twin::ros1::CameraTopicOptions{{"left-task", "right-task"}, 64, 48, 10.0});
+  } catch (const viewer::NoDisplay& e) {
+    GTEST_SKIP() << "no headless OpenGL here: " << e.what();
+  }
+  EXPECT_EQ(twin::ros1::CameraTopics::topicOf("left-task"), "cameras/left_task/image_raw");
+  bridge::ros1::RosCameraImages images({{ros::names::resolve("cameras/left_task/image_raw"),
+                                         ros::names::resolve("cameras/right_task/image_raw")},
+                                        5.0});
+  cameras->update(twin.world(), 0.0, 0.0);
+  const CameraFrame left = images.latest(0, 0);
+  const CameraFrame right = images.latest(1, 0);
+  ASSERT_EQ(left.width, 64);
+  ASSERT_EQ(left.height, 48);
+  ASSERT_EQ(left.rgb.size(), 64u * 48 * 3);
+  EXPECT_NE(left.rgb, right.rgb);  // two views of two arms' posts
+  const auto [darkest, brightest] = std::minmax_element(left.rgb.begin(), left.rgb.end());
+  EXPECT_GT(*brightest - *darkest, 100);  // a scene, not a blank
+}
+
+}  // namespace

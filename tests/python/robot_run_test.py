@@ -1,0 +1,71 @@
+#!/usr/bin/env python3
+"""A policy run through the robot's interface: `python3 -m raven_sim.learn run` against
+raven_twin_node in another process over a real rosmaster, on the wall clock, with the node's
+rendered task cameras; the same command's refusals when what the policy needs is missing.
+
+Usage: robot_run_test.py <raven_twin_node>; PYTHONPATH must hold the build tree's python/.
+"""
+
+import os
+import re
+import subprocess
+import sys
+import unittest
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+from ros_processes import RosMaster, TwinNode  # noqa: E402
+
+NODE = sys.argv.pop(1) if len(sys.argv) > 1 else ""
+ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+POLICIES = os.path.join(ROOT, "python", "policies")
+SCENE = os.path.join(ROOT, "raven_description", "models", "peg_transfer", "launch.yaml")
+
+
+def learn(*args, timeout=600):
+    return subprocess.run(["/usr/bin/python3", "-m", "raven_sim.learn", *args],
+                          capture_output=True, text=True, timeout=timeout)
+
+
+class RunRefusesWhatItCannotDo(unittest.TestCase):
+    def test_an_image_policy_on_the_robot_needs_its_cameras(self):
+        run = learn("run", "--policy", os.path.join(POLICIES, "bc_rgb.pt"), "--platform",
+                    "physical", timeout=120)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("--camera-topics LEFT RIGHT", run.stderr)
+
+    def test_a_state_policy_on_the_robot_needs_the_rings_poses(self):
+        run = learn("run", "--policy", os.path.join(POLICIES, "bc_state.pt"), "--platform",
+                    "physical", timeout=120)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("--scene-namespace", run.stderr)
+
+
+class RunOnTheTwinNode(unittest.TestCase):
+    """The image policy drives the twin node (the robot's motor-level actuation, real time) from
+    its camera topics; the node's ring topics judge."""
+
+    @classmethod
+    def setUpClass(cls):
+        if not NODE:
+            raise unittest.SkipTest("no raven_twin_node given")
+        cls.master = RosMaster()
+        cls.node = TwinNode(NODE, cls.master.dir.name, "/r1", "--launch", SCENE,
+                            "--soft-body-sleep", "--cameras", "left-task,right-task")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.node.stop()
+        cls.master.stop()
+
+    def test_the_image_policy_places_rings_through_the_robots_interface(self):
+        run = learn("run", "--policy", os.path.join(POLICIES, "bc_rgb.pt"), "--platform", "twin",
+                    "--robot-namespace", "/r1", "--time-limit", "60", "--connect-timeout", "30")
+        self.assertEqual(run.returncode, 0, run.stderr[-3000:])
+        last = run.stdout.strip().splitlines()[-1]
+        found = re.fullmatch(r"placed (\d) rings", last)
+        self.assertIsNotNone(found, run.stdout)
+        self.assertGreaterEqual(int(found.group(1)), 1, run.stdout + self.node.output()[-2000:])
+
+
+if __name__ == "__main__":
+    unittest.main()

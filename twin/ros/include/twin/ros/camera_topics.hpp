@@ -1,0 +1,53 @@
+#pragma once
+// The peg-transfer scene's named cameras (overview, left-task, right-task, grasper-left,
+// grasper-right: scenario/task_views.hpp) rendered headless at a camera's frame rate on the
+// twin's clock and published as a camera driver would (sensor_msgs/Image, rgb8, on
+// cameras/<view>/image_raw with '-' written '_'), so a policy that sees reaches the twin node as
+// it would reach the robot's cameras.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ambf_like/world.hpp"
+#include "bridge/ros/ros_image_publisher.hpp"
+
+namespace scenario {
+class PegCameras;
+}
+
+namespace twin::ros1 {
+
+/// Which views, at what size and rate.
+struct CameraTopicOptions {
+  std::vector<std::string> views;
+  int width = 128;
+  int height = 96;
+  double rate = 30.0;  ///< frames per second of the twin's clock
+};
+
+/// Renders and publishes the views (needs initRos() and a headless OpenGL).
+class CameraTopics {
+ public:
+  /// Throws std::invalid_argument for an unknown view (listing them) or a rate that is not
+  /// positive, viewer::NoDisplay when no headless OpenGL can be made.
+  CameraTopics(const ambf_like::World& world, CameraTopicOptions options);
+  ~CameraTopics();
+  CameraTopics(const CameraTopics&) = delete;
+  CameraTopics& operator=(const CameraTopics&) = delete;
+
+  /// Renders and publishes every view when a frame is due at twin time `now`; `stamp` goes in
+  /// the images' headers.
+  void update(const ambf_like::World& world, double now, double stamp);
+
+  /// The topic a view is published on, relative to the node's namespace.
+  static std::string topicOf(const std::string& view);
+
+ private:
+  CameraTopicOptions options_;
+  std::unique_ptr<scenario::PegCameras> cameras_;
+  bridge::ros1::RosImagePublisher publisher_;
+  double next_frame_ = 0.0;
+};
+
+}  // namespace twin::ros1
