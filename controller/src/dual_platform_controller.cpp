@@ -39,6 +39,21 @@ ArmPair DualPlatformController::measured(const PlatformSlot& slot) const {
   return measuredOf(*slot.platform);
 }
 
+bool DualPlatformController::heldBack(const ArmPair& goal) const {
+  const bridge::RavenPlatform& robot = *platforms_.front().platform;
+  for (Arm arm : raven::kArms) {
+    const raven::ArmJoints setpoint = robot.setpointJs(arm).position;
+    const raven::ArmJoints lead = setpoint - robot.measuredJs(arm).position;
+    const raven::ArmJoints onward = goal[raven::slot(arm)] - setpoint;
+    for (int i = 0; i < raven::kJointCount; ++i) {
+      if (std::abs(lead(i)) > (*options_.following_limit)(i) && lead(i) * onward(i) > 0.0) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 void DualPlatformController::readPose() {
   commanded_ = measured(platforms_.front());
   mapping_.reset(commanded_);
@@ -91,20 +106,30 @@ int DualPlatformController::cyclesPerPeriod() const {
 }
 
 IterationReport DualPlatformController::execute(const ArmPair& next, int most,
-                                                const std::function<bool()>& stop) {
+                                                const std::function<bool()>& stop,
+                                                const std::function<bool()>& hold) {
   const double lead = std::min(since_command_ / period(), 1.0);
   const InterpolationPlan plan = planMove(commanded_, next, options_.caps, period(), lead);
   IterationReport report;
   report.capped = plan.steps > options_.caps.min_steps;
   report.steps = std::min(plan.commands(), most);
   for (int k = 1; k <= report.steps; ++k) {
+    if (hold && hold()) {
+      report.held_back = true;
+      report.steps = k - 1;
+      break;
+    }
     send(plan, k, report);
     if (waitPeriod(stop, k == report.steps)) {
       report.cut_short = k < plan.commands();
       report.steps = k;
     }
   }
-  commanded_ = report.steps == plan.commands() ? next : plan.at(report.steps);
+  if (report.steps == plan.commands()) {
+    commanded_ = next;
+  } else if (report.steps > 0) {
+    commanded_ = plan.at(report.steps);
+  }
   return report;
 }
 
@@ -178,7 +203,14 @@ IterationReport DualPlatformController::scriptedMove(const ArmPair& joints, int 
   ArmPair next = joints;
   IterationReport clamp_report;
   clamp(next, clamp_report);
-  IterationReport report = execute(next, most);
+  IterationReport report = options_.following_limit
+                               ? execute(next, most, {}, [this, &next] { return heldBack(next); })
+                               : execute(next, most);
+  // Held back before its first command, the move still lasts a period: the arm settles.
+  if (report.steps == 0 && report.held_back) {
+    idle();
+    report.steps = 1;
+  }
   report.clamped = clamp_report.clamped;
   mapping_.reset(commanded_);
   return report;

@@ -373,7 +373,7 @@ def main(argv=None):
     p.add_argument("--no-arm-swap", action="store_true",
                    help="each arm on its own measured_js (upstream swaps them)")
     p.add_argument("--time-limit", type=float, default=240.0, help="s of the robot's clock")
-    p.add_argument("--max-steps", type=int, default=3000)
+    p.add_argument("--max-steps", type=int, help="steps at most (default: the time limit's)")
     p.add_argument("--connect-timeout", type=float, default=10.0,
                    help="wall s to find the topics")
     p.set_defaults(run=run)

@@ -93,9 +93,10 @@ def run(args):
     placed = judge(observation)
     print(f"ready at t = {start:.1f} s; {placed} rings on their target posts", flush=True)
     steps = refused = 0
-    for steps in range(args.max_steps):
-        if placed == 6 or robot.time - start >= args.time_limit:
+    while placed < 6 and robot.time - start < args.time_limit:
+        if args.max_steps is not None and steps >= args.max_steps:
             break
+        steps += 1
         refused_now, faulted = robot.step(policy.act(observation))
         refused += refused_now
         observation = observe(robot, policy, robot.received())

@@ -1,10 +1,24 @@
 #include "scenario/env_action.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace scenario {
+
+raven::ArmJoints followingLimit() {
+  constexpr double kOverdrive = 20000.0;       // counts
+  constexpr double kCountsPerTorque = 3695.8;  // RE40 axes, per N m
+  const auto half_of_overdrive = [&](double kp, double joint_per_motor) {
+    return 0.5 * kOverdrive / kCountsPerTorque / kp * joint_per_motor;
+  };
+  constexpr double kFree = std::numeric_limits<double>::infinity();
+  raven::ArmJoints limit;
+  limit << half_of_overdrive(0.30, 0.0073423), half_of_overdrive(0.30, 0.0082288),
+      half_of_overdrive(0.15, 0.00046327), kFree, kFree, kFree, kFree;
+  return limit;
+}
 
 EnvAction envActionNamed(std::string_view name) {
   if (name == "joints") return EnvAction::Joints;

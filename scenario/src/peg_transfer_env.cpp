@@ -54,7 +54,9 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   ++episode_;
   scene_.reset();
   session_.reset();  // the old twin goes before the new one is built
-  session_ = std::make_unique<ScriptedSession>(pegTransferTwin(run, variation));
+  controller::ControllerOptions control;
+  control.following_limit = followingLimit();
+  session_ = std::make_unique<ScriptedSession>(pegTransferTwin(run, variation), control);
   session_->makeReady(options_.time_limit);
   expert_.emplace(pegTransferOperators(layout_, options_.squeeze));
   const ambf_like::World& world = session_->twin().world();

@@ -24,9 +24,11 @@ void PegTransferRobot::makeReady(double timeout) {
   } catch (const std::runtime_error& e) {
     throw std::runtime_error(std::string("the robot ") + e.what());
   }
+  controller::ControllerOptions control;
+  control.following_limit = followingLimit();
   controller_.emplace(
       std::vector<controller::PlatformSlot>{{"robot", &robot_, controller::CommandStyle::ServoJr}},
-      controller::ControllerOptions{});
+      control);
   controller_->readPose();
 }
 

@@ -68,7 +68,11 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
     fault_ = "the " + std::string(armName(arm_)) + " arm's " +
              std::string(kJointNames[static_cast<std::size_t>(over.motor)]) +
              " amplifier command (" + std::to_string(static_cast<long>(over.counts)) +
-             " DAC counts) passed the overdrive threshold (soft e-stop)";
+             " DAC counts) passed the overdrive threshold (soft e-stop); motor error " +
+             std::to_string(r.motor_setpoint(over.motor) - r.motor_position(over.motor)) +
+             " rad, velocity " + std::to_string(r.motor_velocity(over.motor)) + " rad/s, Tau " +
+             std::to_string(command.torque(over.motor)) + " N m (gravity " +
+             std::to_string(command.gravity(over.motor)) + ")";
   }
   if (!fault_.empty()) {  // the soft e-stop keeps the amplifiers off until the robot is enabled
     command.dac.fill(0);

@@ -26,6 +26,15 @@ enum class EnvAction {
 EnvAction envActionNamed(std::string_view name);
 int actionSize(EnvAction kind);
 
+/// How far a step lets the robot's setpoint lead its measured joints where contact holds an arm
+/// back (controller::ControllerOptions::following_limit): per positioning joint half the following
+/// error at which the robot's position loop alone reaches its amplifiers' e-stop threshold
+/// (../shared/reference/raven2-actuation.md §3-4: |dac| 20000 counts, 3695.8 counts per N m, KP
+/// 0.30, 0.30, 0.15 N m per motor rad; 0.0073423 rad, 0.0082288 rad, 0.00046327 m of joint per
+/// motor rad): 0.066 rad, 0.074 rad, 8.4 mm. None on the tool's joints, whose integrators wind
+/// up whatever the lead.
+raven::ArmJoints followingLimit();
+
 /// Largest tool displacement per step (m).
 inline constexpr double kMaxToolDelta = 0.005;
 
