@@ -275,10 +275,14 @@ def evaluate(args):
 
 
 def add_randomize(parser):
-    parser.add_argument("--randomize", nargs="?", const=True, default=True, metavar="RANGES.yaml",
-                        help="each episode's scene drawn from its seed (the default): from the "
-                             "shipped ranges, or from RANGES.yaml's (ring_offset, ring_kDF, "
-                             "ring_shore_a, board_friction; docs/learning.md)")
+    scene = parser.add_mutually_exclusive_group()
+    scene.add_argument("--randomize", nargs="?", const=True, default=True, metavar="RANGES.yaml",
+                       help="each episode's scene drawn from its seed (the default): from the "
+                            "shipped ranges, or from RANGES.yaml's (ring_offset, ring_kDF, "
+                            "ring_shore_a, board_friction; docs/learning.md)")
+    scene.add_argument("--nominal", dest="randomize", action="store_false",
+                       help="the nominal scene in every episode (the seed still seeds the "
+                            "episode's noise)")
 
 
 def add_actuation(parser):

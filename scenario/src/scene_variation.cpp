@@ -12,18 +12,23 @@ SceneVariation SceneVariation::draw(std::uint64_t seed, const VariationRanges& r
   auto uniform = [&](double low, double high) {
     return std::uniform_real_distribution<double>(low, high)(random);
   };
+  // A value of a range: anywhere in it, or at one of its ends.
+  auto within = [&](const std::array<double, 2>& range) {
+    if (!r.at_edges) return uniform(range[0], range[1]);
+    return uniform(0.0, 1.0) < 0.5 ? range[0] : range[1];
+  };
   SceneVariation v;
   v.seed = seed;
   v.nominal = false;
   for (std::size_t i = 0; i < 6; ++i) {
     v.ring_yaw[i] = uniform(0.0, 2.0 * M_PI);
     const double angle = uniform(0.0, 2.0 * M_PI),
-                 radius = r.ring_offset * std::sqrt(uniform(0, 1));
+                 radius = r.ring_offset * (r.at_edges ? 1.0 : std::sqrt(uniform(0, 1)));
     v.ring_offset[i] = radius * Eigen::Vector2d(std::cos(angle), std::sin(angle));
   }
-  v.kDF = uniform(r.ring_kDF[0], r.ring_kDF[1]);
-  v.ring_shore_a = uniform(r.ring_shore_a[0], r.ring_shore_a[1]);
-  v.board_friction = uniform(r.board_friction[0], r.board_friction[1]);
+  v.kDF = within(r.ring_kDF);
+  v.ring_shore_a = within(r.ring_shore_a);
+  v.board_friction = within(r.board_friction);
   return v;
 }
 

@@ -15,8 +15,8 @@ namespace scenario {
 
 namespace {
 
-constexpr std::array<std::string_view, 4> kKeys{"ring_offset", "ring_kDF", "ring_shore_a",
-                                                "board_friction"};
+constexpr std::array<std::string_view, 5> kKeys{"ring_offset", "ring_kDF", "ring_shore_a",
+                                                "board_friction", "at_edges"};
 
 /// The [low, high] at `key`, within [least, most], if the key is there.
 void readRange(const common::YamlView& node, const char* key, double least, double most,
@@ -49,6 +49,7 @@ VariationRanges readVariationRanges(const std::filesystem::path& file) {
   readRange(root, "ring_kDF", 0.0, 1.0, r.ring_kDF);
   readRange(root, "ring_shore_a", 0.0, 100.0, r.ring_shore_a);
   readRange(root, "board_friction", 0.0, kUnbounded, r.board_friction);
+  if (const auto edges = root.find("at_edges")) r.at_edges = edges->asBool();
   return r;
 }
 

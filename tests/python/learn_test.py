@@ -180,6 +180,12 @@ class Demonstrations(unittest.TestCase):
                 check=True)
             last = run.stdout.strip().splitlines()[-1]
             self.assertRegex(last, r"^placed \d+/12 rings; \d+/2 episodes all six$")
+            nominal = subprocess.run(
+                [sys.executable, "-m", "raven_sim.learn", "evaluate", "--policy", policy,
+                 "--seeds", "7", "--time-limit", "2", "--nominal"], capture_output=True,
+                text=True, check=True)
+            self.assertTrue(nominal.stdout.splitlines()[0].endswith("; the nominal scene"),
+                            nominal.stdout)
 
     def test_a_ranges_file_sets_the_draws_each_demo_and_evaluation_line_records(self):
         import h5py

@@ -40,6 +40,24 @@ TEST(VariationRanges, AFileSetsTheRangesItNamesAndKeepsTheOthers) {
   }
 }
 
+TEST(VariationRanges, AtTheEdgesEveryValueIsAnEndOfItsRangeAndBothEndsComeUp) {
+  harness::TempDir dir;
+  const auto r = readVariationRanges(dir.write("edges.yaml", "at_edges: true\n"));
+  ASSERT_TRUE(r.at_edges);
+  int high_shore = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const auto v = scenario::SceneVariation::draw(seed, r);
+    EXPECT_TRUE(v.kDF == r.ring_kDF[0] || v.kDF == r.ring_kDF[1]) << v.kDF;
+    EXPECT_TRUE(v.ring_shore_a == r.ring_shore_a[0] || v.ring_shore_a == r.ring_shore_a[1]);
+    EXPECT_TRUE(v.board_friction == r.board_friction[0] || v.board_friction == r.board_friction[1]);
+    for (const auto& offset : v.ring_offset) EXPECT_NEAR(offset.norm(), r.ring_offset, 1e-12);
+    high_shore += v.ring_shore_a == r.ring_shore_a[1];
+  }
+  EXPECT_GT(high_shore, 2);  // a fair coin: both ends in 20 draws
+  EXPECT_LT(high_shore, 18);
+  EXPECT_NE(errorFor("at_edges: sometimes\n").find("at_edges"), std::string::npos);
+}
+
 TEST(VariationRanges, ABadFileIsAnErrorNamingTheFileAndTheKey) {
   EXPECT_NE(errorFor("ring_shore_a: [25, 35]\nring_colour: [0, 1]\n").find("ring_colour"),
             std::string::npos);

@@ -20,10 +20,14 @@ struct VariationRanges {
   /// (../shared/reference/soft-materials.md).
   std::array<double, 2> ring_shore_a{20.0, 40.0};
   std::array<double, 2> board_friction{0.4, 0.8};
+  /// Draw each value at its range's low or high end (a fair coin each), every ring's start at
+  /// the full offset radius: a robustness check at the edges of what a policy was trained on.
+  bool at_edges = false;
 };
 
 /// The ranges a YAML file states, each key optional (the others keep their defaults):
-/// `ring_offset: 0.001` (m), `ring_kDF`, `ring_shore_a`, `board_friction`: [low, high]. Throws
+/// `ring_offset: 0.001` (m), `ring_kDF`, `ring_shore_a`, `board_friction`: [low, high];
+/// `at_edges: true` draws at the ranges' ends (VariationRanges::at_edges). Throws
 /// common::LoadError naming the file, line and key for an unknown key, a value that is not
 /// one, or one out of what it can be (kDF within 0..1, Shore A within 0..100, frictions and the
 /// offset >= 0, low <= high).
