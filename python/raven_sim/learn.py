@@ -13,6 +13,7 @@
         --out bc_rgb.pt
     python3 -m raven_sim.learn join --image-policy bc_rgb.pt --state-policy bc_state.pt \\
         --out bc_rgb.pt
+    python3 -m raven_sim.learn run --policy bc_rgb.pt --platform twin   # a raven_twin_node
 
 record: the main job's scripted operator on randomised scenes (one seed per episode), in small
 steps (imitation.SteppedExpert), into robomimic's HDF5 layout (raven_sim.demos). The actions are

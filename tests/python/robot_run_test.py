@@ -59,7 +59,7 @@ class RunOnTheTwinNode(unittest.TestCase):
 
     def test_the_image_policy_places_rings_through_the_robots_interface(self):
         run = learn("run", "--policy", os.path.join(POLICIES, "bc_rgb.pt"), "--platform", "twin",
-                    "--robot-namespace", "/r1", "--time-limit", "60", "--connect-timeout", "30")
+                    "--robot-namespace", "/r1", "--time-limit", "120", "--connect-timeout", "30")
         self.assertEqual(run.returncode, 0, run.stderr[-3000:])
         last = run.stdout.strip().splitlines()[-1]
         found = re.fullmatch(r"placed (\d) rings", last)
