@@ -10,6 +10,7 @@
 
 #include "bridge/ros/image_conversions.hpp"
 #include "bridge/throttled_log.hpp"
+#include "missing_publishers.hpp"
 
 namespace bridge::ros1 {
 
@@ -25,9 +26,10 @@ class RosCameraImages::Impl {
     }
     spinner_.start();
     const auto deadline = ::ros::WallTime::now() + ::ros::WallDuration(options_.timeout);
-    while (!missingPublishers().empty()) {
+    while (!missingPublishers(subscribers_).empty()) {
       if (::ros::WallTime::now() > deadline) {
-        throw std::runtime_error("no publisher on the camera topic(s) " + missingPublishers());
+        throw std::runtime_error("no publisher on the camera topic(s) " +
+                                 missingPublishers(subscribers_));
       }
       ::ros::WallDuration(0.01).sleep();  // the master's answer comes on ROS's own threads
     }
@@ -84,15 +86,6 @@ class RosCameraImages::Impl {
                 options_.topics[camera] + ": image refused: " + parsed.error,
                 ::ros::WallTime::now().toSec());
     }
-  }
-
-  std::string missingPublishers() const {
-    std::string missing;
-    for (const auto& subscriber : subscribers_) {
-      if (subscriber.getNumPublishers() == 0)
-        missing += (missing.empty() ? "" : ", ") + subscriber.getTopic();
-    }
-    return missing;
   }
 
   RosCameraOptions options_;

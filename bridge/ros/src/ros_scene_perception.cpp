@@ -12,6 +12,7 @@
 #include "bridge/ros/low_latency.hpp"
 #include "bridge/ros/ros_conversions.hpp"
 #include "bridge/throttled_log.hpp"
+#include "missing_publishers.hpp"
 #include "raven/control_cycle.hpp"
 
 namespace bridge::ros1 {
@@ -38,8 +39,8 @@ class RosScenePerception::Impl {
             {}, lowLatency()));
       }
     }
-    waitFor([this] { return missingPublishers().empty(); },
-            [this] { return "no publisher on " + missingPublishers(); });
+    waitFor([this] { return missingPublishers(subscribers_).empty(); },
+            [this] { return "no publisher on " + missingPublishers(subscribers_); });
   }
 
   std::string topicOf(const std::string& object) const {
@@ -88,15 +89,6 @@ class RosScenePerception::Impl {
     // this platform's clock (wall) runs on too.
     s.time = options_.lock_step ? stamp.toSec() : now_;
     s.pose = options_.world_from_source * *parsed.value;
-  }
-
-  std::string missingPublishers() const {
-    std::string missing;
-    for (const auto& subscriber : subscribers_) {
-      if (subscriber.getNumPublishers() == 0)
-        missing += (missing.empty() ? "" : ", ") + subscriber.getTopic();
-    }
-    return missing;
   }
 
   std::string behind(double due) const {
