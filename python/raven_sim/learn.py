@@ -243,7 +243,8 @@ def drawn(variation):
     if variation.get("nominal", True):
         return "the nominal scene"
     return (f"rings Shore A {variation['ring_shore_a']:.1f}, kDF {variation['ring_kDF']:.2f}, "
-            f"board friction {variation['board_friction']:.2f}")
+            f"board friction {variation['board_friction']:.2f}, "
+            f"motors within {variation['actuation_sd']:g} sd of the fit")
 
 
 def evaluate_seed(policy, seed, time_limit, actuation="motors", randomize=True):

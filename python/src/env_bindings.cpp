@@ -173,8 +173,8 @@ void bindCameras(py::module_& m) {
   py::class_<scenario::PegCameras>(m, "PegCameras",
                                    "the named views of an episode's world as images (headless)")
       .def(py::init([](E& env, const std::vector<std::string>& views, int width, int height) {
-             return std::make_unique<scenario::PegCameras>(env.twin().world(), views, width,
-                                                           height);
+             return std::make_unique<scenario::PegCameras>(env.twin().world(), views, width, height,
+                                                           env.variation());
            }),
            py::arg("env"), py::arg("views"), py::arg("width"), py::arg("height"))
       .def(

@@ -63,9 +63,19 @@ viewer::SceneLabels pegSceneLabels(const ambf_like::World& world,
 }
 
 PegCameras::PegCameras(const ambf_like::World& world, const std::vector<std::string>& views,
-                       int width, int height, const PegLayout& layout) {
+                       int width, int height, const SceneVariation& look, const PegLayout& layout) {
   const std::vector<viewer::View> all = pegTransferViews(world, layout);
-  for (const std::string& name : views) views_.push_back(viewer::findView(all, name));
+  for (const std::string& name : views) {
+    viewer::View view = viewer::findView(all, name);
+    view.camera.target += look.camera_shift;
+    view.camera.yaw += look.camera_yaw;
+    view.camera.pitch += look.camera_pitch;
+    view.camera.distance *= look.camera_distance;
+    views_.push_back(view);
+  }
+  look_.light = static_cast<float>(look.light);
+  look_.body_tint = look.body_tint.cast<float>();
+  look_.soft_tint = look.ring_tint.cast<float>();
   sensor_ = std::make_unique<viewer::CameraSensor>(
       world, width, height,
       [&](const viewer::SceneGeometry& geometry) {
@@ -78,7 +88,7 @@ std::vector<viewer::CameraImages> PegCameras::render(const ambf_like::World& wor
                                                      bool depth, bool segmentation) {
   std::vector<viewer::CameraImages> out;
   for (const viewer::View& view : views_) {
-    out.push_back(sensor_->render(world, view, rgb, depth, segmentation));
+    out.push_back(sensor_->render(world, view, rgb, depth, segmentation, look_));
   }
   return out;
 }

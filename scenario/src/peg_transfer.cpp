@@ -38,9 +38,11 @@ twin::TwinOptions pegTransferTwin(const PegTransferOptions& options,
     if (assist) ambf_like::appendModelFiles(scene, {GraspAssist::modelFile()});
   };
   if (options.actuation == common::ActuationKind::Motors) {
-    (options.calibration.empty() ? twin::CalibrationProfile::shipped()
-                                 : twin::CalibrationProfile::load(options.calibration))
-        .applyTo(twin);
+    const twin::CalibrationProfile calibration =
+        options.calibration.empty() ? twin::CalibrationProfile::shipped()
+                                    : twin::CalibrationProfile::load(options.calibration);
+    calibration.applyTo(twin);
+    twin.motors = variation.mechanics(calibration.mechanics, calibration.uncertainty);
   }
   return twin;
 }

@@ -1,7 +1,9 @@
 #include "scenario/scene_variation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "scenario/peg_layout.hpp"
 
@@ -29,6 +31,21 @@ SceneVariation SceneVariation::draw(std::uint64_t seed, const VariationRanges& r
   v.kDF = within(r.ring_kDF);
   v.ring_shore_a = within(r.ring_shore_a);
   v.board_friction = within(r.board_friction);
+  // Drawn after the scene's values, so a seed's scene is the same whatever the motors' range.
+  v.actuation_sd = r.actuation_sd;
+  for (auto& arm : v.actuation_draw) {
+    for (auto& field : arm) {
+      for (double& d : field) d = within({-1.0, 1.0});
+    }
+  }
+  // The cameras' look last: it changes no physics.
+  for (int i = 0; i < 3; ++i) v.camera_shift(i) = within({-r.camera_shift, r.camera_shift});
+  v.camera_yaw = within({-r.camera_turn, r.camera_turn});
+  v.camera_pitch = within({-r.camera_turn, r.camera_turn});
+  v.camera_distance = within(r.camera_distance);
+  v.light = within(r.light);
+  for (int i = 0; i < 3; ++i) v.ring_tint(i) = within(r.tint);
+  for (int i = 0; i < 3; ++i) v.body_tint(i) = within(r.tint);
   return v;
 }
 
@@ -55,6 +72,30 @@ void SceneVariation::apply(ambf_like::SceneSpec& scene) const {
   }
 }
 
+twin::ArmsMechanics SceneVariation::mechanics(const twin::ArmsMechanics& fit,
+                                              const twin::ArmsMechanics& sd) const {
+  if (nominal) return fit;
+  twin::ArmsMechanics out = fit;
+  for (raven::Arm arm : raven::kArms) {
+    const std::size_t a = raven::slot(arm);
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
+      for (int i = 0; i < raven::kJointCount; ++i) {
+        const double f = fit[a].field(k)(i);
+        double value = f + actuation_draw[raven::slot(arm)][k][static_cast<std::size_t>(i)] *
+                               actuation_sd * sd[a].field(k)(i);
+        if (k == 0) value = std::max(value, 0.5 * f);  // inertia
+        if (k == 2) value = std::min(value, 0.9);      // the load's share of friction
+        if (k == twin::MotorMechanics::kGravityError) value = std::max(value, -0.99);
+        if (k != twin::MotorMechanics::kOffset && k != twin::MotorMechanics::kGravityError) {
+          value = std::max(value, 0.0);
+        }
+        out[a].field(k)(i) = value;
+      }
+    }
+  }
+  return out;
+}
+
 nlohmann::json SceneVariation::json() const {
   nlohmann::json j{{"seed", seed}, {"nominal", nominal}};
   if (nominal) return j;
@@ -64,6 +105,20 @@ nlohmann::json SceneVariation::json() const {
   j["ring_shore_a"] = ring_shore_a;
   j["ring_youngs_modulus_pa"] = ringYoungsModulus();
   j["board_friction"] = board_friction;
+  j["camera_shift_m"] = {camera_shift.x(), camera_shift.y(), camera_shift.z()};
+  j["camera_yaw_rad"] = camera_yaw;
+  j["camera_pitch_rad"] = camera_pitch;
+  j["camera_distance"] = camera_distance;
+  j["light"] = light;
+  j["ring_tint"] = {ring_tint.x(), ring_tint.y(), ring_tint.z()};
+  j["body_tint"] = {body_tint.x(), body_tint.y(), body_tint.z()};
+  j["actuation_sd"] = actuation_sd;
+  for (raven::Arm arm : raven::kArms) {
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
+      j["actuation_draw"][std::string(raven::armName(arm))]
+       [std::string(twin::MotorMechanics::kNames[k])] = actuation_draw[raven::slot(arm)][k];
+    }
+  }
   return j;
 }
 

@@ -15,8 +15,10 @@ namespace scenario {
 
 namespace {
 
-constexpr std::array<std::string_view, 5> kKeys{"ring_offset", "ring_kDF", "ring_shore_a",
-                                                "board_friction", "at_edges"};
+constexpr std::array<std::string_view, 11> kKeys{
+    "ring_offset",  "ring_kDF",     "ring_shore_a", "board_friction",
+    "actuation_sd", "camera_shift", "camera_turn",  "camera_distance",
+    "light",        "tint",         "at_edges"};
 
 /// The [low, high] at `key`, within [least, most], if the key is there.
 void readRange(const common::YamlView& node, const char* key, double least, double most,
@@ -32,6 +34,14 @@ void readRange(const common::YamlView& node, const char* key, double least, doub
   range = {v[0], v[1]};
 }
 
+/// The value at `key`, which must be >= 0, if the key is there.
+void readNonNegative(const common::YamlView& node, const char* key, double& value) {
+  const auto found = node.find(key);
+  if (!found) return;
+  value = found->asDouble();
+  if (!(value >= 0.0)) throw common::LoadError(found->where(), "must be >= 0");
+}
+
 }  // namespace
 
 VariationRanges readVariationRanges(const std::filesystem::path& file) {
@@ -41,14 +51,18 @@ VariationRanges readVariationRanges(const std::filesystem::path& file) {
   root.checkKeys(kKeys, {true, duplicates});
   if (!duplicates.empty()) throw common::LoadError(duplicates);
   VariationRanges r;
-  if (const auto offset = root.find("ring_offset")) {
-    r.ring_offset = offset->asDouble();
-    if (r.ring_offset < 0.0) throw common::LoadError(offset->where(), "must be >= 0");
-  }
+  readNonNegative(root, "ring_offset", r.ring_offset);
+  readNonNegative(root, "actuation_sd", r.actuation_sd);
+  readNonNegative(root, "camera_shift", r.camera_shift);
+  readNonNegative(root, "camera_turn", r.camera_turn);
   constexpr double kUnbounded = 1e9;
   readRange(root, "ring_kDF", 0.0, 1.0, r.ring_kDF);
   readRange(root, "ring_shore_a", 0.0, 100.0, r.ring_shore_a);
   readRange(root, "board_friction", 0.0, kUnbounded, r.board_friction);
+  constexpr double kLeastFactor = 1e-3;  // a factor of 0 would leave nothing to see
+  readRange(root, "camera_distance", kLeastFactor, kUnbounded, r.camera_distance);
+  readRange(root, "light", kLeastFactor, kUnbounded, r.light);
+  readRange(root, "tint", kLeastFactor, kUnbounded, r.tint);
   if (const auto edges = root.find("at_edges")) r.at_edges = edges->asBool();
   return r;
 }

@@ -3,9 +3,13 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "common/load_error.hpp"
 #include "harness/temp_dir.hpp"
+#include "scenario/peg_transfer.hpp"
 #include "scenario/scene_variation.hpp"
+#include "twin/calibration_profile.hpp"
 
 namespace {
 
@@ -40,6 +44,34 @@ TEST(VariationRanges, AFileSetsTheRangesItNamesAndKeepsTheOthers) {
   }
 }
 
+TEST(VariationRanges, TheCamerasLookIsDrawnWithinItsRanges) {
+  harness::TempDir dir;
+  const auto r = readVariationRanges(
+      dir.write("look.yaml",
+                "camera_shift: 0.002\ncamera_turn: 0.01\nlight: [0.8, 1.2]\ntint: [0.9, 1.1]\n"));
+  EXPECT_EQ(r.camera_distance, scenario::VariationRanges{}.camera_distance);
+  std::set<double> lights;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const auto v = scenario::SceneVariation::draw(seed, r);
+    EXPECT_LE(v.camera_shift.cwiseAbs().maxCoeff(), 0.002);
+    EXPECT_LE(std::abs(v.camera_yaw), 0.01);
+    EXPECT_LE(std::abs(v.camera_pitch), 0.01);
+    EXPECT_GE(v.light, 0.8);
+    EXPECT_LE(v.light, 1.2);
+    EXPECT_GE(std::min(v.ring_tint.minCoeff(), v.body_tint.minCoeff()), 0.9);
+    EXPECT_LE(std::max(v.ring_tint.maxCoeff(), v.body_tint.maxCoeff()), 1.1);
+    lights.insert(v.light);
+    EXPECT_EQ(v.json()["light"], v.light);
+    // The look changes no physics: the same seed's scene and motors with or without it.
+    const auto plain = scenario::SceneVariation::draw(seed, {});
+    EXPECT_EQ(v.json()["ring_yaw_rad"], plain.json()["ring_yaw_rad"]);
+    EXPECT_EQ(v.json()["actuation_draw"], plain.json()["actuation_draw"]);
+  }
+  EXPECT_EQ(lights.size(), 20u);
+  EXPECT_TRUE(scenario::SceneVariation{}.camera_shift.isZero());  // the nominal scene's look
+  EXPECT_EQ(scenario::SceneVariation{}.light, 1.0);
+}
+
 TEST(VariationRanges, AtTheEdgesEveryValueIsAnEndOfItsRangeAndBothEndsComeUp) {
   harness::TempDir dir;
   const auto r = readVariationRanges(dir.write("edges.yaml", "at_edges: true\n"));
@@ -50,6 +82,8 @@ TEST(VariationRanges, AtTheEdgesEveryValueIsAnEndOfItsRangeAndBothEndsComeUp) {
     EXPECT_TRUE(v.kDF == r.ring_kDF[0] || v.kDF == r.ring_kDF[1]) << v.kDF;
     EXPECT_TRUE(v.ring_shore_a == r.ring_shore_a[0] || v.ring_shore_a == r.ring_shore_a[1]);
     EXPECT_TRUE(v.board_friction == r.board_friction[0] || v.board_friction == r.board_friction[1]);
+    EXPECT_TRUE(v.light == r.light[0] || v.light == r.light[1]);
+    EXPECT_EQ(std::abs(v.camera_yaw), r.camera_turn);
     for (const auto& offset : v.ring_offset) EXPECT_NEAR(offset.norm(), r.ring_offset, 1e-12);
     high_shore += v.ring_shore_a == r.ring_shore_a[1];
   }
@@ -66,10 +100,90 @@ TEST(VariationRanges, ABadFileIsAnErrorNamingTheFileAndTheKey) {
             std::string::npos);
   EXPECT_NE(errorFor("ring_shore_a: [25]\n").find("ring_shore_a"), std::string::npos);
   EXPECT_NE(errorFor("ring_offset: -0.001\n").find("ring_offset"), std::string::npos);
+  EXPECT_NE(errorFor("actuation_sd: -1\n").find("actuation_sd"), std::string::npos);
+  EXPECT_NE(errorFor("actuation_sd: .nan\n").find("actuation_sd"), std::string::npos);
+  EXPECT_NE(errorFor("camera_turn: -0.1\n").find("camera_turn"), std::string::npos);
+  EXPECT_NE(errorFor("tint: [0, 1]\n").find("tint"), std::string::npos);
+  EXPECT_NE(errorFor("light: [1.3, 0.7]\n").find("light"), std::string::npos);
   EXPECT_NE(errorFor("board_friction: [nan, 1]\n").find("board_friction"), std::string::npos);
   EXPECT_NE(errorFor("[1, 2]\n").find("ranges.yaml"), std::string::npos);
   EXPECT_NE(errorFor("ring_kDF: [0.9, 0.4]\n").find("ranges.yaml"), std::string::npos);
   EXPECT_EQ(errorFor("{}\n"), "");
+}
+
+/// Whether every fitted value of `drawn` lies within `sds` of its standard deviations of the fit
+/// (`at_edge`: exactly that far, unless held at 0), and how many differ from the fit.
+int drawnWithin(const twin::ArmsMechanics& drawn, const twin::CalibrationProfile& fit, double sds,
+                bool at_edge) {
+  int moved = 0;
+  for (std::size_t a = 0; a < 2; ++a) {
+    for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
+      for (int i = 0; i < raven::kJointCount; ++i) {
+        const double change = drawn[a].field(k)(i) - fit.mechanics[a].field(k)(i);
+        const double reach = sds * fit.uncertainty[a].field(k)(i);
+        if (at_edge && drawn[a].field(k)(i) != 0.0) {  // else held at its bound (a friction)
+          EXPECT_NEAR(std::abs(change), reach, 1e-12 + 1e-9 * reach)
+              << twin::MotorMechanics::kNames[k];
+        } else {
+          EXPECT_LE(std::abs(change), reach * (1 + 1e-12)) << twin::MotorMechanics::kNames[k];
+        }
+        moved += change != 0.0;
+      }
+    }
+  }
+  return moved;
+}
+
+TEST(VariationRanges, TheMotorsMechanicsAreDrawnWithinTheCalibrationsStandardDeviations) {
+  const auto fit = twin::CalibrationProfile::shipped();
+  scenario::VariationRanges ranges;
+  ASSERT_EQ(ranges.actuation_sd, 1.0);  // the shipped range: the fit's own uncertainty
+  std::set<double> shoulder_inertias;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const auto v = scenario::SceneVariation::draw(seed, ranges);
+    const twin::ArmsMechanics drawn = v.mechanics(fit.mechanics, fit.uncertainty);
+    // Of the 62 values the fit gives a deviation (not the offsets: the shipped fit has none),
+    // some at 0 (a jaw's load friction) are held there when drawn below it.
+    EXPECT_GE(drawnWithin(drawn, fit, 1.0, false), 56);
+    shoulder_inertias.insert(drawn[0].inertia(0));
+    // The twin a run builds drives its motors with them.
+    scenario::PegTransferOptions run;
+    const twin::TwinOptions twin = scenario::pegTransferTwin(run, v);
+    ASSERT_TRUE(twin.motors.has_value());
+    EXPECT_EQ((*twin.motors)[1].coulomb, drawn[1].coulomb);
+  }
+  EXPECT_EQ(shoulder_inertias.size(), 20u);
+  // The nominal scene, and a range of 0, keep the fit.
+  EXPECT_EQ(drawnWithin(scenario::SceneVariation{}.mechanics(fit.mechanics, fit.uncertainty), fit,
+                        0.0, true),
+            0);
+  harness::TempDir dir;
+  const auto none = readVariationRanges(dir.write("none.yaml", "actuation_sd: 0\n"));
+  EXPECT_EQ(
+      drawnWithin(scenario::SceneVariation::draw(3, none).mechanics(fit.mechanics, fit.uncertainty),
+                  fit, 0.0, true),
+      0);
+  // At the edges every value is the fit plus or minus the range.
+  const auto edges =
+      readVariationRanges(dir.write("edges.yaml", "at_edges: true\nactuation_sd: 2\n"));
+  drawnWithin(scenario::SceneVariation::draw(4, edges).mechanics(fit.mechanics, fit.uncertainty),
+              fit, 2.0, true);
+  // The scene a seed draws does not depend on the motors' range.
+  EXPECT_EQ(scenario::SceneVariation::draw(5, none).json()["ring_yaw_rad"],
+            scenario::SceneVariation::draw(5, ranges).json()["ring_yaw_rad"]);
+  // However wide the range, every value stays one the motors can have.
+  scenario::VariationRanges wide;
+  wide.actuation_sd = 1e6;
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const auto drawn =
+        scenario::SceneVariation::draw(seed, wide).mechanics(fit.mechanics, fit.uncertainty);
+    for (raven::Arm arm : raven::kArms) {
+      EXPECT_EQ(drawn[raven::slot(arm)].invalidReason(), "") << seed;
+      EXPECT_TRUE((drawn[raven::slot(arm)].inertia.array() >=
+                   0.5 * fit.mechanics[raven::slot(arm)].inertia.array())
+                      .all());
+    }
+  }
 }
 
 }  // namespace

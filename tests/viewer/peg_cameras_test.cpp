@@ -1,7 +1,8 @@
 // The peg-transfer scene's cameras as observations: images of the asked size, segmentation ids that
 // find every ring, post, arm and the board where they are, depth that agrees with the camera's
-// geometry, the same world rendered twice giving the same images, and a camera made while an
-// older one still exists drawing after that one is gone (an environment's reset does this).
+// geometry, the same world rendered twice giving the same images, a camera made while an older one
+// still exists drawing after that one is gone (an environment's reset does this), and cameras
+// whose look a randomised scene drew.
 
 #include "scenario/peg_cameras.hpp"
 
@@ -76,6 +77,61 @@ TEST(PegCameras, ANewCameraStillDrawsAfterTheOldOneIsGone) {
   EXPECT_EQ(images[0].rgb, first);
   std::set<std::uint32_t> seen(images[0].segmentation.begin(), images[0].segmentation.end());
   EXPECT_TRUE(seen.count(scenario::kFirstRing)) << "the new camera drew no ring";
+}
+
+/// The mean of one colour channel over the pixels of segmentation id `id` (-1 if none).
+double meanChannel(const viewer::CameraImages& image, std::uint32_t id, int channel) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t p = 0; p < image.segmentation.size(); ++p) {
+    if (image.segmentation[p] == id)
+      sum += image.rgb[3 * p + static_cast<std::size_t>(channel)], ++n;
+  }
+  return n ? sum / n : -1.0;
+}
+
+TEST(PegCameras, ADrawnLookMovesTheCameraAndChangesTheLightsAndColours) {
+  test_support::HeadlessPegScene scene;
+  if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
+  const auto render = [&](const scenario::SceneVariation& look) {
+    scenario::PegCameras cameras(*scene.world, {"left-task"}, 128, 96, look);
+    return cameras.render(*scene.world, true, true, true)[0];
+  };
+  const viewer::CameraImages nominal = render({});
+  // A nominal scene's look is the design's: the same images as cameras given none.
+  EXPECT_EQ(nominal.rgb, scenario::PegCameras(*scene.world, {"left-task"}, 128, 96)
+                             .render(*scene.world, true, false, false)[0]
+                             .rgb);
+  // Brighter lights: every surface brighter (the board's plate, the rings).
+  scenario::SceneVariation brighter;
+  brighter.nominal = false;
+  brighter.light = 1.3;
+  const viewer::CameraImages bright = render(brighter);
+  EXPECT_EQ(bright.segmentation, nominal.segmentation);  // the camera did not move
+  EXPECT_GT(meanChannel(bright, scenario::kPlate, 1),
+            meanChannel(nominal, scenario::kPlate, 1) + 5);
+  EXPECT_GT(meanChannel(bright, scenario::kFirstRing, 0),
+            meanChannel(nominal, scenario::kFirstRing, 0) + 5);
+  // The rings' red channel down, nothing else: the rings redden less, the plate stays.
+  scenario::SceneVariation tinted;
+  tinted.nominal = false;
+  tinted.ring_tint = Eigen::Vector3d(0.85, 1.0, 1.0);
+  const viewer::CameraImages tint = render(tinted);
+  EXPECT_LT(meanChannel(tint, scenario::kFirstRing, 0),
+            meanChannel(nominal, scenario::kFirstRing, 0) - 5);
+  EXPECT_NEAR(meanChannel(tint, scenario::kPlate, 1), meanChannel(nominal, scenario::kPlate, 1),
+              0.5);
+  // A camera turned by 2 degrees and moved by 3 mm sees the same scene a few pixels over.
+  scenario::SceneVariation moved;
+  moved.nominal = false;
+  moved.camera_yaw = 0.035;
+  moved.camera_shift = Eigen::Vector3d(0.003, -0.003, 0.0);
+  const viewer::CameraImages shifted = render(moved);
+  EXPECT_NE(shifted.segmentation, nominal.segmentation);
+  std::set<std::uint32_t> seen(shifted.segmentation.begin(), shifted.segmentation.end());
+  for (std::uint32_t id = scenario::kFirstRing; id < scenario::kFirstRing + 3; ++id) {
+    EXPECT_TRUE(seen.count(id)) << "ring " << id - scenario::kFirstRing + 1 << " out of sight";
+  }
 }
 
 }  // namespace

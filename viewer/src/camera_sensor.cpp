@@ -42,7 +42,7 @@ CameraSensor::CameraSensor(const ambf_like::World& world, int width, int height,
 CameraSensor::~CameraSensor() = default;
 
 CameraImages CameraSensor::render(const ambf_like::World& world, const View& view, bool rgb,
-                                  bool depth, bool segmentation) {
+                                  bool depth, bool segmentation, const Look& look) {
   context_->bind();
   const FrameState frame = FrameState::of(world, false);
   const Camera camera = view.at(frame.body_poses);
@@ -50,7 +50,7 @@ CameraImages CameraSensor::render(const ambf_like::World& world, const View& vie
   out.width = width_;
   out.height = height_;
   if (rgb || depth) {
-    detail::draw(*geometry_, frame, camera, width_, height_, ViewOptions{});
+    detail::draw(*geometry_, frame, camera, width_, height_, ViewOptions{}, look);
     if (rgb) out.rgb = detail::readPixels(width_, height_);
     if (depth) out.depth = detail::readDepth(camera, width_, height_);
   }

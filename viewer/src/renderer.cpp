@@ -23,7 +23,7 @@ const Eigen::Vector3f kBackground(0.91f, 0.93f, 0.95f);
 const Eigen::Vector3f kCollisionColour(0.95f, 0.55f, 0.15f);
 const Eigen::Vector3f kSoftColour(0.85f, 0.25f, 0.30f);
 
-void lights() {
+void lights(float brightness) {
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glEnable(GL_LIGHT1);
@@ -32,9 +32,10 @@ void lights() {
   glColorMaterial(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
   glLightModeli(GL_LIGHT_MODEL_TWO_SIDE, GL_TRUE);
   const GLfloat key[] = {0.4f, 0.3f, 1.0f, 0.0f}, fill[] = {-0.5f, -0.6f, 0.3f, 0.0f};
-  const GLfloat key_colour[] = {0.75f, 0.75f, 0.72f, 1.0f},
-                fill_colour[] = {0.3f, 0.3f, 0.35f, 1.0f};
-  const GLfloat ambient[] = {0.25f, 0.25f, 0.25f, 1.0f};
+  const float b = brightness;
+  const GLfloat key_colour[] = {0.75f * b, 0.75f * b, 0.72f * b, 1.0f},
+                fill_colour[] = {0.3f * b, 0.3f * b, 0.35f * b, 1.0f};
+  const GLfloat ambient[] = {0.25f * b, 0.25f * b, 0.25f * b, 1.0f};
   glLightfv(GL_LIGHT0, GL_POSITION, key);
   glLightfv(GL_LIGHT0, GL_DIFFUSE, key_colour);
   glLightfv(GL_LIGHT1, GL_POSITION, fill);
@@ -57,8 +58,9 @@ void colour(const Eigen::Vector3f& c) {
   glColor3f(c.x(), c.y(), c.z());
 }
 
-void softBody(const SoftGeometry& g, const std::vector<Eigen::Vector3f>& nodes) {
-  colour(kSoftColour);
+void softBody(const SoftGeometry& g, const std::vector<Eigen::Vector3f>& nodes,
+              const Eigen::Vector3f& tint) {
+  colour(kSoftColour.cwiseProduct(tint));
   if (!g.faces.empty()) {
     glBegin(GL_TRIANGLES);
     for (const auto& f : g.faces) {
@@ -101,10 +103,10 @@ void contacts(const std::vector<ambf_like::Contact>& list, double scale) {
   glEnable(GL_LIGHTING);
 }
 
-/// Clears to `background`, sets the camera's projection and view (the lights, when `lit`, in eye
-/// coordinates: they move with the camera).
+/// Clears to `background`, sets the camera's projection and view (the lights, at `brightness`
+/// unless 0, in eye coordinates: they move with the camera).
 void frameUp(const Camera& camera, int width, int height, const Eigen::Vector3f& background,
-             bool lit) {
+             float brightness) {
   glViewport(0, 0, width, height);
   glClearColor(background.x(), background.y(), background.z(), 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -114,8 +116,8 @@ void frameUp(const Camera& camera, int width, int height, const Eigen::Vector3f&
   glLoadMatrixd(projection.data());
   glMatrixMode(GL_MODELVIEW);
   glLoadIdentity();
-  if (lit) {
-    lights();
+  if (brightness > 0.0f) {
+    lights(brightness);
   } else {
     glDisable(GL_LIGHTING);
   }
@@ -133,7 +135,7 @@ Eigen::Vector3f labelColour(std::uint32_t id) {
 
 void drawLabels(const SceneGeometry& scene, const FrameState& frame, const Camera& camera,
                 int width, int height, const SceneLabels& labels) {
-  frameUp(camera, width, height, Eigen::Vector3f::Zero(), false);
+  frameUp(camera, width, height, Eigen::Vector3f::Zero(), 0.0f);
   for (std::size_t i = 0; i < scene.bodies.size() && i < frame.body_poses.size(); ++i) {
     const TriangleMesh& mesh = scene.bodies[i].visual;
     const std::vector<std::uint32_t>& ids = labels.bodies.at(i);
@@ -183,8 +185,8 @@ std::vector<float> readDepth(const Camera& camera, int width, int height) {
 }
 
 void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
-          int height, const ViewOptions& view) {
-  frameUp(camera, width, height, kBackground, true);
+          int height, const ViewOptions& view, const Look& look) {
+  frameUp(camera, width, height, kBackground, look.light);
   for (std::size_t i = 0; i < scene.bodies.size() && i < frame.body_poses.size(); ++i) {
     const BodyGeometry& body = scene.bodies[i];
     glPushMatrix();
@@ -202,13 +204,13 @@ void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& cam
       glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
       glEnable(GL_LIGHTING);
     } else {
-      colour(body.colour);
+      colour(body.colour.cwiseProduct(look.body_tint));
       triangles(body.visual);
     }
     glPopMatrix();
   }
   for (std::size_t i = 0; i < scene.soft_bodies.size() && i < frame.soft_nodes.size(); ++i) {
-    softBody(scene.soft_bodies[i], frame.soft_nodes[i]);
+    softBody(scene.soft_bodies[i], frame.soft_nodes[i], look.soft_tint);
   }
   if (view.contacts) contacts(frame.contacts, 0.02 * camera.distance);
 }

@@ -9,13 +9,14 @@
 
 #include "viewer/camera.hpp"
 #include "viewer/camera_sensor.hpp"
+#include "viewer/look.hpp"
 #include "viewer/scene_geometry.hpp"
 #include "viewer/viewer.hpp"
 
 namespace viewer::detail {
 
 void draw(const SceneGeometry& scene, const FrameState& frame, const Camera& camera, int width,
-          int height, const ViewOptions& view);
+          int height, const ViewOptions& view, const Look& look = {});
 
 /// The scene with every surface in the flat colour of its segmentation id (id = r + 256 g +
 /// 65536 b; the background 0), no lighting.

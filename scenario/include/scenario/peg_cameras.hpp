@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scenario/peg_layout.hpp"
+#include "scenario/scene_variation.hpp"
 #include "viewer/camera_sensor.hpp"
 
 namespace scenario {
@@ -33,10 +34,11 @@ inline constexpr std::uint32_t kPegSegments = 25;
 /// One world's cameras: built after each reset (the world is new), rendering on demand.
 class PegCameras {
  public:
-  /// Throws std::invalid_argument for an unknown view name (listing them), viewer::NoDisplay
-  /// when no headless OpenGL can be made.
+  /// The views seen as `look` says (its cameras' poses, lights and colours; a nominal one: as
+  /// designed). Throws std::invalid_argument for an unknown view name (listing them),
+  /// viewer::NoDisplay when no headless OpenGL can be made.
   PegCameras(const ambf_like::World& world, const std::vector<std::string>& views, int width,
-             int height, const PegLayout& layout = {});
+             int height, const SceneVariation& look = {}, const PegLayout& layout = {});
 
   /// Per view (in the order asked), the images asked for.
   std::vector<viewer::CameraImages> render(const ambf_like::World& world, bool rgb, bool depth,
@@ -44,6 +46,7 @@ class PegCameras {
 
  private:
   std::vector<viewer::View> views_;
+  viewer::Look look_;
   std::unique_ptr<viewer::CameraSensor> sensor_;
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ambf_like/world.hpp"
+#include "viewer/look.hpp"
 #include "viewer/view.hpp"
 
 namespace viewer {
@@ -46,9 +47,10 @@ class CameraSensor {
   CameraSensor(const CameraSensor&) = delete;
   CameraSensor& operator=(const CameraSensor&) = delete;
 
-  /// The images `view` sees of `world` now (only those asked for are filled).
+  /// The images `view` sees of `world` now (only those asked for are filled), the colour image
+  /// drawn with `look`.
   CameraImages render(const ambf_like::World& world, const View& view, bool rgb, bool depth,
-                      bool segmentation);
+                      bool segmentation, const Look& look = {});
 
  private:
   int width_, height_;
