@@ -70,6 +70,20 @@ TEST(VariationRanges, TheCamerasLookIsDrawnWithinItsRanges) {
   EXPECT_EQ(lights.size(), 20u);
   EXPECT_TRUE(scenario::SceneVariation{}.camera_shift.isZero());  // the nominal scene's look
   EXPECT_EQ(scenario::SceneVariation{}.light, 1.0);
+  // The shipped ranges keep one look (the shipped image policy saw one); looks.yaml varies it,
+  // and edges.yaml takes it to its ends.
+  const auto unvaried = scenario::SceneVariation::draw(7, {});
+  EXPECT_TRUE(unvaried.camera_shift.isZero());
+  EXPECT_EQ(unvaried.light, 1.0);
+  EXPECT_EQ(unvaried.ring_tint, Eigen::Vector3d::Ones());
+  const auto looks = readVariationRanges(std::string(RAVEN_RANGES_DIR) + "/looks.yaml");
+  EXPECT_GT(looks.camera_turn, 0.0);
+  EXPECT_LT(looks.light[0], looks.light[1]);
+  const auto edges = readVariationRanges(std::string(RAVEN_RANGES_DIR) + "/edges.yaml");
+  EXPECT_TRUE(edges.at_edges);
+  EXPECT_EQ(edges.camera_turn, looks.camera_turn);
+  EXPECT_EQ(edges.tint, looks.tint);
+  EXPECT_EQ(edges.actuation_sd, scenario::VariationRanges{}.actuation_sd);
 }
 
 TEST(VariationRanges, AtTheEdgesEveryValueIsAnEndOfItsRangeAndBothEndsComeUp) {

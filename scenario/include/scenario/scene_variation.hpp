@@ -30,11 +30,13 @@ struct VariationRanges {
   /// axis and turns within +/- camera_turn (rad) in yaw and in pitch, its distance is scaled
   /// within camera_distance: a camera mounted again by hand. The lights' brightness is scaled
   /// within `light`, each colour channel of the rings and of every other surface within `tint`.
-  double camera_shift = 0.003;
-  double camera_turn = 0.035;
-  std::array<double, 2> camera_distance{0.97, 1.03};
-  std::array<double, 2> light{0.7, 1.3};
-  std::array<double, 2> tint{0.85, 1.15};
+  /// Unvaried by default (the shipped image policy saw one look): scenario/ranges/looks.yaml
+  /// varies them.
+  double camera_shift = 0.0;
+  double camera_turn = 0.0;
+  std::array<double, 2> camera_distance{1.0, 1.0};
+  std::array<double, 2> light{1.0, 1.0};
+  std::array<double, 2> tint{1.0, 1.0};
   /// Draw each value at its range's low or high end (a fair coin each), every ring's start at
   /// the full offset radius: a robustness check at the edges of what a policy was trained on.
   bool at_edges = false;
