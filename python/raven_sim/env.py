@@ -26,8 +26,9 @@ terminates with all six placed and is truncated at the time limit. The main job'
 operator is the expert: `expert_action()`. The same seed and actions give the same episode.
 
 randomize=True draws each episode's scene from its reset seed (the rings' start poses, silicone
-and friction, the board's friction: scenario/scene_variation.hpp's ranges), randomize="f.yaml"
-from that file's ranges; reset's info["variation"] is the draw.
+and friction, the board's friction, the motors' fitted mechanics within the calibration's standard
+deviations, and, if the ranges say so, the cameras' look: scenario/scene_variation.hpp's ranges),
+randomize="f.yaml" from that file's ranges; reset's info["variation"] is the draw.
 
 The twin is the Raven-II's motor-level one by default (actuation="motors": its motors, cables and
 control software drive the joints, and what the jaws touch loads the motors), or ideal joint
