@@ -76,19 +76,16 @@ twin::ArmsMechanics SceneVariation::mechanics(const twin::ArmsMechanics& fit,
                                               const twin::ArmsMechanics& sd) const {
   if (nominal) return fit;
   twin::ArmsMechanics out = fit;
-  for (raven::Arm arm : raven::kArms) {
-    const std::size_t a = raven::slot(arm);
+  for (std::size_t a = 0; a < out.size(); ++a) {
     for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {
+      const twin::MotorMechanics::ValueRange& range = twin::MotorMechanics::kRanges[k];
       for (int i = 0; i < raven::kJointCount; ++i) {
         const double f = fit[a].field(k)(i);
-        double value = f + actuation_draw[raven::slot(arm)][k][static_cast<std::size_t>(i)] *
-                               actuation_sd * sd[a].field(k)(i);
-        if (k == 0) value = std::max(value, 0.5 * f);  // inertia
-        if (k == 2) value = std::min(value, 0.9);      // the load's share of friction
-        if (k == twin::MotorMechanics::kGravityError) value = std::max(value, -0.99);
-        if (k != twin::MotorMechanics::kOffset && k != twin::MotorMechanics::kGravityError) {
-          value = std::max(value, 0.0);
-        }
+        double value = f + actuation_draw[a][k][static_cast<std::size_t>(i)] * actuation_sd *
+                               sd[a].field(k)(i);
+        value = std::clamp(value, range.low, range.high);
+        // An open bound is never reached: held halfway between the fit and it.
+        if (range.open && value <= range.low) value = 0.5 * (f + range.low);
         out[a].field(k)(i) = value;
       }
     }

@@ -27,20 +27,8 @@ const ArmJoints& MotorMechanics::field(std::size_t k) const {
 }
 
 std::string MotorMechanics::invalidReason() const {
-  // Per field: the smallest value (excluded when `open`) and the largest.
-  struct Range {
-    double low, high;
-    bool open;
-    const char* says;
-  };
-  constexpr std::array<Range, kNames.size()> kRanges{{{0.0, INFINITY, true, "> 0"},
-                                                      {0.0, INFINITY, false, ">= 0"},
-                                                      {0.0, 0.9, false, "within 0..0.9"},
-                                                      {0.0, INFINITY, false, ">= 0"},
-                                                      {-INFINITY, INFINITY, false, "finite"},
-                                                      {-1.0, INFINITY, true, "> -1"}}};
   for (std::size_t k = 0; k < kNames.size(); ++k) {
-    const Range& r = kRanges[k];
+    const ValueRange& r = kRanges[k];
     for (int i = 0; i < kJointCount; ++i) {
       const double v = field(k)(i);
       const bool ok = std::isfinite(v) && (r.open ? v > r.low : v >= r.low) && v <= r.high;

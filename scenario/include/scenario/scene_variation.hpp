@@ -78,9 +78,9 @@ struct SceneVariation {
   static SceneVariation draw(std::uint64_t seed, const VariationRanges& ranges = {});
   /// Applies to the peg-transfer scene's rings (soft bodies ring1..ring6) and board.
   void apply(ambf_like::SceneSpec& scene) const;
-  /// Applies to the motors' fitted mechanics `fit` with their standard deviations `sd` (a value
-  /// kept within what it can be: inertia at least half the fit's, frictions >= 0, the load's
-  /// share of friction <= 0.9, the weight's error > -1).
+  /// Applies to the motors' fitted mechanics `fit` with their standard deviations `sd`, each
+  /// value kept within what it can be (MotorMechanics::kRanges; beyond an open bound, such as an
+  /// inertia's 0, it is held halfway between the fit and the bound).
   twin::ArmsMechanics mechanics(const twin::ArmsMechanics& fit,
                                 const twin::ArmsMechanics& sd) const;
   nlohmann::json json() const;

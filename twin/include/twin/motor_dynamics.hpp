@@ -6,6 +6,7 @@
 // friction, and how far the firmware's gravity compensation is from the arm's real weight.
 
 #include <array>
+#include <limits>
 #include <string>
 #include <string_view>
 
@@ -33,6 +34,21 @@ struct MotorMechanics {
                                                           "viscous", "offset",  "gravity_error"};
   static constexpr int kOffset = 4;        ///< its index: the one value that may be negative
   static constexpr int kGravityError = 5;  ///< its index (the last): only the arm motors have one
+  /// What a field's values can be: at least `low` (more than it when `open`), at most `high`.
+  struct ValueRange {
+    double low, high;
+    bool open;
+    const char* says;
+  };
+  static constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+  /// Per field, in kNames order.
+  static constexpr std::array<ValueRange, kNames.size()> kRanges{
+      {{0.0, kUnbounded, true, "> 0"},
+       {0.0, kUnbounded, false, ">= 0"},
+       {0.0, 0.9, false, "within 0..0.9"},
+       {0.0, kUnbounded, false, ">= 0"},
+       {-kUnbounded, kUnbounded, false, "finite"},
+       {-1.0, kUnbounded, true, "> -1"}}};
   ArmJoints& field(std::size_t k);
   const ArmJoints& field(std::size_t k) const;
 
