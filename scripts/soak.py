@@ -41,7 +41,11 @@ BATCH_RUNS_PER_HOUR = 500  # 1,000 runs for a two-hour soak
 # and placed, and torn down. A whole nominal run (115 s simulated, six rings) takes about 22 s of
 # a core here, so 1,000 of them would take three hours of both cores; cut, the batch takes one.
 BATCH_RUN_SECONDS = 30.0
-BATCH_THREADS = 2
+# A tenth's peak RSS is of the worlds alive at once. Two workers' peaks vary by a quarter with how
+# their runs line up (anonymous 58 to 74 MiB over ten runs here), and only a tenth of many runs
+# is sure to catch the highest; one worker's peak repeats within 1 MiB run after run. So a batch
+# with fewer runs than this runs on one thread, a longer one on two.
+TWO_THREADS_FROM_RUNS = 200
 # A worker's first runs size its heap: glibc serves a world's large blocks by mmap until it frees
 # one, then raises its mmap threshold and keeps later worlds' blocks in the heap (about 15 % more
 # RSS over the first two runs, flat after). The batch's tenths are of the runs after them.
@@ -319,9 +323,10 @@ def soak_batch(build, work, runs, interval, run_seconds):
     out = fresh_folder(work / "batch")
     jsonl = out / "runs.jsonl"
     limit = ["--time-limit", f"{run_seconds:g}"] if run_seconds else []
+    threads = 2 if runs >= TWO_THREADS_FROM_RUNS else 1
     batch = subprocess.Popen(
         [str(build / "scenario/raven_peg_transfer"), "--runs", str(runs), "--threads",
-         str(BATCH_THREADS), "--record", "no", "--out", str(out), "-q"] + limit,
+         str(threads), "--record", "no", "--out", str(out), "-q"] + limit,
         stdout=open(work / "batch.log", "w"), stderr=subprocess.STDOUT)
 
     def finished():
@@ -336,8 +341,8 @@ def soak_batch(build, work, runs, interval, run_seconds):
     simulated_after = [0.0]  # simulated seconds of the first k finished runs
     for r in results:
         simulated_after.append(simulated_after[-1] + r["sim_time_s"])
-    warm = BATCH_THREADS * WARMUP_RUNS_PER_THREAD
-    tenth = max(BATCH_THREADS, (runs - warm) // 10)  # runs end together on parallel workers
+    warm = threads * WARMUP_RUNS_PER_THREAD
+    tenth = max(2, (runs - warm) // 10)  # two runs at least: the step time is a slope over runs
     tenths = Tenths([s for s in samples if warm <= s[0] <= warm + tenth],
                     [s for s in samples if s[0] >= runs - tenth], "batch")
     keep_samples(samples, work / "batch-samples.jsonl")
@@ -346,8 +351,8 @@ def soak_batch(build, work, runs, interval, run_seconds):
              tenths.other_load(["batch"]), tenths.reference())]
     placed = sum(r["placed"] for r in results)
     each = f", each cut at {run_seconds:g} s simulated" if run_seconds else ""
-    return rows, (f"{runs} nominal runs on {BATCH_THREADS} threads{each}, {placed} of {6 * runs} "
-                  "placed")
+    return rows, (f"{runs} nominal runs on {threads} thread{'s' if threads > 1 else ''}{each}, "
+                  f"{placed} of {6 * runs} placed")
 
 
 def main():
@@ -375,7 +380,7 @@ def main():
     if not args.run_seconds >= 0:
         raise SystemExit("soak: --run-seconds must be 0 (whole runs) or positive")
     seconds = 3600.0 * hours
-    runs = max(BATCH_THREADS * (WARMUP_RUNS_PER_THREAD + 3), round(BATCH_RUNS_PER_HOUR * hours))
+    runs = max(10, round(BATCH_RUNS_PER_HOUR * hours))
     interval = args.interval or min(5.0, max(0.2, seconds / 600.0))
 
     with tempfile.TemporaryDirectory(prefix="soak-") as tmp:
