@@ -210,10 +210,11 @@ class PegTransferEnv(_Env):
         self.core.restore_state(state)
         return self._observe(self.core.observation)
 
-    def expert_action(self):
+    def expert_action(self, from_state=False):
         """The main job's scripted operator's next step as an action of this environment's kind
-        (joint targets for "pad"; call once per step)."""
-        return self.core.expert_action()
+        (joint targets for "pad"; call once per step). `from_state`: the operator first takes
+        up the task from the state reached, as after steps someone else (a policy) decided."""
+        return self.core.expert_action(from_state)
 
 
 class VectorPegTransferEnv:

@@ -63,8 +63,11 @@ class SteppedExpert:
     asked again once a step reached its last target (or the targets stopped getting nearer to it:
     a joint limit), from wherever the targets are then."""
 
-    def __init__(self, env):
+    def __init__(self, env, from_state=False):
+        """`from_state`: the operator takes up the task from the state reached each time it is
+        asked (env.expert_action(from_state=True)), for episodes another driver steers."""
         self.env = env
+        self.from_state = from_state
         self.reset()
 
     def reset(self):
@@ -74,7 +77,7 @@ class SteppedExpert:
     def act(self, state):
         current = state[TARGETS]
         if self.goal is None or np.abs(self.goal - current).max() >= self.remaining:
-            self.goal = current + self.env.expert_action()
+            self.goal = current + self.env.expert_action(self.from_state)
         left = self.goal - current
         step = np.clip(left, -STEP_CAP, STEP_CAP)
         # Not clipped: this step reaches the goal, and the next call asks the operator again.

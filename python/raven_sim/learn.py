@@ -35,8 +35,9 @@ join: an image policy's ring locator acting through another state policy (the lo
 sees rings; a state policy trained again needs no new locator).
 
 dagger: one round of DAgger (Ross et al. 2011): the policy drives on new seeds (the expert's
-action instead with probability --beta) while the expert labels every state it reaches; the
-episodes join --collect, and train on all the files gives the next policy.
+action instead with probability --beta) while the expert, taking up the task from each state
+the policy reached, labels it; the episodes join --collect, and train on all the files gives
+the next policy.
 
 evaluate: the policy (state or image) on randomised scenes (--workers episodes side by side); its
 last line is
@@ -231,7 +232,9 @@ def dagger(args):
         return label if rng.random() < args.beta else action
 
     f, data = demos.open_demos(args.collect, kwargs, "DAgger", mode="a")
-    placed = collect(env, SteppedExpert(env), args.seeds[:args.episodes], drive, data,
+    # The policy steers: the operator answers from the state it reached, not from its own plan.
+    placed = collect(env, SteppedExpert(env, from_state=True), args.seeds[:args.episodes], drive,
+                     data,
                      f"DAgger: {args.policy} driving, beta {args.beta}", args.max_steps, policy)
     f.close()
     print(f"the policy (beta {args.beta}) placed {placed}/{6 * args.episodes}; the expert's "

@@ -144,8 +144,9 @@ void bindEnvironment(py::module_& m) {
             return e.step(pad);
           },
           py::arg("ci_row"), "one pad reading as a ci row (14 values)")
-      .def("expert_action", &E::expertAction,
-           "the main job's scripted operator's next step, as an action of the environment's kind")
+      .def("expert_action", &E::expertAction, py::arg("from_state") = false,
+           "the main job's scripted operator's next step, as an action of the environment's "
+           "kind; from_state: taken up from the state reached (steps someone else decided)")
       .def(
           "save_state",
           [](E& e) {

@@ -267,6 +267,100 @@ raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
   return q;
 }
 
+namespace {
+
+/// The steps of a transfer an onlooker tells apart: getting over the grasp, gripping (at the
+/// grasp, closing, lifting), carrying, letting go. Within one, only the routine's own memory
+/// (its waits) says where it is.
+int stageOf(Phase phase) {
+  switch (phase) {
+    case Phase::Orient:
+    case Phase::Descend:
+      return 0;
+    case Phase::Align:
+    case Phase::Close:
+    case Phase::Lift:
+      return 1;
+    case Phase::Carry:
+    case Phase::Lower:
+      return 2;
+    case Phase::Open:
+    case Phase::Settle:
+    case Phase::Retreat:
+      return 3;
+    case Phase::Done:
+      break;
+  }
+  return 4;
+}
+
+}  // namespace
+
+void ArmRoutine::resume(const raven::ArmJoints& target, const bridge::ScenePerception& scene) {
+  std::size_t job = 0;
+  while (job < jobs_.size() && restsOn(RingView(scene.sight(jobs_[job].ring), layout_.ring),
+                                       jobs_[job].to, layout_.geometry)) {
+    ++job;
+  }
+  if (job == jobs_.size()) {
+    job_ = job;
+    advance(Phase::Done);
+    return;
+  }
+  // The same ring past its orientation: its grasp stays where it was planned.
+  const bool planned = job == job_ && phase_ != Phase::Orient && phase_ != Phase::Done;
+  const Phase was = phase_;
+  const Grasp grasp = grasp_;
+  const bool retrying = retrying_;
+  job_ = job;
+  const Phase shown = phaseShown(target, scene, planned);
+  // The state shows the step it is in or the one it moves on to by itself, or it is letting
+  // go to grasp again (its own judgement of what it saw): as it was, its plan and its waits.
+  const int stage = stageOf(was), shown_stage = stageOf(shown);
+  const bool regrasping = retrying && stage == stageOf(Phase::Open);
+  if (planned && (shown_stage == stage || shown_stage == stage + 1 || regrasping)) {
+    grasp_ = grasp;
+    retrying_ = retrying;
+    return;
+  }
+  inner_ = target(raven::kJaw1);
+  outer_ = target(raven::kJaw2);
+  spdlog::debug("{} arm: takes up {} at {} (it was at {})", raven::armName(arm_), jobs_[job_].ring,
+                phaseName(shown), phaseName(was));
+  advance(shown);
+}
+
+Phase ArmRoutine::phaseShown(const raven::ArmJoints& target, const bridge::ScenePerception& scene,
+                             bool planned) {
+  const RingView seen = ring(scene);
+  const RingJob& job = jobs_[job_];
+  const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
+  retrying_ = false;
+  const bool jaws_open = target(raven::kJaw2) >= kOpen - kJawStep;
+  if (!jaws_open && ringFollows(scene)) {  // in the jaws: carried from where it hangs
+    grasp_.pivot.z() = layout_.geometry.board_top + 2.0 * layout_.ring.half_height + kAboveTop;
+    grasp_.offset = grasp_.lifted_offset = tool.head<2>() - seen.centre().head<2>();
+    return (seen.centre().head<2>() - job.to).norm() < kCentred ? Phase::Lower : Phase::Carry;
+  }
+  if (!planned) plan(seen, regrasps_[job_] > 0 ? graspSide(seen) : kAwayFromTargets);
+  // An onlooker's tolerances: twice what the routine itself allows (its own corrections and
+  // what another driver adds to the commands).
+  const double near = 2.0 * kAlignReach;
+  const Eigen::Vector3d from_grasp = tool - grasp_.pivot;
+  const bool over_grasp = from_grasp.head<2>().norm() <= near;
+  if (!jaws_open && seen.threadedOn(job.to)) return Phase::Open;  // lowered: let it go
+  const bool over_and_low = over_grasp && from_grasp.z() >= -near;
+  if (jaws_open && over_and_low && from_grasp.z() <= kApproach + kStep) {
+    return from_grasp.norm() <= near ? Phase::Align : Phase::Descend;
+  }
+  if (!jaws_open && over_and_low && from_grasp.z() <= kLift + kStep) {
+    return from_grasp.norm() <= near ? Phase::Close : Phase::Lift;  // gripping
+  }
+  if (from_grasp.z() >= kRetreat - near) return Phase::Orient;  // high: over the ring from there
+  retrying_ = true;  // low beside the ring, or jaws shut on nothing: up first, then over it
+  return jaws_open ? Phase::Retreat : Phase::Open;
+}
+
 raven::ArmJoints ArmRoutine::orient(const raven::ArmJoints& target,
                                     const bridge::ScenePerception& scene) {
   // One capped move: over the ring, jaws down and open. A first grasp comes from the side away

@@ -105,10 +105,15 @@ PegTransferStep PegTransferEnv::guardedStep(const std::function<std::size_t()>& 
   }
 }
 
-Eigen::VectorXd PegTransferEnv::expertAction() {
+Eigen::VectorXd PegTransferEnv::expertAction(bool from_state) {
   if (!failure_.empty()) throw std::logic_error("the episode ended when its world failed");
   controller::DualPlatformController& controller = session().controller();
   const controller::ArmPair& current = controller.commanded();
+  if (from_state) {
+    for (raven::Arm arm : raven::kArms) {
+      (*expert_)[raven::slot(arm)].resume(current[raven::slot(arm)], *scene_);
+    }
+  }
   const twin::TwinPlatform& twin = session().twin();
   const controller::ArmPair targets{
       (*expert_)[0].next(current[0], twin.measuredJs(raven::Arm::Left).position, *scene_),

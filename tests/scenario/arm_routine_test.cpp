@@ -1,12 +1,14 @@
 // The scripted operator against a scene the test scripts: a ring lifted a little and caught on its
 // start post does not come along with the tool, and the operator must not chase it; a ring pushed
-// off its post's axis is grasped again where the post leaves the inner jaw room.
+// off its post's axis is grasped again where the post leaves the inner jaw room; handed the pad
+// mid-transfer, an operator with no memory of it takes up the step the state shows.
 
 #include "scenario/arm_routine.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include "bridge/scene_perception.hpp"
@@ -99,6 +101,58 @@ TEST(ArmRoutine, ARingPushedOffItsPostIsGraspedAgainWhereThePostLeavesRoom) {
   EXPECT_NEAR(pivots[0].x(), 0.0, 1e-6);
   EXPECT_NEAR(std::abs(pivots[1].x()), 0.0058, 1e-4);
   EXPECT_NEAR(pivots[1].y(), 0.0, 1e-4);
+}
+
+TEST(ArmRoutine, HandedThePadMidTransferItTakesUpTheStepTheStateShows) {
+  const scenario::PegLayout layout;
+  const auto profile = raven::builtinProfile("physical");
+  const std::vector<scenario::RingJob> job{layout.jobsOf(raven::Arm::Left)[0]};
+  const Eigen::Isometry3d resting = restingAt(layout, job[0]);
+  ScriptedRing scene(job[0].ring, resting);
+  // An operator who did it all, the commands where each of its steps began (the arm follows
+  // every command; the ring stays on the board).
+  scenario::ArmRoutine guide(raven::Arm::Left, profile, layout, job);
+  std::map<Phase, raven::ArmJoints> began;
+  raven::ArmJoints target = profile.home;
+  for (int i = 0; i < 20000 && guide.phase() != Phase::Lift; ++i) {
+    target = guide.next(target, target, scene);
+    began.try_emplace(guide.phase(), target);
+  }
+  ASSERT_EQ(guide.phase(), Phase::Lift);
+  auto takenUp = [&](const raven::ArmJoints& at) {
+    scenario::ArmRoutine fresh(raven::Arm::Left, profile, layout, job);
+    fresh.resume(at, scene);
+    return fresh.phase();
+  };
+  EXPECT_EQ(takenUp(profile.home), Phase::Orient) << "far above, jaws half open";
+  EXPECT_EQ(takenUp(began.at(Phase::Descend)), Phase::Descend) << "over the ring, jaws open";
+  EXPECT_EQ(takenUp(began.at(Phase::Close)), Phase::Align) << "at the grasp, jaws still open";
+  EXPECT_EQ(takenUp(began.at(Phase::Lift)), Phase::Close) << "at the grasp, jaws shut";
+  scene.pose.translation().x() += 0.01;  // the ring 10 mm aside: the jaws shut beside it
+  EXPECT_EQ(takenUp(began.at(Phase::Lift)), Phase::Open) << "let go, and grasp it again";
+  EXPECT_EQ(takenUp(began.at(Phase::Close)), Phase::Retreat) << "jaws open beside it: up first";
+  scene.pose = resting;
+
+  // Lifted with the jaws: carried to the target post; over it and down, let go.
+  scene.pose.translation().z() += 0.03;
+  EXPECT_EQ(takenUp(began.at(Phase::Lift)), Phase::Carry);
+  scene.pose.translation().head<2>() = job[0].to;
+  EXPECT_EQ(takenUp(began.at(Phase::Lift)), Phase::Lower);
+  scene.pose.translation().z() = resting.translation().z() + 0.003;  // off the board no longer
+  EXPECT_EQ(takenUp(began.at(Phase::Lift)), Phase::Open);
+  scene.pose.translation().z() = resting.translation().z();
+  EXPECT_EQ(takenUp(began.at(Phase::Lift)), Phase::Done) << "its one ring is on its target post";
+
+  // While the state shows the step it is in, the routine goes on as it was: its waits count.
+  scene.pose = resting;
+  scenario::ArmRoutine steady(raven::Arm::Left, profile, layout, job);
+  target = profile.home;
+  int steps = 0;
+  for (; steps < 20000 && steady.phase() != Phase::Lift; ++steps) {
+    steady.resume(target, scene);
+    target = steady.next(target, target, scene);
+  }
+  EXPECT_EQ(steady.phase(), Phase::Lift) << "resumed at every step, it still reaches the lift";
 }
 
 }  // namespace

@@ -40,6 +40,13 @@ class ArmRoutine {
   /// the operator watches the tool and makes the difference up before closing the jaws.
   raven::ArmJoints next(const raven::ArmJoints& target, const raven::ArmJoints& measured,
                         const bridge::ScenePerception& scene);
+  /// Takes up the task from what `scene` shows and the arm's `target` (its current command), as
+  /// an operator handed the pad mid-task would: the first ring not on its target post, and the
+  /// step of its transfer the tool, the jaws and the ring show (getting to the grasp, gripping,
+  /// carrying, letting go). While that is the step the routine is in, it goes on as it was (its
+  /// waits keep counting); otherwise it starts that step afresh. So where someone else drove
+  /// (a policy in DAgger), next() answers from the state reached, not from the routine's past.
+  void resume(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
   bool done() const { return phase_ == Phase::Done; }
   Phase phase() const { return phase_; }
   raven::Arm arm() const { return arm_; }
@@ -107,6 +114,10 @@ class ArmRoutine {
   raven::ArmJoints carry(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
   raven::ArmJoints lower(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
   raven::ArmJoints retreat(const raven::ArmJoints& target);
+  /// The phase `resume` takes up the current job in, planning its grasp unless it is
+  /// `planned`; sets retrying_.
+  Phase phaseShown(const raven::ArmJoints& target, const bridge::ScenePerception& scene,
+                   bool planned);
   /// The debug line of a phase change of job `job`, the tool at `q`.
   void logTransition(Phase before, std::size_t job, const raven::ArmJoints& q,
                      const bridge::ScenePerception& scene) const;

@@ -93,7 +93,9 @@ class PegTransferEnv {
   PegTransferStep step(const recording::GamepadState& pad);
   /// What the main job's scripted operator would command next, as an action of the options'
   /// kind (call once per step: it keeps its own progress); the targets held once it is done.
-  Eigen::VectorXd expertAction();
+  /// `from_state`: the operator first takes up the task from the state reached
+  /// (ArmRoutine::resume), for steps someone else decided (DAgger's labels).
+  Eigen::VectorXd expertAction(bool from_state = false);
 
   /// The episode's state between steps: the twin's (TwinPlatform::saveState), the controller's,
   /// the expert's progress and the episode's count. The same actions after a restore give the
