@@ -233,8 +233,8 @@ def dagger(args):
 
     f, data = demos.open_demos(args.collect, kwargs, "DAgger", mode="a")
     # The policy steers: the operator answers from the state it reached, not from its own plan.
-    placed = collect(env, SteppedExpert(env, from_state=True), args.seeds[:args.episodes], drive,
-                     data,
+    expert = SteppedExpert(env, from_state=True)
+    placed = collect(env, expert, args.seeds[:args.episodes], drive, data,
                      f"DAgger: {args.policy} driving, beta {args.beta}", args.max_steps, policy)
     f.close()
     print(f"the policy (beta {args.beta}) placed {placed}/{6 * args.episodes}; the expert's "

@@ -79,7 +79,7 @@ RingView ArmRoutine::ring(const bridge::ScenePerception& scene) const {
   return RingView(scene.sight(jobs_[job_].ring), layout_.ring);
 }
 
-void ArmRoutine::plan(const RingView& seen, const Eigen::Vector2d& toward) {
+ArmRoutine::Grasp ArmRoutine::graspOn(const RingView& seen, const Eigen::Vector2d& toward) const {
   const Eigen::Vector2d centre = seen.centre().head<2>();
   // The station: the tube's centre line on that side.
   const Eigen::Vector3d station = seen.stationToward(toward);
@@ -87,12 +87,14 @@ void ArmRoutine::plan(const RingView& seen, const Eigen::Vector2d& toward) {
   // Jaws down; jaw 1 (the inner one) swings towards grasp_scale's side of the tool's y axis.
   const double side = profile_.arm(arm_).grasp_scale > 0 ? 1.0 : -1.0;
   const Eigen::Vector3d x(0, 0, -1), y = side * Eigen::Vector3d(inward.x(), inward.y(), 0);
-  grasp_.orientation.col(0) = x;
-  grasp_.orientation.col(1) = y;
-  grasp_.orientation.col(2) = x.cross(y);
+  Grasp grasp;
+  grasp.orientation.col(0) = x;
+  grasp.orientation.col(1) = y;
+  grasp.orientation.col(2) = x.cross(y);
   const Eigen::Vector2d face = station.head<2>() + inward * (layout_.ring.tube_half_width + kGap);
-  grasp_.pivot = Eigen::Vector3d(face.x(), face.y(), seen.top() + kAboveTop);
-  grasp_.offset = face - centre;
+  grasp.pivot = Eigen::Vector3d(face.x(), face.y(), seen.top() + kAboveTop);
+  grasp.offset = face - centre;
+  return grasp;
 }
 
 Eigen::Vector2d ArmRoutine::graspSide(const RingView& seen) const {
@@ -269,29 +271,13 @@ raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
 
 namespace {
 
-/// The steps of a transfer an onlooker tells apart: getting over the grasp, gripping (at the
-/// grasp, closing, lifting), carrying, letting go. Within one, only the routine's own memory
-/// (its waits) says where it is.
+/// Per phase, the step of a transfer an onlooker tells apart: getting over the grasp (0),
+/// gripping (1: at the grasp, closing, lifting), carrying (2), letting go (3), done (4). Within
+/// one, only the routine's own memory (its waits) says where it is.
+constexpr std::array<int, 11> kStage{0, 0, 1, 1, 1, 2, 2, 3, 3, 3, 4};
+
 int stageOf(Phase phase) {
-  switch (phase) {
-    case Phase::Orient:
-    case Phase::Descend:
-      return 0;
-    case Phase::Align:
-    case Phase::Close:
-    case Phase::Lift:
-      return 1;
-    case Phase::Carry:
-    case Phase::Lower:
-      return 2;
-    case Phase::Open:
-    case Phase::Settle:
-    case Phase::Retreat:
-      return 3;
-    case Phase::Done:
-      break;
-  }
-  return 4;
+  return kStage[static_cast<std::size_t>(phase)];
 }
 
 }  // namespace
@@ -309,56 +295,55 @@ void ArmRoutine::resume(const raven::ArmJoints& target, const bridge::ScenePerce
   }
   // The same ring past its orientation: its grasp stays where it was planned.
   const bool planned = job == job_ && phase_ != Phase::Orient && phase_ != Phase::Done;
-  const Phase was = phase_;
-  const Grasp grasp = grasp_;
-  const bool retrying = retrying_;
   job_ = job;
-  const Phase shown = phaseShown(target, scene, planned);
+  const TakenUp shown = shownStep(target, scene, planned);
   // The state shows the step it is in or the one it moves on to by itself, or it is letting
-  // go to grasp again (its own judgement of what it saw): as it was, its plan and its waits.
-  const int stage = stageOf(was), shown_stage = stageOf(shown);
-  const bool regrasping = retrying && stage == stageOf(Phase::Open);
-  if (planned && (shown_stage == stage || shown_stage == stage + 1 || regrasping)) {
-    grasp_ = grasp;
-    retrying_ = retrying;
-    return;
-  }
+  // go to grasp again (its own judgement of what it saw): it goes on as it was.
+  const int stage = stageOf(phase_), shown_stage = stageOf(shown.phase);
+  const bool regrasping = retrying_ && stage == stageOf(Phase::Open);
+  if (planned && (shown_stage == stage || shown_stage == stage + 1 || regrasping)) return;
+  spdlog::debug("{} arm: takes up {} at {} (it was at {})", raven::armName(arm_), jobs_[job_].ring,
+                phaseName(shown.phase), phaseName(phase_));
+  grasp_ = shown.grasp;
+  retrying_ = shown.retrying;
   inner_ = target(raven::kJaw1);
   outer_ = target(raven::kJaw2);
-  spdlog::debug("{} arm: takes up {} at {} (it was at {})", raven::armName(arm_), jobs_[job_].ring,
-                phaseName(shown), phaseName(was));
-  advance(shown);
+  advance(shown.phase);
 }
 
-Phase ArmRoutine::phaseShown(const raven::ArmJoints& target, const bridge::ScenePerception& scene,
-                             bool planned) {
+ArmRoutine::TakenUp ArmRoutine::shownStep(const raven::ArmJoints& target,
+                                          const bridge::ScenePerception& scene,
+                                          bool planned) const {
   const RingView seen = ring(scene);
   const RingJob& job = jobs_[job_];
   const Eigen::Vector3d tool = kinematics_.toolPose(target).translation();
-  retrying_ = false;
   const bool jaws_open = target(raven::kJaw2) >= kOpen - kJawStep;
+  TakenUp out{Phase::Orient, grasp_, false};
   if (!jaws_open && ringFollows(scene)) {  // in the jaws: carried from where it hangs
-    grasp_.pivot.z() = layout_.geometry.board_top + 2.0 * layout_.ring.half_height + kAboveTop;
-    grasp_.offset = grasp_.lifted_offset = tool.head<2>() - seen.centre().head<2>();
-    return (seen.centre().head<2>() - job.to).norm() < kCentred ? Phase::Lower : Phase::Carry;
+    out.grasp.pivot.z() = layout_.geometry.board_top + 2.0 * layout_.ring.half_height + kAboveTop;
+    out.grasp.offset = out.grasp.lifted_offset = tool.head<2>() - seen.centre().head<2>();
+    out.phase = (seen.centre().head<2>() - job.to).norm() < kCentred ? Phase::Lower : Phase::Carry;
+    return out;
   }
-  if (!planned) plan(seen, regrasps_[job_] > 0 ? graspSide(seen) : kAwayFromTargets);
+  if (!planned) out.grasp = graspOn(seen, regrasps_[job_] > 0 ? graspSide(seen) : kAwayFromTargets);
   // An onlooker's tolerances: twice what the routine itself allows (its own corrections and
   // what another driver adds to the commands).
   const double near = 2.0 * kAlignReach;
-  const Eigen::Vector3d from_grasp = tool - grasp_.pivot;
-  const bool over_grasp = from_grasp.head<2>().norm() <= near;
-  if (!jaws_open && seen.threadedOn(job.to)) return Phase::Open;  // lowered: let it go
-  const bool over_and_low = over_grasp && from_grasp.z() >= -near;
-  if (jaws_open && over_and_low && from_grasp.z() <= kApproach + kStep) {
-    return from_grasp.norm() <= near ? Phase::Align : Phase::Descend;
-  }
-  if (!jaws_open && over_and_low && from_grasp.z() <= kLift + kStep) {
-    return from_grasp.norm() <= near ? Phase::Close : Phase::Lift;  // gripping
-  }
-  if (from_grasp.z() >= kRetreat - near) return Phase::Orient;  // high: over the ring from there
-  retrying_ = true;  // low beside the ring, or jaws shut on nothing: up first, then over it
-  return jaws_open ? Phase::Retreat : Phase::Open;
+  const Eigen::Vector3d from_grasp = tool - out.grasp.pivot;
+  const bool over_and_low = from_grasp.head<2>().norm() <= near && from_grasp.z() >= -near;
+  const bool at_grasp = from_grasp.norm() <= near;
+  if (!jaws_open && seen.threadedOn(job.to)) {
+    out.phase = Phase::Open;  // lowered: let it go
+  } else if (jaws_open && over_and_low && from_grasp.z() <= kApproach + kStep) {
+    out.phase = at_grasp ? Phase::Align : Phase::Descend;
+  } else if (!jaws_open && over_and_low && from_grasp.z() <= kLift + kStep) {
+    out.phase = at_grasp ? Phase::Close : Phase::Lift;  // gripping
+  } else if (from_grasp.z() < kRetreat - near) {
+    // Low beside the ring, or jaws shut on nothing: up first, then over it.
+    out.phase = jaws_open ? Phase::Retreat : Phase::Open;
+    out.retrying = true;
+  }  // else high: over the ring from there (Orient)
+  return out;
 }
 
 raven::ArmJoints ArmRoutine::orient(const raven::ArmJoints& target,
@@ -376,7 +361,7 @@ raven::ArmJoints ArmRoutine::orient(const raven::ArmJoints& target,
       regrasps_[job_] > 0 && roomiest != kAwayFromTargets)
     sides.insert(sides.begin(), roomiest);
   for (const Eigen::Vector2d& side : sides) {
-    plan(seen, side);
+    grasp_ = graspOn(seen, side);
     if (const auto above = overRing(target)) {
       advance(Phase::Descend);
       return *above;

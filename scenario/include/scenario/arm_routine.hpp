@@ -81,7 +81,7 @@ class ArmRoutine {
   /// The current job's ring as `scene` sees it.
   RingView ring(const bridge::ScenePerception& scene) const;
   /// The grasp of the current job on `seen`'s side `toward` (a horizontal direction).
-  void plan(const RingView& seen, const Eigen::Vector2d& toward);
+  Grasp graspOn(const RingView& seen, const Eigen::Vector2d& toward) const;
   /// The horizontal direction from the ring's centre to the side its grasp takes: the one with
   /// the most room between the tube and the post the ring is on.
   Eigen::Vector2d graspSide(const RingView& seen) const;
@@ -114,10 +114,15 @@ class ArmRoutine {
   raven::ArmJoints carry(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
   raven::ArmJoints lower(const raven::ArmJoints& target, const bridge::ScenePerception& scene);
   raven::ArmJoints retreat(const raven::ArmJoints& target);
-  /// The phase `resume` takes up the current job in, planning its grasp unless it is
-  /// `planned`; sets retrying_.
-  Phase phaseShown(const raven::ArmJoints& target, const bridge::ScenePerception& scene,
-                   bool planned);
+  /// What `resume` would take the current job up with: the phase the state shows, the grasp
+  /// (planned anew unless `planned`) and whether the job starts again after it.
+  struct TakenUp {
+    Phase phase;
+    Grasp grasp;
+    bool retrying;
+  };
+  TakenUp shownStep(const raven::ArmJoints& target, const bridge::ScenePerception& scene,
+                    bool planned) const;
   /// The debug line of a phase change of job `job`, the tool at `q`.
   void logTransition(Phase before, std::size_t job, const raven::ArmJoints& q,
                      const bridge::ScenePerception& scene) const;
