@@ -20,6 +20,15 @@ YAML::Node shape(const std::string& name, const std::string& type, YAML::Node ge
   return n;
 }
 
+/// A plate of `size` whose top is the board's frame.
+YAML::Node plateOf(const Eigen::Vector3d& size) {
+  YAML::Node plate;
+  plate["x"] = number(size.x());
+  plate["y"] = number(size.y());
+  plate["z"] = number(size.z());
+  return shape("plate", "BOX", plate, {0, 0, -size.z() / 2});
+}
+
 }  // namespace
 
 void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
@@ -40,22 +49,21 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
   friction["static"] = number(0.6);
   friction["rolling"] = number(0.0);
   b["friction"] = flow(friction);
-  YAML::Node plate;
-  plate["x"] = number(d.board_size.x());
-  plate["y"] = number(d.board_size.y());
-  plate["z"] = number(d.board_size.z());
+  // Seen: the board and its posts; collided with: the same on the table's depth of solid.
   b["compound collision shape"].push_back(
-      shape("plate", "BOX", plate, {0, 0, -d.board_size.z() / 2}));
+      plateOf(d.board_size + Eigen::Vector3d(0.0, 0.0, d.table_depth)));
+  b["compound shape"].push_back(plateOf(d.board_size));
   for (std::size_t i = 0; i < d.posts.size(); ++i) {
     YAML::Node cylinder;
     cylinder["radius"] = number(d.post_radius);
     cylinder["height"] = number(d.post_height);
     cylinder["axis"] = "Z";
     const Eigen::Vector2d at = d.posts[i] - d.board_centre;
-    b["compound collision shape"].push_back(shape("post" + std::to_string(i + 1), "CYLINDER",
-                                                  cylinder, {at.x(), at.y(), d.post_height / 2}));
+    const YAML::Node post = shape("post" + std::to_string(i + 1), "CYLINDER", cylinder,
+                                  {at.x(), at.y(), d.post_height / 2});
+    b["compound collision shape"].push_back(post);
+    b["compound shape"].push_back(YAML::Clone(post));
   }
-  b["compound shape"] = YAML::Clone(b["compound collision shape"]);
   board["BODY peg_board"] = b;
   writeYaml(board, "Peg board with twelve posts" + note, dir / "peg_board.yaml");
 

@@ -14,6 +14,12 @@ namespace raven::design {
 struct PegSceneDesign {
   double board_top = -0.205;  ///< z of the board surface in {B} (m)
   Eigen::Vector3d board_size{0.90, 0.12, 0.01};
+  /// The table under the board, solid below it for collisions only: Bullet tests a soft body's
+  /// node against a solid once a step, and pushes one past the solid's mid-plane out by its far
+  /// side, so a node faster than half the depth per 1 ms step passes through. The 10 mm board
+  /// alone lets through a ring falling at 6 m/s (a ring snapping free of a post it was pulled
+  /// against reaches that); with the table 25 m/s.
+  double table_depth = 0.04;
   Eigen::Vector2d board_centre{0.0, 0.08};
   double post_radius = 0.0025;
   double post_height = 0.022;
