@@ -424,13 +424,13 @@ TEST(Twin, AmbfsOwnRavenIsDrivableThroughTheSameArmLayer) {
 TEST(Twin, ARingThrownAtTheBoardFasterThanARingSnapsStaysOnIt) {
   // Bullet tests a soft body's node against a solid once a step and pushes one past the solid's
   // mid-plane out by its far side: the board and the table under it (depth d) stop a node moving
-  // under d / 2 per 1 ms step. A ring snapping free of a post reached 6 m/s, which passed the
-  // 10 mm board alone.
+  // under d / 2 per step. A ring snapping free of a post reached 6 m/s, which passed the 10 mm
+  // board alone.
   const raven::design::PegSceneDesign design;
-  const double solid = design.board_size.z() + design.table_depth;
-  const double speed = 0.8 * (solid / 2) / 0.001;
-  ASSERT_GT(speed, 6.0);
   Twin twin(kModels / "peg_transfer/launch.yaml");
+  const double solid = design.board_size.z() + design.table_depth;
+  const double speed = 0.8 * (solid / 2) / twin.world.stepSize();
+  ASSERT_GT(speed, 6.0);
   for (Arm arm : raven::kArms) twin.arms.command(arm, test_support::physicalProfile().home);
   twin.world.step(500);
   ambf_like::SoftBody& ring = twin.world.softBody(0);
