@@ -20,13 +20,13 @@ YAML::Node shape(const std::string& name, const std::string& type, YAML::Node ge
   return n;
 }
 
-/// A plate of `size` whose top is the board's frame.
-YAML::Node plateOf(const Eigen::Vector3d& size) {
+/// A box of `size` whose top is `top` below the board's frame.
+YAML::Node plateOf(const std::string& name, const Eigen::Vector3d& size, double top = 0.0) {
   YAML::Node plate;
   plate["x"] = number(size.x());
   plate["y"] = number(size.y());
   plate["z"] = number(size.z());
-  return shape("plate", "BOX", plate, {0, 0, -size.z() / 2});
+  return shape(name, "BOX", plate, {0, 0, -top - size.z() / 2});
 }
 
 }  // namespace
@@ -49,10 +49,12 @@ void writePegScene(const PegSceneDesign& d, const std::filesystem::path& dir) {
   friction["static"] = number(0.6);
   friction["rolling"] = number(0.0);
   b["friction"] = flow(friction);
-  // Seen: the board and its posts; collided with: the same on the table's depth of solid.
+  // Seen: the board and its posts; collided with: the same on the table's depth of solid, and
+  // the floor.
   b["compound collision shape"].push_back(
-      plateOf(d.board_size + Eigen::Vector3d(0.0, 0.0, d.table_depth)));
-  b["compound shape"].push_back(plateOf(d.board_size));
+      plateOf("plate", d.board_size + Eigen::Vector3d(0.0, 0.0, d.table_depth)));
+  b["compound collision shape"].push_back(plateOf("floor", d.floor_size, d.floor_below_board));
+  b["compound shape"].push_back(plateOf("plate", d.board_size));
   for (std::size_t i = 0; i < d.posts.size(); ++i) {
     YAML::Node cylinder;
     cylinder["radius"] = number(d.post_radius);

@@ -444,4 +444,23 @@ TEST(Twin, ARingThrownAtTheBoardFasterThanARingSnapsStaysOnIt) {
   EXPECT_GT(ring.centerOfMass().z(), design.board_top) << "the ring came to rest on the board";
 }
 
+TEST(Twin, ARingDroppedOffTheBoardsEdgeComesToRestOnTheFloor) {
+  // A ring let go beyond the board's front edge falls to the floor, a table's height lower, and
+  // rests there instead of falling until the world's guard ends the run.
+  const raven::design::PegSceneDesign design;
+  Twin twin(kModels / "peg_transfer/launch.yaml");
+  for (Arm arm : raven::kArms) twin.arms.command(arm, test_support::physicalProfile().home);
+  twin.world.step(500);
+  ambf_like::SoftBody& ring = twin.world.softBody(0);
+  const double front_edge = design.board_centre.y() - design.board_size.y() / 2;
+  const double beyond = front_edge - 2.0 * design.ring_major_radius - ring.centerOfMass().y();
+  ring.bullet().translate(btVector3(0.0, beyond, 0.02));
+  twin.world.step(1500);
+  const double floor = design.board_top - design.floor_below_board;
+  double lowest = ring.centerOfMass().z();
+  for (const auto& p : ring.nodePositions()) lowest = std::min(lowest, p.z());
+  EXPECT_NEAR(lowest, floor, 0.002) << "the ring's lowest node against the floor";
+  EXPECT_LT(ring.centerOfMass().y(), front_edge) << "the ring fell in front of the board";
+}
+
 }  // namespace

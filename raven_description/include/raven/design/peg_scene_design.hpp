@@ -20,6 +20,11 @@ struct PegSceneDesign {
   /// alone lets through a ring falling at 6 m/s (a ring snapping free of a post it was pulled
   /// against reaches that); with the table 25 m/s.
   double table_depth = 0.04;
+  /// The room's floor, a table's height under the board's top, for collisions only: a ring carried
+  /// off the board's edge lands there instead of falling without end. The table cannot reach past
+  /// the board: the arms' elbow links hang below the board's top in front of it.
+  double floor_below_board = 0.75;
+  Eigen::Vector3d floor_size{4.0, 4.0, 0.1};
   Eigen::Vector2d board_centre{0.0, 0.08};
   double post_radius = 0.0025;
   double post_height = 0.022;
