@@ -39,19 +39,23 @@ ArmPair DualPlatformController::measured(const PlatformSlot& slot) const {
   return measuredOf(*slot.platform);
 }
 
-bool DualPlatformController::heldBack(const ArmPair& goal) const {
+bool DualPlatformController::holdAtFollowingLimit(InterpolationPlan& plan, int done) const {
   const bridge::RavenPlatform& robot = *platforms_.front().platform;
+  const ArmPair now = plan.at(done);
+  bool held = false;
   for (Arm arm : raven::kArms) {
+    const auto a = raven::slot(arm);
     const raven::ArmJoints setpoint = robot.setpointJs(arm).position;
     const raven::ArmJoints lead = setpoint - robot.measuredJs(arm).position;
-    const raven::ArmJoints onward = goal[raven::slot(arm)] - setpoint;
     for (int i = 0; i < raven::kJointCount; ++i) {
-      if (std::abs(lead(i)) > (*options_.following_limit)(i) && lead(i) * onward(i) > 0.0) {
-        return true;
+      if (std::abs(lead(i)) > (*options_.following_limit)(i) && lead(i) * plan.delta[a](i) > 0.0) {
+        plan.start[a](i) = now[a](i);
+        plan.delta[a](i) = 0.0;
+        held = true;
       }
     }
   }
-  return false;
+  return held;
 }
 
 void DualPlatformController::readPose() {
@@ -106,18 +110,19 @@ int DualPlatformController::cyclesPerPeriod() const {
 }
 
 IterationReport DualPlatformController::execute(const ArmPair& next, int most,
-                                                const std::function<bool()>& stop,
-                                                const std::function<bool()>& hold) {
+                                                const std::function<bool()>& stop, bool following) {
   const double lead = std::min(since_command_ / period(), 1.0);
-  const InterpolationPlan plan = planMove(commanded_, next, options_.caps, period(), lead);
+  InterpolationPlan plan = planMove(commanded_, next, options_.caps, period(), lead);
   IterationReport report;
   report.capped = plan.steps > options_.caps.min_steps;
   report.steps = std::min(plan.commands(), most);
   for (int k = 1; k <= report.steps; ++k) {
-    if (hold && hold()) {
+    if (following && holdAtFollowingLimit(plan, k - 1)) {
       report.held_back = true;
-      report.steps = k - 1;
-      break;
+      if ((plan.delta[0].array() == 0.0).all() && (plan.delta[1].array() == 0.0).all()) {
+        report.steps = k - 1;
+        break;
+      }
     }
     send(plan, k, report);
     if (waitPeriod(stop, k == report.steps)) {
@@ -125,7 +130,7 @@ IterationReport DualPlatformController::execute(const ArmPair& next, int most,
       report.steps = k;
     }
   }
-  if (report.steps == plan.commands()) {
+  if (report.steps == plan.commands() && !report.held_back) {
     commanded_ = next;
   } else if (report.steps > 0) {
     commanded_ = plan.at(report.steps);
@@ -203,9 +208,7 @@ IterationReport DualPlatformController::scriptedMove(const ArmPair& joints, int 
   ArmPair next = joints;
   IterationReport clamp_report;
   clamp(next, clamp_report);
-  IterationReport report = options_.following_limit
-                               ? execute(next, most, {}, [this, &next] { return heldBack(next); })
-                               : execute(next, most);
+  IterationReport report = execute(next, most, {}, options_.following_limit.has_value());
   // Held back before its first command, the move still lasts a period: the arm settles.
   if (report.steps == 0 && report.held_back) {
     idle();

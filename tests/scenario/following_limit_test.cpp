@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "scenario/env_action.hpp"
+#include "scenario/observation_layout.hpp"
 #include "scenario/peg_transfer.hpp"
 #include "scenario/peg_transfer_env.hpp"
 #include "scenario/scripted_session.hpp"
@@ -61,6 +62,31 @@ TEST(FollowingLimit, AStepIntoTheBoardIsHeldBackAndTheRobotStaysEnabled) {
   EXPECT_GT(env.twin().measuredJs(Arm::Left).position(raven::kInsertion), kDeep + 0.02);
   EXPECT_LT(worst, scenario::followingLimit()(raven::kInsertion) + 0.001);
   EXPECT_GT(worst, 0.5 * scenario::followingLimit()(raven::kInsertion));
+}
+
+TEST(FollowingLimit, AJointHeldBackHoldsOnlyItself) {
+  scenario::PegTransferEnv env;  // the motor-level twin
+  env.reset(1);
+  controller::ArmPair target = intoTheBoard(env.twin());
+  Eigen::VectorXd action(14);
+  action << target[0], target[1];
+  for (int step = 0; step < 50; ++step) ASSERT_FALSE(env.step(action).faulted) << "step " << step;
+  // Still pressing the left tool into the board, and now turning the right shoulder and opening
+  // the left jaws: those reach their targets, the insertion stays held.
+  target[1](raven::kShoulder) += 0.05;
+  target[0](raven::kJaw2) += 0.1;
+  action << target[0], target[1];
+  const scenario::PegTransferStep s = env.step(action);
+  ASSERT_FALSE(s.faulted);
+  const auto targets = [&](Arm arm) {
+    return s.observation.segment<raven::kJointCount>(
+        scenario::observation::item(scenario::observation::kTargets, raven::slot(arm)).start);
+  };
+  EXPECT_DOUBLE_EQ(targets(Arm::Right)(raven::kShoulder), target[1](raven::kShoulder));
+  EXPECT_DOUBLE_EQ(targets(Arm::Left)(raven::kJaw2), target[0](raven::kJaw2));
+  EXPECT_GT(targets(Arm::Left)(raven::kInsertion), kDeep + 0.02) << "the held insertion's target ran on";
+  EXPECT_LT(std::abs(insertionLead(env.twin())),
+            scenario::followingLimit()(raven::kInsertion) + 0.001);
 }
 
 }  // namespace

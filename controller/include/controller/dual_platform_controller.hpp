@@ -42,7 +42,8 @@ struct ControllerOptions {
   double iteration_overhead = 0.0;
   /// Scripted moves (moveTo, moveFor) stop advancing a joint's way once the reference robot's
   /// setpoint leads its measured position by more than this, per joint (an arm held back by
-  /// contact is not pushed on until its amplifiers e-stop); moves that take the lead back go on.
+  /// contact is not pushed on until its amplifiers e-stop); moves that take the lead back, and
+  /// the other joints of both arms, go on.
   /// None: they never stop (the paper's controller).
   std::optional<raven::ArmJoints> following_limit;
 };
@@ -53,7 +54,7 @@ struct IterationReport {
   bool cut_short = false;   ///< a new pad reading ended a manual iteration early
   bool capped = false;      ///< the velocity caps stretched the move past man_steps
   bool clamped = false;     ///< a target hit a joint limit (the pad rumbles)
-  bool held_back = false;   ///< a scripted move stopped at the following limit
+  bool held_back = false;   ///< a joint of a scripted move stopped at the following limit
   std::size_t refused = 0;  ///< commands a platform refused
   std::string refusal;      ///< the first refusal's reason
 };
@@ -134,11 +135,11 @@ class DualPlatformController {
   /// C_V: moves every platform from the current targets to `next` in capped steps, at most
   /// `most` of them, ending early once `stop` says so after a step (the targets are then where
   /// the interpolation got to). A stop mid-period ends the period there.
-  /// `stop`: asked between cycles, ends the move there (cut short); `hold`: asked before each
-  /// command, ends the move before it (held back).
+  /// `stop`: asked between cycles, ends the move there (cut short); `following`: before each
+  /// command, the joints at the following limit stop there (held back), the others go on, and
+  /// the move ends once none is left to move.
   IterationReport execute(const ArmPair& next, int most = std::numeric_limits<int>::max(),
-                          const std::function<bool()>& stop = {},
-                          const std::function<bool()>& hold = {});
+                          const std::function<bool()>& stop = {}, bool following = false);
   /// Sends command k of `plan` to every platform.
   void send(const InterpolationPlan& plan, int k, IterationReport& report);
   /// One command period on every platform; with `stop`, in robot cycles, asking it after each
@@ -151,9 +152,10 @@ class DualPlatformController {
   /// moveTo / moveFor: clamped to the limits, at most `most` steps, the mapping following.
   IterationReport scriptedMove(const ArmPair& joints, int most);
   ArmPair measured(const PlatformSlot& slot) const;
-  /// The reference robot's setpoint leads its measured joints past the following limit in the
-  /// direction `goal` still lies.
-  bool heldBack(const ArmPair& goal) const;
+  /// Stops, from command `done` of `plan` on, each joint whose reference robot's setpoint leads
+  /// its measured position past the following limit in the direction the plan still moves it;
+  /// whether it stopped any.
+  bool holdAtFollowingLimit(InterpolationPlan& plan, int done) const;
   void clamp(ArmPair& joints, IterationReport& report) const;
 
   std::vector<PlatformSlot> platforms_;
