@@ -84,7 +84,8 @@ TEST(FollowingLimit, AJointHeldBackHoldsOnlyItself) {
   };
   EXPECT_DOUBLE_EQ(targets(Arm::Right)(raven::kShoulder), target[1](raven::kShoulder));
   EXPECT_DOUBLE_EQ(targets(Arm::Left)(raven::kJaw2), target[0](raven::kJaw2));
-  EXPECT_GT(targets(Arm::Left)(raven::kInsertion), kDeep + 0.02) << "the held insertion's target ran on";
+  EXPECT_GT(targets(Arm::Left)(raven::kInsertion), kDeep + 0.02)
+      << "the held insertion's target ran on";
   EXPECT_LT(std::abs(insertionLead(env.twin())),
             scenario::followingLimit()(raven::kInsertion) + 0.001);
 }
