@@ -119,7 +119,7 @@ IterationReport DualPlatformController::execute(const ArmPair& next, int most,
   for (int k = 1; k <= report.steps; ++k) {
     if (following && holdAtFollowingLimit(plan, k - 1)) {
       report.held_back = true;
-      if ((plan.delta[0].array() == 0.0).all() && (plan.delta[1].array() == 0.0).all()) {
+      if (plan.delta[0].isZero(0.0) && plan.delta[1].isZero(0.0)) {  // nothing left to move
         report.steps = k - 1;
         break;
       }
