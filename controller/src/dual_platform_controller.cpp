@@ -39,19 +39,34 @@ ArmPair DualPlatformController::measured(const PlatformSlot& slot) const {
   return measuredOf(*slot.platform);
 }
 
-bool DualPlatformController::holdAtFollowingLimit(InterpolationPlan& plan, int done) const {
+bool DualPlatformController::holdAtFollowingLimit(InterpolationPlan& plan, int done,
+                                                  ArmPair& jump) const {
   const bridge::RavenPlatform& robot = *platforms_.front().platform;
+  const FollowingLimit& limit = *options_.following_limit;
+  const std::optional<bridge::RavenStateSnapshot> state = robot.ravenState();
+  const raven::ArmJoints most_back = options_.caps.perStep(period());
   const ArmPair now = plan.at(done);
+  const ArmPair next = plan.at(done + 1);
   bool held = false;
   for (Arm arm : raven::kArms) {
     const auto a = raven::slot(arm);
-    const raven::ArmJoints setpoint = robot.setpointJs(arm).position;
-    const raven::ArmJoints lead = setpoint - robot.measuredJs(arm).position;
+    const raven::ArmJoints lead = robot.setpointJs(arm).position - robot.measuredJs(arm).position;
     for (int i = 0; i < raven::kJointCount; ++i) {
-      if (std::abs(lead(i)) > (*options_.following_limit)(i) && lead(i) * plan.delta[a](i) > 0.0) {
-        plan.start[a](i) = now[a](i);
+      const auto hold_at = [&](double position) {
+        plan.start[a](i) = position;
         plan.delta[a](i) = 0.0;
         held = true;
+      };
+      if (std::abs(lead(i)) > limit.lead(i) && lead(i) * plan.delta[a](i) > 0.0) hold_at(now[a](i));
+      if (!state) continue;
+      const double torque = state->tau[static_cast<std::size_t>(bridge::ravenStateIndex(arm, i))];
+      const double past = std::abs(torque) - limit.torque(i);
+      if (!(past > 0.0)) continue;
+      const double relieved =
+          now[a](i) - std::copysign(std::min(past * limit.give(i), most_back(i)), torque);
+      if ((next[a](i) - relieved) * torque > 0.0) {  // the move would push on past it
+        jump[a](i) = relieved - now[a](i);
+        hold_at(relieved);
       }
     }
   }
@@ -71,7 +86,8 @@ void DualPlatformController::clamp(ArmPair& joints, IterationReport& report) con
   }
 }
 
-void DualPlatformController::send(const InterpolationPlan& plan, int k, IterationReport& report) {
+void DualPlatformController::send(const InterpolationPlan& plan, int k, IterationReport& report,
+                                  const ArmPair& jump) {
   const ArmPair positions = plan.at(k);
   const ArmPair increment = plan.increment(k);
   for (const PlatformSlot& slot : platforms_) {
@@ -79,7 +95,7 @@ void DualPlatformController::send(const InterpolationPlan& plan, int k, Iteratio
       const auto a = raven::slot(arm);
       const bridge::PlatformCommand command =
           slot.style == CommandStyle::ServoJr
-              ? bridge::PlatformCommand{bridge::ServoJr{arm, increment[a]}}
+              ? bridge::PlatformCommand{bridge::ServoJr{arm, increment[a] + jump[a]}}
               : bridge::PlatformCommand{bridge::ServoJp{arm, positions[a]}};
       const bridge::CommandResult result = slot.platform->send(command);
       if (!result) {
@@ -117,14 +133,16 @@ IterationReport DualPlatformController::execute(const ArmPair& next, int most,
   report.capped = plan.steps > options_.caps.min_steps;
   report.steps = std::min(plan.commands(), most);
   for (int k = 1; k <= report.steps; ++k) {
-    if (following && holdAtFollowingLimit(plan, k - 1)) {
+    ArmPair jump{raven::ArmJoints::Zero(), raven::ArmJoints::Zero()};
+    if (following && holdAtFollowingLimit(plan, k - 1, jump)) {
       report.held_back = true;
-      if (plan.delta[0].isZero(0.0) && plan.delta[1].isZero(0.0)) {  // nothing left to move
+      const auto still = [](const ArmPair& p) { return p[0].isZero(0.0) && p[1].isZero(0.0); };
+      if (still(plan.delta) && still(jump)) {  // nothing left to move
         report.steps = k - 1;
         break;
       }
     }
-    send(plan, k, report);
+    send(plan, k, report, jump);
     if (waitPeriod(stop, k == report.steps)) {
       report.cut_short = k < plan.commands();
       report.steps = k;
@@ -221,13 +239,18 @@ IterationReport DualPlatformController::scriptedMove(const ArmPair& joints, int 
 
 IterationReport DualPlatformController::moveFor(const ArmPair& joints, int steps) {
   IterationReport report = scriptedMove(joints, steps);
-  for (int k = report.steps; k < steps; ++k) idle();
+  for (int k = report.steps; k < steps; ++k) holdStill();
   report.steps = steps;
   return report;
 }
 
 void DualPlatformController::idle() {
   advanceAll(period());
+}
+
+void DualPlatformController::holdStill() {
+  const bool following = options_.following_limit.has_value();
+  if (!following || execute(commanded_, 1, {}, true).steps == 0) idle();
 }
 
 double DualPlatformController::divergence() const {

@@ -7,16 +7,25 @@
 
 namespace scenario {
 
-raven::ArmJoints followingLimit() {
-  constexpr double kOverdrive = 20000.0;       // counts
-  constexpr double kCountsPerTorque = 3695.8;  // RE40 axes, per N m
-  const auto half_of_overdrive = [&](double kp, double joint_per_motor) {
-    return 0.5 * kOverdrive / kCountsPerTorque / kp * joint_per_motor;
-  };
+controller::FollowingLimit followingLimit() {
+  constexpr double kOverdrive = 20000.0;  // DAC counts
   constexpr double kFree = std::numeric_limits<double>::infinity();
-  raven::ArmJoints limit;
-  limit << half_of_overdrive(0.30, 0.0073423), half_of_overdrive(0.30, 0.0082288),
-      half_of_overdrive(0.15, 0.00046327), kFree, kFree, kFree, kFree;
+  // Per joint: DAC counts per N m (RE40 axes, then the RE30 tool axes), KP (N m per motor rad)
+  // and the joint's motion per motor radian (1 / TR).
+  const raven::ArmJoints counts_per_torque =
+      (raven::ArmJoints() << 3695.8, 3695.8, 3695.8, 27328, 27328, 27328, 27328).finished();
+  const raven::ArmJoints kp =
+      (raven::ArmJoints() << 0.30, 0.30, 0.15, 0.09, 0.05, 0.05, 0.05).finished();
+  const raven::ArmJoints per_motor_radian = (raven::ArmJoints() << 0.0073423, 0.0082288, 0.00046327,
+                                             1.0 / 5.3952, 1.0 / 8.9920, 1.0 / 8.9920, 1.0 / 8.9920)
+                                                .finished();
+  const raven::ArmJoints half_of_overdrive = 0.5 * kOverdrive * counts_per_torque.cwiseInverse();
+  controller::FollowingLimit limit;
+  limit.give = per_motor_radian.cwiseQuotient(kp);
+  limit.lead << half_of_overdrive.head<3>().cwiseProduct(limit.give.head<3>()), kFree, kFree, kFree,
+      kFree;
+  // GRASP2's amplifier command is never checked (the robot's check stops before it): none.
+  limit.torque << kFree, kFree, kFree, half_of_overdrive.segment<3>(3), kFree;
   return limit;
 }
 

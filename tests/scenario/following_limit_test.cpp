@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "scenario/env_action.hpp"
 #include "scenario/observation_layout.hpp"
@@ -19,6 +20,19 @@ using raven::Arm;
 
 constexpr double kDeep = 0.23;  // m: the insertion's lower limit, the tool far into the board
 
+/// Both arms' measured joints with the left jaws commanded 0.1 rad past each other's faces (an
+/// opening of -0.2 rad: a grasp closed hard on nothing).
+controller::ArmPair jawsPastEachOther(const twin::TwinPlatform& twin) {
+  controller::ArmPair q{twin.measuredJs(Arm::Left).position, twin.measuredJs(Arm::Right).position};
+  q[0](raven::kJaw1) = q[0](raven::kJaw2) = -0.1;
+  return q;
+}
+
+double jaw1Torque(const twin::TwinPlatform& twin) {
+  return twin.ravenState()
+      ->tau[static_cast<std::size_t>(bridge::ravenStateIndex(Arm::Left, raven::kJaw1))];
+}
+
 /// Both arms' measured joints with the left insertion at kDeep.
 controller::ArmPair intoTheBoard(const twin::TwinPlatform& twin) {
   controller::ArmPair q{twin.measuredJs(Arm::Left).position, twin.measuredJs(Arm::Right).position};
@@ -31,11 +45,15 @@ double insertionLead(const twin::TwinPlatform& twin) {
          twin.measuredJs(Arm::Left).position(raven::kInsertion);
 }
 
-TEST(FollowingLimit, TheLimitsAreHalfTheErrorsThePositionLoopEStopsAt) {
-  const raven::ArmJoints limit = scenario::followingLimit();
-  EXPECT_NEAR(limit(raven::kShoulder), 0.5 * 20000 / 3695.8 / 0.30 * 0.0073423, 1e-12);
-  EXPECT_NEAR(limit(raven::kInsertion), 0.00836, 1e-5);
-  EXPECT_TRUE(std::isinf(limit(raven::kJaw1)));
+TEST(FollowingLimit, TheLimitsAreHalfOfWhatTheControlLawEStopsAt) {
+  const controller::FollowingLimit limit = scenario::followingLimit();
+  EXPECT_NEAR(limit.lead(raven::kShoulder), 0.5 * 20000 / 3695.8 / 0.30 * 0.0073423, 1e-12);
+  EXPECT_NEAR(limit.lead(raven::kInsertion), 0.00836, 1e-5);
+  EXPECT_TRUE(std::isinf(limit.lead(raven::kJaw1)));
+  EXPECT_NEAR(limit.torque(raven::kJaw1), 0.5 * 20000 / 27328.0, 1e-12);
+  EXPECT_NEAR(limit.give(raven::kJaw1), 1.0 / (0.05 * 8.992), 1e-12);
+  EXPECT_TRUE(std::isinf(limit.torque(raven::kInsertion)));
+  EXPECT_TRUE(std::isinf(limit.torque(raven::kJaw2))) << "GRASP2 is never checked";
 }
 
 TEST(FollowingLimit, WithoutItAnArmDrivenIntoTheBoardEStops) {
@@ -60,8 +78,8 @@ TEST(FollowingLimit, AStepIntoTheBoardIsHeldBackAndTheRobotStaysEnabled) {
   }
   // Blocked well short of the target, the lead stays at the limit (plus one command's share).
   EXPECT_GT(env.twin().measuredJs(Arm::Left).position(raven::kInsertion), kDeep + 0.02);
-  EXPECT_LT(worst, scenario::followingLimit()(raven::kInsertion) + 0.001);
-  EXPECT_GT(worst, 0.5 * scenario::followingLimit()(raven::kInsertion));
+  EXPECT_LT(worst, scenario::followingLimit().lead(raven::kInsertion) + 0.001);
+  EXPECT_GT(worst, 0.5 * scenario::followingLimit().lead(raven::kInsertion));
 }
 
 TEST(FollowingLimit, AJointHeldBackHoldsOnlyItself) {
@@ -87,7 +105,46 @@ TEST(FollowingLimit, AJointHeldBackHoldsOnlyItself) {
   EXPECT_GT(targets(Arm::Left)(raven::kInsertion), kDeep + 0.02)
       << "the held insertion's target ran on";
   EXPECT_LT(std::abs(insertionLead(env.twin())),
-            scenario::followingLimit()(raven::kInsertion) + 0.001);
+            scenario::followingLimit().lead(raven::kInsertion) + 0.001);
+}
+
+TEST(FollowingLimit, WithoutItJawsClosedOnEachOtherWindUpToTheEStop) {
+  scenario::ScriptedSession session(
+      scenario::pegTransferTwin(scenario::PegTransferOptions{}, scenario::SceneVariation{}));
+  session.makeReady(30.0);
+  controller::DualPlatformController& controller = session.controller();
+  controller.moveTo(jawsPastEachOther(session.twin()));
+  // jaw 1's integrator winds up by KI x 0.9 motor rad a second, to the overdrive in about 15 s.
+  for (int k = 0;
+       k < 20000 && session.twin().operatingStatus().state != bridge::OperatingState::Fault; ++k) {
+    controller.idle();
+  }
+  EXPECT_EQ(session.twin().operatingStatus().state, bridge::OperatingState::Fault);
+}
+
+TEST(FollowingLimit, JawsClosedOnEachOtherSqueezeAtTheTorqueLimitAndTheRobotStaysEnabled) {
+  scenario::PegTransferEnvOptions options;  // the motor-level twin
+  options.control = scenario::EnvControl::Period;
+  options.period = 0.5;
+  scenario::PegTransferEnv env(options);
+  env.reset(1);
+  const controller::ArmPair target = jawsPastEachOther(env.twin());
+  Eigen::VectorXd action(14);
+  action << target[0], target[1];
+  double worst = 0.0;
+  for (int step = 0; step < 80; ++step) {  // 40 s: past where the unguarded jaws e-stop
+    ASSERT_FALSE(env.step(action).faulted) << "step " << step;
+    worst = std::max(worst, std::abs(jaw1Torque(env.twin())));
+  }
+  const double limit = scenario::followingLimit().torque(raven::kJaw1);
+  std::printf("jaw 1's torque at most %.3f N m (limit %.3f)\n", worst, limit);
+  EXPECT_LT(worst, limit + 0.01);
+  EXPECT_GT(worst, limit - 0.01) << "it squeezes at the limit";
+  // Still squeezing: the jaws stay shut on each other, jaw 1's motor closing them at the limit
+  // (its integrator holds the torque; the setpoint has come back to the jaw).
+  const raven::ArmJoints q = env.twin().measuredJs(Arm::Left).position;
+  EXPECT_LT(std::abs(q(raven::kJaw1) + q(raven::kJaw2)), 0.01);
+  EXPECT_LT(jaw1Torque(env.twin()), -(limit - 0.01));
 }
 
 }  // namespace

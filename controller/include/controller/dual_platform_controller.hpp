@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bridge/raven_platform.hpp"
+#include "controller/following_limit.hpp"
 #include "controller/gamepad_mapping.hpp"
 #include "controller/velocity_cap.hpp"
 
@@ -40,12 +41,13 @@ struct ControllerOptions {
   /// controller; the paper's released controller took 1 ms (its recordings' rows are 2 ms per
   /// step + 1 ms apart), which replays of its recordings reproduce (raven_calibrate measures it).
   double iteration_overhead = 0.0;
-  /// Scripted moves (moveTo, moveFor) stop advancing a joint's way once the reference robot's
-  /// setpoint leads its measured position by more than this, per joint (an arm held back by
-  /// contact is not pushed on until its amplifiers e-stop); moves that take the lead back, and
-  /// the other joints of both arms, go on.
+  /// Scripted moves (moveTo, moveFor) keep to this, per joint: a joint whose reference robot's
+  /// setpoint leads its measured position past `lead` is not advanced further that way, and one
+  /// whose control-law torque is past `torque` is drawn back (an arm held back by contact is not
+  /// pushed on until its amplifiers e-stop); moves that take the lead back, and the other joints
+  /// of both arms, go on.
   /// None: they never stop (the paper's controller).
-  std::optional<raven::ArmJoints> following_limit;
+  std::optional<FollowingLimit> following_limit;
 };
 
 /// What one iteration did.
@@ -54,7 +56,7 @@ struct IterationReport {
   bool cut_short = false;   ///< a new pad reading ended a manual iteration early
   bool capped = false;      ///< the velocity caps stretched the move past man_steps
   bool clamped = false;     ///< a target hit a joint limit (the pad rumbles)
-  bool held_back = false;   ///< a joint of a scripted move stopped at the following limit
+  bool held_back = false;   ///< a joint of a scripted move held at the following limit
   std::size_t refused = 0;  ///< commands a platform refused
   std::string refusal;      ///< the first refusal's reason
 };
@@ -140,8 +142,8 @@ class DualPlatformController {
   /// the move ends once none is left to move.
   IterationReport execute(const ArmPair& next, int most = std::numeric_limits<int>::max(),
                           const std::function<bool()>& stop = {}, bool following = false);
-  /// Sends command k of `plan` to every platform.
-  void send(const InterpolationPlan& plan, int k, IterationReport& report);
+  /// Sends command k of `plan` to every platform, its increments moved by `jump`.
+  void send(const InterpolationPlan& plan, int k, IterationReport& report, const ArmPair& jump);
   /// One command period on every platform; with `stop`, in robot cycles, asking it after each
   /// (but the last of a `final` period): true when it said stop, the period cut there.
   bool waitPeriod(const std::function<bool()>& stop, bool final);
@@ -149,13 +151,17 @@ class DualPlatformController {
   int cyclesPerPeriod() const;
   /// Lets `seconds` pass on every platform.
   void advanceAll(double seconds);
+  /// One command period at the targets; under a following limit a joint past its torque's is
+  /// drawn back meanwhile.
+  void holdStill();
   /// moveTo / moveFor: clamped to the limits, at most `most` steps, the mapping following.
   IterationReport scriptedMove(const ArmPair& joints, int most);
   ArmPair measured(const PlatformSlot& slot) const;
-  /// Stops, from command `done` of `plan` on, each joint whose reference robot's setpoint leads
-  /// its measured position past the following limit in the direction the plan still moves it;
-  /// whether it stopped any.
-  bool holdAtFollowingLimit(InterpolationPlan& plan, int done) const;
+  /// From command `done` of `plan` on, stops each joint whose reference robot's setpoint leads
+  /// its measured position past the following limit in the direction the plan still moves it, and
+  /// holds each joint whose torque is past its limit drawn back (by `jump`, for the next command)
+  /// where the plan would push on; whether it held any.
+  bool holdAtFollowingLimit(InterpolationPlan& plan, int done, ArmPair& jump) const;
   void clamp(ArmPair& joints, IterationReport& report) const;
 
   std::vector<PlatformSlot> platforms_;

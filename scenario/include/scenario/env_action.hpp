@@ -8,6 +8,7 @@
 #include <array>
 #include <string_view>
 
+#include "controller/following_limit.hpp"
 #include "controller/velocity_cap.hpp"
 #include "raven/arm_kinematics.hpp"
 
@@ -27,13 +28,15 @@ EnvAction envActionNamed(std::string_view name);
 int actionSize(EnvAction kind);
 
 /// How far a step lets the robot's setpoint lead its measured joints where contact holds an arm
-/// back (controller::ControllerOptions::following_limit): per positioning joint half the following
-/// error at which the robot's position loop alone reaches its amplifiers' e-stop threshold
-/// (../shared/reference/raven2-actuation.md §3-4: |dac| 20000 counts, 3695.8 counts per N m, KP
-/// 0.30, 0.30, 0.15 N m per motor rad; 0.0073423 rad, 0.0082288 rad, 0.00046327 m of joint per
-/// motor rad): 0.066 rad, 0.074 rad, 8.4 mm. None on the tool's joints, whose integrators wind
-/// up whatever the lead.
-raven::ArmJoints followingLimit();
+/// back (controller::ControllerOptions::following_limit), from the robot's control law and its
+/// e-stop (../shared/reference/raven2-actuation.md §2.1, §3-4: |dac| 20000 counts; 3695.8 counts
+/// per N m on the RE40 axes, 27328 on the RE30 tool axes; KP 0.30, 0.30, 0.15, 0.09, 0.05, 0.05,
+/// 0.05 N m per motor rad): the positioning joints' lead at half the error at which their
+/// proportional loop alone reaches the threshold (0.066 rad, 0.074 rad, 8.4 mm); the roll's,
+/// wrist's and jaw 1's torque itself at half the threshold (0.366 N m), since their integrators
+/// wind up under any lasting lead (GRASP2's command is never checked: none); `give` is
+/// 1 / (KP x TR).
+controller::FollowingLimit followingLimit();
 
 /// Largest tool displacement per step (m).
 inline constexpr double kMaxToolDelta = 0.005;
