@@ -210,6 +210,13 @@ class PegTransferEnv(_Env):
         self.core.restore_state(state)
         return self._observe(self.core.observation)
 
+    @property
+    def twin(self):
+        """The episode's twin (raven_sim.Twin), valid until the next reset: what the robot itself
+        reports besides the observation, e.g. `twin.raven_state()` (its motors' Tau and DAC
+        counts) and `twin.measured_cf(raven_sim.Arm.LEFT)` (what the jaws push on)."""
+        return self.core.twin
+
     def expert_action(self, from_state=False):
         """The main job's scripted operator's next step as an action of this environment's kind
         (joint targets for "pad"; call once per step). `from_state`: the operator first takes

@@ -165,7 +165,12 @@ void bindEnvironment(py::module_& m) {
       .def_property_readonly("action_high", &E::actionHigh)
       .def_property_readonly("time", &E::time)
       .def_property_readonly("observation", &E::observation)
-      .def_property_readonly("placed", &E::placed);
+      .def_property_readonly("placed", &E::placed)
+      .def_property_readonly(
+          "twin", [](E& e) -> twin::TwinPlatform& { return e.twin(); },
+          py::return_value_policy::reference_internal,
+          "the episode's twin (raven_sim.Twin): its raven_state (Tau, DAC), measured_cf, ...; "
+          "valid until the next reset");
 }
 
 /// An episode's cameras: its named views rendered as arrays.

@@ -150,6 +150,24 @@ class PegTransferEnvironment(unittest.TestCase):
         self.assertEqual(info["refused"], 0)
         self.assertFalse(info["faulted"])  # no e-stop on the way
 
+    def test_the_twin_behind_the_episode_reports_its_motors_and_contacts(self):
+        env = raven_sim.PegTransferEnv()
+        with self.assertRaises(Exception):
+            env.twin  # no episode yet
+        observation, _ = env.reset(seed=0)
+        for _ in range(5):
+            observation = env.step(env.expert_action())[0]
+        twin = env.twin
+        state = twin.raven_state()
+        self.assertEqual(state.runlevel, 3)  # pedal down: the motors' control law runs
+        self.assertAlmostEqual(state.time, env.core.time, places=9)
+        left = twin.measured_js(raven_sim.Arm.LEFT).position
+        np.testing.assert_array_equal(left, observation[raven_sim.part("joints", 0)])
+        # The shoulder's motor holds the arm up: its Tau carries the gravity term (gold: |tau_g|
+        # 0.01-0.11 N m, ../shared/reference/raven2-actuation.md §3).
+        self.assertGreater(abs(state.tau[0]), 0.005)
+        self.assertIsNotNone(twin.measured_cf(raven_sim.Arm.RIGHT))
+
     def run_steps(self, env, seed, steps):
         observations = [env.reset(seed=seed)[0]]
         for _ in range(steps):
