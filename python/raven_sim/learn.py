@@ -13,6 +13,7 @@
         --out bc_rgb.pt
     python3 -m raven_sim.learn join --image-policy bc_rgb.pt --state-policy bc_state.pt \\
         --out bc_rgb.pt
+    python3 -m raven_sim.learn locate --policy bc_rgb.pt --demos held_out.hdf5
     python3 -m raven_sim.learn run --policy bc_rgb.pt --platform twin   # a raven_twin_node
 
 record: the main job's scripted operator on randomised scenes (one seed per episode), in small
@@ -38,6 +39,11 @@ dagger: one round of DAgger (Ross et al. 2011): the policy drives on new seeds (
 action instead with probability --beta) while the expert, taking up the task from each state
 the policy reached, labels it; the episodes join --collect, and train on all the files gives
 the next policy.
+
+locate: how well an image policy's ring locator sees the rings of recorded demonstrations (their
+task-camera images against the rings' recorded centres): the mean and 90th percentile error in
+mm, per file (record held-out episodes under the looks to check, e.g. --randomize
+scenario/ranges/looks.yaml).
 
 evaluate: the policy (state or image) on randomised scenes (--workers episodes side by side); its
 last line is
@@ -189,11 +195,18 @@ def train_image_policy(args):
     if not args.state_policy:
         sys.exit("train --obs rgb: --state-policy names the state policy that acts on the rings "
                  "the images show")
+    start = None
+    if args.init:  # go on training an image policy's locator
+        import torch
+        saved = torch.load(args.init)
+        if saved.get("kind") != IMAGE_POLICY:
+            sys.exit(f"train --obs rgb --init: {args.init} is not an image policy")
+        start = locator_of(saved)
     images, rings = load_locator_samples(args.demos)
     size = (images.shape[3], images.shape[2])
     print(f"{len(images)} arm images of {size[0]}x{size[1]}", flush=True)
     locator, error, seconds = fit_locator(images, rings, args.epochs, args.batch, args.lr,
-                                          args.seed)
+                                          args.seed, start=start)
     policy = ImagePolicy(locator, Policy.load(args.state_policy), size)
     policy.save(args.out, demos=args.demos, samples=len(images), seconds=seconds,
                 state_policy=args.state_policy, ring_error_mm=error)
@@ -211,6 +224,24 @@ def join(args):
     joined = ImagePolicy(locator_of(saved), Policy.load(args.state_policy), saved["image_size"])
     joined.save(args.out, state_policy=args.state_policy, locator_of=args.image_policy)
     print(f"the ring locator of {args.image_policy} with {args.state_policy}: {args.out}")
+
+
+def locate(args):
+    """The ring locator's error on each file's images, in mm."""
+    import torch
+    single_threaded()
+    saved = torch.load(args.policy)
+    if saved.get("kind") != IMAGE_POLICY:
+        sys.exit(f"locate: {args.policy} is not an image policy")
+    locator = locator_of(saved)
+    for path in args.demos:
+        images, rings = load_locator_samples([path])
+        with torch.no_grad():
+            seen = torch.cat([locator(torch.as_tensor(images[i:i + 256]))
+                              for i in range(0, len(images), 256)]).numpy()
+        errors = np.linalg.norm((seen - rings).reshape(-1, 3, 3), axis=2).ravel()
+        print(f"{path}: {len(errors)} rings in {len(images)} arm images: mean error "
+              f"{errors.mean():.2f} mm, 90 % within {np.percentile(errors, 90):.2f} mm")
 
 
 def single_threaded():
@@ -334,7 +365,8 @@ def main(argv=None):
     p.add_argument("--lr", type=float, default=2e-3)
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--threads", type=int, default=2, help="torch's CPU threads")
-    p.add_argument("--init", help="a policy to go on training (its network and scaling)")
+    p.add_argument("--init", help="a policy to go on training (its network and scaling; with "
+                   "--obs rgb an image policy, whose ring locator goes on training)")
     p.add_argument("--obs", choices=["state", "rgb"], default="state",
                    help="rgb: an image policy (vision.ImagePolicy): a ring locator trained on "
                         "the demos' task-camera images, acting through --state-policy "
@@ -346,6 +378,10 @@ def main(argv=None):
     p.add_argument("--state-policy", required=True, help="the state policy that acts")
     p.add_argument("--out", required=True)
     p.set_defaults(run=join)
+    p = sub.add_parser("locate", help="an image policy's ring error on recorded images")
+    p.add_argument("--policy", required=True, help="the image policy whose locator is measured")
+    p.add_argument("--demos", nargs="+", required=True, help="demonstrations with task images")
+    p.set_defaults(run=locate)
     p = sub.add_parser("dagger", help="a DAgger round: the policy drives, the expert labels")
     p.add_argument("--policy", required=True, help="the policy that drives")
     p.add_argument("--episodes", type=int, required=True)

@@ -131,6 +131,22 @@ class ImageDemonstrations(unittest.TestCase):
             with self.assertRaisesRegex(SystemExit, "not an image policy"):
                 learn.main(["join", "--image-policy", SHIPPED_STATE, "--state-policy", other,
                             "--out", joined])
+            # Its locator measured on recorded images, and trained on from where it is.
+            out = io.StringIO()
+            with contextlib.redirect_stdout(out):
+                learn.main(["locate", "--policy", policy, "--demos", demos])
+            self.assertRegex(out.getvalue(), r"images.hdf5: \d+ rings in \d+ arm images: mean "
+                                             r"error [\d.]+ mm, 90 % within [\d.]+ mm")
+            with self.assertRaisesRegex(SystemExit, "not an image policy"):
+                learn.main(["locate", "--policy", SHIPPED_STATE, "--demos", demos])
+            again = os.path.join(d, "again.pt")
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["train", "--obs", "rgb", "--demos", demos, "--state-policy",
+                            SHIPPED_STATE, "--init", policy, "--epochs", "1", "--batch", "8",
+                            "--lr", "1e-12", "--out", again])
+            for a, b in zip(vision.load_policy(again).locator.state_dict().values(),
+                            loaded.locator.state_dict().values()):
+                self.assertTrue(torch.allclose(a.float(), b.float(), atol=1e-6))
             # Without images in the demos the image policy cannot train, and says why.
             state_only = os.path.join(d, "state.hdf5")
             with contextlib.redirect_stdout(io.StringIO()):
