@@ -5,27 +5,26 @@
 #include <stdexcept>
 #include <string>
 
+#include "twin/drive_train.hpp"
+#include "twin/motor_controller.hpp"
+
 namespace scenario {
 
 controller::FollowingLimit followingLimit() {
-  constexpr double kOverdrive = 20000.0;  // DAC counts
   constexpr double kFree = std::numeric_limits<double>::infinity();
-  // Per joint: DAC counts per N m (RE40 axes, then the RE30 tool axes), KP (N m per motor rad)
-  // and the joint's motion per motor radian (1 / TR).
-  const raven::ArmJoints counts_per_torque =
-      (raven::ArmJoints() << 3695.8, 3695.8, 3695.8, 27328, 27328, 27328, 27328).finished();
-  const raven::ArmJoints kp =
-      (raven::ArmJoints() << 0.30, 0.30, 0.15, 0.09, 0.05, 0.05, 0.05).finished();
-  const raven::ArmJoints per_motor_radian = (raven::ArmJoints() << 0.0073423, 0.0082288, 0.00046327,
-                                             1.0 / 5.3952, 1.0 / 8.9920, 1.0 / 8.9920, 1.0 / 8.9920)
-                                                .finished();
-  const raven::ArmJoints half_of_overdrive = 0.5 * kOverdrive * counts_per_torque.cwiseInverse();
+  // The robot's firmware constants, as the twin's motors run them (the same on both arms).
+  const twin::MotorGains gains = twin::MotorGains::raven2(raven::Arm::Left);
+  const twin::DacConversion dac = twin::DacConversion::raven2(raven::Arm::Left);
+  const raven::ArmJoints transmission = twin::DriveTrain::raven2().transmission;
   controller::FollowingLimit limit;
-  limit.give = per_motor_radian.cwiseQuotient(kp);
-  limit.lead << half_of_overdrive.head<3>().cwiseProduct(limit.give.head<3>()), kFree, kFree, kFree,
-      kFree;
-  // GRASP2's amplifier command is never checked (the robot's check stops before it): none.
-  limit.torque << kFree, kFree, kFree, half_of_overdrive.segment<3>(3), kFree;
+  limit.give = gains.kp.cwiseProduct(transmission).cwiseInverse();
+  for (int i = 0; i < raven::kJointCount; ++i) {
+    const double half_of_overdrive = 0.5 * dac.overdrive / std::abs(dac.counts_per_torque(i));
+    const bool integrates = gains.ki(i) > 0.0;
+    limit.lead(i) = integrates ? kFree : half_of_overdrive * limit.give(i);
+    // GRASP2's amplifier command is never checked (the robot's check stops before it): none.
+    limit.torque(i) = integrates && i != raven::kJaw2 ? half_of_overdrive : kFree;
+  }
   return limit;
 }
 

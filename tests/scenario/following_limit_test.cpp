@@ -47,11 +47,16 @@ double insertionLead(const twin::TwinPlatform& twin) {
 
 TEST(FollowingLimit, TheLimitsAreHalfOfWhatTheControlLawEStopsAt) {
   const controller::FollowingLimit limit = scenario::followingLimit();
-  EXPECT_NEAR(limit.lead(raven::kShoulder), 0.5 * 20000 / 3695.8 / 0.30 * 0.0073423, 1e-12);
+  // raven2-actuation.md §2.1 and §4: TR = 63.095 / 5.675 x 12.25 (shoulder), 10.905 / 5.005 x
+  // 26/7 x 100/90 (jaws); 2730 / (0.0603 x 12.25) and 5461 / (0.0538 x 26/7) counts per N m.
+  const double shoulder_tr = 63.095 / 5.675 * 12.25,
+               jaw_tr = 10.905 / 5.005 * 26.0 / 7.0 * 100 / 90;
+  const double arm_counts = 2730 / (0.0603 * 12.25), tool_counts = 5461 / (0.0538 * 26.0 / 7.0);
+  EXPECT_NEAR(limit.lead(raven::kShoulder), 0.5 * 20000 / arm_counts / 0.30 / shoulder_tr, 1e-12);
   EXPECT_NEAR(limit.lead(raven::kInsertion), 0.00836, 1e-5);
   EXPECT_TRUE(std::isinf(limit.lead(raven::kJaw1)));
-  EXPECT_NEAR(limit.torque(raven::kJaw1), 0.5 * 20000 / 27328.0, 1e-12);
-  EXPECT_NEAR(limit.give(raven::kJaw1), 1.0 / (0.05 * 8.992), 1e-12);
+  EXPECT_NEAR(limit.torque(raven::kJaw1), 0.5 * 20000 / tool_counts, 1e-12);
+  EXPECT_NEAR(limit.give(raven::kJaw1), 1.0 / (0.05 * jaw_tr), 1e-12);
   EXPECT_TRUE(std::isinf(limit.torque(raven::kInsertion)));
   EXPECT_TRUE(std::isinf(limit.torque(raven::kJaw2))) << "GRASP2 is never checked";
 }
