@@ -5,6 +5,7 @@
 #include <map>
 
 #include "common/farthest.hpp"
+#include "common/file_problem.hpp"
 #include "common/lower_case.hpp"
 
 namespace common {
@@ -44,8 +45,8 @@ std::string suggestion(std::string_view key, std::span<const std::string_view> k
 YamlView YamlView::parseFile(const std::filesystem::path& file) {
   auto shared_file = std::make_shared<const std::filesystem::path>(file);
   SourceRef where{file, 0, ""};
-  if (!std::filesystem::is_regular_file(file)) {
-    throw LoadError(where, std::filesystem::exists(file) ? "not a regular file" : "file not found");
+  if (const auto problem = fileProblem(file); !problem.empty()) {
+    throw LoadError(where, problem);
   }
   YAML::Node root;
   try {

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "common/file_problem.hpp"
 #include "recording/recording_io.hpp"
 
 namespace recording {
@@ -14,6 +15,10 @@ std::string rowWhere(const std::filesystem::path& path, std::size_t row) {
 }
 
 std::vector<std::string> readCsvLines(const std::filesystem::path& path) {
+  // A pipe or a device read as a recording could block or never end.
+  if (const auto problem = common::fileProblem(path); !problem.empty()) {
+    throw RecordingError(path.string() + ": " + problem);
+  }
   std::ifstream in(path);
   if (!in) throw RecordingError(path.string() + ": cannot open");
   std::vector<std::string> lines;

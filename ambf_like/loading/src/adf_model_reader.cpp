@@ -2,6 +2,7 @@
 #include <unordered_map>
 
 #include "adf_readers.hpp"
+#include "common/file_problem.hpp"
 
 namespace ambf_like::detail {
 
@@ -114,7 +115,7 @@ std::optional<std::filesystem::path> findMesh(const std::string& name,
   tried.clear();
   for (const auto& dir : dirs) {
     const auto candidate = (dir / name).lexically_normal();
-    if (std::filesystem::is_regular_file(candidate)) return candidate;
+    if (common::isReadableFile(candidate)) return candidate;
     if (tried.find(candidate.string()) != std::string::npos) continue;
     if (!tried.empty()) tried += ", ";
     tried += candidate.string();
@@ -267,7 +268,7 @@ WorldSpec readWorld(const std::filesystem::path& file, LoadContext& context,
   environment.reset();
   if (auto env = root.find("environment")) {
     const auto path = (file.parent_path() / env->asString()).lexically_normal();
-    if (std::filesystem::is_regular_file(path)) {
+    if (common::isReadableFile(path)) {
       environment = path;
     } else {
       context.tolerate(env->where(),

@@ -13,6 +13,7 @@
 
 #include "ambf_like/mesh.hpp"
 #include "common/farthest.hpp"
+#include "common/file_problem.hpp"
 #include "common/xml_nesting.hpp"
 #include "vtk_tet_mesh.hpp"
 
@@ -184,7 +185,7 @@ Mesh readMesh(const std::filesystem::path& file, const SourceRef& referenced_fro
   auto fail = [&](const std::string& message) -> LoadError {
     return LoadError(referenced_from, "mesh " + file.string() + ": " + message);
   };
-  if (!std::filesystem::is_regular_file(file)) throw fail("file not found");
+  if (const auto problem = common::fileProblem(file); !problem.empty()) throw fail(problem);
   refuseDeepXml(file, fail);
 
   Assimp::Importer importer;

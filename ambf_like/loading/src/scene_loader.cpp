@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "adf_readers.hpp"
+#include "common/file_problem.hpp"
 #include "common/lower_case.hpp"
 #include "urdf_reader.hpp"
 
@@ -171,9 +172,9 @@ LoadedScene loadLaunchFile(const std::filesystem::path& launch_file,
     }
     const auto& entry = entries[static_cast<std::size_t>(index)];
     const auto path = (dir / entry.asString()).lexically_normal();
-    if (!std::filesystem::is_regular_file(path)) {
+    if (const auto problem = common::fileProblem(path); !problem.empty()) {
       const std::string missing =
-          "multibody config " + std::to_string(index) + " (" + path.string() + ") not found";
+          "multibody config " + std::to_string(index) + " (" + path.string() + "): " + problem;
       if (!selection.indices.empty()) entry.fail(missing);  // asked for by index: an error
       context.tolerate(entry.where(), missing + "; skipped");
       continue;
@@ -185,8 +186,8 @@ LoadedScene loadLaunchFile(const std::filesystem::path& launch_file,
   std::optional<std::filesystem::path> world_file;
   if (auto world = root.find("world config")) {
     world_file = (dir / world->asString()).lexically_normal();
-    if (!std::filesystem::is_regular_file(*world_file)) {
-      world->fail("world config " + world_file->string() + " not found");
+    if (const auto problem = common::fileProblem(*world_file); !problem.empty()) {
+      world->fail("world config " + world_file->string() + ": " + problem);
     }
   }
   return assemble(files, world_file, context);

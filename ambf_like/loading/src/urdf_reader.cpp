@@ -9,6 +9,7 @@
 #include <unordered_map>
 
 #include "common/farthest.hpp"
+#include "common/file_problem.hpp"
 #include "common/utf8.hpp"
 #include "common/xml_nesting.hpp"
 #include "inertia_check.hpp"
@@ -31,12 +32,17 @@ class CapturedConsole : public console_bridge::OutputHandler {
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
     if (level >= console_bridge::CONSOLE_BRIDGE_LOG_WARN)
       messages_ += (messages_.empty() ? "" : "; ") + text;
+    errors_ = errors_ || level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR;
   }
   const std::string& messages() const { return messages_; }
+  /// Whether urdfdom reported an error: it then may still return a model, with the element it
+  /// could not read left out or half read (a link whose mass did not parse has none).
+  bool errors() const { return errors_; }
 
  private:
   console_bridge::OutputHandler* previous_;
   std::string messages_;
+  bool errors_ = false;
 };
 
 Vec3 toVec(const urdf::Vector3& v) {
@@ -81,15 +87,27 @@ std::filesystem::path resolveMeshFile(const std::string& filename, const std::st
   }
   if (name.rfind("file://", 0) == 0) name = name.substr(7);
   const auto resolved = (ctx.file.parent_path() / name).lexically_normal();
-  if (!std::filesystem::is_regular_file(resolved)) {
+  if (const auto problem = common::fileProblem(resolved); !problem.empty()) {
     if (!ctx.load.options().strict) {
       ctx.load.warn(ctx.at(path),
-                    "mesh file " + resolved.string() + " not found; continuing without it");
+                    "mesh file " + resolved.string() + ": " + problem + "; continuing without it");
       return {};
     }
-    ctx.fail(path, "mesh file " + resolved.string() + " not found");
+    ctx.fail(path, "mesh file " + resolved.string() + ": " + problem);
   }
   return resolved;
+}
+
+/// Refuses (naming `path`) a primitive's dimensions unless each is above zero and within
+/// common::kFarthestCoordinate: urdfdom takes any number, and Bullet a negative or zero extent.
+void requireSize(const Vec3& dimensions, const std::string& path, const UrdfContext& ctx) {
+  if (!(dimensions.array() > 0.0).all() ||
+      !(dimensions.array() <= common::kFarthestCoordinate).all()) {
+    std::ostringstream text;
+    text << "each dimension must be greater than zero and at most " << common::kFarthestCoordinate
+         << " m (got " << dimensions.transpose() << ")";
+    ctx.fail(path, text.str());
+  }
 }
 
 /// Converts one URDF geometry into a primitive (or, for meshes, a mesh path in `mesh`).
@@ -102,16 +120,19 @@ std::optional<PrimitiveShape> readGeometry(const urdf::Geometry& geometry, const
     case urdf::Geometry::BOX:
       shape.type = PrimitiveType::Box;
       shape.box_size = toVec(static_cast<const urdf::Box&>(geometry).dim);
+      requireSize(shape.box_size, path + "/box size", ctx);
       return shape;
     case urdf::Geometry::SPHERE:
       shape.type = PrimitiveType::Sphere;
       shape.radius = static_cast<const urdf::Sphere&>(geometry).radius;
+      requireSize(Vec3::Constant(shape.radius), path + "/sphere radius", ctx);
       return shape;
     case urdf::Geometry::CYLINDER: {
       const auto& cylinder = static_cast<const urdf::Cylinder&>(geometry);
       shape.type = PrimitiveType::Cylinder;
       shape.radius = cylinder.radius;
       shape.height = cylinder.length;
+      requireSize(Vec3(shape.radius, shape.radius, shape.height), path + "/cylinder", ctx);
       return shape;
     }
     case urdf::Geometry::MESH: {
@@ -206,7 +227,11 @@ JointSpec readUrdfJoint(const urdf::Joint& joint, const UrdfContext& ctx) {
   spec.where = ctx.at(path);
   const Transform origin = toTransform(joint.parent_to_joint_origin_transform, path, ctx);
   Vec3 axis = toVec(joint.axis);
-  if (axis.norm() < 1e-12) axis = Vec3::UnitX();  // URDF's default axis
+  // urdfdom gives a joint without <axis> URDF's default, (1, 0, 0), and a fixed joint none.
+  if (axis.norm() < 1e-12) {
+    if (joint.type != urdf::Joint::FIXED) ctx.fail(path + "/axis", "axis must not be zero");
+    axis = Vec3::UnitX();
+  }
   spec.parent_pivot = origin.translation();
   spec.parent_axis = (origin.linear() * axis).normalized();
   spec.child_pivot = Vec3::Zero();
@@ -240,11 +265,11 @@ JointSpec readUrdfJoint(const urdf::Joint& joint, const UrdfContext& ctx) {
 }  // namespace
 
 ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context) {
-  std::ifstream in(file);
-  if (!in) {
-    throw LoadError(SourceRef{file, 0, ""},
-                    std::filesystem::exists(file) ? "cannot read file" : "file not found");
+  if (const auto problem = common::fileProblem(file); !problem.empty()) {
+    throw LoadError(SourceRef{file, 0, ""}, problem);
   }
+  std::ifstream in(file);
+  if (!in) throw LoadError(SourceRef{file, 0, ""}, "cannot read file");
   std::stringstream text;
   text << in.rdbuf();
   // urdfdom's XML parser recurses once per element level until the stack ends.
@@ -263,12 +288,14 @@ ModelSpec readUrdfModel(const std::filesystem::path& file, LoadContext& context)
   const UrdfContext ctx{file, context, lines};
   urdf::ModelInterfaceSharedPtr urdf;
   std::string messages;
+  bool parse_errors = false;
   {
     CapturedConsole console;
     urdf = urdf::parseURDF(text.str());
     messages = console.messages();
+    parse_errors = console.errors();
   }
-  if (!urdf) {
+  if (!urdf || parse_errors) {
     throw LoadError(SourceRef{file, lines.lineNamedIn(messages), ""},
                     "not a valid URDF" + (messages.empty() ? "" : ": " + messages));
   }

@@ -6,6 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include "common/file_problem.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
@@ -108,8 +110,8 @@ std::vector<std::array<int, 3>> boundaryFaces(const std::vector<std::array<int, 
 }  // namespace
 
 Mesh readVtkTetMesh(const std::filesystem::path& file) {
-  if (!std::filesystem::is_regular_file(file)) {
-    throw LoadError(SourceRef{file, 0, ""}, "tetrahedral mesh file not found");
+  if (const auto problem = common::fileProblem(file); !problem.empty()) {
+    throw LoadError(SourceRef{file, 0, ""}, "tetrahedral mesh: " + problem);
   }
   Tokens in(file);
   const auto& header = in.header();
