@@ -7,6 +7,7 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -191,17 +192,37 @@ struct FitSettings {
   int evaluations = 40;
   int threads = 2;
   bool leave_one_out = true;
+  std::filesystem::path from;       ///< a profile to start from, or the catalogue values
+  std::vector<std::string> fields;  ///< the MotorMechanics fields fitted; empty: all
 };
+
+/// Where a fit starts: `from`'s mechanics, or catalogue inertias and raven2_sim's friction.
+twin::ArmsMechanics fitStart(const FitSettings& s) {
+  if (s.from.empty()) return calibration::startingMechanics();
+  return twin::CalibrationProfile::load(s.from).mechanics;
+}
+
+/// The indices (MotorMechanics::kNames) of the fields named.
+std::vector<std::size_t> fieldIndices(const std::vector<std::string>& names) {
+  std::vector<std::size_t> indices;
+  for (const auto& name : names) {
+    const auto& all = twin::MotorMechanics::kNames;
+    indices.push_back(
+        static_cast<std::size_t>(std::find(all.begin(), all.end(), name) - all.begin()));
+  }
+  return indices;
+}
 
 int runFit(const FitSettings& s) {
   const auto started = std::chrono::steady_clock::now();
   const auto physical = loadPhysical(s.physical);
   const auto traces = tracesOf(physical);
   std::printf("raven_calibrate fit: %zu physical trial(s)\n", physical.size());
-  const twin::ArmsMechanics start = calibration::startingMechanics();
-  printActuators(
-      "setpoint replays with the starting values (raven2_sim's friction, catalogue inertias)",
-      setpointFidelity(traces, start));
+  const twin::ArmsMechanics start = fitStart(s);
+  printActuators(s.from.empty() ? "setpoint replays with the starting values (raven2_sim's "
+                                  "friction, catalogue inertias)"
+                                : "setpoint replays with the profile the fit starts from",
+                 setpointFidelity(traces, start));
 
   // Folds: each trial held out (fitted on the others), then every trial.
   std::vector<Fold> folds;
@@ -211,6 +232,7 @@ int runFit(const FitSettings& s) {
   folds.push_back({traces.size(), {}, {}});
   calibration::ActuationFitOptions options;
   options.evaluations_per_joint = s.evaluations;
+  options.fields = fieldIndices(s.fields);
   std::atomic<std::size_t> next{0};
   auto worker = [&] {
     for (std::size_t i = next++; i < folds.size(); i = next++) {
@@ -403,6 +425,13 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(5, 10000));
   fit_cmd->add_option("--threads", fit.threads, "fits run in parallel")->check(CLI::Range(1, 64));
   fit_cmd->add_flag("!--no-leave-one-out", fit.leave_one_out, "fit on every trial only");
+  fit_cmd->add_option("--from", fit.from, "profile to start from (default: catalogue values)")
+      ->check(CLI::ExistingFile);
+  fit_cmd
+      ->add_option("--fields", fit.fields,
+                   "mechanics fitted, the others kept as they start (default: all)")
+      ->check(CLI::IsMember(std::vector<std::string>(twin::MotorMechanics::kNames.begin(),
+                                                     twin::MotorMechanics::kNames.end())));
 
   ScoreSettings score;
   auto* score_cmd = app.add_subcommand(

@@ -41,6 +41,8 @@ std::vector<MechanicsParameter> mechanicsParameters(int joint) {
       {twin::MotorMechanics::kOffset, big ? -0.15 : -0.025, big ? 0.15 : 0.025, false},
   };
   if (big) p.push_back({twin::MotorMechanics::kGravityError, -0.8, 0.8, false});
+  // Where the jaws' faces meet: only their sum shows, and each jaw's motor has its say in it.
+  if (joint >= raven::kJaw1) p.push_back({twin::MotorMechanics::kFace, -0.05, 0.05, false});
   return p;
 }
 

@@ -13,6 +13,7 @@ twin::TwinOptions frictionlessMotors() {
     m.coulomb.setZero();
     m.load_friction.setZero();
     m.offset.setZero();
+    m.face.setZero();
     m.gravity_error.setZero();
   }
   return options;

@@ -226,6 +226,22 @@ TEST(ArmDrive, JawsClosedPastEachOtherRestWhereTheirFacesMeetAndWindTheirMotorsU
   }
 }
 
+TEST(ArmDrive, JawsWithFittedFacesRestWhereTheseMeet) {
+  // The calibration's faces move the pair's stop: 0.010 + 0.005 rad past the model's zero.
+  const auto drive = twin::DriveTrain::raven2();
+  ArmJoints start = home();
+  start(raven::kJaw1) = start(raven::kJaw2) = 0.05;
+  twin::MotorMechanics mechanics = frictionless(2e-4);
+  mechanics.face(raven::kJaw1) = 0.010;
+  mechanics.face(raven::kJaw2) = 0.005;
+  twin::ArmDrive arm(Arm::Left, drive, mechanics, 0.001, start, {{}, 0.0});
+  ArmJoints setpoint = start;
+  setpoint(raven::kJaw1) = setpoint(raven::kJaw2) = -0.1;
+  for (int k = 0; k < 1500; ++k) arm.cycle(setpoint);
+  const ArmJoints& q = arm.readings().position;
+  EXPECT_NEAR(q(raven::kJaw1) + q(raven::kJaw2), 0.015, 4.0 * countInJoint(drive, raven::kJaw1));
+}
+
 TEST(ArmDrive, AfterTheSoftEStopTheAmplifiersStayOffUntilTheFaultIsCleared) {
   const auto drive = twin::DriveTrain::raven2();
   twin::ArmDrive arm(Arm::Right, drive, frictionless(2e-4), 0.001, home());

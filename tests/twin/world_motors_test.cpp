@@ -251,6 +251,30 @@ JawMotors jawMotors(const twin::TwinPlatform& twin, Arm arm) {
   return jaws;
 }
 
+TEST(WorldMotors, JawsWithFittedFacesStopWhereTheseMeet) {
+  // The calibration's faces (0.010 + 0.005 rad) move the World's stop on the pair by their sum,
+  // as they move the motors-alone model's: jaws closed hard on nothing rest there.
+  twin::TwinOptions options = frictionlessMotors();
+  (*options.motors)[0].face(raven::kJaw1) = 0.010;
+  (*options.motors)[0].face(raven::kJaw2) = 0.005;
+  auto twin = test_support::readyTwin(options);
+  const Arm arm = Arm::Left;
+  ArmJoints close = ArmJoints::Zero();
+  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;
+  while (twin->setpointJs(arm).position(raven::kJaw1) > -0.1) {
+    twin->send(bridge::ServoJr{arm, close});
+    twin->advance(0.001);
+  }
+  twin->advance(0.5);
+  const ArmJoints q = twin->measuredJs(arm).position;
+  const double count =
+      2.0 * M_PI / 4000.0 /
+      std::abs(twin::DriveTrain::raven2().coupling(arm)(raven::kJaw1, raven::kJaw1));
+  EXPECT_NEAR(q(raven::kJaw1) + q(raven::kJaw2), 0.015, 4.0 * count);
+  ASSERT_NE(twin->arms().jawStop(arm), nullptr);
+  EXPECT_NEAR(twin->arms().jawStop(arm)->gap(), 0.0, 1e-3) << "resting on the stop";
+}
+
 TEST(WorldMotors, JawsClosedOnEachOtherStopThereAndWindTheirIntegratorsUp) {
   // Acceptance 1(d): both jaws commanded 0.1 rad past the faces' meeting (opening -0.2, a grasp
   // closed hard on nothing, as the robot's recordings hold it for seconds). The faces stop the

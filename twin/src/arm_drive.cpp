@@ -93,8 +93,10 @@ void ArmDrive::holdAtStops() {
   const bool within_joints =
       !stops_.joints ||
       (q.array() >= stops_.joints->low.array() && q.array() <= stops_.joints->high.array()).all();
-  const double closed_past =
-      stops_.jaws_meet ? *stops_.jaws_meet - (q(raven::kJaw1) + q(raven::kJaw2)) : 0.0;
+  const double closed_past = stops_.jaws_meet
+                                 ? *stops_.jaws_meet + motors->mechanics().jawsMeetOffset() -
+                                       (q(raven::kJaw1) + q(raven::kJaw2))
+                                 : 0.0;
   if (within_joints && closed_past <= 0.0) return;
   ArmJoints v = drive_.toJoints(arm_, motors->velocity());  // linear: velocities map alike
   if (!within_joints) {

@@ -15,7 +15,8 @@ ArmDrive MotorActuation::makeDrive(Arm arm, TwinArms& arms, ambf_like::World& wo
     return ArmDrive(arm, drive, mechanics, cycle, arms.measured(arm),
                     {arms.hardStops(arm), arms.jawsMeet()});
   }
-  return ArmDrive(arm, drive, WorldMotors(arm, drive, mechanics.checked(arm), arms, world), cycle);
+  arms.offsetJawsMeet(arm, mechanics.checked(arm).jawsMeetOffset());
+  return ArmDrive(arm, drive, WorldMotors(arm, drive, mechanics, arms, world), cycle);
 }
 
 void MotorActuation::drive(Arm arm, const ArmJoints& setpoint) {

@@ -21,6 +21,8 @@ const ArmJoints& MotorMechanics::field(std::size_t k) const {
       return viscous;
     case kOffset:
       return offset;
+    case kFace:
+      return face;
     default:
       return gravity_error;
   }
@@ -39,6 +41,10 @@ std::string MotorMechanics::invalidReason() const {
     }
   }
   return {};
+}
+
+double MotorMechanics::jawsMeetOffset() const {
+  return face(raven::kJaw1) + face(raven::kJaw2);
 }
 
 const MotorMechanics& MotorMechanics::checked(Arm arm) const {

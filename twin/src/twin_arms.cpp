@@ -79,10 +79,17 @@ TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings)
     // jaw1 + jaw2 >= meet, each joint = (model value - offset) / scale.
     const auto& jaw1 = bound_[raven::slot(arm)][raven::kJaw1];
     const auto& jaw2 = bound_[raven::slot(arm)][raven::kJaw2];
-    jaw_stops_[raven::slot(arm)] = &world.addCoupledStop(
-        {{jaw1.name, jaw2.name},
-         {1.0 / jaw1.scale, 1.0 / jaw2.scale},
-         *bindings.jaws_meet + jaw1.offset / jaw1.scale + jaw2.offset / jaw2.scale});
+    jaw_stop_lower_[raven::slot(arm)] =
+        *bindings.jaws_meet + jaw1.offset / jaw1.scale + jaw2.offset / jaw2.scale;
+    jaw_stops_[raven::slot(arm)] = &world.addCoupledStop({{jaw1.name, jaw2.name},
+                                                          {1.0 / jaw1.scale, 1.0 / jaw2.scale},
+                                                          jaw_stop_lower_[raven::slot(arm)]});
+  }
+}
+
+void TwinArms::offsetJawsMeet(Arm arm, double offset) {
+  if (auto* stop = jaw_stops_[raven::slot(arm)]) {
+    stop->setLower(jaw_stop_lower_[raven::slot(arm)] + offset);
   }
 }
 

@@ -46,6 +46,12 @@ double CoupledStop::gap() const {
   return constraint_->gap();
 }
 
+void CoupledStop::setLower(double lower) {
+  if (!std::isfinite(lower)) throw std::invalid_argument("coupled stop: lower not finite");
+  constraint_->shiftLower(lower - spec_.lower);
+  spec_.lower = lower;
+}
+
 namespace {
 
 /// The multibody link whose joint is degree of freedom `dof` of `multibody`.

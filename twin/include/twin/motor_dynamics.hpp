@@ -26,14 +26,22 @@ struct MotorMechanics {
   /// coulomb - offset. Asymmetric Coulomb friction and the amplifier's zero offset, the offset
   /// term of the standard identification model (Gautier & Khalil).
   ArmJoints offset = ArmJoints::Zero();
+  /// The jaws only: each jaw's angle (rad, from the model's zero) at which its face meets the
+  /// other's, in the encoders' terms: the pair stops at jaw1 + jaw2 = face(jaw1) + face(jaw2)
+  /// over where the model's meshes meet. Where the robot's jaw faces meet is no number the
+  /// reference gives (the tool's homing and its wear set it); the data do.
+  ArmJoints face = ArmJoints::Zero();
   /// The arm's weight over the firmware's estimate, minus one (joints 1-3): 0 = exact.
   ArmJoints gravity_error = ArmJoints::Zero();
 
   /// The fields in a fixed order: calibration files, fits and their uncertainty use it.
-  static constexpr std::array<std::string_view, 6> kNames{"inertia", "coulomb", "load_friction",
-                                                          "viscous", "offset",  "gravity_error"};
-  static constexpr int kOffset = 4;        ///< its index: the one value that may be negative
-  static constexpr int kGravityError = 5;  ///< its index (the last): only the arm motors have one
+  static constexpr std::array<std::string_view, 7> kNames{
+      "inertia", "coulomb", "load_friction", "viscous", "offset", "face", "gravity_error"};
+  static constexpr int kOffset = 4;        ///< its index: a value that may be negative
+  static constexpr int kFace = 5;          ///< its index: only the jaws have one, of either sign
+  static constexpr int kGravityError = 6;  ///< its index (the last): only the arm motors have one
+  /// The pair's meeting over the model's (rad of jaw1 + jaw2): the sum of the jaws' faces.
+  double jawsMeetOffset() const;
   /// What a field's values can be: at least `low` (more than it when `open`), at most `high`.
   struct ValueRange {
     double low, high;
@@ -48,6 +56,7 @@ struct MotorMechanics {
        {0.0, 0.9, false, "within 0..0.9"},
        {0.0, kUnbounded, false, ">= 0"},
        {-kUnbounded, kUnbounded, false, "finite"},
+       {-0.5, 0.5, false, "within -0.5..0.5 rad"},
        {-1.0, kUnbounded, true, "> -1"}}};
   ArmJoints& field(std::size_t k);
   const ArmJoints& field(std::size_t k) const;

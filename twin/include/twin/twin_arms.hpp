@@ -71,6 +71,9 @@ class TwinArms {
   /// The World's stop the jaws of `arm` meet at: null where they pass through each other or
   /// the arm is not articulated.
   const ambf_like::CoupledStop* jawStop(Arm arm) const { return jaw_stops_[raven::slot(arm)]; }
+  /// Moves the arm's jaws' stop by `offset` (rad of jaw1 + jaw2) from jawsMeet(): where the
+  /// robot's faces meet (MotorMechanics::face). Nothing without a stop.
+  void offsetJawsMeet(Arm arm, double offset);
   /// Every body the arm's joints connect, qualified names.
   const std::vector<std::string>& bodies(Arm arm) const { return bodies_[raven::slot(arm)]; }
 
@@ -86,7 +89,8 @@ class TwinArms {
   std::array<std::array<std::string, 2>, 2> jaws_;
   raven::PerArm<std::vector<std::string>> bodies_;
   std::optional<double> jaws_meet_;
-  raven::PerArm<const ambf_like::CoupledStop*> jaw_stops_{};
+  raven::PerArm<ambf_like::CoupledStop*> jaw_stops_{};
+  raven::PerArm<double> jaw_stop_lower_{};  ///< each stop's bound as made, in model terms
 };
 
 }  // namespace twin

@@ -34,6 +34,9 @@ class CoupledStop {
   CoupledStop& operator=(const CoupledStop&) = delete;
 
   const CoupledStopSpec& spec() const { return spec_; }
+  /// Moves the bound to `lower` (finite; a calibration that places the stop after the model's
+  /// load): the sum stops there from the next step.
+  void setLower(double lower);
   /// The generalised force (N m or N, >= 0) the stop applied along the gains in the last step:
   /// joint i felt gains[i] times it.
   double force() const;

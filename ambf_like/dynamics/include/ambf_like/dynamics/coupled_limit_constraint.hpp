@@ -31,6 +31,8 @@ class CoupledLimitConstraint final : public btMultiBodyConstraint {
                             const btContactSolverInfo& info) override;
   void debugDraw(class btIDebugDraw*) override {}
 
+  /// Moves the bound by `delta` (rad or m).
+  void shiftLower(double delta) { lower_ += delta; }
   /// sum_i gain_i q_i - lower: how far the coordinates are from the stop (< 0: past it).
   double gap() const;
   /// Whether the sum is within `band` (rad or m) of its bound beyond two steps of `dt` at its
