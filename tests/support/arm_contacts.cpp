@@ -6,6 +6,10 @@
 
 namespace test_support {
 
+double countInJoint(const twin::DriveTrain& drive, int joint) {
+  return 1.0 / drive.countsPerMotorRadian() / drive.transmission(joint);
+}
+
 twin::TwinOptions frictionlessMotors() {
   twin::TwinOptions options;
   options.motors = twin::CalibrationProfile::shipped().mechanics;

@@ -15,6 +15,9 @@ namespace test_support {
 /// the links' weight alone.
 twin::TwinOptions frictionlessMotors();
 
+/// One encoder count of `joint` in joint units: how far past a stop a reading may land.
+double countInJoint(const twin::DriveTrain& drive, int joint);
+
 /// Our Raven-II with one static obstacle (`/test/obstacle`) of `shape` at `pose` (world), and no
 /// rolling friction anywhere: Bullet's rolling friction puts a couple on a pressed contact (AMBF's
 /// default 0.01 m times the normal force) that no contact point reports, and the statics checked

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "arm_contacts.hpp"
 #include "twin/arm_drive.hpp"
 #include "twin/drive_train.hpp"
 #include "twin/gravity_compensation.hpp"
@@ -166,10 +167,7 @@ TEST(ArmDrive, PlacedAtARecordedStateItsFirstCycleGivesThatStatesTorque) {
 
 namespace {
 
-/// One encoder count of `joint` in joint units: how far past a stop a reading may land.
-double countInJoint(const twin::DriveTrain& drive, int joint) {
-  return 1.0 / drive.countsPerMotorRadian() / drive.transmission(joint);
-}
+using test_support::countInJoint;
 
 TEST(ArmDrive, AJointDrivenPastItsHardStopRestsOnItAndSoDoItsMotors) {
   const auto drive = twin::DriveTrain::raven2();

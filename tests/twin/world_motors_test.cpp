@@ -267,10 +267,8 @@ TEST(WorldMotors, JawsWithFittedFacesStopWhereTheseMeet) {
   }
   twin->advance(0.5);
   const ArmJoints q = twin->measuredJs(arm).position;
-  const double count =
-      2.0 * M_PI / 4000.0 /
-      std::abs(twin::DriveTrain::raven2().coupling(arm)(raven::kJaw1, raven::kJaw1));
-  EXPECT_NEAR(q(raven::kJaw1) + q(raven::kJaw2), 0.015, 4.0 * count);
+  EXPECT_NEAR(q(raven::kJaw1) + q(raven::kJaw2), 0.015,
+              4.0 * test_support::countInJoint(twin::DriveTrain::raven2(), raven::kJaw1));
   ASSERT_NE(twin->arms().jawStop(arm), nullptr);
   EXPECT_NEAR(twin->arms().jawStop(arm)->gap(), 0.0, 1e-3) << "resting on the stop";
 }

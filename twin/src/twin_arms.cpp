@@ -76,21 +76,22 @@ TwinArms::TwinArms(ambf_like::World& world, const ArmBindings& bindings)
   if (!bindings.jaws_meet) return;
   for (Arm arm : kArms) {
     if (!articulated(arm)) continue;
-    // jaw1 + jaw2 >= meet, each joint = (model value - offset) / scale.
     const auto& jaw1 = bound_[raven::slot(arm)][raven::kJaw1];
     const auto& jaw2 = bound_[raven::slot(arm)][raven::kJaw2];
-    jaw_stop_lower_[raven::slot(arm)] =
-        *bindings.jaws_meet + jaw1.offset / jaw1.scale + jaw2.offset / jaw2.scale;
-    jaw_stops_[raven::slot(arm)] = &world.addCoupledStop({{jaw1.name, jaw2.name},
-                                                          {1.0 / jaw1.scale, 1.0 / jaw2.scale},
-                                                          jaw_stop_lower_[raven::slot(arm)]});
+    jaw_stops_[raven::slot(arm)] = &world.addCoupledStop(
+        {{jaw1.name, jaw2.name}, {1.0 / jaw1.scale, 1.0 / jaw2.scale}, jawStopLower(arm)});
   }
 }
 
+double TwinArms::jawStopLower(Arm arm) const {
+  // jaw1 + jaw2 >= meet, each joint = (model value - offset) / scale.
+  const auto& jaw1 = bound_[raven::slot(arm)][raven::kJaw1];
+  const auto& jaw2 = bound_[raven::slot(arm)][raven::kJaw2];
+  return *jaws_meet_ + jaw1.offset / jaw1.scale + jaw2.offset / jaw2.scale;
+}
+
 void TwinArms::offsetJawsMeet(Arm arm, double offset) {
-  if (auto* stop = jaw_stops_[raven::slot(arm)]) {
-    stop->setLower(jaw_stop_lower_[raven::slot(arm)] + offset);
-  }
+  if (auto* stop = jaw_stops_[raven::slot(arm)]) stop->setLower(jawStopLower(arm) + offset);
 }
 
 void TwinArms::command(Arm arm, const ArmJoints& joints) {

@@ -89,8 +89,10 @@ class TwinArms {
   std::array<std::array<std::string, 2>, 2> jaws_;
   raven::PerArm<std::vector<std::string>> bodies_;
   std::optional<double> jaws_meet_;
+  /// Where the arm's jaws' stop is without the faces' offset, in the model's coordinates.
+  double jawStopLower(Arm arm) const;
+
   raven::PerArm<ambf_like::CoupledStop*> jaw_stops_{};
-  raven::PerArm<double> jaw_stop_lower_{};  ///< each stop's bound as made, in model terms
 };
 
 }  // namespace twin
