@@ -35,7 +35,8 @@ recording::RsRecording recordReplay(const ReplaySetup& setup) {
   controller::SessionInputs inputs;
   inputs.inputs = setup.inputs;
   controller::ControllerSession session(control, std::move(inputs), options);
-  session.select(controller::Mode::ReplayInputs);
+  session.select(controller::Mode::ReplayInputs);  // reads the pose
+  if (setup.held_wrist_change) control.shiftHeldWrist(*setup.held_wrist_change);
   while (session.turn()) {
   }
   return rs;

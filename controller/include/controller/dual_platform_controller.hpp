@@ -80,6 +80,8 @@ class DualPlatformController {
 
   /// Re-reads the pose from the reference platform's measured joints.
   void readPose();
+  /// The wrist values a controller started earlier held (GamepadMapping::shiftHeldWrist).
+  void shiftHeldWrist(const ArmPair& change) { mapping_.shiftHeldWrist(change); }
   /// O1: from the current targets to the controller's home under the caps, then the stored
   /// wrist values are reset.
   IterationReport home();
