@@ -2,20 +2,20 @@
 
 #include <stdexcept>
 
-#include "controller/held_wrist.hpp"
+#include "controller/first_move.hpp"
 
 namespace calibration {
 
 namespace {
 
-/// What the trial's controller held (controller::heldWristChange of its setpoints and inputs).
-std::optional<raven::ArmPair> heldWristChange(const analysis::ActuatorTrace& trace,
-                                              const ReplaySetup& setup) {
+/// The first move the trial's controller made (controller::firstMoveOf its setpoints).
+std::optional<raven::ArmPair> firstMove(const analysis::ActuatorTrace& trace,
+                                        const ReplaySetup& setup) {
   std::vector<raven::ArmPair> setpoints;
   for (std::size_t r = 0; r < trace.rows(); ++r) {
     setpoints.push_back({trace.arms[0][r].joint_setpoint, trace.arms[1][r].joint_setpoint});
   }
-  return controller::heldWristChange(setpoints, setup.inputs, setup.controller.mapping.deadzone);
+  return controller::firstMoveOf(setpoints, setup.inputs, setup.controller.mapping.deadzone);
 }
 
 }  // namespace
@@ -44,7 +44,7 @@ ReplayScore scoreReplays(ReplaySetup setup, const std::vector<analysis::Trial>& 
     }
     physical_traces.push_back(*trial.actuators);
     setup.start = traceStart(*trial.actuators);
-    setup.held_wrist_change = heldWristChange(*trial.actuators, setup);
+    setup.first_move = firstMove(*trial.actuators, setup);
     score.replays.push_back(recordReplay(setup));
     twin_traces.push_back(analysis::actuatorTrace(score.replays.back()));
     const analysis::Trial twin = analysis::toTrial(score.replays.back(), twin_profile);

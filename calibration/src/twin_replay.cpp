@@ -36,7 +36,7 @@ recording::RsRecording recordReplay(const ReplaySetup& setup) {
   inputs.inputs = setup.inputs;
   controller::ControllerSession session(control, std::move(inputs), options);
   session.select(controller::Mode::ReplayInputs);  // reads the pose
-  if (setup.held_wrist_change) control.shiftHeldWrist(*setup.held_wrist_change);
+  if (setup.first_move) control.sendFirstMove(*setup.first_move);
   while (session.turn()) {
   }
   return rs;

@@ -17,7 +17,7 @@
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "common/actuation_flag.hpp"
-#include "controller/held_wrist.hpp"
+#include "controller/first_move.hpp"
 #include "controller/session.hpp"
 #include "controller/terminal_keys.hpp"
 #include "in_process_twin.hpp"
@@ -216,10 +216,10 @@ void turnUntilDone(controller::ControllerSession& session,
   }
 }
 
-/// With --start-from and --replay-ci, how far the wrist values the recording's controller held
-/// sat from its start (controller::heldWristChange); otherwise none.
-std::optional<raven::ArmPair> heldWristChange(const Settings& s,
-                                              const std::vector<recording::GamepadState>& inputs) {
+/// With --start-from and --replay-ci, the first move the recording's controller made
+/// (controller::firstMoveOf); otherwise none.
+std::optional<raven::ArmPair> firstMove(const Settings& s,
+                                        const std::vector<recording::GamepadState>& inputs) {
   if (s.start_from.empty() || inputs.empty()) return std::nullopt;
   const recording::RsRecording rs = recording::readRs(s.start_from);
   std::vector<raven::ArmPair> setpoints;
@@ -227,9 +227,14 @@ std::optional<raven::ArmPair> heldWristChange(const Settings& s,
     setpoints.push_back({rs.signals(r, raven::Arm::Left).joint_setpoint,
                          rs.signals(r, raven::Arm::Right).joint_setpoint});
   }
-  auto held = controller::heldWristChange(setpoints, inputs, s.deadzone);
-  if (!held) spdlog::warn("{}: the wrist values its controller held do not show", s.start_from);
-  return held;
+  auto move = controller::firstMoveOf(setpoints, inputs, s.deadzone);
+  if (!move) {
+    spdlog::warn(
+        "{}: its controller's first move does not show (the replay starts from the "
+        "twin's own pose)",
+        s.start_from);
+  }
+  return move;
 }
 
 int run(const Settings& s) {
@@ -256,7 +261,7 @@ int run(const Settings& s) {
   Platforms platforms = makePlatforms(s, calibration ? &*calibration : nullptr);
   makeReady(platforms.slots);
   controller::DualPlatformController control(platforms.slots, controllerOptions(s, calibration));
-  const auto held_wrist_change = heldWristChange(s, inputs.inputs);
+  const auto first_move = firstMove(s, inputs.inputs);
 
   std::unique_ptr<controller::SdlGamepad> pad;
   if (!s.no_gamepad && !s.lock_step) {
@@ -276,8 +281,7 @@ int run(const Settings& s) {
     spdlog::info("keys: 1-5 modes O1-O5, r record, s stop recording, q quit");
   }
   if (const Mode first = firstMode(s, pad != nullptr); first != Mode::Idle) session.select(first);
-  if (held_wrist_change)
-    control.shiftHeldWrist(*held_wrist_change);  // once the replay has read the pose
+  if (first_move) control.sendFirstMove(*first_move);  // once the replay has read the pose
   if (s.record == "yes") session.startRecording();
   turnUntilDone(session, control, platforms.slots, keys.get(), s);
   return 0;

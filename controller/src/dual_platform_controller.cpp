@@ -174,6 +174,10 @@ IterationReport DualPlatformController::manual(const recording::GamepadState& pa
   ArmPair next = mapped.joints;
   IterationReport clamp_report;
   clamp(next, clamp_report);
+  if (first_move_) {  // this iteration's increments: the recorded first move
+    for (std::size_t a = 0; a < 2; ++a) commanded_[a] = next[a] - (*first_move_)[a];
+    first_move_.reset();
+  }
   const auto changed = [&] {
     const auto now_read = live();
     return !now_read || !(*now_read == pad);

@@ -39,16 +39,6 @@ void GamepadMapping::reset(const ArmPair& joints) {
   }
 }
 
-void GamepadMapping::shiftHeldWrist(const ArmPair& change) {
-  for (Arm arm : raven::kArms) {
-    const ArmJoints& d = change[slot(arm)];
-    ArmTarget& t = targets_[slot(arm)];
-    t.roll += d(raven::kRoll);
-    t.wrist += d(raven::kWrist);
-    t.jaw_difference += d(raven::kJaw1) - d(raven::kJaw2);
-  }
-}
-
 bool GamepadMapping::outsideDeadzone(double x, double y) const {
   const double across = constants_.deadzone_reads_y_twice ? y : x;
   return std::sqrt(across * across + y * y) > constants_.deadzone;

@@ -218,29 +218,40 @@ Eigen::Vector3d heldValues(const raven::ArmJoints& q) {
   return {q(raven::kRoll), q(raven::kWrist), q(raven::kJaw1) - q(raven::kJaw2)};
 }
 
-TEST(ShippedCalibration, AReplayHoldsTheWristValuesTheRobotsControllerHeld) {
+TEST(ShippedCalibration, AReplayMakesTheFirstMoveTheRobotsControllerMade) {
   auto paper = paper2arm();
   if (!paper) GTEST_SKIP() << "../shared/data is absent: the paper's recordings are needed";
-  twin::CalibrationProfile::shipped().applyTo(paper->setup.twin);
+  const auto profile = twin::CalibrationProfile::shipped();
+  profile.applyTo(paper->setup.twin);
   const auto score = calibration::scoreReplays(paper->setup, paper->physical);
-  // Under M2 nothing moves these setpoints after the first move: the twin's stay on the
-  // robot's to within the increments the robot lost (the twin applies the median share).
-  double worst = 0.0, unheld = 0.0;
+  const double lost = 1.0 - profile.servo_jr_delivered;  // the twin's share of each increment
+  double worst_held = 0.0, unheld = 0.0, worst_grasp = 0.0;
   for (std::size_t t = 0; t < paper->physical.size(); ++t) {
     const auto& robot = paper->physical[t].actuators.value();
     const auto twin = analysis::actuatorTrace(score.replays[t]);
     for (std::size_t a = 0; a < 2; ++a) {
-      const Eigen::Vector3d at_start = heldValues(robot.arms[a].front().joint_setpoint);
+      const raven::ArmJoints& start = robot.arms[a].front().joint_setpoint;
+      // Under M2 nothing moves roll, wrist and jaw difference after the first move: the
+      // twin's stay on the robot's to within the increments the robot lost.
       for (std::size_t r = 2; r < std::min(robot.rows(), twin.rows()); ++r) {
         const Eigen::Vector3d robot_held = heldValues(robot.arms[a][r].joint_setpoint);
-        worst = std::max(
-            worst, (heldValues(twin.arms[a][r].joint_setpoint) - robot_held).cwiseAbs().maxCoeff());
-        unheld = std::max(unheld, (at_start - robot_held).cwiseAbs().maxCoeff());
+        worst_held = std::max(
+            worst_held,
+            (heldValues(twin.arms[a][r].joint_setpoint) - robot_held).cwiseAbs().maxCoeff());
+        unheld = std::max(unheld, (heldValues(start) - robot_held).cwiseAbs().maxCoeff());
       }
+      // The jaws' sum once the first move is delivered: the robot's, less the share of it
+      // the twin loses.
+      const auto sum = [](const raven::ArmJoints& q) { return q(raven::kJaw1) + q(raven::kJaw2); };
+      const double robot_sum = sum(robot.arms[a][10].joint_setpoint);
+      const double moved = std::abs(robot_sum - sum(start));
+      worst_grasp = std::max(
+          worst_grasp, std::abs(sum(twin.arms[a][10].joint_setpoint) - robot_sum) - lost * moved);
     }
   }
-  EXPECT_LT(worst, 1e-3) << "rad";
+  EXPECT_LT(worst_held, 1e-3) << "rad";
   EXPECT_GT(unheld, 0.05) << "rad: the robot's controller held values its first row does not show";
+  EXPECT_LT(worst_grasp, 2e-4) << "rad past the share the twin loses";
 }
 
 TEST(ShippedCalibration, PutsThe2armReplaysWithinTheRobotsOwnSpread) {

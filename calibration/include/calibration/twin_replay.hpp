@@ -22,9 +22,9 @@ struct ReplaySetup {
   /// Set: the twin starts where a recording began (moved there after homing, then its
   /// actuators placed in the recorded state); unset: at its home.
   std::optional<twin::RecordedStart> start;
-  /// Set: how far the wrist values the recording's controller held sat from the start's
-  /// (controller::heldWristChange); the replay's controller holds its own that far off.
-  std::optional<raven::ArmPair> held_wrist_change;
+  /// Set: the first move the recording's controller made (controller::firstMoveOf), which the
+  /// replay's first iteration sends (DualPlatformController::sendFirstMove).
+  std::optional<raven::ArmPair> first_move;
 };
 
 /// Builds, enables and homes a twin, replays every input row and returns one trial row per

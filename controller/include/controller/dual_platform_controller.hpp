@@ -80,8 +80,10 @@ class DualPlatformController {
 
   /// Re-reads the pose from the reference platform's measured joints.
   void readPose();
-  /// The wrist values a controller started earlier held (GamepadMapping::shiftHeldWrist).
-  void shiftHeldWrist(const ArmPair& change) { mapping_.shiftHeldWrist(change); }
+  /// The next manual iteration sends `change` from where the arms' setpoints stand, whatever
+  /// its own targets were: the first move a recording shows its controller made (firstMoveOf),
+  /// for a replay from that recording's start. The targets then go on from the mapping's.
+  void sendFirstMove(const ArmPair& change) { first_move_ = change; }
   /// O1: from the current targets to the controller's home under the caps, then the stored
   /// wrist values are reset.
   IterationReport home();
@@ -125,9 +127,13 @@ class DualPlatformController {
     long dance_count;
     double mode_start;
     double since_command;
+    std::optional<ArmPair> first_move;
   };
-  State state() const { return {commanded_, mapping_, dance_count_, mode_start_, since_command_}; }
+  State state() const {
+    return {commanded_, mapping_, dance_count_, mode_start_, since_command_, first_move_};
+  }
   void restore(const State& state) {
+    first_move_ = state.first_move;
     commanded_ = state.commanded;
     mapping_ = state.mapping;
     dance_count_ = state.dance_count;
@@ -170,6 +176,7 @@ class DualPlatformController {
   ControllerOptions options_;
   raven::PlatformProfile profile_;
   ArmPair commanded_;
+  std::optional<ArmPair> first_move_;  ///< sendFirstMove's, until the next manual iteration
   GamepadMapping mapping_;
   SineDance dance_;
   long dance_count_ = 0;

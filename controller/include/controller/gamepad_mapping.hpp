@@ -55,9 +55,6 @@ class GamepadMapping {
 
   /// Re-reads the pose: targets, stored wrist values and grasp from `joints`.
   void reset(const ArmPair& joints);
-  /// Moves each arm's held roll, wrist and jaw difference by `change`'s (what a controller
-  /// started earlier held, heldWristChange), its targets and grasp as they are.
-  void shiftHeldWrist(const ArmPair& change);
   /// One manual-loop iteration. `measured` is read when A asks to re-read the pose.
   MappingResult apply(const recording::GamepadState& pad, const ArmPair& measured);
 
