@@ -1,6 +1,7 @@
 #include "calibration/mechanics_information.hpp"
 
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <cmath>
 
 #include "calibration/setpoint_replay.hpp"
@@ -14,7 +15,35 @@ using analysis::ActuatorSignal;
 
 constexpr double kDegreesPerRadian = 180.0 / M_PI;
 
+/// The finite-difference step for value `v` at `x`: relative where the value is positive by
+/// nature, absolute where it may be 0 or of either sign.
+double differenceStep(int v, double x) {
+  using M = twin::MotorMechanics;
+  switch (v) {
+    case 0:  // inertia
+      return 0.05 * x;
+    case 1:  // coulomb (N m)
+      return std::max(0.05 * x, 1e-3);
+    case 2:  // load_friction (a fraction of the load)
+      return 0.02;
+    case 3:  // viscous (N m s)
+      return std::max(0.05 * x, 1e-5);
+    case M::kOffset:  // N m
+      return 1e-3;
+    case M::kFace:  // rad
+      return 1e-3;
+    default:  // gravity_error (a fraction of the weight)
+      return 0.02;
+  }
+}
+
 }  // namespace
+
+bool motorHasValue(int joint, int v) {
+  if (v == twin::MotorMechanics::kFace) return joint >= raven::kJaw1;
+  if (v == twin::MotorMechanics::kGravityError) return joint <= raven::kInsertion;
+  return true;
+}
 
 std::array<raven::ArmJoints, 3> quantisationNoise(raven::Arm arm) {
   const twin::DriveTrain drive = twin::DriveTrain::raven2();
@@ -115,12 +144,7 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
       h[a] = m[a];
       for (int j = 0; j < raven::kJointCount; ++j) {
         double& x = m[a].field(static_cast<std::size_t>(v))(j);
-        // Relative steps, absolute where the value may be 0 (friction, offset, gravity error).
-        const double d = v == 0   ? 0.05 * x
-                         : v == 3 ? 0.02
-                         : v == twin::MotorMechanics::kOffset
-                             ? 1e-3
-                             : std::max(0.05 * x, v == 1 ? 1e-3 : 1e-5);
+        const double d = differenceStep(v, x);
         h[a].field(static_cast<std::size_t>(v))(j) = d;
         x += d;
       }
@@ -141,11 +165,11 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
                       .cwiseQuotient(sigma[a][s]);
         }
         for (int j = 0; j < raven::kJointCount; ++j) {
-          // Only the arm motors have a gravity error.
-          const int values = j <= raven::kInsertion ? kMechanicsValues : kMechanicsValues - 1;
           Eigen::Matrix<double, kMechanicsValues, 1> g =
               Eigen::Matrix<double, kMechanicsValues, 1>::Zero();
-          for (int v = 0; v < values; ++v) g(v) = dy[static_cast<std::size_t>(v)](j);
+          for (int v = 0; v < kMechanicsValues; ++v) {
+            if (motorHasValue(j, v)) g(v) = dy[static_cast<std::size_t>(v)](j);
+          }
           info.blocks[a][static_cast<std::size_t>(j)] += g * g.transpose();
         }
       }

@@ -145,8 +145,9 @@ TEST(CalibrationFile, AProfileWrittenBeforeTheOffsetWasFittedHasNone) {
   }
 }
 
-TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
-  // A recording that moves only the left shoulder, its setpoints as the robot would log them.
+/// A recording that moves only the left shoulder, its setpoints as the robot would log them;
+/// the left jaws are held at `left_jaws` each.
+analysis::ActuatorTrace shoulderSweep(double left_jaws = M_PI / 4) {
   analysis::ActuatorTrace trace;
   const auto drive = twin::DriveTrain::raven2();
   raven::ArmJoints home;
@@ -155,6 +156,7 @@ TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
     const double t = 0.02 * r;
     raven::ArmJoints q = home;
     q(raven::kShoulder) += 0.05 * std::sin(2.0 * M_PI * 0.5 * t);
+    q(raven::kJaw1) = q(raven::kJaw2) = left_jaws;
     trace.time.push_back(t);
     for (raven::Arm arm : raven::kArms) {
       auto& a = trace.arms[raven::slot(arm)];
@@ -164,6 +166,11 @@ TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
       a.push_back({set, set, motor, zero, motor, zero, zero});
     }
   }
+  return trace;
+}
+
+TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
+  const auto trace = shoulderSweep();
   const auto mechanics = calibration::startingMechanics();
   const auto one = calibration::informationOf(mechanics, trace);
   auto two = one;
@@ -176,6 +183,22 @@ TEST(Information, GrowsWithRecordingsAndIsNilForAMotorThatNeverMoves) {
               1e-9 + 1e-6 * sd_one[0].coulomb(raven::kShoulder));
   // The right shoulder held still against friction: its Coulomb friction changes nothing.
   EXPECT_LT(one.blocks[1][raven::kShoulder](1, 1), 1e-6 * one.blocks[0][raven::kShoulder](1, 1));
+}
+
+// Every value a motor has is covered, and none it has not: the left jaws commanded past where
+// they meet (their faces then set where they stop), the shoulder lifting the arm's weight.
+TEST(Information, CoversEveryValueAMotorHasAndNoOther) {
+  const auto sd = calibration::informationOf(calibration::startingMechanics(), shoulderSweep(-0.05))
+                      .standardDeviations();
+  const twin::MotorMechanics& left = sd[0];
+  EXPECT_GT(left.gravity_error(raven::kShoulder), 0.0);
+  EXPECT_GT(left.viscous(raven::kShoulder), 0.0);
+  EXPECT_GT(left.offset(raven::kShoulder), 0.0);
+  EXPECT_GT(left.face(raven::kJaw1), 0.0);
+  EXPECT_GT(left.face(raven::kJaw2), 0.0);
+  EXPECT_EQ(left.face(raven::kShoulder), 0.0);
+  EXPECT_EQ(left.face(raven::kRoll), 0.0);
+  EXPECT_EQ(left.gravity_error(raven::kJaw1), 0.0);
 }
 
 TEST(ActuationFit, AShortFitImprovesOnItsStartingPoint) {

@@ -16,7 +16,10 @@
 namespace calibration {
 
 /// The order of each motor's values in its block.
-inline constexpr int kMechanicsValues = 6;  ///< twin::MotorMechanics::kNames
+inline constexpr int kMechanicsValues = static_cast<int>(twin::MotorMechanics::kNames.size());
+/// Whether motor `joint` has value `v` (kNames index): a face only on the jaws, a gravity error
+/// only on the arm motors (shoulder, elbow, insertion); every other value on every motor.
+bool motorHasValue(int joint, int v);
 using InformationBlock = Eigen::Matrix<double, kMechanicsValues, kMechanicsValues>;
 
 struct MechanicsInformation {
