@@ -233,6 +233,11 @@ std::optional<raven::ArmPair> firstMove(const Settings& s,
         "{}: its controller's first move does not show (the replay starts from the "
         "twin's own pose)",
         s.start_from);
+  } else {
+    spdlog::info(
+        "{}: the first iteration makes its controller's first move (roll {:+.4f} / "
+        "{:+.4f} rad, left / right)",
+        s.start_from, (*move)[0](raven::kRoll), (*move)[1](raven::kRoll));
   }
   return move;
 }
