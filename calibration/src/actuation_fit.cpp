@@ -32,17 +32,21 @@ double fromUnit(const MechanicsParameter& p, double u) {
 
 std::vector<MechanicsParameter> mechanicsParameters(int joint) {
   const bool big = joint <= raven::kInsertion;
-  // In twin::MotorMechanics::kNames order.
-  std::vector<MechanicsParameter> p{
+  // In twin::MotorMechanics::kNames order. Where the jaws' faces meet: only their sum shows,
+  // and each jaw's motor has its say in it.
+  const std::vector<MechanicsParameter> all{
       {0, big ? 2e-5 : 1e-6, big ? 2e-3 : 2e-4, true},
       {1, 0.0, big ? 0.3 : 0.05, false},
       {2, 0.0, 0.8, false},
       {3, 0.0, big ? 0.02 : 0.002, false},
       {twin::MotorMechanics::kOffset, big ? -0.15 : -0.025, big ? 0.15 : 0.025, false},
+      {twin::MotorMechanics::kFace, -0.05, 0.05, false},
+      {twin::MotorMechanics::kGravityError, -0.8, 0.8, false},
   };
-  if (big) p.push_back({twin::MotorMechanics::kGravityError, -0.8, 0.8, false});
-  // Where the jaws' faces meet: only their sum shows, and each jaw's motor has its say in it.
-  if (joint >= raven::kJaw1) p.push_back({twin::MotorMechanics::kFace, -0.05, 0.05, false});
+  std::vector<MechanicsParameter> p;
+  for (const auto& parameter : all) {
+    if (motorHasValue(joint, static_cast<int>(parameter.field))) p.push_back(parameter);
+  }
   return p;
 }
 

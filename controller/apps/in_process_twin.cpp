@@ -54,11 +54,11 @@ std::unique_ptr<bridge::RavenPlatform> makeInProcessTwin(const InProcessTwinSett
     options.after_step = [video](const ambf_like::World& world) { video->capture(world); };
   }
   auto platform = std::make_unique<twin::TwinPlatform>(options);
-  if (!settings.start_from.empty()) {
-    const auto start = twin::recordedStart(recording::readRs(settings.start_from));
+  if (settings.start_from) {
+    const auto start = twin::recordedStart(*settings.start_from);
     bridge::enableAndHome(*platform, 60.0);
     twin::startAt(*platform, start);
-    spdlog::info("twin: placed where {} began", settings.start_from);
+    spdlog::info("twin: placed where {} began", settings.start_from->path.string());
   }
   return platform;
 }

@@ -9,6 +9,7 @@
 #include "bridge/raven_platform.hpp"
 #include "common/actuation_flag.hpp"
 #include "common/video_flags.hpp"
+#include "recording/recording_io.hpp"
 
 namespace controller_app {
 
@@ -30,8 +31,9 @@ struct InProcessTwinSettings {
   /// From --calibration; null: the shipped calibration's actuation.
   const ControllerCalibration* calibration = nullptr;
   common::VideoFlags video;  ///< of the twin; no file: none
-  /// An rs recording: the twin is enabled, homed and put where it began; empty: at home.
-  std::string start_from;
+  /// An rs recording (--start-from, read once): the twin is enabled, homed and put where it
+  /// began; null: at home.
+  const recording::RsRecording* start_from = nullptr;
 };
 
 /// The in-process twin; throws std::runtime_error in a build without the simulator.

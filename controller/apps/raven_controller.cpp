@@ -65,15 +65,13 @@ struct Platforms {
   std::vector<controller::PlatformSlot> slots;
 };
 
-/// `calibration`: the loaded --calibration profile, or null.
-Platforms makePlatforms(const Settings& s,
-                        const controller_app::ControllerCalibration* calibration) {
+/// `calibration`: the loaded --calibration profile, or null; `start_from`: the --start-from
+/// recording, or null.
+Platforms makePlatforms(const Settings& s, const controller_app::ControllerCalibration* calibration,
+                        const recording::RsRecording* start_from) {
   Platforms p;
   const bool want_physical = s.platform != "twin";
   const bool want_twin = s.platform != "physical";
-  if (!s.start_from.empty() && (!want_twin || want_physical || s.twin_over_ros)) {
-    throw std::runtime_error("--start-from places the in-process twin (--platform twin only)");
-  }
   if (!s.video.file.empty() && (!want_twin || s.twin_over_ros)) {
     throw std::runtime_error(
         "--video records the in-process twin (not --platform physical, not --twin-over-ros)");
@@ -93,7 +91,7 @@ Platforms makePlatforms(const Settings& s,
     p.slots.push_back({"twin", p.clients.back().get(), controller::CommandStyle::ServoJr});
   } else if (want_twin) {
     p.twin = controller_app::makeInProcessTwin(
-        {s.twin_launch, s.lock_step, s.actuation, calibration, s.video, s.start_from});
+        {s.twin_launch, s.lock_step, s.actuation, calibration, s.video, start_from});
     p.slots.push_back({"twin", p.twin.get(), controller::CommandStyle::ServoJr});
   }
   return p;
@@ -124,6 +122,9 @@ std::optional<Mode> modeFromKey(char key) {
 
 /// Refuses settings that do not go together, before anything is read or moves.
 void checkSettings(const Settings& s) {
+  if (!s.start_from.empty() && (s.platform != "twin" || s.twin_over_ros)) {
+    throw std::runtime_error("--start-from places the in-process twin (--platform twin only)");
+  }
   if (s.velocity_scale > 1.0 && s.platform != "twin") {
     throw std::runtime_error(
         "--velocity-scale above 1 raises the paper's joint speed caps: the "
@@ -216,28 +217,29 @@ void turnUntilDone(controller::ControllerSession& session,
   }
 }
 
-/// With --start-from and --replay-ci, the first move the recording's controller made
-/// (controller::firstMoveOf); otherwise none.
-std::optional<raven::ArmPair> firstMove(const Settings& s,
-                                        const std::vector<recording::GamepadState>& inputs) {
-  if (s.start_from.empty() || inputs.empty()) return std::nullopt;
-  const recording::RsRecording rs = recording::readRs(s.start_from);
+/// With a --start-from recording and --replay-ci inputs, the first move the recording's
+/// controller made (controller::firstMoveOf); otherwise none.
+std::optional<raven::ArmPair> firstMove(const recording::RsRecording* start_from,
+                                        const std::vector<recording::GamepadState>& inputs,
+                                        double deadzone) {
+  if (!start_from || inputs.empty()) return std::nullopt;
+  const recording::RsRecording& rs = *start_from;
   std::vector<raven::ArmPair> setpoints;
   for (std::size_t r = 0; r < rs.rows.size(); ++r) {
     setpoints.push_back({rs.signals(r, raven::Arm::Left).joint_setpoint,
                          rs.signals(r, raven::Arm::Right).joint_setpoint});
   }
-  auto move = controller::firstMoveOf(setpoints, inputs, s.deadzone);
+  auto move = controller::firstMoveOf(setpoints, inputs, deadzone);
   if (!move) {
     spdlog::warn(
         "{}: its controller's first move does not show (the replay starts from the "
         "twin's own pose)",
-        s.start_from);
+        rs.path.string());
   } else {
     spdlog::info(
         "{}: the first iteration makes its controller's first move (roll {:+.4f} / "
         "{:+.4f} rad, left / right)",
-        s.start_from, (*move)[0](raven::kRoll), (*move)[1](raven::kRoll));
+        rs.path.string(), (*move)[0](raven::kRoll), (*move)[1](raven::kRoll));
   }
   return move;
 }
@@ -255,6 +257,9 @@ int run(const Settings& s) {
     inputs.joints = recording::readRs(s.replay_rs);
     spdlog::info("{}: {}", s.replay_rs, inputs.joints->variant.describe());
   }
+  std::optional<recording::RsRecording> start_from;
+  if (!s.start_from.empty()) start_from = recording::readRs(s.start_from);
+  const recording::RsRecording* start = start_from ? &*start_from : nullptr;
   std::optional<bridge::ros1::MasterWatch> master_watch;  // over ROS: survive a master restart
   if (s.platform != "twin" || s.twin_over_ros) {
     int argc = 1;
@@ -263,10 +268,10 @@ int run(const Settings& s) {
     bridge::ros1::initRos(argc, argv, "raven_controller", /*ros_handles_sigint=*/false);
     master_watch.emplace();
   }
-  Platforms platforms = makePlatforms(s, calibration ? &*calibration : nullptr);
+  Platforms platforms = makePlatforms(s, calibration ? &*calibration : nullptr, start);
   makeReady(platforms.slots);
   controller::DualPlatformController control(platforms.slots, controllerOptions(s, calibration));
-  const auto first_move = firstMove(s, inputs.inputs);
+  const auto first_move = firstMove(start, inputs.inputs, s.deadzone);
 
   std::unique_ptr<controller::SdlGamepad> pad;
   if (!s.no_gamepad && !s.lock_step) {

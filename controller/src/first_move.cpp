@@ -14,13 +14,10 @@ bool standsStill(const raven::ArmPair& now, const raven::ArmPair& next) {
   return true;
 }
 
-bool stickMoves(double x, double y, double deadzone) {
-  return std::hypot(x, y) > deadzone || std::abs(x) > deadzone || std::abs(y) > deadzone;
-}
-
+/// A stick past the deadzone radially is past it on any axis too (M1's wrist test).
 bool asksForMotion(const recording::GamepadState& pad, double deadzone) {
-  return pad.a || pad.x || pad.y || stickMoves(pad.left_x, pad.left_y, deadzone) ||
-         stickMoves(pad.right_x, pad.right_y, deadzone);
+  return pad.a || pad.x || pad.y || std::hypot(pad.left_x, pad.left_y) > deadzone ||
+         std::hypot(pad.right_x, pad.right_y) > deadzone;
 }
 
 }  // namespace

@@ -21,7 +21,7 @@ struct MechanicsParameter {
   double lower = 0.0, upper = 1.0;
   bool log_scale = false;
 };
-/// The quantities fitted for joint `joint` (gravity_error only on shoulder, elbow, insertion).
+/// The quantities fitted for joint `joint`: those it has (motorHasValue), with their bounds.
 std::vector<MechanicsParameter> mechanicsParameters(int joint);
 
 /// The values a fit starts from: catalogue rotor inertias through the gearboxes, the friction
