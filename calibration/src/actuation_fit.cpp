@@ -32,8 +32,8 @@ double fromUnit(const MechanicsParameter& p, double u) {
 
 std::vector<MechanicsParameter> mechanicsParameters(int joint) {
   const bool big = joint <= raven::kInsertion;
-  // In twin::MotorMechanics::kNames order. Where the jaws' faces meet: only their sum shows,
-  // and each jaw's motor has its say in it.
+  // In twin::MotorMechanics::kNames order. Where the jaws' faces meet and how they give: only
+  // the pair's sums show, and each jaw's motor has its say in them.
   const std::vector<MechanicsParameter> all{
       {0, big ? 2e-5 : 1e-6, big ? 2e-3 : 2e-4, true},
       {1, 0.0, big ? 0.3 : 0.05, false},
@@ -41,6 +41,7 @@ std::vector<MechanicsParameter> mechanicsParameters(int joint) {
       {3, 0.0, big ? 0.02 : 0.002, false},
       {twin::MotorMechanics::kOffset, big ? -0.15 : -0.025, big ? 0.15 : 0.025, false},
       {twin::MotorMechanics::kFace, -0.05, 0.05, false},
+      {twin::MotorMechanics::kFaceCompliance, 0.0, 2.0, false},
       {twin::MotorMechanics::kGravityError, -0.8, 0.8, false},
   };
   std::vector<MechanicsParameter> p;

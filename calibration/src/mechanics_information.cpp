@@ -32,6 +32,8 @@ double differenceStep(int v, double x) {
       return 1e-3;
     case M::kFace:  // rad
       return 1e-3;
+    case M::kFaceCompliance:  // rad per N m
+      return std::max(0.05 * x, 0.01);
     default:  // gravity_error (a fraction of the weight)
       return 0.02;
   }
@@ -40,7 +42,9 @@ double differenceStep(int v, double x) {
 }  // namespace
 
 bool motorHasValue(int joint, int v) {
-  if (v == twin::MotorMechanics::kFace) return joint >= raven::kJaw1;
+  if (v == twin::MotorMechanics::kFace || v == twin::MotorMechanics::kFaceCompliance) {
+    return joint >= raven::kJaw1;
+  }
   if (v == twin::MotorMechanics::kGravityError) return joint <= raven::kInsertion;
   return true;
 }

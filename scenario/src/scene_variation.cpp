@@ -84,8 +84,9 @@ twin::ArmsMechanics SceneVariation::mechanics(const twin::ArmsMechanics& fit,
         double value = f + actuation_draw[a][k][static_cast<std::size_t>(i)] * actuation_sd *
                                sd[a].field(k)(i);
         value = std::clamp(value, range.low, range.high);
-        // An open bound is never reached: held halfway between the fit and it.
-        if (range.open && value <= range.low) value = 0.5 * (f + range.low);
+        // An open bound is never reached: a value is held at least halfway from it to the fit
+        // (an inertia at least half the fitted one).
+        if (range.open) value = std::max(value, 0.5 * (f + range.low));
         out[a].field(k)(i) = value;
       }
     }

@@ -62,6 +62,31 @@ TEST(CoupledStop, ASumPushedPastItsBoundRestsOnItAndBearsThePush) {
   EXPECT_NEAR(stop.force(), kPush, 1e-3 * kPush);
 }
 
+TEST(CoupledStop, OneThatGivesIsPressedPastItsBoundByTheForceTimesItsCompliance) {
+  // A spring where the sum passes its bound: pushed as above from rest on the bound, at rest
+  // the sum sits past it by compliance x force, and the force is the push (statics).
+  test_support::TempDir dir;
+  auto sim = twoLinkChain(dir, ambf_like::Articulation::Reduced);
+  ambf_like::World& world = *sim->world;
+  ambf_like::CoupledStop& stop = world.addCoupledStop({{"shoulder", "elbow"}, {1.0, 1.0}, 0.0});
+  constexpr double kCompliance = 2.0, kPush = 0.01;  // rad per N m, N m
+  stop.setCompliance(kCompliance);
+  double deepest = 0.0;
+  for (int k = 0; k < 6000; ++k) {
+    world.joint("shoulder").commandEffort(-kPush);
+    world.joint("elbow").commandEffort(-kPush);
+    world.step(1);
+    deepest = std::min(deepest, stop.gap());
+  }
+  EXPECT_NEAR(stop.gap(), -kCompliance * kPush, 0.02 * kCompliance * kPush);
+  EXPECT_NEAR(stop.force(), kPush, 0.02 * kPush);
+  // A step load on an undamped spring goes at most twice as deep as its statics; the implicit
+  // solve only loses energy, never gains it.
+  EXPECT_GT(deepest, -2.0 * kCompliance * kPush - 1e-6);
+  EXPECT_THROW(stop.setCompliance(-1.0), std::invalid_argument);
+  EXPECT_THROW(stop.setCompliance(std::nan("")), std::invalid_argument);
+}
+
 TEST(CoupledStop, ItNeverPulls) {
   // Both pushed away from the bound (the sum's acceleration is (1, 1) M^-1 (1, 1) times the push,
   // positive), the joints leave it freely: the stop gives nothing.

@@ -240,6 +240,32 @@ TEST(ArmDrive, JawsWithFittedFacesRestWhereTheseMeet) {
   EXPECT_NEAR(q(raven::kJaw1) + q(raven::kJaw2), 0.015, 4.0 * countInJoint(drive, raven::kJaw1));
 }
 
+TEST(ArmDrive, JawsOnFacesThatGiveArePressedPastThemByTheLoadTimesTheCompliance) {
+  // Faces that give 0.1 rad each per N m (the pair 0.2): jaws closed 0.02 rad each past where
+  // they meet come to rest there once the integrators have wound, each jaw's joint pressed
+  // open with 0.04 / 0.2 = 0.2 N m, which the motors' Tau carries through the cables (joint
+  // loads are C^T Tau / gearbox). No Coulomb friction; viscous friction, which a PI loop on an
+  // inertia needs to be stable at all (Routh: viscous x KP > inertia x KI), and no more.
+  const auto drive = twin::DriveTrain::raven2();
+  ArmJoints start = home();
+  start(raven::kJaw1) = start(raven::kJaw2) = 0.05;
+  twin::MotorMechanics mechanics = frictionless(1e-5);
+  mechanics.viscous.setConstant(1e-4);
+  mechanics.face_compliance(raven::kJaw1) = mechanics.face_compliance(raven::kJaw2) = 0.1;
+  twin::ArmDrive arm(Arm::Left, drive, mechanics, 0.001, start, {{}, 0.0});
+  ArmJoints setpoint = start;
+  setpoint(raven::kJaw1) = setpoint(raven::kJaw2) = -0.02;
+  for (int k = 0; k < 60000; ++k) arm.cycle(setpoint);
+  const auto& r = arm.readings();
+  const double sum = r.position(raven::kJaw1) + r.position(raven::kJaw2);
+  EXPECT_NEAR(sum, -0.04, 4.0 * countInJoint(drive, raven::kJaw1));
+  const ArmJoints load =
+      drive.coupling(Arm::Left).transpose() * r.torque.cwiseQuotient(drive.gearbox);
+  for (int jaw : {raven::kJaw1, raven::kJaw2}) {
+    EXPECT_NEAR(-load(jaw), -sum / 0.2, 0.05 * 0.2) << "jaw " << jaw;
+  }
+}
+
 TEST(ArmDrive, AfterTheSoftEStopTheAmplifiersStayOffUntilTheFaultIsCleared) {
   const auto drive = twin::DriveTrain::raven2();
   twin::ArmDrive arm(Arm::Right, drive, frictionless(2e-4), 0.001, home());

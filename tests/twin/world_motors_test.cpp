@@ -273,6 +273,40 @@ TEST(WorldMotors, JawsWithFittedFacesStopWhereTheseMeet) {
   EXPECT_NEAR(twin->arms().jawStop(arm)->gap(), 0.0, 1e-3) << "resting on the stop";
 }
 
+TEST(WorldMotors, JawsOnFacesThatGiveArePressedPastThemByTheLoadTimesTheCompliance) {
+  // The calibration's face compliances (0.1 rad per N m each, the pair 0.2) make the World's
+  // stop a spring: jaws closed hard on nothing go past where the faces meet by 0.2 rad per N m
+  // each joint is pressed with, and that is what the motors push through the cables.
+  twin::TwinOptions options = frictionlessMotors();
+  (*options.motors)[0].face_compliance(raven::kJaw1) = 0.1;
+  (*options.motors)[0].face_compliance(raven::kJaw2) = 0.1;
+  auto twin = test_support::readyTwin(options);
+  const Arm arm = Arm::Left;
+  ArmJoints close = ArmJoints::Zero();
+  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;
+  while (twin->setpointJs(arm).position(raven::kJaw1) > -0.1) {
+    twin->send(bridge::ServoJr{arm, close});
+    twin->advance(0.001);
+  }
+  twin->advance(0.5);
+  const ambf_like::CoupledStop* stop = twin->arms().jawStop(arm);
+  ASSERT_NE(stop, nullptr);
+  const auto drive = twin::DriveTrain::raven2();
+  const ArmJoints by_motors =
+      drive.coupling(arm).transpose() * appliedTorque(*twin, arm).cwiseQuotient(drive.gearbox);
+  const ArmJoints q = twin->measuredJs(arm).position;
+  std::printf("faces that give: past by %.4f rad, stop %.4f N m, motors %.4f/%.4f N m\n",
+              -(q(raven::kJaw1) + q(raven::kJaw2)), stop->force(), -by_motors(raven::kJaw1),
+              -by_motors(raven::kJaw2));
+  EXPECT_GT(stop->force(), 0.05) << "pressed hard (N m)";
+  EXPECT_NEAR(stop->gap(), -0.2 * stop->force(), 0.02 * 0.2 * stop->force());
+  EXPECT_NEAR(-(q(raven::kJaw1) + q(raven::kJaw2)), 0.2 * stop->force(),
+              0.05 * 0.2 * stop->force() + 4.0 * test_support::countInJoint(drive, raven::kJaw1));
+  for (int motor : {raven::kJaw1, raven::kJaw2}) {
+    EXPECT_NEAR(-by_motors(motor), stop->force(), 0.05 * stop->force()) << "motor " << motor;
+  }
+}
+
 TEST(WorldMotors, JawsClosedOnEachOtherStopThereAndWindTheirIntegratorsUp) {
   // Acceptance 1(d): both jaws commanded 0.1 rad past the faces' meeting (opening -0.2, a grasp
   // closed hard on nothing, as the robot's recordings hold it for seconds). The faces stop the

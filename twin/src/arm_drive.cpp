@@ -1,5 +1,6 @@
 #include "twin/arm_drive.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <stdexcept>
 
@@ -30,7 +31,14 @@ ArmDrive::ArmDrive(Arm arm, const DriveTrain& drive, double cycle, ArmStops stop
       stops_(std::move(stops)),
       motors_(std::move(motors)),
       controller_(arm, drive),
-      coupling_(drive.coupling(arm)) {}
+      coupling_(drive.coupling(arm)) {
+  ArmJoints jaws = ArmJoints::Zero();
+  jaws(raven::kJaw1) = jaws(raven::kJaw2) = 1.0;
+  // d(jaw1 + jaw2)/d(motor angles) is C^-T (1 on each jaw); joint loads are C^T (torque /
+  // gearbox), so the torques that press each jaw with one N m are the gearbox times the same.
+  opening_per_motor_ = coupling_.transpose().partialPivLu().solve(jaws);
+  opening_torques_ = drive_.gearbox.cwiseProduct(opening_per_motor_);
+}
 
 ArmJoints ArmDrive::linkPosition() const {
   return drive_.toJoints(arm_, std::visit([](const auto& m) { return m.position(); }, motors_));
@@ -81,9 +89,35 @@ const ActuatorReadings& ArmDrive::cycle(const ArmJoints& setpoint) {
   r.torque = command.torque;
   r.dac = command.dac;
   r.effort = coupling_.transpose() * command.applied.cwiseQuotient(drive_.gearbox);
-  std::visit([&](auto& m) { m.step(command.applied, command.gravity, cycle_); }, motors_);
+  const ArmJoints pushed = command.applied + facesPush(command.applied);
+  std::visit([&](auto& m) { m.step(pushed, command.gravity, cycle_); }, motors_);
   holdAtStops();
   return r;
+}
+
+double ArmDrive::jawsGap(const MotorAxes& motors) const {
+  const ArmJoints q = drive_.toJoints(arm_, motors.position());
+  return q(raven::kJaw1) + q(raven::kJaw2) -
+         (*stops_.jaws_meet + motors.mechanics().jawsMeetOffset());
+}
+
+ArmJoints ArmDrive::facesPush(const ArmJoints& applied) const {
+  const auto* motors = std::get_if<MotorAxes>(&motors_);
+  if (motors == nullptr || !stops_.jaws_meet) return ArmJoints::Zero();
+  const MotorMechanics& m = motors->mechanics();
+  const double compliance = m.jawsMeetCompliance();
+  if (compliance <= 0.0) return ArmJoints::Zero();
+  // The soft row of CoupledLimitConstraint on the opening: the impulse (N m s on each jaw)
+  // solves (A + compliance / h^2) impulse = -(opening rate + gap / h), pushing only, where A
+  // is how fast one N m s opens the jaws through the motors' inertia, and the rate is the one
+  // the motors' torques alone would give at the cycle's end (their friction only slows it).
+  const double h = cycle_;
+  const double gap = jawsGap(*motors);
+  const ArmJoints free_velocity = motors->velocity() + h * applied.cwiseQuotient(m.inertia);
+  const double mobility = opening_per_motor_.dot(opening_torques_.cwiseQuotient(m.inertia));
+  const double impulse = std::max(-(opening_per_motor_.dot(free_velocity) + gap / h), 0.0) /
+                         (mobility + compliance / (h * h));
+  return opening_torques_ * (impulse / h);
 }
 
 void ArmDrive::holdAtStops() {
@@ -93,10 +127,8 @@ void ArmDrive::holdAtStops() {
   const bool within_joints =
       !stops_.joints ||
       (q.array() >= stops_.joints->low.array() && q.array() <= stops_.joints->high.array()).all();
-  const double closed_past = stops_.jaws_meet
-                                 ? *stops_.jaws_meet + motors->mechanics().jawsMeetOffset() -
-                                       (q(raven::kJaw1) + q(raven::kJaw2))
-                                 : 0.0;
+  const bool rigid_faces = stops_.jaws_meet && motors->mechanics().jawsMeetCompliance() <= 0.0;
+  const double closed_past = rigid_faces ? std::max(-jawsGap(*motors), 0.0) : 0.0;
   if (within_joints && closed_past <= 0.0) return;
   ArmJoints v = drive_.toJoints(arm_, motors->velocity());  // linear: velocities map alike
   if (!within_joints) {

@@ -24,13 +24,14 @@ constexpr const char* kFit = "fit";
 
 /// One arm's lists: fitted `values` (inertia > 0, gravity_error > -1, offset of either sign;
 /// MotorMechanics checks the rest when a twin is built) or uncertainties (all >= 0). A profile
-/// written before the offset or the jaws' faces were fitted has none: 0.
+/// written before the offset, the jaws' faces or their compliance were fitted has none: 0.
 MotorMechanics readMechanics(const common::YamlView& node, bool values) {
   MotorMechanics m;
   for (std::size_t k = 0; k < MotorMechanics::kNames.size(); ++k) {
     const bool gravity = k == MotorMechanics::kGravityError;
     const bool offset = k == MotorMechanics::kOffset || k == MotorMechanics::kFace;
-    if (offset && !node.find(MotorMechanics::kNames[k])) continue;
+    const bool later = offset || k == MotorMechanics::kFaceCompliance;
+    if (later && !node.find(MotorMechanics::kNames[k])) continue;
     const double minimum = !values ? 0.0 : gravity ? -1.0 : offset ? -INFINITY : 0.0;
     m.field(k) =
         readJoints(node[MotorMechanics::kNames[k]], minimum, values && (k == 0 || gravity));

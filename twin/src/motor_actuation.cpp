@@ -15,7 +15,8 @@ ArmDrive MotorActuation::makeDrive(Arm arm, TwinArms& arms, ambf_like::World& wo
     return ArmDrive(arm, drive, mechanics, cycle, arms.measured(arm),
                     {arms.hardStops(arm), arms.jawsMeet()});
   }
-  arms.offsetJawsMeet(arm, mechanics.checked(arm).jawsMeetOffset());
+  const MotorMechanics& checked = mechanics.checked(arm);
+  arms.placeJawsMeet(arm, checked.jawsMeetOffset(), checked.jawsMeetCompliance());
   return ArmDrive(arm, drive, WorldMotors(arm, drive, mechanics, arms, world), cycle);
 }
 

@@ -23,6 +23,8 @@ const ArmJoints& MotorMechanics::field(std::size_t k) const {
       return offset;
     case kFace:
       return face;
+    case kFaceCompliance:
+      return face_compliance;
     default:
       return gravity_error;
   }
@@ -45,6 +47,10 @@ std::string MotorMechanics::invalidReason() const {
 
 double MotorMechanics::jawsMeetOffset() const {
   return face(raven::kJaw1) + face(raven::kJaw2);
+}
+
+double MotorMechanics::jawsMeetCompliance() const {
+  return face_compliance(raven::kJaw1) + face_compliance(raven::kJaw2);
 }
 
 const MotorMechanics& MotorMechanics::checked(Arm arm) const {

@@ -90,8 +90,11 @@ double TwinArms::jawStopLower(Arm arm) const {
   return *jaws_meet_ + jaw1.offset / jaw1.scale + jaw2.offset / jaw2.scale;
 }
 
-void TwinArms::offsetJawsMeet(Arm arm, double offset) {
-  if (auto* stop = jaw_stops_[raven::slot(arm)]) stop->setLower(jawStopLower(arm) + offset);
+void TwinArms::placeJawsMeet(Arm arm, double offset, double compliance) {
+  auto* stop = jaw_stops_[raven::slot(arm)];
+  if (stop == nullptr) return;
+  stop->setLower(jawStopLower(arm) + offset);
+  stop->setCompliance(compliance);
 }
 
 void TwinArms::command(Arm arm, const ArmJoints& joints) {

@@ -81,10 +81,21 @@ void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& ro
   row.m_contactNormal2.setZero();
   row.m_relpos1CrossNormal.setZero();
   row.m_relpos2CrossNormal.setZero();
+  const double gap = this->gap();
+  if (compliance_ > 0.0) {
+    // A spring past the bound, solved implicitly (the soft constraint of Catto, undamped): the
+    // impulse p solves (J M^-1 J^T + compliance / dt^2) p = -(closing + gap / dt), pushing only;
+    // at rest past the bound it holds the sum where the force is -gap / compliance.
+    const double softness = compliance_ / (dt * dt);
+    row.m_jacDiagABInv = 1.0 / (1.0 / row.m_jacDiagABInv + softness);
+    row.m_cfm = softness * row.m_jacDiagABInv;
+    row.m_rhs = (-closing - gap / dt) * row.m_jacDiagABInv;
+    row.m_rhsPenetration = 0.0;
+    return;
+  }
   // Apart: the sum may close by the gap in this step, no more (a speculative contact's row).
   // Past the bound: it stops, and the error is pushed out at the solver's error-reduction rate
   // (a shallow one as a separate push when the solver splits impulses, as Bullet's limits do).
-  const double gap = this->gap();
   const bool split = info.m_splitImpulse && -gap <= info.m_splitImpulsePenetrationThreshold;
   const double velocity_error = -closing - std::max(gap, 0.0) / dt;
   const double position_error = std::max(-gap, 0.0) * (split ? info.m_erp2 : info.m_erp) / dt;

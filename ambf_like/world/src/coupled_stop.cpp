@@ -52,6 +52,14 @@ void CoupledStop::setLower(double lower) {
   spec_.lower = lower;
 }
 
+void CoupledStop::setCompliance(double compliance) {
+  if (!std::isfinite(compliance) || compliance < 0.0) {
+    throw std::invalid_argument("coupled stop: compliance " + std::to_string(compliance) +
+                                " is not finite and >= 0");
+  }
+  constraint_->setCompliance(compliance);
+}
+
 namespace {
 
 /// The multibody link whose joint is degree of freedom `dof` of `multibody`.

@@ -63,8 +63,17 @@ class ArmDrive {
            std::variant<MotorAxes, WorldMotors> motors);
   void sense();
   /// A joint that passed its stop is put back on it, its speed into the stop gone (an
-  /// inelastic stop), and the motors with it; jaws closed past each other are parted alike.
+  /// inelastic stop), and the motors with it; jaws closed past each other are parted alike
+  /// where their faces are rigid.
   void holdAtStops();
+  /// How far (rad of jaw1 + jaw2) the jaws the motors alone hold are open from where their
+  /// faces meet (< 0: closed past it). Only with a jaws' stop.
+  double jawsGap(const MotorAxes& motors) const;
+  /// The torques (at the gearbox outputs) with which faces that give (MotorMechanics::
+  /// face_compliance) push the jaws apart this cycle, the motors driven by `applied`: the
+  /// World's soft stop (CoupledStop) on the motors alone, solved on their velocity at the
+  /// cycle's end, so it takes energy out and never puts it in.
+  ArmJoints facesPush(const ArmJoints& applied) const;
 
   Arm arm_;
   DriveTrain drive_;
@@ -74,6 +83,9 @@ class ArmDrive {
   MotorController controller_;
   /// d(motor)/d(joint): joint loads are its transpose times motor torques.
   Eigen::Matrix<double, kJointCount, kJointCount> coupling_;
+  /// The jaws' opening (jaw1 + jaw2) per motor angle, and the torques (at the gearbox outputs)
+  /// that press both jaws open with 1 N m: the faces' row, in the motors' terms.
+  ArmJoints opening_per_motor_, opening_torques_;
   ActuatorReadings readings_;
   ArmJoints last_count_;  ///< the previous cycle's quantised motor angles
   std::string fault_;

@@ -31,17 +31,26 @@ struct MotorMechanics {
   /// over where the model's meshes meet. Where the robot's jaw faces meet is no number the
   /// reference gives (the tool's homing and its wear set it); the data do.
   ArmJoints face = ArmJoints::Zero();
+  /// The jaws only: how far each jaw gives (rad) per N m its joint is pressed with where the
+  /// faces meet: its cable stretching and its face in series. The pair gives by the sum of the
+  /// two (only the sum shows in the data); 0, the default, is a rigid stop.
+  ArmJoints face_compliance = ArmJoints::Zero();
   /// The arm's weight over the firmware's estimate, minus one (joints 1-3): 0 = exact.
   ArmJoints gravity_error = ArmJoints::Zero();
 
   /// The fields in a fixed order: calibration files, fits and their uncertainty use it.
-  static constexpr std::array<std::string_view, 7> kNames{
-      "inertia", "coulomb", "load_friction", "viscous", "offset", "face", "gravity_error"};
-  static constexpr int kOffset = 4;        ///< its index: a value that may be negative
-  static constexpr int kFace = 5;          ///< its index: only the jaws have one, of either sign
-  static constexpr int kGravityError = 6;  ///< its index (the last): only the arm motors have one
+  static constexpr std::array<std::string_view, 8> kNames{
+      "inertia", "coulomb", "load_friction",   "viscous",
+      "offset",  "face",    "face_compliance", "gravity_error"};
+  static constexpr int kOffset = 4;          ///< its index: a value that may be negative
+  static constexpr int kFace = 5;            ///< its index: only the jaws have one, of either sign
+  static constexpr int kFaceCompliance = 6;  ///< its index: only the jaws have one
+  static constexpr int kGravityError = 7;    ///< its index (the last): only the arm motors have one
   /// The pair's meeting over the model's (rad of jaw1 + jaw2): the sum of the jaws' faces.
   double jawsMeetOffset() const;
+  /// How far the pair closes past where its faces meet (rad of jaw1 + jaw2) per N m each jaw's
+  /// joint is pressed with: the sum of the jaws' face compliances (0: a rigid stop).
+  double jawsMeetCompliance() const;
   /// What a field's values can be: at least `low` (more than it when `open`), at most `high`.
   struct ValueRange {
     double low, high;
@@ -57,6 +66,7 @@ struct MotorMechanics {
        {0.0, kUnbounded, false, ">= 0"},
        {-kUnbounded, kUnbounded, false, "finite"},
        {-0.5, 0.5, false, "within -0.5..0.5 rad"},
+       {0.0, 2.0, false, "within 0..2 rad per N m"},
        {-1.0, kUnbounded, true, "> -1"}}};
   ArmJoints& field(std::size_t k);
   const ArmJoints& field(std::size_t k) const;

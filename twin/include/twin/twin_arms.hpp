@@ -71,9 +71,10 @@ class TwinArms {
   /// The World's stop the jaws of `arm` meet at: null where they pass through each other or
   /// the arm is not articulated.
   const ambf_like::CoupledStop* jawStop(Arm arm) const { return jaw_stops_[raven::slot(arm)]; }
-  /// Moves the arm's jaws' stop by `offset` (rad of jaw1 + jaw2) from jawsMeet(): where the
-  /// robot's faces meet (MotorMechanics::face). Nothing without a stop.
-  void offsetJawsMeet(Arm arm, double offset);
+  /// Moves the arm's jaws' stop by `offset` (rad of jaw1 + jaw2) from jawsMeet(), where the
+  /// robot's faces meet (MotorMechanics::face), and makes it give by `compliance` (rad of
+  /// jaw1 + jaw2 per N m on each jaw; MotorMechanics::face_compliance). Nothing without a stop.
+  void placeJawsMeet(Arm arm, double offset, double compliance);
   /// Every body the arm's joints connect, qualified names.
   const std::vector<std::string>& bodies(Arm arm) const { return bodies_[raven::slot(arm)]; }
 

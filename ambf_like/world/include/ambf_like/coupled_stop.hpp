@@ -37,6 +37,9 @@ class CoupledStop {
   /// Moves the bound to `lower` (finite; a calibration that places the stop after the model's
   /// load): the sum stops there from the next step.
   void setLower(double lower);
+  /// Makes the stop give (finite, >= 0): past its bound the sum goes `compliance` (rad per N m,
+  /// or m per N) per unit of the force it is pressed with, as a spring; 0 is rigid.
+  void setCompliance(double compliance);
   /// The generalised force (N m or N, >= 0) the stop applied along the gains in the last step:
   /// joint i felt gains[i] times it.
   double force() const;

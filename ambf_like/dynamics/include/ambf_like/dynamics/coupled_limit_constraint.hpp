@@ -33,6 +33,9 @@ class CoupledLimitConstraint final : public btMultiBodyConstraint {
 
   /// Moves the bound by `delta` (rad or m).
   void shiftLower(double delta) { lower_ += delta; }
+  /// How far past its bound the sum goes per unit of the force holding it there (rad per N m,
+  /// or m per N): a spring there; 0, the default, is rigid.
+  void setCompliance(double compliance) { compliance_ = compliance; }
   /// sum_i gain_i q_i - lower: how far the coordinates are from the stop (< 0: past it).
   double gap() const;
   /// Whether the sum is within `band` (rad or m) of its bound beyond two steps of `dt` at its
@@ -42,6 +45,7 @@ class CoupledLimitConstraint final : public btMultiBodyConstraint {
  private:
   std::vector<Term> terms_;
   double lower_;
+  double compliance_ = 0.0;
 };
 
 }  // namespace ambf_like::detail
