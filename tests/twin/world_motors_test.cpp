@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -251,21 +252,28 @@ JawMotors jawMotors(const twin::TwinPlatform& twin, Arm arm) {
   return jaws;
 }
 
+/// A ready twin whose left jaws a pad has closed at 1 rad/s each (servo_jr at 1 kHz) until each
+/// setpoint is 0.1 rad past the faces' meeting, a grasp closed hard on nothing, then 0.5 s on.
+std::unique_ptr<twin::TwinPlatform> jawsClosedHardOnNothing(const twin::TwinOptions& options) {
+  auto twin = test_support::readyTwin(options);
+  ArmJoints close = ArmJoints::Zero();
+  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;
+  while (twin->setpointJs(Arm::Left).position(raven::kJaw1) > -0.1) {
+    twin->send(bridge::ServoJr{Arm::Left, close});
+    twin->advance(0.001);
+  }
+  twin->advance(0.5);
+  return twin;
+}
+
 TEST(WorldMotors, JawsWithFittedFacesStopWhereTheseMeet) {
   // The calibration's faces (0.010 + 0.005 rad) move the World's stop on the pair by their sum,
   // as they move the motors-alone model's: jaws closed hard on nothing rest there.
   twin::TwinOptions options = frictionlessMotors();
   (*options.motors)[0].face(raven::kJaw1) = 0.010;
   (*options.motors)[0].face(raven::kJaw2) = 0.005;
-  auto twin = test_support::readyTwin(options);
+  auto twin = jawsClosedHardOnNothing(options);
   const Arm arm = Arm::Left;
-  ArmJoints close = ArmJoints::Zero();
-  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;
-  while (twin->setpointJs(arm).position(raven::kJaw1) > -0.1) {
-    twin->send(bridge::ServoJr{arm, close});
-    twin->advance(0.001);
-  }
-  twin->advance(0.5);
   const ArmJoints q = twin->measuredJs(arm).position;
   EXPECT_NEAR(q(raven::kJaw1) + q(raven::kJaw2), 0.015,
               4.0 * test_support::countInJoint(twin::DriveTrain::raven2(), raven::kJaw1));
@@ -280,15 +288,8 @@ TEST(WorldMotors, JawsOnFacesThatGiveArePressedPastThemByTheLoadTimesTheComplian
   twin::TwinOptions options = frictionlessMotors();
   (*options.motors)[0].face_compliance(raven::kJaw1) = 0.1;
   (*options.motors)[0].face_compliance(raven::kJaw2) = 0.1;
-  auto twin = test_support::readyTwin(options);
+  auto twin = jawsClosedHardOnNothing(options);
   const Arm arm = Arm::Left;
-  ArmJoints close = ArmJoints::Zero();
-  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;
-  while (twin->setpointJs(arm).position(raven::kJaw1) > -0.1) {
-    twin->send(bridge::ServoJr{arm, close});
-    twin->advance(0.001);
-  }
-  twin->advance(0.5);
   const ambf_like::CoupledStop* stop = twin->arms().jawStop(arm);
   ASSERT_NE(stop, nullptr);
   const auto drive = twin::DriveTrain::raven2();
@@ -313,15 +314,8 @@ TEST(WorldMotors, JawsClosedOnEachOtherStopThereAndWindTheirIntegratorsUp) {
   // jaws at opening 0; the motors' error stays, and their integrators wind up by KI times it
   // every second (raven2-actuation.md §3: no clamp), the stop bearing what the motors push.
   const twin::TwinOptions options = frictionlessMotors();
-  auto twin = test_support::readyTwin(options);
+  auto twin = jawsClosedHardOnNothing(options);
   const Arm arm = Arm::Left;
-  ArmJoints close = ArmJoints::Zero();
-  close(raven::kJaw1) = close(raven::kJaw2) = -1e-3;  // 1 rad/s each, as a pad closes them
-  while (twin->setpointJs(arm).position(raven::kJaw1) > -0.1) {
-    twin->send(bridge::ServoJr{arm, close});
-    twin->advance(0.001);
-  }
-  twin->advance(0.5);
   const ambf_like::CoupledStop* stop = twin->arms().jawStop(arm);
   ASSERT_NE(stop, nullptr);
   const twin::MotorGains gains = twin::MotorGains::raven2(arm);
