@@ -56,6 +56,65 @@ bool admissible(const ElasticContact& contact, const Eigen::Vector3d& impulse) {
   return normal > 0.0 && (impulse - contact.normal * normal).norm() <= contact.friction * normal;
 }
 
+/// Whether `impulse` pushes `contact`'s node off its surface inside its cone, or is none, give
+/// or take `slack` (N s: Gauss-Seidel leaves slides on the cone's edge).
+bool withinCone(const ElasticContact& contact, const Eigen::Vector3d& impulse, double slack) {
+  const double normal = contact.normal.dot(impulse);
+  const double tangential = (impulse - contact.normal * normal).norm();
+  return normal >= -slack && tangential <= contact.friction * std::max(0.0, normal) + slack;
+}
+
+/// Takes out of two contacts of one node the part of their impulses that only passes through
+/// it, from one surface to the other, keeping their sum (the node's own impulse): all of it on
+/// the one whose cone holds it when one does; else, along the axis between their normals, as
+/// much as keeps both inside their cones.
+void releasePinch(ElasticContact& a, ElasticContact& b) {
+  const Eigen::Vector3d node = a.impulse + b.impulse;
+  const double slack = 1e-9 * (a.impulse.norm() + b.impulse.norm());
+  const bool on_a = withinCone(a, node, slack);
+  if (on_a || withinCone(b, node, slack)) {
+    const bool a_takes =
+        on_a && (!withinCone(b, node, slack) || a.normal.dot(node) >= b.normal.dot(node));
+    (a_takes ? a : b).impulse = node;
+    (a_takes ? b : a).impulse.setZero();
+    return;
+  }
+  const Eigen::Vector3d axis = (a.normal - b.normal).normalized();
+  const double through = std::min(axis.dot(a.impulse), -axis.dot(b.impulse));
+  if (!(through > 0.0)) return;
+  const auto fits = [&](double t) {
+    return withinCone(a, a.impulse - t * axis, slack) && withinCone(b, b.impulse + t * axis, slack);
+  };
+  if (!fits(0.0)) return;
+  double low = 0.0;  // the cones are convex: what fits is an interval from 0
+  double high = through;
+  if (!fits(high)) {
+    for (int halving = 0; halving < 40; ++halving) {
+      const double mid = 0.5 * (low + high);
+      (fits(mid) ? low : high) = mid;
+    }
+    high = low;
+  }
+  a.impulse -= high * axis;
+  b.impulse += high * axis;
+}
+
+/// The contacts, two by two, of one node on surfaces that face each other (a node that can be
+/// caught between them).
+std::vector<ContactPair> facingPairs(const std::vector<ElasticContact>& contacts) {
+  std::vector<ContactPair> pairs;
+  for (std::size_t a = 0; a < contacts.size(); ++a) {
+    if (contacts[a].pinned) continue;
+    for (std::size_t b = a + 1; b < contacts.size(); ++b) {
+      if (contacts[b].node == contacts[a].node && !contacts[b].pinned &&
+          contacts[a].normal.dot(contacts[b].normal) < 0.0) {
+        pairs.emplace_back(a, b);
+      }
+    }
+  }
+  return pairs;
+}
+
 }  // namespace
 
 void ElasticContactSolver::forget() {
@@ -101,6 +160,7 @@ void ElasticContactSolver::solve(const Eigen::VectorXd& free_velocity,
       velocity[j] += w[j * slots + slot_of[c]] * contacts[c].impulse;
     }
   }
+  const std::vector<ContactPair> pinches = facingPairs(contacts);
   for (int sweep = 0; sweep < kMostContactSweeps; ++sweep) {
     double largest_change = 0.0;
     for (std::size_t c = 0; c < contacts.size(); ++c) {
@@ -115,7 +175,38 @@ void ElasticContactSolver::solve(const Eigen::VectorXd& free_velocity,
       contact.impulse += change;
       largest_change = std::max(largest_change, change.norm());
     }
+    releasePinches(contacts, slot_of, pinches, velocity);
     if (largest_change <= kImpulseTolerance) break;
+  }
+}
+
+/// A node caught between two surfaces that face each other (a ring's node between closing jaws,
+/// or between a jaw and the board) cannot meet both once they are closer than it allows:
+/// Gauss-Seidel then grows the two contacts' impulses against each other, sweep after sweep and,
+/// warm started, step after step, and each surface is pushed with all of it while the node
+/// feels only their difference. A node of zero thickness carries no load from one rigid surface
+/// to the other (the jaws' meeting is their own stop's, a jaw on the board their rigid
+/// contact's), so that part is taken out after every sweep. Caught between a fixed surface and
+/// a moving one, the node stays on the fixed one, as the moving one will be stopped by it.
+void ElasticContactSolver::releasePinches(std::vector<ElasticContact>& contacts,
+                                          const std::vector<std::size_t>& slot_of,
+                                          const std::vector<ContactPair>& pinches,
+                                          std::vector<Eigen::Vector3d>& velocity) const {
+  const std::size_t slots = blocks_.nodes.size();
+  for (const auto& [a, b] : pinches) {
+    if (contacts[a].fixed_surface == contacts[b].fixed_surface) {
+      releasePinch(contacts[a], contacts[b]);
+      continue;
+    }
+    ElasticContact& fixed = contacts[a].fixed_surface ? contacts[a] : contacts[b];
+    ElasticContact& moving = contacts[a].fixed_surface ? contacts[b] : contacts[a];
+    const std::size_t i = slot_of[a];
+    const Eigen::Matrix3d& own = blocks_.w[i * slots + i];
+    const Eigen::Vector3d before = fixed.impulse + moving.impulse;
+    moving.impulse.setZero();
+    fixed.impulse = contactImpulse(fixed, own, blocks_.w_inverse[i], velocity[i] - own * before);
+    const Eigen::Vector3d change = fixed.impulse - before;
+    for (std::size_t j = 0; j < slots; ++j) velocity[j] += blocks_.w[j * slots + i] * change;
   }
 }
 

@@ -216,6 +216,7 @@ void SoftBodyStepSolver::elasticSubstep(btSoftBody& body, Registered& registered
     c.least_normal_velocity = -gap_at_end / hs;
     c.start_depth = -(n.dot(x) + rc.m_cti.m_offset - surfaceAdvance(rc, index, elapsed - hs));
     c.friction = kdf * rc.m_cti.m_colObj->getFriction();
+    c.fixed_surface = contacts_[index].fixed;
     if (const auto last = registered.last_impulse.find({c.node, rc.m_cti.m_colObj});
         last != registered.last_impulse.end()) {
       c.impulse = last->second;
@@ -304,14 +305,17 @@ void SoftBodyStepSolver::startContacts(btSoftBody& body, bool elastic) {
     Accumulated& state = contacts_[static_cast<std::size_t>(i)];
     if (const btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj)) {
       state.surface_velocity = rigid->getVelocityInLocalPoint(arm);
+      state.fixed = false;
     } else if (const auto* link = movingLink(contact.m_cti.m_colObj)) {
       state.surface_velocity = linkPointVelocity(*link, contact.m_node->m_x);
+      state.fixed = false;
     } else if (const btRigidBody* kinematic = btRigidBody::upcast(contact.m_cti.m_colObj);
                kinematic != nullptr && kinematic->isKinematicObject()) {
       // Placed by its owner before the step, so its contact plane is already where the step
       // ends; its motion (Bullet's, from the last two placements) still drags what it touches.
       state.surface_velocity = kinematic->getVelocityInLocalPoint(arm);
       state.placed = true;
+      state.fixed = false;
     }
   }
 }

@@ -4,6 +4,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace ambf_like::detail {
@@ -17,11 +18,17 @@ struct ElasticContact {
   double least_normal_velocity = 0;           ///< what normal . v must reach to end the step on it
   double start_depth = 0;  ///< how far inside the surface the node began the step
   double friction = 0;     ///< Coulomb's mu
+  /// Of something that does not move (the world's static parts): caught between it and a moving
+  /// surface, a node stays on it.
+  bool fixed_surface = false;
   /// A pin: the node ends the step moving at exactly surface_velocity, pushed or pulled, in no
   /// cone (normal, least_normal_velocity, start_depth and friction play no part).
   bool pinned = false;
   Eigen::Vector3d impulse{0, 0, 0};  ///< on the node (N s): in, the last step's; out, this one's
 };
+
+/// Two contacts, by their indices.
+using ContactPair = std::pair<std::size_t, std::size_t>;
 
 /// The velocity the nodes answer unit impulses on one node with (3 columns, 3 rows per node).
 using NodeResponse = Eigen::Matrix<double, Eigen::Dynamic, 3>;
@@ -32,7 +39,8 @@ using NodeResponse = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 /// impulse (3x3 blocks of the implicit system's inverse). The contacts that pressed last time
 /// are first solved together as stuck (a dense Cholesky of their blocks, kept while the same
 /// nodes press), taken only if every impulse presses and stays in its cone; a projected
-/// Gauss-Seidel then finishes, warm started from the last impulses.
+/// Gauss-Seidel then finishes, warm started from the last impulses; after each of its sweeps a
+/// node caught between two surfaces that face each other passes no load from one to the other.
 class ElasticContactSolver {
  public:
   using ResponseOf = std::function<const NodeResponse&(int node)>;
@@ -57,6 +65,12 @@ class ElasticContactSolver {
     Eigen::LLT<Eigen::MatrixXd> factor;
   };
 
+  /// Takes out what only passes through a node between the `pinches`' two contacts (which face
+  /// each other); `velocity` (per slot) follows what that changes of the node's own impulse.
+  void releasePinches(std::vector<ElasticContact>& contacts,
+                      const std::vector<std::size_t>& slot_of,
+                      const std::vector<ContactPair>& pinches,
+                      std::vector<Eigen::Vector3d>& velocity) const;
   void solveAsStuck(std::vector<ElasticContact>& contacts, const std::vector<std::size_t>& slot_of,
                     const std::vector<Eigen::Vector3d>& free_velocity);
 

@@ -104,6 +104,7 @@ class SoftBodyStepSolver final : public btDefaultSoftBodySolver {
   struct Accumulated {
     btVector3 surface_velocity{0, 0, 0};  ///< of the rigid surface at the node
     bool placed = false;         ///< a kinematic body's: its plane does not move during the step
+    bool fixed = true;           ///< a surface nothing moves (a static object, a fixed base)
     btVector3 impulse{0, 0, 0};  ///< on the node, over the step so far (N s)
     btVector3 normal_impulse{0, 0, 0};  ///< its part along the normal
   };
