@@ -48,20 +48,18 @@ Eigen::Vector3d contactImpulse(const ElasticContact& contact, const Eigen::Matri
   return direction * std::max(0.0, shortfall / reach);
 }
 
-/// Whether `impulse` is one `contact` can give: any, for a pin; pressing and inside its cone
-/// for a contact.
-bool admissible(const ElasticContact& contact, const Eigen::Vector3d& impulse) {
-  if (contact.pinned) return true;
-  const double normal = contact.normal.dot(impulse);
-  return normal > 0.0 && (impulse - contact.normal * normal).norm() <= contact.friction * normal;
-}
-
 /// Whether `impulse` pushes `contact`'s node off its surface inside its cone, or is none, give
 /// or take `slack` (N s: Gauss-Seidel leaves slides on the cone's edge).
 bool withinCone(const ElasticContact& contact, const Eigen::Vector3d& impulse, double slack) {
   const double normal = contact.normal.dot(impulse);
   const double tangential = (impulse - contact.normal * normal).norm();
   return normal >= -slack && tangential <= contact.friction * std::max(0.0, normal) + slack;
+}
+
+/// Whether `impulse` is one `contact` can give: any, for a pin; pressing and inside its cone
+/// for a contact.
+bool admissible(const ElasticContact& contact, const Eigen::Vector3d& impulse) {
+  return contact.pinned || (contact.normal.dot(impulse) > 0.0 && withinCone(contact, impulse, 0.0));
 }
 
 /// Takes out of two contacts of one node the part of their impulses that only passes through
