@@ -189,7 +189,7 @@ struct FitSettings {
   std::vector<std::filesystem::path> physical;
   ReplayFlags replay;
   std::filesystem::path out = "raven2_calibration.yaml";
-  int evaluations = 40;
+  int evaluations = 100;
   int threads = 2;
   bool leave_one_out = true;
   std::filesystem::path from;       ///< a profile to start from, or the catalogue values

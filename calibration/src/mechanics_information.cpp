@@ -34,6 +34,10 @@ double differenceStep(int v, double x) {
       return 1e-3;
     case M::kFaceCompliance:  // rad per N m
       return std::max(0.05 * x, 0.01);
+    case M::kCableFriction:  // N m
+      return std::max(0.05 * x, 1e-3);
+    case M::kCableTravel:  // motor rad
+      return std::max(0.05 * x, 0.01);
     default:  // gravity_error (a fraction of the weight)
       return 0.02;
   }
@@ -45,7 +49,12 @@ bool motorHasValue(int joint, int v) {
   if (v == twin::MotorMechanics::kFace || v == twin::MotorMechanics::kFaceCompliance) {
     return joint >= raven::kJaw1;
   }
-  if (v == twin::MotorMechanics::kGravityError) return joint <= raven::kInsertion;
+  // The arm's long cables over its pulleys: the tool's show no give of their own (a fit with
+  // one per tool motor put each at the shortest travel it allowed, a rigid cable).
+  if (v == twin::MotorMechanics::kGravityError || v == twin::MotorMechanics::kCableFriction ||
+      v == twin::MotorMechanics::kCableTravel) {
+    return joint <= raven::kInsertion;
+  }
   return true;
 }
 
@@ -150,7 +159,7 @@ MechanicsInformation informationOf(const twin::ArmsMechanics& mechanics,
         double& x = m[a].field(static_cast<std::size_t>(v))(j);
         const double d = differenceStep(v, x);
         h[a].field(static_cast<std::size_t>(v))(j) = d;
-        x += d;
+        if (motorHasValue(j, v)) x += d;  // a value the motor has not stays as it is
       }
     }
     moved[static_cast<std::size_t>(v)] = replaySetpoints(recording, m);

@@ -18,6 +18,9 @@ twin::TwinOptions frictionlessMotors() {
     m.load_friction.setZero();
     m.offset.setZero();
     m.face.setZero();
+    m.face_compliance.setZero();
+    m.cable_friction.setZero();
+    m.cable_travel.setZero();
     m.gravity_error.setZero();
   }
   return options;

@@ -173,9 +173,18 @@ TEST(ForceEstimator, ASlidingMotorsFrictionIsAtItsBandsEdge) {
       auto& s = rows[k];
       s.motor_velocity.setConstant(speed);
       s.motor.array() += speed * period * static_cast<double>(k);
-      // Turning forward, each motor applies its load, its viscous drag and the band's edge,
-      // which grows with what it applies: applied = load + b w + coulomb + load_friction |applied|.
-      const ArmJoints load = s.torque + m.viscous * speed;
+      // Turning forward, each motor applies its load, its viscous drag, its cable's pull (the
+      // friction beyond it, taken up over the cable's travel: c min(1, turned / travel)) and the
+      // band's edge, which grows with what it applies:
+      // applied = load + b w + cable + coulomb + load_friction |applied|.
+      const double turned = speed * period * static_cast<double>(k);
+      ArmJoints cable = ArmJoints::Zero();
+      for (int i = 0; i < raven::kJointCount; ++i) {
+        if (m.cable_travel(i) > 0.0) {
+          cable(i) = m.cable_friction(i) * std::min(1.0, turned / m.cable_travel(i));
+        }
+      }
+      const ArmJoints load = s.torque + m.viscous * speed + cable;
       for (int it = 0; it < 100; ++it) {
         s.torque = load + m.coulomb + m.load_friction.cwiseProduct(s.torque.cwiseAbs());
       }

@@ -140,6 +140,79 @@ TEST(MotorAxes, TheGravityTheCompensationMissesPullsTheMotor) {
   EXPECT_NEAR(axes.velocity()(0), -0.01 * 0.01 / 2e-4, 1e-9);
 }
 
+/// A motor with Coulomb friction 0.04 of its own and 0.08 beyond a cable that carries it all
+/// once stretched by 0.5 motor rad (stiffness 0.16 N m per rad), and some viscous friction.
+twin::MotorMechanics cabled() {
+  twin::MotorMechanics m = frictionless(2e-4);
+  m.coulomb.setConstant(0.04);
+  m.viscous.setConstant(0.002);
+  m.cable_friction.head<3>().setConstant(0.08);
+  m.cable_travel.head<3>().setConstant(0.5);
+  return m;
+}
+
+TEST(MotorAxes, ACableStretchesUntilItCarriesThePushAndThenTheLinkSlides) {
+  twin::MotorAxes axes(cabled());
+  // Joint 0 pushed with 0.08: beyond its own 0.04, not beyond 0.04 + 0.08. It turns until the
+  // cable's 0.16 N m per rad takes up what its own friction does not: it rests with the cable
+  // pulling back by 0.08 -/+ 0.04, 0.25 -/+ 0.25 rad of stretch, never at the full 0.5.
+  // Joint 1 pushed with 0.2: past both, it slides at (0.2 - 0.04 - 0.08) / 0.002 = 40 rad/s.
+  const ArmJoints torque = (ArmJoints() << 0.08, 0.2, 0.0, 0.0, 0.0, 0.0, 0.0).finished();
+  for (int k = 0; k < 4000; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_EQ(axes.velocity()(0), 0.0);
+  EXPECT_GT(axes.position()(0), 0.0);
+  EXPECT_LE(axes.position()(0), 0.5);
+  EXPECT_NEAR(axes.velocity()(1), 40.0, 1e-6);
+}
+
+TEST(MotorAxes, AfterAReversalTheMotorTurnsUnderLessThanItSlidesUnder) {
+  // Slid up and held with 0.1, the cable carries the link's friction (0.08) and pulls the motor
+  // back by it. Eased to 0.02 the motor turns back (0.08 - 0.02 is past its own 0.04) and rests
+  // where the cable's pull is within 0.02 -/+ 0.04: at least 0.125 rad of 0.16 N m per rad
+  // back, less the viscous damping's share of the swing past it. From a slack cable 0.02 does
+  // not move it. Going on down takes 0.04 + 0.08 = 0.12 once the cable is stretched down.
+  twin::MotorAxes axes(cabled());
+  ArmJoints torque = ArmJoints::Zero();
+  torque(0) = 0.2;
+  for (int k = 0; k < 500; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  torque(0) = 0.1;
+  for (int k = 0; k < 1000; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  ASSERT_EQ(axes.velocity()(0), 0.0) << "held within 0.08 -/+ 0.04";
+  const double held = axes.position()(0);
+  torque(0) = 0.02;
+  for (int k = 0; k < 2000; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_EQ(axes.velocity()(0), 0.0);
+  EXPECT_LT(axes.position()(0), held - 0.1);
+  EXPECT_GT(axes.position()(0), held - 0.25);
+  twin::MotorAxes slack(cabled());
+  for (int k = 0; k < 100; ++k) slack.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_EQ(slack.position()(0), 0.0) << "0.02 is within a slack cable's motor's own 0.04";
+  torque(0) = -0.119;  // down, short of 0.12: it stops once the cable is stretched down
+  for (int k = 0; k < 4000; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_EQ(axes.velocity()(0), 0.0);
+  torque(0) = -0.14;  // past it: slides at (0.14 - 0.12) / 0.002 = 10 rad/s
+  for (int k = 0; k < 4000; ++k) axes.step(torque, ArmJoints::Zero(), 0.001);
+  EXPECT_NEAR(axes.velocity()(0), -10.0, 1e-6);
+}
+
+TEST(MotorAxes, ARigidCablesFrictionActsAsTheMotorsOwn) {
+  // No travel: the friction beyond the cable stops the motor at once, as its own would.
+  twin::MotorMechanics rigid = cabled();
+  rigid.cable_travel.setZero();
+  twin::MotorMechanics own = cabled();
+  own.cable_friction.setZero();
+  own.coulomb.head<3>().setConstant(0.04 + 0.08);
+  twin::MotorAxes a(rigid), b(own);
+  const ArmJoints torque = (ArmJoints() << 0.119, 0.121, -0.2, 0.0, 0.0, 0.0, 0.0).finished();
+  for (int k = 0; k < 1000; ++k) {
+    a.step(torque, ArmJoints::Zero(), 0.001);
+    b.step(torque, ArmJoints::Zero(), 0.001);
+  }
+  EXPECT_EQ(a.velocity()(0), 0.0);
+  EXPECT_EQ(a.position(), b.position());
+  EXPECT_EQ(a.velocity(), b.velocity());
+}
+
 TEST(ArmDrive, PlacedAtARecordedStateItsFirstCycleGivesThatStatesTorque) {
   const auto drive = twin::DriveTrain::raven2();
   twin::MotorMechanics m = frictionless(2e-4);

@@ -24,11 +24,13 @@ using test_support::makeReady;
 using twin::TwinPlatform;
 
 /// How far from its setpoint (motor rad) a PD motor can rest: where its torque KP e, plus the
-/// gravity the compensation misses, stays within Coulomb friction and its load-dependent part
-/// (raven2-actuation.md §3 for the law; the mechanics from the shipped calibration).
+/// gravity the compensation misses and the constant offset, stays within Coulomb friction, its
+/// load-dependent part and what a stretched cable holds (raven2-actuation.md §3 for the law;
+/// the mechanics from the shipped calibration).
 double restBand(const twin::MotorMechanics& m, const twin::MotorGains& gains, double gravity, int i,
                 double coupled = 0.0) {
-  const double held = m.coulomb(i) + std::abs(m.gravity_error(i) * gravity) +
+  const double held = m.coulomb(i) + m.cable_friction(i) + std::abs(m.offset(i)) +
+                      std::abs(m.gravity_error(i) * gravity) +
                       m.load_friction(i) * std::abs(gravity) + coupled;
   return held / (gains.kp(i) * (1.0 - m.load_friction(i)));
 }

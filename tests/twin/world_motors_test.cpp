@@ -98,6 +98,45 @@ TEST(WorldMotors, HeldStillTheMotorsCarryTheFittedWeightAndOffset) {
   }
 }
 
+/// `arm`'s mean Tau over a second (the motors hunt by an encoder count about their setpoints).
+ArmJoints meanTauOverASecond(twin::TwinPlatform& twin, Arm arm) {
+  ArmJoints mean = ArmJoints::Zero();
+  constexpr int kCycles = 1000;
+  for (int k = 0; k < kCycles; ++k) {
+    twin.advance(0.001);
+    mean += loggedTau(twin, arm) / kCycles;
+  }
+  return mean;
+}
+
+TEST(WorldMotors, AnElbowHeldAfterAMoveCarriesItsCablesFrictionThatWay) {
+  // Frictionless motors but the left elbow's cable (0.05 N m beyond it, taken up over 3 motor
+  // rad): moved up by 0.04 rad (4.9 motor rad, the cable stretched all the way) and held, the
+  // link stands and the stretched cable pulls the motor back by its friction, so Tau is the
+  // fitted load plus 0.05; moved down past twice the travel, the load minus 0.05. (What the
+  // motor swings back as it settles, some 0.05 motor rad, unstretches the cable by its share
+  // of the travel: under 2 %.)
+  twin::TwinOptions options = frictionlessMotors();
+  (*options.motors)[0].cable_friction(raven::kElbow) = 0.05;
+  (*options.motors)[0].cable_travel(raven::kElbow) = 3.0;
+  auto twin = test_support::readyTwin(options);
+  const Arm arm = Arm::Left;
+  for (const double step : {1e-4, -1e-4}) {
+    ArmJoints move = ArmJoints::Zero();
+    move(raven::kElbow) = step;
+    for (int k = 0; k < (step > 0 ? 400 : 800); ++k) {
+      twin->send(bridge::ServoJr{arm, move});
+      twin->advance(0.001);
+    }
+    twin->advance(3.0);  // the integrators take up the load
+    const ArmJoints tau = meanTauOverASecond(*twin, arm);
+    const double expected =
+        fittedLoad(options, arm, twin->measuredJs(arm).position)(raven::kElbow) +
+        std::copysign(0.05, step);
+    EXPECT_NEAR(tau(raven::kElbow), expected, 0.05 * 0.05) << (step > 0 ? "up" : "down");
+  }
+}
+
 /// `arm` at rest against an obstacle, averaged over `cycles` 1 ms cycles: the joint loads its
 /// motors apply through the cables, the fitted weight they carry, and J^T F of its contacts.
 struct JointBalance {

@@ -24,13 +24,15 @@ constexpr const char* kFit = "fit";
 
 /// One arm's lists: fitted `values` (inertia > 0, gravity_error > -1, offset of either sign;
 /// MotorMechanics checks the rest when a twin is built) or uncertainties (all >= 0). A profile
-/// written before the offset, the jaws' faces or their compliance were fitted has none: 0.
+/// written before the offset, the jaws' faces, their compliance or the cables were fitted has
+/// none: 0.
 MotorMechanics readMechanics(const common::YamlView& node, bool values) {
   MotorMechanics m;
   for (std::size_t k = 0; k < MotorMechanics::kNames.size(); ++k) {
     const bool gravity = k == MotorMechanics::kGravityError;
     const bool offset = k == MotorMechanics::kOffset || k == MotorMechanics::kFace;
-    const bool later = offset || k == MotorMechanics::kFaceCompliance;
+    const bool later = offset || k == MotorMechanics::kFaceCompliance ||
+                       k == MotorMechanics::kCableFriction || k == MotorMechanics::kCableTravel;
     if (later && !node.find(MotorMechanics::kNames[k])) continue;
     const double minimum = !values ? 0.0 : gravity ? -1.0 : offset ? -INFINITY : 0.0;
     m.field(k) =
@@ -134,8 +136,10 @@ void CalibrationProfile::save(const std::filesystem::path& file,
          "# (N m s^2 per motor rad at the gearbox output), Coulomb friction (N m, plus "
          "load_friction\n"
          "# per N m applied), viscous friction (N m s/rad), the constant torque every move\n"
-         "# overcomes (offset, N m: up takes coulomb + offset, down coulomb - offset) and the\n"
-         "# gravity compensation's error (fraction). Use: --calibration FILE.\n"
+         "# overcomes (offset, N m: up takes coulomb + offset, down coulomb - offset), the\n"
+         "# jaws' faces (rad) and their give (rad per N m), the friction beyond each arm cable\n"
+         "# (N m) and the motor travel its stretch takes it up over (rad), and the gravity\n"
+         "# compensation's error (fraction). Use: --calibration FILE.\n"
       << out.c_str() << "\n";
   if (!stream) throw std::runtime_error(file.string() + ": cannot write");
 }

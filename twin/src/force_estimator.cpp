@@ -104,6 +104,7 @@ std::vector<MotorBalance> ArmForceEstimator::balances(
   const double count = 2.0 * M_PI / drive_.encoder_counts_per_motor_rev;
   std::vector<MotorBalance> out;
   out.reserve(n);
+  CableStretch cables;  // the arm cables' stretch, following the motors from the first row
   for (std::size_t k = 0; k < n; ++k) {
     // The acceleration across the window, or across the rows either side where it holds no
     // other row.
@@ -114,6 +115,10 @@ std::vector<MotorBalance> ArmForceEstimator::balances(
     const ArmJoints acceleration =
         span > 0.0 ? ArmJoints((speed[z] - speed[a]) / span) : ArmJoints::Zero();
     MotorBalance b = balance(rows[k], speed[k], acceleration);
+    const ArmJoints turned =
+        k > 0 ? ArmJoints(rows[k].motor - rows[k - 1].motor) : ArmJoints::Zero();
+    if (k > 0 && finite(turned)) cables.follow(mechanics_, turned);
+    if (b.finite) b.known += cables.torque(mechanics_);
     // Which way each motor slides at the row's instant, when the signals say: the cycle logged
     // turned two counts or more (one alone is an encoder flickering at a count's edge as often
     // as a turn), or the motor moved a count or more the same way on both sides of the row: 1
@@ -144,7 +149,7 @@ MotorBalance ArmForceEstimator::balance(const recording::ArmSignals& row, const 
   const MotorMechanics& m = mechanics_;
   const MotorMechanics& u = uncertainty_;
   const ArmJoints weight = gravityCompensation(arm_, row.joints, drive_);
-  b.band = m.coulomb + m.load_friction.cwiseProduct(b.applied.cwiseAbs());
+  b.band = m.stickingFriction(b.applied);
   for (int i = 0; i < kJointCount; ++i) {
     b.known(i) = (1.0 + m.gravity_error(i)) * weight(i) + m.offset(i) +
                  m.inertia(i) * acceleration(i) + m.viscous(i) * speed(i) - b.applied(i);

@@ -25,6 +25,10 @@ const ArmJoints& MotorMechanics::field(std::size_t k) const {
       return face;
     case kFaceCompliance:
       return face_compliance;
+    case kCableFriction:
+      return cable_friction;
+    case kCableTravel:
+      return cable_travel;
     default:
       return gravity_error;
   }
@@ -45,6 +49,12 @@ std::string MotorMechanics::invalidReason() const {
   return {};
 }
 
+ArmJoints MotorMechanics::stickingFriction(const ArmJoints& torque) const {
+  const ArmJoints rigid_cables =
+      (cable_travel.array() > 0.0).select(0.0, cable_friction.array()).matrix();
+  return coulomb + load_friction.cwiseProduct(torque.cwiseAbs()) + rigid_cables;
+}
+
 double MotorMechanics::jawsMeetOffset() const {
   return face(raven::kJaw1) + face(raven::kJaw2);
 }
@@ -61,25 +71,39 @@ const MotorMechanics& MotorMechanics::checked(Arm arm) const {
   return *this;
 }
 
+void CableStretch::follow(const MotorMechanics& m, const ArmJoints& motion) {
+  stretch_ = (stretch_ + motion).cwiseMax(-m.cable_travel).cwiseMin(m.cable_travel);
+}
+
+ArmJoints CableStretch::torque(const MotorMechanics& m) const {
+  ArmJoints t = ArmJoints::Zero();
+  for (int i = 0; i < kJointCount; ++i) {
+    if (m.cable_travel(i) > 0.0) t(i) = m.cable_friction(i) * stretch_(i) / m.cable_travel(i);
+  }
+  return t;
+}
+
 void MotorAxes::step(const ArmJoints& torque, const ArmJoints& gravity_load, double seconds) {
   const double h = seconds / kSubsteps;
   const ArmJoints drive = torque - mechanics_.offset -
                           (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
   for (int s = 0; s < kSubsteps; ++s) {
+    const ArmJoints before = position_;
+    const ArmJoints cables = cables_.torque(mechanics_);
+    const ArmJoints sticking = mechanics_.stickingFriction(torque);
     for (int i = 0; i < kJointCount; ++i) {
       const double inertia = mechanics_.inertia(i);
       // Coulomb friction (its constant part and the part the transmitted torque adds) as an
       // impulse that may stop the motor, then viscous friction implicitly: at a steady speed the
       // drive balances both exactly.
-      const double free = velocity_(i) + h * drive(i) / inertia;
-      const double friction =
-          mechanics_.coulomb(i) + mechanics_.load_friction(i) * std::abs(torque(i));
-      const double stop = h * friction / inertia;
+      const double free = velocity_(i) + h * (drive(i) - cables(i)) / inertia;
+      const double stop = h * sticking(i) / inertia;
       velocity_(i) = std::abs(free) <= stop ? 0.0
                                             : (free - std::copysign(stop, free)) /
                                                   (1.0 + h * mechanics_.viscous(i) / inertia);
       position_(i) += h * velocity_(i);
     }
+    cables_.follow(mechanics_, position_ - before);
   }
 }
 

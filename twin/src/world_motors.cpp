@@ -29,6 +29,7 @@ WorldMotors::WorldMotors(Arm arm, const DriveTrain& drive, const MotorMechanics&
   transmission_ = &world.addTransmission(spec);
   const ArmJoints links = transmission_->linkInertia().diagonal();
   transmission_->setRotors((fitted - links).cwiseMax(kLeastRotorShare * fitted), spec.viscous);
+  cables_followed_to_ = position();
 }
 
 void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, double /*seconds*/) {
@@ -39,10 +40,12 @@ void WorldMotors::step(const ArmJoints& torque, const ArmJoints& gravity_load, d
   const ArmJoints model_weight = weight_to_motors_ * transmission_->linkWeight();
   const ArmJoints fitted_weight =
       (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
-  const ArmJoints drive = torque - mechanics_.offset + model_weight - fitted_weight;
-  const ArmJoints coulomb =
-      mechanics_.coulomb + mechanics_.load_friction.cwiseProduct(torque.cwiseAbs());
-  transmission_->drive(drive, coulomb);
+  const ArmJoints now = position();
+  cables_.follow(mechanics_, now - cables_followed_to_);
+  cables_followed_to_ = now;
+  const ArmJoints drive =
+      torque - mechanics_.offset + model_weight - fitted_weight - cables_.torque(mechanics_);
+  transmission_->drive(drive, mechanics_.stickingFriction(torque));
 }
 
 ArmJoints WorldMotors::position() const {
@@ -51,6 +54,8 @@ ArmJoints WorldMotors::position() const {
 
 void WorldMotors::place(const ArmJoints& position, const ArmJoints& velocity) {
   arms_->place(arm_, drive_.toJoints(arm_, position), drive_.toJoints(arm_, velocity));
+  cables_.release();
+  cables_followed_to_ = this->position();
 }
 
 }  // namespace twin

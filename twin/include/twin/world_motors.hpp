@@ -39,6 +39,8 @@ class WorldMotors {
   ambf_like::Transmission* transmission_;
   /// coupling^-T: joint torques to the motor torques that give them.
   Eigen::Matrix<double, kJointCount, kJointCount> weight_to_motors_;
+  CableStretch cables_;
+  ArmJoints cables_followed_to_;  ///< the motor angles the cables' stretch has followed to
 };
 
 }  // namespace twin
