@@ -115,9 +115,9 @@ std::vector<MotorBalance> ArmForceEstimator::balances(
     const ArmJoints acceleration =
         span > 0.0 ? ArmJoints((speed[z] - speed[a]) / span) : ArmJoints::Zero();
     MotorBalance b = balance(rows[k], speed[k], acceleration);
-    const ArmJoints turned =
-        k > 0 ? ArmJoints(rows[k].motor - rows[k - 1].motor) : ArmJoints::Zero();
-    if (k > 0 && finite(turned)) cables.follow(mechanics_, turned);
+    if (k > 0 && finite(rows[k].motor) && finite(rows[k - 1].motor)) {
+      cables.follow(mechanics_, rows[k].motor - rows[k - 1].motor);
+    }
     if (b.finite) b.known += cables.torque(mechanics_);
     // Which way each motor slides at the row's instant, when the signals say: the cycle logged
     // turned two counts or more (one alone is an encoder flickering at a count's edge as often

@@ -87,15 +87,15 @@ void MotorAxes::step(const ArmJoints& torque, const ArmJoints& gravity_load, dou
   const double h = seconds / kSubsteps;
   const ArmJoints drive = torque - mechanics_.offset -
                           (ArmJoints::Ones() + mechanics_.gravity_error).cwiseProduct(gravity_load);
+  const ArmJoints sticking = mechanics_.stickingFriction(torque);
   for (int s = 0; s < kSubsteps; ++s) {
     const ArmJoints before = position_;
     const ArmJoints cables = cables_.torque(mechanics_);
-    const ArmJoints sticking = mechanics_.stickingFriction(torque);
     for (int i = 0; i < kJointCount; ++i) {
       const double inertia = mechanics_.inertia(i);
-      // Coulomb friction (its constant part and the part the transmitted torque adds) as an
-      // impulse that may stop the motor, then viscous friction implicitly: at a steady speed the
-      // drive balances both exactly.
+      // The cables' pull as a load; Coulomb friction (its constant part, the part the
+      // transmitted torque adds, a rigid cable's) as an impulse that may stop the motor, then
+      // viscous friction implicitly: at a steady speed the drive balances all three exactly.
       const double free = velocity_(i) + h * (drive(i) - cables(i)) / inertia;
       const double stop = h * sticking(i) / inertia;
       velocity_(i) = std::abs(free) <= stop ? 0.0
