@@ -58,6 +58,17 @@ std::unique_ptr<test_support::Simulation> load(const std::filesystem::path& mode
   });
 }
 
+/// The double pendulum with elbow limits [-0.5, 0.4] rad, its shoulder held at 0 and its elbow
+/// pushed up (towards 0.4) with 1 N m from rest.
+std::unique_ptr<test_support::Simulation> elbowPushedTowardsItsUpperLimit(
+    const test_support::TempDir& dir) {
+  auto sim =
+      load(doublePendulum(dir, "  joint limits: {low: -0.5, high: 0.4}\n"), Articulation::Reduced);
+  sim->world->joint("shoulder").commandPosition(0.0);
+  sim->world->joint("elbow").commandEffort(1.0);
+  return sim;
+}
+
 /// Steps all three `steps` times; the largest distance between the tip of `reduced` and that of
 /// `maximal` on the way (`alongside` is a third world stepped with them).
 double worstTipGap(test_support::Simulation& reduced, test_support::Simulation& maximal,
@@ -179,11 +190,8 @@ TEST(Articulation, PositionServoHoldsALoadedJointExactlyAndReportsTheTorque) {
 
 TEST(Articulation, LimitsHoldAgainstAnEffortAndReportTheirTorque) {
   test_support::TempDir dir;
-  auto sim =
-      load(doublePendulum(dir, "  joint limits: {low: -0.5, high: 0.4}\n"), Articulation::Reduced);
+  auto sim = elbowPushedTowardsItsUpperLimit(dir);
   auto& world = *sim->world;
-  world.joint("shoulder").commandPosition(0.0);
-  world.joint("elbow").commandEffort(1.0);  // pushes the elbow up against its upper limit
   world.step(1000);
   EXPECT_NEAR(world.joint("elbow").position(), 0.4, 1e-3);
   EXPECT_NEAR(world.joint("elbow").velocity(), 0.0, 1e-6);
@@ -196,6 +204,26 @@ TEST(Articulation, LimitsHoldAgainstAnEffortAndReportTheirTorque) {
     gravity_torque += body.mass() * 9.81 * (body.centerOfMassPose().translation() - pivot).x();
   }
   EXPECT_NEAR(world.joint("elbow").effort(), -gravity_torque, 1e-3);
+}
+
+TEST(Articulation, AJointArrivingAtItsLimitStopsOnItWithoutPassingIt) {
+  test_support::TempDir dir;
+  auto sim = elbowPushedTowardsItsUpperLimit(dir);
+  auto& world = *sim->world;
+  // Driven from rest, the elbow arrives at several rad/s: a step's travel is millimetres of a
+  // radian, which a row made only once the bound is passed would let it overshoot by.
+  double highest = -1.0, arrival_speed = 0.0;
+  for (int i = 0; i < 1000; ++i) {
+    const double speed = world.joint("elbow").velocity();
+    world.step();
+    const double q = world.joint("elbow").position();
+    if (q > 0.4 - 1e-9 && arrival_speed == 0.0) arrival_speed = speed;
+    highest = std::max(highest, q);
+  }
+  EXPECT_GT(arrival_speed * world.stepSize(), 2e-3) << "the test needs a fast arrival";
+  EXPECT_LE(highest, 0.4 + 1e-6);
+  EXPECT_NEAR(world.joint("elbow").position(), 0.4, 1e-6);
+  EXPECT_NEAR(world.joint("elbow").velocity(), 0.0, 1e-6);  // stopped, not bounced
 }
 
 TEST(Articulation, DampedBodiesSlowDownAsBulletsDampedRigidBodiesDo) {

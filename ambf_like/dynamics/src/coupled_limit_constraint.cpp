@@ -7,6 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ambf_like/dynamics/limit_row.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
@@ -19,9 +21,6 @@ int islandOf(const btMultiBody& multibody) {
   }
   return -1;
 }
-
-/// Besides the step's own travel, how near its bound (rad or m) the sum gets a row.
-constexpr double kRowBand = 1e-4;
 
 }  // namespace
 
@@ -55,10 +54,14 @@ double CoupledLimitConstraint::gap() const {
   return sum - lower_;
 }
 
-bool CoupledLimitConstraint::near(double dt, double band) const {
+double CoupledLimitConstraint::rate() const {
   double rate = 0.0;
   for (const Term& term : terms_) rate += term.gain * m_bodyA->getJointVel(term.link);
-  return gap() <= 2.0 * dt * std::abs(rate) + band;
+  return rate;
+}
+
+bool CoupledLimitConstraint::near(double dt, double band) const {
+  return gap() <= 2.0 * dt * std::abs(rate()) + band;
 }
 
 void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& rows,
@@ -67,21 +70,13 @@ void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& ro
   if (m_numDofsFinalized != m_jacSizeBoth) finalizeMultiDof();
   const double dt = info.m_timeStep;
   internalSetAppliedImpulse(0, 0.0);
-  if (!near(dt, kRowBand)) return;
+  const double gap = this->gap();
+  if (!limitRowNeeded(gap, rate(), dt)) return;
 
-  btMultiBodySolverConstraint& row = rows.expandNonInitializing();
-  row.m_orgConstraint = this;
-  row.m_orgDofIndex = 0;
-  row.m_multiBodyA = m_bodyA;
-  row.m_multiBodyB = m_bodyB;
+  btMultiBodySolverConstraint& row = openLimitRow(rows, *this, 0);
   const btVector3 none(0, 0, 0);
   const double closing = fillMultiBodyConstraint(row, data, jacobianA(0), jacobianB(0), none, none,
                                                  none, none, 0.0, info, 0.0, m_maxAppliedImpulse);
-  row.m_contactNormal1.setZero();
-  row.m_contactNormal2.setZero();
-  row.m_relpos1CrossNormal.setZero();
-  row.m_relpos2CrossNormal.setZero();
-  const double gap = this->gap();
   if (compliance_ > 0.0) {
     // A spring past the bound, solved implicitly (the soft constraint of Catto, undamped): the
     // impulse p solves (J M^-1 J^T + compliance / dt^2) p = -(closing + gap / dt), pushing only;
@@ -93,14 +88,7 @@ void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& ro
     row.m_rhsPenetration = 0.0;
     return;
   }
-  // Apart: the sum may close by the gap in this step, no more (a speculative contact's row).
-  // Past the bound: it stops, and the error is pushed out at the solver's error-reduction rate
-  // (a shallow one as a separate push when the solver splits impulses, as Bullet's limits do).
-  const bool split = info.m_splitImpulse && -gap <= info.m_splitImpulsePenetrationThreshold;
-  const double velocity_error = -closing - std::max(gap, 0.0) / dt;
-  const double position_error = std::max(-gap, 0.0) * (split ? info.m_erp2 : info.m_erp) / dt;
-  row.m_rhs = (velocity_error + (split ? 0.0 : position_error)) * row.m_jacDiagABInv;
-  row.m_rhsPenetration = (split ? position_error : 0.0) * row.m_jacDiagABInv;
+  aimLimitRow(row, closing, gap, info);
 }
 
 }  // namespace ambf_like::detail

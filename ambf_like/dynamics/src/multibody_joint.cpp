@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include "ambf_like/dynamics/coupled_limit_constraint.hpp"
 #include "ambf_like/dynamics/joint_space_servo.hpp"
+#include "ambf_like/dynamics/limit_row.hpp"
 
 namespace ambf_like::detail {
 
@@ -104,7 +104,7 @@ void MultiBodyJoint::recall(const JointDynamicsMemory* memory) {
 }
 
 void MultiBodyJoint::watchLimit(double dt) {
-  // The solver writes a row's impulse only in steps where the bound is reached.
+  // The solver writes a row's impulse only in steps it has the row (near the bound).
   limit_->internalSetAppliedImpulse(0, 0.0);
   limit_->internalSetAppliedImpulse(1, 0.0);
   const double q = multibody_.getJointPos(link_);

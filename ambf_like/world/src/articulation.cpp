@@ -2,7 +2,6 @@
 
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
-#include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include "ambf_like/bullet_conversions.hpp"
 #include "ambf_like/dynamics/bullet_world.hpp"
 #include "ambf_like/dynamics/collision_filter.hpp"
+#include "ambf_like/dynamics/joint_limit_constraint.hpp"
 #include "ambf_like/dynamics/multibody_joint.hpp"
 #include "ambf_like/dynamics/multibody_weight.hpp"
 
@@ -331,7 +331,7 @@ void Articulation::addLink(int index, const JointSpec& joint, const JointFrames&
                                         (joint.type == JointType::Revolute &&
                                          joint.limits->low >= -M_PI && joint.limits->high <= M_PI));
   if (bounded) {
-    link.limit = std::make_unique<btMultiBodyJointLimitConstraint>(
+    link.limit = std::make_unique<JointLimitConstraint>(
         multibody_.get(), index, joint.limits->low - link.coordinate_at_load,
         joint.limits->high - link.coordinate_at_load);
   }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "ambf_like/dynamics/coupled_limit_constraint.hpp"
+#include "ambf_like/dynamics/limit_row.hpp"
 #include "ambf_like/world.hpp"
 #include "world_impl.hpp"
 

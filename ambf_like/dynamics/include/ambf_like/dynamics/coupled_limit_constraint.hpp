@@ -1,6 +1,6 @@
 #pragma once
 // Bullet's side of a CoupledStop: one one-sided row on a weighted sum of an articulation's
-// joint coordinates; and how near their bounds limits join the world's solve.
+// joint coordinates.
 
 #include <BulletDynamics/Featherstone/btMultiBodyConstraint.h>
 
@@ -8,13 +8,8 @@
 
 namespace ambf_like::detail {
 
-/// How near a bound (rad or m), beyond two steps of travel, a limit is put into the world. Each
-/// engaged limit costs the solver's set-up and island work every step even while its bound is
-/// far (Bullet makes its rows only once the bound is reached).
-inline constexpr double kLimitWatchBand = 1e-3;
-
 /// Keeps sum_i gain_i q_i >= lower on one multibody (q in Bullet's coordinates, from the load
-/// pose), as btMultiBodyJointLimitConstraint keeps one joint within its bounds: a row is made
+/// pose), as JointLimitConstraint keeps one joint within its bounds: a row is made
 /// only while the sum is within the step's reach of its bound, and it may push, never pull.
 class CoupledLimitConstraint final : public btMultiBodyConstraint {
  public:
@@ -38,6 +33,8 @@ class CoupledLimitConstraint final : public btMultiBodyConstraint {
   void setCompliance(double compliance) { compliance_ = compliance; }
   /// sum_i gain_i q_i - lower: how far the coordinates are from the stop (< 0: past it).
   double gap() const;
+  /// d/dt of the sum.
+  double rate() const;
   /// Whether the sum is within `band` (rad or m) of its bound beyond two steps of `dt` at its
   /// present rate.
   bool near(double dt, double band) const;
