@@ -3,8 +3,6 @@
 #include <BulletDynamics/Featherstone/btMultiBody.h>
 #include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 
-#include <algorithm>
-#include <cmath>
 #include <limits>
 
 #include "ambf_like/dynamics/limit_row.hpp"
@@ -61,7 +59,7 @@ double CoupledLimitConstraint::rate() const {
 }
 
 bool CoupledLimitConstraint::near(double dt, double band) const {
-  return gap() <= 2.0 * dt * std::abs(rate()) + band;
+  return withinReach(gap(), rate(), dt, band);
 }
 
 void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& rows,
@@ -71,7 +69,7 @@ void CoupledLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& ro
   const double dt = info.m_timeStep;
   internalSetAppliedImpulse(0, 0.0);
   const double gap = this->gap();
-  if (!limitRowNeeded(gap, rate(), dt)) return;
+  if (!withinReach(gap, rate(), dt, kLimitRowBand)) return;
 
   btMultiBodySolverConstraint& row = openLimitRow(rows, *this, 0);
   const btVector3 none(0, 0, 0);

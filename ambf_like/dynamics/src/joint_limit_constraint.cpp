@@ -15,7 +15,7 @@ void JointLimitConstraint::createConstraintRows(btMultiBodyConstraintArray& rows
   const double gaps[2] = {q - m_lowerBound, m_upperBound - q};
   for (int bound = 0; bound < 2; ++bound) {
     setPosition(bound, gaps[bound]);
-    if (!limitRowNeeded(gaps[bound], rate, info.m_timeStep)) continue;
+    if (!withinReach(gaps[bound], rate, info.m_timeStep, kLimitRowBand)) continue;
     btMultiBodySolverConstraint& row = openLimitRow(rows, *this, bound);
     const btVector3 none(0, 0, 0);
     const double closing =

@@ -5,8 +5,8 @@
 
 namespace ambf_like::detail {
 
-bool limitRowNeeded(double gap, double rate, double dt) {
-  return gap <= 2.0 * dt * std::abs(rate) + kLimitRowBand;
+bool withinReach(double gap, double rate, double dt, double band) {
+  return gap <= 2.0 * dt * std::abs(rate) + band;
 }
 
 btMultiBodySolverConstraint& openLimitRow(btMultiBodyConstraintArray& rows,

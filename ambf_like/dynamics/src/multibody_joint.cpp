@@ -4,7 +4,6 @@
 #include <BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h>
 #include <BulletDynamics/Featherstone/btMultiBodyJointLimitConstraint.h>
 
-#include <cmath>
 #include <limits>
 
 #include "ambf_like/dynamics/joint_space_servo.hpp"
@@ -108,8 +107,9 @@ void MultiBodyJoint::watchLimit(double dt) {
   limit_->internalSetAppliedImpulse(0, 0.0);
   limit_->internalSetAppliedImpulse(1, 0.0);
   const double q = multibody_.getJointPos(link_);
-  const double reach = 2.0 * dt * std::abs(velocity()) + kLimitWatchBand;
-  const bool near = q - reach <= limit_->getLowerBound() || q + reach >= limit_->getUpperBound();
+  const double v = velocity();
+  const bool near = withinReach(q - limit_->getLowerBound(), v, dt, kLimitWatchBand) ||
+                    withinReach(limit_->getUpperBound() - q, v, dt, kLimitWatchBand);
   if (near != limit_engaged_) {
     // Added near a bound, removed far from it (see kLimitWatchBand).
     if (near) {

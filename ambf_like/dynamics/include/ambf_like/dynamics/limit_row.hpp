@@ -15,9 +15,10 @@ inline constexpr double kLimitWatchBand = 1e-3;
 /// Besides the step's own travel, how near its bound (rad or m) a limit gets a row.
 inline constexpr double kLimitRowBand = 1e-4;
 
-/// Whether a limit `gap` (rad or m) from its bound, closing or opening at `rate`, gets a row this
-/// step of `dt`: within two steps of its travel and kLimitRowBand.
-bool limitRowNeeded(double gap, double rate, double dt);
+/// Whether a limit `gap` (rad or m) from its bound, closing or opening at `rate`, is within two
+/// steps of `dt` at that rate and `band` of it: kLimitWatchBand to be in the world,
+/// kLimitRowBand to get a row this step.
+bool withinReach(double gap, double rate, double dt, double band);
 
 /// Appends row `index` of `owner` (a limit within one multibody) to `rows`, its normals zero: the
 /// multibody solver works from its Jacobians, which fillMultiBodyConstraint then sets.
