@@ -16,9 +16,10 @@ constexpr double kStep = 0.001;
 
 /// A box link along x hinged at one end about the vertical z (gravity does not turn it), or
 /// about y (gravity does), in reduced coordinates, or maximal ones.
-std::unique_ptr<test_support::Simulation> gearedLink(
-    const test_support::TempDir& dir, ambf_like::Articulation articulation,
-    const std::string& axis = "{x: 0, y: 0, z: 1}") {
+std::unique_ptr<test_support::Simulation> gearedLink(const test_support::TempDir& dir,
+                                                     ambf_like::Articulation articulation,
+                                                     const std::string& axis = "{x: 0, y: 0, z: 1}",
+                                                     const std::string& kind = "type: continuous") {
   const auto model = dir.write(
       "link.yaml",
       "bodies: [BODY anchor, BODY link]\njoints: [JOINT hinge]\nignore inter-collision: true\n"
@@ -32,7 +33,7 @@ std::unique_ptr<test_support::Simulation> gearedLink(
           "  location: {position: {x: 0.1, y: 0, z: 0}}\n"
           "JOINT hinge:\n  parent: BODY anchor\n  child: BODY link\n  parent pivot: {x: 0, y: 0, "
           "z: 0}\n  child pivot: {x: -0.1, y: 0, z: 0}\n  parent axis: " +
-          axis + "\n  child axis: " + axis + "\n  type: continuous\n");
+          axis + "\n  child axis: " + axis + "\n  " + kind + "\n");
   return test_support::simulate(
       {model}, [articulation](ambf_like::WorldSpec& world) { world.articulation = articulation; });
 }
@@ -117,6 +118,33 @@ TEST(Transmission, ViscousFrictionLetsTheMotorReachTorqueOverDamping) {
   transmission.drive(one(torque), one(0.0));
   sim->world->step(3000);  // 3 s: the time constant (I + r^2 J) / (r^2 b) is 0.12 s
   EXPECT_NEAR(sim->world->joint("hinge").velocity(), torque / (viscous * kRatio), 1e-6);
+}
+
+TEST(Transmission, AHardStopStopsLinkAndRotorTogether) {
+  // A stop takes the momentum of all that turns: (I + r^2 J) w in the step it is met, and,
+  // pushed on, the motor's whole r tau from then on. Bullet's own rows would stop the link's I
+  // alone and leave the rotor's r^2 J w (3x the link's here) to run on into it.
+  test_support::TempDir dir;
+  const double stop = 0.5;
+  auto sim =
+      gearedLink(dir, ambf_like::Articulation::Reduced, "{x: 0, y: 0, z: 1}",
+                 "type: revolute\n  joint limits: {low: -0.5, high: " + std::to_string(stop) + "}");
+  auto& transmission = sim->world->addTransmission(gear());
+  auto& hinge = sim->world->joint("hinge");
+  const double speed = 2.0;
+  hinge.place(stop, speed);  // at the stop, turning into it
+  sim->world->step();
+  const double reflected = linkInertiaAboutHinge() + kRatio * kRatio * kRotor;
+  EXPECT_NEAR(hinge.velocity(), 0.0, 1e-6);
+  // The stop's impulse is what effort() reads against the motor's (none yet), times the step.
+  EXPECT_NEAR(-hinge.effort() * kStep, reflected * speed, 0.01 * reflected * speed);
+  const double torque = 0.01;
+  transmission.drive(one(torque), one(0.0));
+  for (int k = 0; k < 3; ++k) {
+    sim->world->step();
+    EXPECT_NEAR(hinge.effort(), 0.0, 1e-3 * kRatio * torque) << "step " << k;
+    EXPECT_LE(hinge.position(), stop + 1e-4);
+  }
 }
 
 TEST(Transmission, APlacedJointStartsThereAtItsSpeed) {

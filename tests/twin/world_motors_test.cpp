@@ -217,7 +217,7 @@ TEST(WorldMotors, AToolPressedOnASlabLoadsTheArmMotorsWithJTransposeF) {
     pressed->send(bridge::ServoJr{Arm::Left, in});
     pressed->advance(0.001);
   }
-  pressed->advance(5.0);  // the rotors take up the contact step by step (docs/actuation.md)
+  pressed->advance(1.0);  // settles: the contact solve stops links and rotors together
   // Pressed, the arm stands still while its motors hunt by an encoder count: motors and
   // contacts balance on average, over 0.3 s.
   const JointBalance balance = balanceAtRest(*pressed, options, Arm::Left, 300);

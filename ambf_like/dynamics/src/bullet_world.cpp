@@ -1,7 +1,6 @@
 #include "ambf_like/dynamics/bullet_world.hpp"
 
 #include <BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolver.h>
-#include <BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h>
 #include <BulletSoftBody/btSoftBodyRigidBodyCollisionConfiguration.h>
 #include <BulletSoftBody/btSoftMultiBodyDynamicsWorld.h>
 #include <BulletSoftBody/btSoftRigidDynamicsWorld.h>
@@ -10,6 +9,7 @@
 #include <stdexcept>
 
 #include "ambf_like/dynamics/dynamics_world.hpp"
+#include "ambf_like/dynamics/rotor_contact_solver.hpp"
 #include "ambf_like/dynamics/sequential_impulse_solver.hpp"
 #include "ambf_like/dynamics/soft_body_step_solver.hpp"
 
@@ -29,7 +29,7 @@ struct BulletWorld::Impl {
 BulletWorld::BulletWorld(bool with_articulations) : impl_(std::make_unique<Impl>()) {
   auto& i = *impl_;
   if (with_articulations) {
-    auto solver = std::make_unique<SequentialImpulseSolver<btMultiBodyConstraintSolver>>();
+    auto solver = std::make_unique<SequentialImpulseSolver<RotorContactSolver>>();
     auto world = std::make_unique<ArticulatedDynamicsWorld>(
         &i.dispatcher, &i.broadphase, solver.get(), &i.collision_config, &i.soft_solver);
     i.soft_multibody = world.get();

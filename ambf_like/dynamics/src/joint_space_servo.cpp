@@ -172,22 +172,24 @@ const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
   const Transmission& t = *transmission_;
   // The speed the joints moved at over the last step, as the encoders saw it. A soft body's
   // contacts act after the positions are integrated: what they put on the links' speed then
-  // is a load (in `constrained`), not a motion, and a light jaw pressed by a ring starts the
+  // is a load (in `contact_change`), not a motion, and a light jaw pressed by a ring starts the
   // step with a speed it never moves at. The rotors' friction, viscous and Coulomb, resists how
   // they turn, not the kick a contact gave their links.
   const Eigen::VectorXd moved = last_position_ ? Eigen::VectorXd((position - *last_position_) / dt)
                                                : Eigen::VectorXd(velocity);
   last_position_ = position;
   const Eigen::VectorXd effort = effort_ + t.coupling.transpose() * t.torque - t.damping * moved;
-  // What contacts and limits put on the joints last step (they act on the links alone, after
-  // the free motion): a load the rotors feel too, so that pressed on a surface the motors' whole
-  // torque comes to rest against it, and Bullet, which applies it again, is not given it twice.
-  const Eigen::VectorXd constrained =
-      free_velocity_ ? Eigen::VectorXd(inertia_ * (velocity - *free_velocity_) / dt)
-                     : Eigen::VectorXd::Zero(velocity.size());
+  // What contacts and limits did to the joints last step, after the free motion. They stop
+  // links and rotors together (RotorContactSolver, applyLinkImpulse), and a load that lasts
+  // does it again: the rows see the motion it leaves, so that pressed on a surface the motors'
+  // whole torque comes to rest against it, not on their friction; Bullet, which applies it
+  // again, is not given it twice.
+  const Eigen::VectorXd contact_change = free_velocity_
+                                             ? Eigen::VectorXd(velocity - *free_velocity_)
+                                             : Eigen::VectorXd::Zero(velocity.size());
   // Where links and rotors coast to with these torques: f = M a is what Bullet adds itself.
   const Eigen::VectorXd coasting =
-      dt * reflected_inverse_ * (effort + inertia_ * free_acceleration_ + constrained);
+      dt * reflected_inverse_ * (effort + inertia_ * free_acceleration_) + contact_change;
   // The rows: each joint motor (a unit row toward its speed), each motor's Coulomb friction
   // (its coupling row, toward rest).
   prepareRows();
@@ -207,7 +209,7 @@ const Eigen::VectorXd& JointSpaceServo::reflectedTorques(
     impulse = boundedImpulses(r.mass, r.factor, target - r.rows * (moved + coasting), bound);
     change.noalias() += r.response * impulse;
   }
-  torque_ = inertia_ * (change / dt - free_acceleration_) - constrained;
+  torque_ = inertia_ * ((change - contact_change) / dt - free_acceleration_);
   transmitted_ = effort + r.rows.transpose() * impulse / dt;
   velocity_before_ = velocity;
   step_ = dt;

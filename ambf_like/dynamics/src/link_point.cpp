@@ -4,6 +4,8 @@
 
 #include <vector>
 
+#include "ambf_like/dynamics/rotor_response.hpp"
+
 namespace ambf_like::detail {
 
 namespace {
@@ -55,7 +57,7 @@ void applyLinkImpulse(btMultiBodyLinkCollider& link, const btVector3& point,
     if (impulse[k] == 0.0) continue;
     body.fillContactJacobianMultiDof(link.m_link, point, kAxes[k], s.jacobian.data(), s.r, s.v,
                                      s.m);
-    body.calcAccelerationDeltasMultiDof(s.jacobian.data(), s.response.data(), s.r, s.v);
+    impulseResponse(body, s.jacobian.data(), s.response.data(), s.r, s.v);
     body.applyDeltaVeeMultiDof(s.response.data(), impulse[k]);
   }
 }

@@ -7,6 +7,7 @@
 
 #include "ambf_like/dynamics/joint_space_servo.hpp"
 #include "ambf_like/dynamics/multibody_weight.hpp"
+#include "ambf_like/dynamics/rotor_response.hpp"
 #include "ambf_like/world.hpp"
 #include "world_impl.hpp"
 
@@ -96,7 +97,7 @@ Eigen::MatrixXd Transmission::linkInertia() const {
 Transmission& World::addTransmission(const TransmissionSpec& spec) {
   requireShape(spec);
   detail::JointSpaceServo* servo = nullptr;
-  const btMultiBody* multibody = nullptr;
+  btMultiBody* multibody = nullptr;
   std::vector<int> dofs;
   for (const auto& name : spec.joints) {
     const auto at = joint(name).dynamics().servoDof();
@@ -124,6 +125,7 @@ Transmission& World::addTransmission(const TransmissionSpec& spec) {
   servo->setTransmission({coupling, dofs_all, dofs_all, Eigen::VectorXd::Zero(motors),
                           Eigen::VectorXd::Zero(motors), stepSize()});
   servo->setRotors(spec.rotor_inertia, spec.viscous);
+  detail::carryRotors(*multibody, *servo);
   const Vec3& g = settings().gravity;
   servo->setLinkWeight(detail::weightTorques(*multibody, btVector3(g.x(), g.y(), g.z())));
   return *impl_->transmissions.emplace_back(

@@ -52,6 +52,8 @@ class JointSpaceServo {
   const Eigen::VectorXd& linkWeight() const { return link_weight_; }
   /// The joint-space inverse inertia of the links alone (no rotors).
   const Eigen::MatrixXd& inverseInertia() const { return inverse_inertia_; }
+  /// With a transmission: (M + A + h D)^-1, how links and rotors together answer an impulse.
+  const Eigen::MatrixXd& reflectedInverse() const { return reflected_inverse_; }
 
   /// Sets the joint-space inverse inertia (refreshed as the articulation moves).
   void setInverseInertia(const Eigen::MatrixXd& inverse_inertia);

@@ -14,7 +14,7 @@ btMultiBodyLinkCollider* movingLink(const btCollisionObject* object);
 btVector3 linkPointVelocity(const btMultiBodyLinkCollider& link, const btVector3& point);
 
 /// Gives the articulation `impulse` (world, N s) at `point` of the link: its joint velocities
-/// change by M^-1 J^T p, with the articulated-body factors of the step just taken.
+/// change by impulseResponse's answer to J^T p (its links' and any rotors' inertia).
 void applyLinkImpulse(btMultiBodyLinkCollider& link, const btVector3& point,
                       const btVector3& impulse);
 
