@@ -217,7 +217,7 @@ TEST(WorldMotors, AToolPressedOnASlabLoadsTheArmMotorsWithJTransposeF) {
     pressed->send(bridge::ServoJr{Arm::Left, in});
     pressed->advance(0.001);
   }
-  pressed->advance(1.0);  // settles: the contact solve stops links and rotors together
+  pressed->advance(3.0);  // the arm stops at once; the tool's joints settle on their integrators
   // Pressed, the arm stands still while its motors hunt by an encoder count: motors and
   // contacts balance on average, over 0.3 s.
   const JointBalance balance = balanceAtRest(*pressed, options, Arm::Left, 300);
