@@ -23,6 +23,7 @@ void impulseResponse(const btMultiBody& body, const btScalar* jacobian, btScalar
                      btAlignedObjectArray<btScalar>& scratch_r,
                      btAlignedObjectArray<btVector3>& scratch_v) {
   const JointSpaceServo* rotors = rotorsOf(body);
+  // A world state saved before the transmission was added restores a servo without one.
   if (rotors == nullptr || !rotors->hasTransmission()) {
     body.calcAccelerationDeltasMultiDof(jacobian, response, scratch_r, scratch_v);
     return;
