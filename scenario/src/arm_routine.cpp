@@ -46,6 +46,10 @@ constexpr double kAlignReach = 0.002;
 constexpr double kBlockedLag = 0.006;
 constexpr double kJawReached = 0.01;  ///< each measured jaw this near its command (rad)
 constexpr int kJawIterations = 30;    ///< ... or this many iterations of waiting for them
+// Lifted off the board, a gripped ring swings the tool: the board's reaction, which the tool's
+// integrators wound against while the jaws closed, is gone, and they take about a second to bring
+// roll, wrist and jaws back. A person waits for the ring to hang still before carrying it.
+constexpr int kHangIterations = 150;  ///< ... at most this many iterations
 constexpr double kCentred = 0.0005;   ///< the ring's centre this near the post's axis (m)
 // A ring held by its wall swings on the grip by a few millimetres as it is carried; one whose
 // centre strays further from the jaws than this since it came up is held by something else (its
@@ -172,6 +176,14 @@ bool ArmRoutine::jawsOnCommand(const raven::ArmJoints& measured) const {
          std::abs(measured(raven::kJaw2) - outer_) <= kJawReached;
 }
 
+bool ArmRoutine::toolOnCommand(const raven::ArmJoints& target,
+                               const raven::ArmJoints& measured) const {
+  for (const int joint : {raven::kRoll, raven::kWrist, raven::kJaw1, raven::kJaw2}) {
+    if (std::abs(measured(joint) - target(joint)) > kJawReached) return false;
+  }
+  return true;
+}
+
 bool ArmRoutine::blocked(const raven::ArmJoints& target, const raven::ArmJoints& measured) const {
   const bool moving = phase_ == Phase::Descend || phase_ == Phase::Align || phase_ == Phase::Lift ||
                       phase_ == Phase::Carry || phase_ == Phase::Lower || phase_ == Phase::Retreat;
@@ -236,7 +248,7 @@ raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
     }
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
-      if (!arrived) return q;
+      if (!arrived || (!toolOnCommand(q, measured) && ++waited_ <= kHangIterations)) return q;
       if (!ringFollows(scene) && decideToRegrasp("did not come up with the jaws")) {
         advance(Phase::Open);
       } else {

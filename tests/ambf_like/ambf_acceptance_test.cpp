@@ -118,10 +118,13 @@ TEST(AmbfAcceptance, Yaml11BooleansAsAmbfWritesThem) {
                                                                              {"True", true},
                                                                              {"FALSE", false},
                                                                              {"y", true}}) {
-    const auto file = dir.write("m.yaml", model("  mass: 1.0\n  passive: " + text + "\n",
-                                                "  enable motor: " + text + "\n"));
+    const auto file =
+        dir.write("m.yaml", model("  mass: 1.0\n  passive: " + text + "\n  visible: " + text + "\n",
+                                  "  enable motor: " + text + "\n"));
     const auto scene = ambf_like::loadModelFiles({file}, std::nullopt, {.strict = true});
     EXPECT_EQ(scene.spec.models[0].bodies[1].passive, value) << text;
+    EXPECT_EQ(scene.spec.models[0].bodies[1].visible, value) << text;
+    EXPECT_TRUE(scene.spec.models[0].bodies[0].visible) << "a body without the key is drawn";
     EXPECT_EQ(scene.spec.models[0].joints[0].enable_motor, value) << text;
   }
   const auto bad = dir.write("m.yaml", model("  mass: 1.0\n", "  enable motor: maybe\n"));

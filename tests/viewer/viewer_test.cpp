@@ -199,13 +199,17 @@ TEST(SceneGeometry, TessellatesEveryBodyOfTheRaven) {
   ambf_like::World world(scene.spec, meshes);
   const auto geometry = viewer::SceneGeometry::of(world, meshes);
   ASSERT_EQ(geometry.bodies.size(), world.bodyCount());
-  for (const auto& body : geometry.bodies) {
+  for (std::size_t i = 0; i < world.bodyCount(); ++i) {
+    const auto& body = geometry.bodies[i];
     EXPECT_GT(body.collision.triangles(), 0u) << body.name;
-    EXPECT_GT(body.visual.triangles(), 0u) << body.name;
+    // The room's floor (`visible: false`) is collided with and not drawn.
+    const bool visible = world.body(i).spec().visible;
+    EXPECT_EQ(visible, body.name.find("floor") == std::string::npos) << body.name;
+    EXPECT_EQ(body.visual.triangles() > 0u, visible) << body.name;
   }
   ASSERT_EQ(geometry.soft_bodies.size(), 6u);
   for (const auto& soft : geometry.soft_bodies) EXPECT_GT(soft.faces.size(), 20u) << soft.name;
-  // The scene's bounds hold the robot and the board, not a floor plane's 2 m.
+  // The scene's bounds hold the robot and the board, not the floor's 4 m.
   EXPECT_LT(geometry.bounds.sizes().maxCoeff(), 1.5);
   EXPECT_GT(geometry.bounds.sizes().maxCoeff(), 0.2);
 }

@@ -121,9 +121,11 @@ SceneGeometry SceneGeometry::of(const ambf_like::World& world, ambf_like::MeshLi
     b.colour = colourFor(b.name);
     b.collision.append(detail::tessellate(*body.bullet().getCollisionShape()), comInBody(body));
     const VisualSkin::Piece* piece = skin ? skin->find(b.name) : nullptr;
-    b.visual = piece ? skinOf(*piece, *skin, meshes) : visualOf(body, meshes);
-    if (b.visual.positions.empty()) b.visual = b.collision;
-    grow(g.bounds, b.visual, body.pose());
+    if (body.spec().visible) {
+      b.visual = piece ? skinOf(*piece, *skin, meshes) : visualOf(body, meshes);
+      if (b.visual.positions.empty()) b.visual = b.collision;
+      grow(g.bounds, b.visual, body.pose());
+    }
     g.bodies.push_back(std::move(b));
   }
   for (std::size_t i = 0; i < world.softBodyCount(); ++i) {

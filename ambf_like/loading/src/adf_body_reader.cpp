@@ -58,8 +58,9 @@ std::vector<PrimitiveShape> readVisualPrimitives(const YamlView& node, LoadConte
   return {};
 }
 
-/// Every rigid-body key of ADF 1.0. Accepted but not simulated: publishing, colours, visibility,
-/// shaders, plugins and the body's Cartesian controller (this simulator commands joints).
+/// Every rigid-body key of ADF 1.0. Accepted but not simulated: publishing, colours, shaders,
+/// plugins and the body's Cartesian controller (this simulator commands joints); `visible` only
+/// decides whether views draw the body.
 // clang-format off
 constexpr std::string_view kBodyKeys[] = {
     "name", "namespace", "mesh", "collision mesh", "collision mesh type", "shape", "geometry",
@@ -72,7 +73,7 @@ constexpr std::string_view kBodyKeys[] = {
     "redundant", "detached"};
 // clang-format on
 
-/// The body's mass, inertia, frames, scale, gravity and passivity.
+/// The body's mass, inertia, frames, scale, gravity, passivity and visibility.
 void readMassAndPlacement(const YamlView& node, BodySpec& body, LoadContext& context) {
   if (auto mass = node.find("mass")) {
     body.mass = nonNegative(*mass, 1e6, " kg");
@@ -102,6 +103,7 @@ void readMassAndPlacement(const YamlView& node, BodySpec& body, LoadContext& con
   }
   if (auto gravity = node.find("gravity")) body.gravity = gravity->asXyz();
   body.passive = node.getBool("passive", false);
+  body.visible = node.getBool("visible", true);
 }
 
 /// Friction, damping and restitution.

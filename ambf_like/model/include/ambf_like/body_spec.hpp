@@ -39,6 +39,7 @@ struct BodySpec {
   SurfaceSpec surface;
   std::optional<Vec3> gravity;  ///< per-body override of the world/model gravity
   bool passive = false;
+  bool visible = true;  ///< AMBF's `visible`: false hides the body from views; it still collides
   SourceRef where;
 };
 
