@@ -10,7 +10,7 @@ build=${1:-build-sanitize}
 seconds=${2:-30}
 shift $(($# > 2 ? 2 : $#))
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(adf urdf mesh articulations recordings ros_messages)
+[ ${#targets[@]} -gt 0 ] || targets=(adf adf_world urdf mesh articulations recordings ros_messages)
 export LSAN_OPTIONS="suppressions=$PWD/fuzz/lsan-suppressions.txt"
 shared=../shared/data
 work=$(mktemp -d)
@@ -27,7 +27,7 @@ seed() {
     [ -f "$file" ] || continue
     n=$((n + 1))
     { [ -z "$prefix" ] || printf "\\x$prefix"; head -c 65536 "$file"; } \
-      > "$work/$target-seeds/$n-$(basename "$file")"
+      > "$work/$target-seeds/$prefix$n-$(basename "$file")"
   done
 }
 [ -d "$shared" ] || echo "fuzz: $shared is absent; seeding from the project's own files only"
@@ -36,6 +36,9 @@ shared_files() { [ -d "$shared" ] && find "$shared" -type f -iname "$1" -size -2
 
 mapfile -t adf < <(project_files '*.yaml'; shared_files '*.yaml')
 seed adf "" "${adf[@]}"
+# adf_world: 00 and a multibody file (the loader's corpus among them), 01 and a world file.
+seed adf_world 00 "${adf[@]}" fuzz/corpus/adf/*
+seed adf_world 01 $(project_files 'world*.yaml') $(shared_files 'world*.yaml')
 seed urdf "" $(project_files '*.urdf') $(shared_files '*.urdf')
 seed mesh 00 $(project_files '*.stl') $(shared_files '*.stl')
 seed mesh 01 $(project_files '*.obj') $(shared_files '*.obj')
@@ -50,8 +53,8 @@ mkdir -p "$work/ros_messages-seeds" "$work/articulations-seeds"
 # Seconds an input may take: a user waits 20 s for a file of 20,000 links to load and step (7 s
 # in a release build here); under the sanitizers it takes 30-60 s.
 declare -A timeout=([articulations]=150)
-declare -A max_len=([adf]=262144 [urdf]=65536 [mesh]=131072 [recordings]=131072 [ros_messages]=4096
-  [articulations]=65536)
+declare -A max_len=([adf]=262144 [adf_world]=262144 [urdf]=65536 [mesh]=131072 [recordings]=131072
+  [ros_messages]=4096 [articulations]=65536)
 status=0
 for target in "${targets[@]}"; do
   binary="$build/fuzz/fuzz_$target"
@@ -61,7 +64,7 @@ for target in "${targets[@]}"; do
   if ! "$binary" -max_total_time="$seconds" -timeout="${timeout[$target]:-10}" -rss_limit_mb=2048 \
       -max_len="${max_len[$target]}" -print_final_stats=1 \
       -artifact_prefix="$work/findings/$target-" \
-      "$work/$target-corpus" "fuzz/corpus/$target" "$work/$target-seeds" \
+      "$work/$target-corpus" $(ls -d "fuzz/corpus/$target" 2>/dev/null) "$work/$target-seeds" \
       > "$work/$target.log" 2>&1; then
     # The report from its first line (the sanitizer's or libFuzzer's), else the log's end.
     report=$(awk '/ERROR:|deadly signal|timeout after|out-of-memory/{found=1} found' "$work/$target.log" | head -n 80)
