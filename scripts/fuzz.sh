@@ -64,7 +64,7 @@ for target in "${targets[@]}"; do
   if ! "$binary" -max_total_time="$seconds" -timeout="${timeout[$target]:-10}" -rss_limit_mb=2048 \
       -max_len="${max_len[$target]}" -print_final_stats=1 \
       -artifact_prefix="$work/findings/$target-" \
-      "$work/$target-corpus" $(ls -d "fuzz/corpus/$target" 2>/dev/null) "$work/$target-seeds" \
+      "$work/$target-corpus" "fuzz/corpus/$target" "$work/$target-seeds" \
       > "$work/$target.log" 2>&1; then
     # The report from its first line (the sanitizer's or libFuzzer's), else the log's end.
     report=$(awk '/ERROR:|deadly signal|timeout after|out-of-memory/{found=1} found' "$work/$target.log" | head -n 80)

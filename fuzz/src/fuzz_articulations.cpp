@@ -131,8 +131,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const auto coordinates =
       static_cast<ambf_like::Articulation>(in.ConsumeIntegralInRange<int>(0, 2));
   const std::string urdf = generate(in);
-  const auto file = fuzz::asFile(reinterpret_cast<const std::uint8_t*>(urdf.data()), urdf.size(),
-                                 "generated.urdf");
+  const auto file = fuzz::asFile(urdf, "generated.urdf");
   ambf_like::LoadedScene scene;
   try {
     scene = ambf_like::loadModelFiles({file});

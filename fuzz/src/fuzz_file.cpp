@@ -28,6 +28,10 @@ std::filesystem::path asFile(const std::uint8_t* data, std::size_t size, const s
   return path;
 }
 
+std::filesystem::path asFile(std::string_view text, const std::string& name) {
+  return asFile(reinterpret_cast<const std::uint8_t*>(text.data()), text.size(), name);
+}
+
 void fail(const std::string& what) {
   std::fprintf(stderr, "property failed: %s\n", what.c_str());
   std::abort();

@@ -44,7 +44,7 @@ constexpr double kAlignReach = 0.002;
 // The measured tool lags the command by up to 3 mm while it moves (the motors' tracking); twice
 // that means something stops it, and pushing on only winds the arm's amplifiers up.
 constexpr double kBlockedLag = 0.006;
-constexpr double kJawReached = 0.01;  ///< each measured jaw this near its command (rad)
+constexpr double kJawReached = 0.01;  ///< a measured tool joint this near its command (rad)
 constexpr int kJawIterations = 30;    ///< ... or this many iterations of waiting for them
 // Lifted off the board, a gripped ring swings the tool: the board's reaction, which the tool's
 // integrators wound against while the jaws closed, is gone, and they take about a second to bring
@@ -178,10 +178,9 @@ bool ArmRoutine::jawsOnCommand(const raven::ArmJoints& measured) const {
 
 bool ArmRoutine::toolOnCommand(const raven::ArmJoints& target,
                                const raven::ArmJoints& measured) const {
-  for (const int joint : {raven::kRoll, raven::kWrist, raven::kJaw1, raven::kJaw2}) {
-    if (std::abs(measured(joint) - target(joint)) > kJawReached) return false;
-  }
-  return true;
+  return std::abs(measured(raven::kRoll) - target(raven::kRoll)) <= kJawReached &&
+         std::abs(measured(raven::kWrist) - target(raven::kWrist)) <= kJawReached &&
+         jawsOnCommand(measured);
 }
 
 bool ArmRoutine::blocked(const raven::ArmJoints& target, const raven::ArmJoints& measured) const {

@@ -94,7 +94,8 @@ class ArmRoutine {
   void advance(Phase next);
   /// True when each measured jaw is within kJawReached of its command.
   bool jawsOnCommand(const raven::ArmJoints& measured) const;
-  /// True when the measured roll, wrist and jaws are each within kJawReached of their commands.
+  /// True when the measured roll and wrist are within kJawReached of `target`'s, and the jaws on
+  /// their command.
   bool toolOnCommand(const raven::ArmJoints& target, const raven::ArmJoints& measured) const;
   /// True when the measured tool lags a moving command by more than the motors' tracking does.
   bool blocked(const raven::ArmJoints& target, const raven::ArmJoints& measured) const;
