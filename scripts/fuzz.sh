@@ -44,6 +44,7 @@ seed mesh 00 $(project_files '*.stl') $(shared_files '*.stl')
 seed mesh 01 $(project_files '*.obj') $(shared_files '*.obj')
 seed mesh 02 $(project_files '*.dae') $(shared_files '*.dae')
 seed mesh 03 $(project_files '*.vtk') $(shared_files '*.vtk')
+seed mesh 04 $(project_files '*.3ds') $(shared_files '*.3ds')
 # The shared recordings are large: their first 64 KiB (cut mid-row, a seed in itself).
 [ -d "$shared" ] && seed recordings 00 $(find "$shared/recordings" -name '*_ambf_1.csv' -o -name '*_physical_1.csv')
 [ -d "$shared" ] && seed recordings 01 $(find "$shared/recordings" -name '*_ci.csv')

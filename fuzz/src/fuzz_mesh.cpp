@@ -1,5 +1,5 @@
-// Fuzz target: a mesh file (STL, OBJ, COLLADA or VTK, chosen by the input's first byte) read by
-// the mesh library. A loaded mesh must be usable as it is: finite vertices, triangle and
+// Fuzz target: a mesh file (STL, OBJ, COLLADA, VTK or 3DS, chosen by the input's first byte) read
+// by the mesh library. A loaded mesh must be usable as it is: finite vertices, triangle and
 // tetrahedron indices in range, tetrahedra of positive volume.
 
 #include <array>
@@ -29,7 +29,7 @@ void checkIndices(const std::vector<std::array<int, N>>& cells, std::size_t vert
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size == 0) return 0;
-  static constexpr std::array<const char*, 4> kExtensions{"stl", "obj", "dae", "vtk"};
+  static constexpr std::array<const char*, 5> kExtensions{"stl", "obj", "dae", "vtk", "3ds"};
   const auto file = fuzz::asFile(data + 1, size - 1,
                                  std::string("mesh.") + kExtensions[data[0] % kExtensions.size()]);
   ambf_like::MeshLibrary library;

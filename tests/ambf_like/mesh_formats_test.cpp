@@ -1,4 +1,5 @@
-// Meshes load through assimp from STL (ASCII and binary), OBJ, COLLADA and 3DS.
+// Meshes load through assimp from STL (ASCII and binary), OBJ, COLLADA and 3DS, and from no other
+// format.
 
 #include <gtest/gtest.h>
 
@@ -112,6 +113,34 @@ TEST(MeshFormats, ThreeDsHasTheSameTopologyAsTheObjExport) {
   ASSERT_GT(three_ds->triangles.size(), 0u);
   EXPECT_EQ(three_ds->triangles.size(), obj->triangles.size());
   EXPECT_EQ(three_ds->vertices.size(), obj->vertices.size());
+}
+
+TEST(MeshFormats, AFormatAmbfDoesNotReadIsRefusedThoughAssimpCouldReadIt) {
+  // assimp reads a PLY tetrahedron; AMBF reads STL, OBJ and 3DS only, and every other of
+  // assimp's parsers is more code hostile bytes could reach.
+  std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  for (const auto& f : kFaces) {
+    ply += "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]) +
+           "\n";
+  }
+  test_support::TempDir dir;
+  for (const char* name : {"tet.ply", "tet.PLY", "tet.x", "tet"}) {
+    try {
+      load(dir.write(name, ply));
+      ADD_FAILURE() << name << " was loaded";
+    } catch (const ambf_like::LoadError& error) {
+      EXPECT_NE(std::string(error.what()).find(std::string(name) + ": not a mesh format"),
+                std::string::npos)
+          << error.what();
+    }
+  }
+  // The formats it does read, whatever the case of their extension.
+  expectTetrahedron(*load(dir.write("TET.OBJ",
+                                    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                    "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")));
 }
 
 TEST(MeshFormats, LibraryLoadsEachFileOnce) {

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <unordered_map>
 
 #include "ambf_like/mesh.hpp"
@@ -181,11 +182,31 @@ void refuseDeepXml(const std::filesystem::path& file, Fail fail) {
   }
 }
 
+/// The file's extension in lower case (AMBF's own files say .STL and .3DS).
+std::string extensionOf(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+/// The surface formats AMBF reads (CHAI3D's STL, OBJ and 3DS) and COLLADA. assimp knows some
+/// forty more, each a parser of its own that hostile bytes could reach; none is let through.
+bool surfaceFormat(const std::filesystem::path& file) {
+  const std::string extension = extensionOf(file);
+  return extension == ".stl" || extension == ".obj" || extension == ".3ds" || extension == ".dae";
+}
+
 Mesh readMesh(const std::filesystem::path& file, const SourceRef& referenced_from) {
   auto fail = [&](const std::string& message) -> LoadError {
     return LoadError(referenced_from, "mesh " + file.string() + ": " + message);
   };
   if (const auto problem = common::fileProblem(file); !problem.empty()) throw fail(problem);
+  if (!surfaceFormat(file)) {
+    throw fail(
+        "not a mesh format read here: a surface mesh is .stl, .obj, .3ds or .dae, a "
+        "volume mesh .vtk");
+  }
   refuseDeepXml(file, fail);
 
   Assimp::Importer importer;
@@ -245,7 +266,7 @@ std::shared_ptr<const Mesh> MeshLibrary::load(const std::filesystem::path& file,
                                               const SourceRef& referenced_from) {
   if (auto it = cache_.find(file); it != cache_.end()) return it->second;
   std::shared_ptr<const Mesh> mesh;
-  if (file.extension() == ".vtk") {
+  if (extensionOf(file) == ".vtk") {
     try {
       Mesh volume = detail::readVtkTetMesh(file);
       dropUnreferencedVertices(volume);

@@ -31,7 +31,8 @@ struct Mesh {
 /// Loads each mesh file once (assimp) and hands out shared, immutable copies.
 class MeshLibrary {
  public:
-  /// Throws LoadError naming `referenced_from` when the file is missing, unreadable or empty.
+  /// Throws LoadError naming `referenced_from` when the file is missing, unreadable, empty or of
+  /// another format than those above (whatever assimp could read).
   std::shared_ptr<const Mesh> load(const std::filesystem::path& file,
                                    const SourceRef& referenced_from);
 
