@@ -15,6 +15,7 @@
 #include "ambf_like/mesh.hpp"
 #include "common/farthest.hpp"
 #include "common/file_problem.hpp"
+#include "common/lower_case.hpp"
 #include "common/xml_nesting.hpp"
 #include "vtk_tet_mesh.hpp"
 
@@ -184,10 +185,7 @@ void refuseDeepXml(const std::filesystem::path& file, Fail fail) {
 
 /// The file's extension in lower case (AMBF's own files say .STL and .3DS).
 std::string extensionOf(const std::filesystem::path& file) {
-  std::string extension = file.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
+  return common::lowerCase(file.extension().string());
 }
 
 /// The surface formats AMBF reads (CHAI3D's STL, OBJ and 3DS) and COLLADA. assimp knows some
