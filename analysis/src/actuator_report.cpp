@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
+
+#include "output_file.hpp"
 
 namespace analysis {
 
@@ -34,13 +35,6 @@ std::string symbolOf(const PlatformActuators& a, const PlatformActuators& b) {
   const bool pb = b.platform->profile.role == Role::Physical;
   if (pa && pb) return "T_PP";
   return pa || pb ? "T_PS" : "T_SS";
-}
-
-std::ofstream openFile(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-  out.precision(10);
-  return out;
 }
 
 }  // namespace
@@ -97,7 +91,7 @@ void writeActuatorReport(const std::vector<PlatformActuators>& platforms,
                          const std::filesystem::path& dir) {
   using nlohmann::json;
   json list = json::array();
-  auto csv = openFile(dir / "actuators.csv");
+  auto csv = openOutputFile(dir / "actuators.csv");
   csv << "symbol,comparison,signal,unit,arm,joint,mean_abs\n";
   for (const auto& c : comparisons) {
     json signals = json::object();
@@ -125,9 +119,9 @@ void writeActuatorReport(const std::vector<PlatformActuators>& platforms,
     platforms_json.push_back(
         {{"name", p.platform->profile.name}, {"logs actuators", !p.traces.empty()}});
   }
-  openFile(dir / "actuators.json")
+  openOutputFile(dir / "actuators.json")
       << json({{"platforms", platforms_json}, {"comparisons", list}}).dump(1) << "\n";
-  auto traj = openFile(dir / "actuator_trajectories.csv");
+  auto traj = openOutputFile(dir / "actuator_trajectories.csv");
   traj << "platform,signal,arm,joint,time,mean\n";
   for (const auto& p : platforms) {
     if (p.traces.empty()) continue;

@@ -10,7 +10,8 @@ namespace analysis {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// The correlation of fewer than three points or of a constant series.
+constexpr double kUndefined = std::numeric_limits<double>::quiet_NaN();
 
 struct Points {
   std::vector<double> x, y;
@@ -133,7 +134,7 @@ Curve lowess(const std::vector<double>& x, const std::vector<double>& y,
 double pearson(const std::vector<double>& x, const std::vector<double>& y) {
   const Points p = finitePairs(x, y);
   const std::size_t n = p.x.size();
-  if (n < 3) return kNaN;
+  if (n < 3) return kUndefined;
   const double mx = std::accumulate(p.x.begin(), p.x.end(), 0.0) / static_cast<double>(n);
   const double my = std::accumulate(p.y.begin(), p.y.end(), 0.0) / static_cast<double>(n);
   double sxy = 0.0, sxx = 0.0, syy = 0.0;
@@ -142,7 +143,7 @@ double pearson(const std::vector<double>& x, const std::vector<double>& y) {
     sxx += (p.x[i] - mx) * (p.x[i] - mx);
     syy += (p.y[i] - my) * (p.y[i] - my);
   }
-  return sxx > 0.0 && syy > 0.0 ? sxy / std::sqrt(sxx * syy) : kNaN;
+  return sxx > 0.0 && syy > 0.0 ? sxy / std::sqrt(sxx * syy) : kUndefined;
 }
 
 double spearman(const std::vector<double>& x, const std::vector<double>& y) {

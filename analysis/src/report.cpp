@@ -7,10 +7,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <stdexcept>
 
 #include "analysis/factors.hpp"
 #include "analysis/metrics.hpp"
+#include "output_file.hpp"
 #include "recording/cf_recording.hpp"
 
 namespace analysis {
@@ -18,13 +18,6 @@ namespace analysis {
 namespace {
 
 using nlohmann::json;
-
-std::ofstream openFile(const std::filesystem::path& path) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-  out.precision(10);
-  return out;
-}
 
 /// NaN as JSON null.
 json number(double v) {
@@ -64,12 +57,12 @@ json statsJson(const DifferenceStats& s) {
 json writeCorrelations(const ReportSettings& settings, const std::vector<Comparison>& list,
                        const std::filesystem::path& dir) {
   json correlations = json::array();
-  auto corr_csv = openFile(dir / "correlations.csv");
+  auto corr_csv = openOutputFile(dir / "correlations.csv");
   corr_csv << "comparison,joint,column,factor,pearson_r_difference,spearman_rho_abs_difference,"
               "samples\n";
-  auto scatter = openFile(dir / "scatter.csv");
+  auto scatter = openOutputFile(dir / "scatter.csv");
   scatter << "comparison,column,factor,value,difference\n";
-  auto trend = openFile(dir / "lowess.csv");
+  auto trend = openOutputFile(dir / "lowess.csv");
   trend << "comparison,column,factor,value,difference\n";
   for (const auto& c : list) {
     if (c.symbol() != "T_PS") continue;
@@ -106,7 +99,7 @@ json writeCorrelations(const ReportSettings& settings, const std::vector<Compari
 void writeMetrics(const TrialSet& set, const ReportSettings& settings,
                   const std::vector<Comparison>& list, const std::filesystem::path& dir) {
   json summary = json::array(), joints = json::array();
-  auto csv = openFile(dir / "metrics.csv");
+  auto csv = openOutputFile(dir / "metrics.csv");
   csv << "comparison,symbol,quantity,joint,column,unit,mean_abs,rms,max,"
          "mean_abs_first_row_removed,rms_first_row_removed,max_first_row_removed,pairs,samples\n";
   for (const auto& c : list) {
@@ -146,7 +139,7 @@ void writeMetrics(const TrialSet& set, const ReportSettings& settings,
   for (const auto& j : recordedJoints()) {
     joint_names.push_back({{"column", j.column}, {"name", j.name}, {"unit", j.unit}});
   }
-  auto out = openFile(dir / "metrics.json");
+  auto out = openOutputFile(dir / "metrics.json");
   out << json{{"inputs", inputsJson(set, settings)},
               {"joints", joint_names},
               {"summary", summary},
@@ -158,7 +151,7 @@ void writeMetrics(const TrialSet& set, const ReportSettings& settings,
 
 /// Per platform, joint and row: the smallest, largest and mean value across its trials (Fig. 6).
 void writeTrajectories(const TrialSet& set, const std::filesystem::path& dir) {
-  auto out = openFile(dir / "trajectories.csv");
+  auto out = openOutputFile(dir / "trajectories.csv");
   out << "platform,column,row,time,min,max,mean\n";
   for (const auto& p : set.platforms) {
     std::size_t rows = p.trials.front().rows();
@@ -186,7 +179,7 @@ void writeTrajectories(const TrialSet& set, const std::filesystem::path& dir) {
 
 /// grasp_forces.csv: the cf recordings beside the trials' rs files, for the grip figures.
 void writeGraspForceFiles(const TrialSet& set, const std::filesystem::path& dir) {
-  auto out = openFile(dir / "grasp_forces.csv");
+  auto out = openOutputFile(dir / "grasp_forces.csv");
   out << "platform,file\n";
   for (const auto& p : set.platforms) {
     for (const auto& t : p.trials) {
@@ -199,7 +192,7 @@ void writeGraspForceFiles(const TrialSet& set, const std::filesystem::path& dir)
 }
 
 void writeIssues(const TrialSet& set, const std::filesystem::path& dir) {
-  auto out = openFile(dir / "issues.csv");
+  auto out = openOutputFile(dir / "issues.csv");
   out << "file,excluded,reason\n";
   for (const auto& i : set.issues) {
     out << csvField(i.path.string()) << "," << (i.excluded ? "yes" : "no") << ","

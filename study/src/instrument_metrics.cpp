@@ -2,17 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 
+#include "not_measured.hpp"
 #include "study/collision_watch.hpp"
 #include "study/protocol.hpp"
 
 namespace study {
-
-namespace {
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-}  // namespace
 
 ExcessiveForce excessiveForce(const recording::CfRecording& cf, double threshold) {
   const std::size_t time = cf.column("time");
@@ -63,8 +59,8 @@ void measureInstruments(TrialMetrics& m, const std::vector<TrialEvent>& events,
   const bool board = std::any_of(events.begin(), events.end(),
                                  [](const TrialEvent& e) { return e.name == "rings"; });
   m["tool_collisions"] = episodes(CollisionKind::Tool);
-  m["board_collisions"] = board ? episodes(CollisionKind::Board) : kNaN;
-  m["post_collisions"] = board ? episodes(CollisionKind::Post) : kNaN;
+  m["board_collisions"] = board ? episodes(CollisionKind::Board) : kNotMeasured;
+  m["post_collisions"] = board ? episodes(CollisionKind::Post) : kNotMeasured;
   m["instrument_collisions"] =
       m["tool_collisions"] + (board ? m["board_collisions"] + m["post_collisions"] : 0.0);
   const auto threshold = std::find_if(events.begin(), events.end(), [](const TrialEvent& e) {

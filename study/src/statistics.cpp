@@ -9,11 +9,11 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "not_measured.hpp"
+
 namespace study {
 
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::vector<double> differences(const std::vector<double>& a, const std::vector<double>& b) {
   if (a.size() != b.size() || a.size() < 2) {
@@ -27,12 +27,12 @@ std::vector<double> differences(const std::vector<double>& a, const std::vector<
 }  // namespace
 
 double mean(const std::vector<double>& x) {
-  if (x.empty()) return kNaN;
+  if (x.empty()) return kNotMeasured;
   return std::accumulate(x.begin(), x.end(), 0.0) / static_cast<double>(x.size());
 }
 
 double sd(const std::vector<double>& x) {
-  if (x.size() < 2) return kNaN;
+  if (x.size() < 2) return kNotMeasured;
   const double m = mean(x);
   double ss = 0.0;
   for (double v : x) ss += (v - m) * (v - m);

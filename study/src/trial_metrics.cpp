@@ -4,9 +4,9 @@
 #include <array>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <unsupported/Eigen/FFT>
 
+#include "not_measured.hpp"
 #include "raven/arm_kinematics.hpp"
 #include "raven/platform_profile.hpp"
 #include "recording/cf_recording.hpp"
@@ -19,7 +19,6 @@ namespace study {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kIdleSpeed = 0.001;  ///< m/s: both tips slower than this count as idle
 constexpr double kSampleRate = 50.0;  ///< Hz: speed profiles resampled for SPARC
 
@@ -119,13 +118,13 @@ double meanSparc(const raven::PerArm<TipPath>& paths, const std::vector<TrialEve
   for (int arm = 0; arm < 2; ++arm) {
     const TipPath& path = paths[static_cast<std::size_t>(arm)];
     std::vector<std::pair<double, double>> segments;
-    double shown = kNaN;
+    double shown = kNotMeasured;
     for (const TrialEvent& e : events) {
       if (e.arm != arm) continue;
       if (e.name == "target_shown") shown = e.time;
       if (e.name == "target_reached" && std::isfinite(shown)) {
         segments.emplace_back(shown, e.time);
-        shown = kNaN;
+        shown = kNotMeasured;
       }
     }
     if (std::isfinite(shown)) segments.emplace_back(shown, end);
@@ -135,7 +134,7 @@ double meanSparc(const raven::PerArm<TipPath>& paths, const std::vector<TrialEve
     if (!targets && path.length(0.0, end) > 0.001) segments.emplace_back(0.0, end);
     for (const auto& [from, to] : segments) add(sparc(path.speed(from, to), kSampleRate));
   }
-  return n > 0 ? sum / n : kNaN;
+  return n > 0 ? sum / n : kNotMeasured;
 }
 
 /// Peak and mean (over the rows where that grasper touches something) jaw normal force.
@@ -157,7 +156,7 @@ std::pair<double, double> graspForces(const recording::CfRecording& cf) {
       ++rows;
     }
   }
-  if (rows == 0) return {kNaN, kNaN};
+  if (rows == 0) return {kNotMeasured, kNotMeasured};
   return {peak, sum / rows};
 }
 
@@ -230,9 +229,9 @@ int metricSense(const std::string& name) {
 }
 
 double sparc(const std::vector<double>& speed, double rate) {
-  if (speed.size() < 2) return kNaN;
+  if (speed.size() < 2) return kNotMeasured;
   const double peak = *std::max_element(speed.begin(), speed.end());
-  if (!(peak > 1e-9)) return kNaN;
+  if (!(peak > 1e-9)) return kNotMeasured;
   const auto padded = static_cast<std::size_t>(
       std::pow(2.0, std::ceil(std::log2(static_cast<double>(speed.size()))) + 4.0));
   std::vector<double> signal(speed);
@@ -287,10 +286,10 @@ TrialMetrics measureTrial(const fs::path& dir) {
   TrialMetrics m;
   m["completion_time_s"] = end->value > 0.0 ? end->time : std::max(end->time, limit);
   m["completed"] = end->value;
-  m["targets_reached"] = targets ? count("target_reached") : kNaN;
-  m["overshoots"] = targets ? count("target_left") : kNaN;
-  m["rings_placed"] = rings ? count("ring_placed") - count("ring_unplaced") : kNaN;
-  m["rings_dropped"] = rings ? count("ring_dropped") : kNaN;
+  m["targets_reached"] = targets ? count("target_reached") : kNotMeasured;
+  m["overshoots"] = targets ? count("target_left") : kNotMeasured;
+  m["rings_placed"] = rings ? count("ring_placed") - count("ring_unplaced") : kNotMeasured;
+  m["rings_dropped"] = rings ? count("ring_dropped") : kNotMeasured;
   m["path_length_left_m"] = paths[0].length(0.0, end->time);
   m["path_length_right_m"] = paths[1].length(0.0, end->time);
   m["path_length_m"] = m["path_length_left_m"] + m["path_length_right_m"];

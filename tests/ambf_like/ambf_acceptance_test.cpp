@@ -17,7 +17,8 @@ using testing::AllOf;
 using testing::HasSubstr;
 
 /// A static base and a dynamic box on a revolute joint; `box` and `joint` are spliced in.
-std::string model(const std::string& box = "  mass: 1.0\n", const std::string& joint = "") {
+std::string hingedBoxModel(const std::string& box = "  mass: 1.0\n",
+                           const std::string& joint = "") {
   return "bodies: [BODY base, BODY box]\n"
          "joints: [JOINT hinge]\n"
          "BODY base:\n"
@@ -49,8 +50,9 @@ std::string strictError(const std::filesystem::path& file) {
 TEST(AmbfAcceptance, KeysAmbfCarriesAreAcceptedAndNotedOnceAsNotSimulated) {
   TempDir dir;
   const auto file = dir.write(
-      "m.yaml", "detached: false\n" + model("  mass: 1.0\n  use material: true\n  redundant: 1\n",
-                                            "  detached: 0\n"));
+      "m.yaml",
+      "detached: false\n" +
+          hingedBoxModel("  mass: 1.0\n  use material: true\n  redundant: 1\n", "  detached: 0\n"));
   const auto scene = ambf_like::loadModelFiles({file});
   const std::string w = warningsOf(scene);
   EXPECT_THAT(w, AllOf(HasSubstr("'use material' accepted, not simulated"),
@@ -62,7 +64,7 @@ TEST(AmbfAcceptance, KeysAmbfCarriesAreAcceptedAndNotedOnceAsNotSimulated) {
 
 TEST(AmbfAcceptance, AnUnknownKeyIsAWarningWithItsSuggestionAndAStrictError) {
   TempDir dir;
-  const auto file = dir.write("m.yaml", model("  mass: 1.0\n  restitutoin: 0.2\n"));
+  const auto file = dir.write("m.yaml", hingedBoxModel("  mass: 1.0\n  restitutoin: 0.2\n"));
   const auto scene = ambf_like::loadModelFiles({file});
   EXPECT_THAT(warningsOf(scene), AllOf(HasSubstr("unknown key 'restitutoin'"),
                                        HasSubstr("did you mean 'restitution'")));
@@ -73,7 +75,7 @@ TEST(AmbfAcceptance, AnUnknownKeyIsAWarningWithItsSuggestionAndAStrictError) {
 
 TEST(AmbfAcceptance, ASensorOnAnotherModelsBodyIsFoundByItsQualifiedNameAndSkippedIfMissing) {
   TempDir dir;
-  const auto robot = dir.write("robot.yaml", "namespace: /robot/\n" + model());
+  const auto robot = dir.write("robot.yaml", "namespace: /robot/\n" + hingedBoxModel());
   auto extras = [&](const std::string& parent) {
     return dir.write("extras_" + std::to_string(parent.size()) + ".yaml",
                      "namespace: /extras/\nsensors: [SENSOR eye]\nactuators: [ACTUATOR hand]\n"
@@ -118,16 +120,16 @@ TEST(AmbfAcceptance, Yaml11BooleansAsAmbfWritesThem) {
                                                                              {"True", true},
                                                                              {"FALSE", false},
                                                                              {"y", true}}) {
-    const auto file =
-        dir.write("m.yaml", model("  mass: 1.0\n  passive: " + text + "\n  visible: " + text + "\n",
-                                  "  enable motor: " + text + "\n"));
+    const auto file = dir.write(
+        "m.yaml", hingedBoxModel("  mass: 1.0\n  passive: " + text + "\n  visible: " + text + "\n",
+                                 "  enable motor: " + text + "\n"));
     const auto scene = ambf_like::loadModelFiles({file}, std::nullopt, {.strict = true});
     EXPECT_EQ(scene.spec.models[0].bodies[1].passive, value) << text;
     EXPECT_EQ(scene.spec.models[0].bodies[1].visible, value) << text;
     EXPECT_TRUE(scene.spec.models[0].bodies[0].visible) << "a body without the key is drawn";
     EXPECT_EQ(scene.spec.models[0].joints[0].enable_motor, value) << text;
   }
-  const auto bad = dir.write("m.yaml", model("  mass: 1.0\n", "  enable motor: maybe\n"));
+  const auto bad = dir.write("m.yaml", hingedBoxModel("  mass: 1.0\n", "  enable motor: maybe\n"));
   for (bool strict : {false, true}) {
     EXPECT_THAT(loadErrorOf([&] { ambf_like::loadModelFiles({bad}, std::nullopt, {strict}); }),
                 AllOf(HasSubstr("JOINT hinge/enable motor"), HasSubstr("got 'maybe'")))
@@ -137,7 +139,7 @@ TEST(AmbfAcceptance, Yaml11BooleansAsAmbfWritesThem) {
 
 TEST(AmbfAcceptance, ABodyWithoutMassIsStaticWithAWarningAndAStrictError) {
   TempDir dir;
-  const auto file = dir.write("m.yaml", model(""));
+  const auto file = dir.write("m.yaml", hingedBoxModel(""));
   const auto scene = ambf_like::loadModelFiles({file});
   EXPECT_THAT(warningsOf(scene), HasSubstr("body 'box': missing required key 'mass' (AMBF warns "
                                            "and loads such a body static, mass 0)"));
@@ -185,8 +187,8 @@ TEST(AmbfAcceptance, MalformedYamlWrongTypesAndNaNStayErrorsByDefault) {
   TempDir dir;
   for (const auto& [text, expected] : std::vector<std::pair<std::string, std::string>>{
            {"bodies: [BODY a\n", "malformed YAML"},
-           {model("  mass: heavy\n"), "expected a number, got 'heavy'"},
-           {model("  mass: .nan\n"), "BODY box/mass"}}) {
+           {hingedBoxModel("  mass: heavy\n"), "expected a number, got 'heavy'"},
+           {hingedBoxModel("  mass: .nan\n"), "BODY box/mass"}}) {
     const auto file = dir.write("m.yaml", text);
     EXPECT_THAT(loadErrorOf([&] { ambf_like::loadModelFiles({file}); }), HasSubstr(expected));
   }
