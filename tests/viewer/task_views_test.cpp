@@ -26,8 +26,6 @@ using test_support::isBackground;
 using test_support::isRingRed;
 using test_support::shareNear;
 
-constexpr int kSceneWidth = test_support::HeadlessPegScene::kWidth;
-constexpr int kSceneHeight = test_support::HeadlessPegScene::kHeight;
 /// A ring 20 mm across seen from 0.2 m covers about 2,000 pixels of a 640x400 task view; a
 /// third of that still counts as a ring a person can see.
 constexpr int kMinRingPixels = 500;
@@ -81,14 +79,15 @@ TEST(TaskViews, EveryNamedViewIsRenderedHeadless) {
   ASSERT_EQ(scene.views.size(), scenario::pegTransferViewNames().size());
   for (const std::string& name : scenario::pegTransferViewNames()) {
     const Image image = scene.shoot(name);
-    ASSERT_EQ(image.width, kSceneWidth) << name;
+    ASSERT_EQ(image.width, PegScene::kWidth) << name;
     int drawn = 0;
-    for (int y = 0; y < kSceneHeight; ++y) {
-      for (int x = 0; x < kSceneWidth; ++x) drawn += !isBackground(image.at(x, y));
+    for (int y = 0; y < PegScene::kHeight; ++y) {
+      for (int x = 0; x < PegScene::kWidth; ++x) drawn += !isBackground(image.at(x, y));
     }
     // The task views look down on the board; a grasper view has the jaws against the sky.
     const bool grasper = name.starts_with("grasper");
-    EXPECT_GT(drawn, kSceneWidth * kSceneHeight / (grasper ? 20 : 10)) << name << ": mostly empty";
+    EXPECT_GT(drawn, PegScene::kWidth * PegScene::kHeight / (grasper ? 20 : 10))
+        << name << ": mostly empty";
   }
   EXPECT_THROW(viewer::findView(scene.views, "ceiling"), std::invalid_argument);
 }
@@ -107,16 +106,16 @@ TEST(TaskViews, RingsOnTargetPostsAreToldFromRingsOnStartPosts) {
   PegScene scene;
   if (!scene.view) GTEST_SKIP() << "no headless OpenGL: " << scene.why;
   const scenario::PegLayout layout;
-  int fewest =
-      kSceneWidth * kSceneHeight;  // ring pixels of the least visible ring, before and after
+  // Ring pixels of the least visible ring, before and after.
+  int fewest = PegScene::kWidth * PegScene::kHeight;
   for (raven::Arm arm : raven::kArms) {
     const std::string view = std::string(raven::armName(arm)) + "-task";
     const viewer::Camera camera = viewer::findView(scene.views, view).camera;
     // Before: each ring on its start post, enough of it drawn to count; the target posts bare.
     Image image = scene.shoot(view);
     int ring_pixels = 0;
-    for (int y = 0; y < kSceneHeight; ++y) {
-      for (int x = 0; x < kSceneWidth; ++x) ring_pixels += isRingRed(image.at(x, y));
+    for (int y = 0; y < PegScene::kHeight; ++y) {
+      for (int x = 0; x < PegScene::kWidth; ++x) ring_pixels += isRingRed(image.at(x, y));
     }
     EXPECT_GT(ring_pixels, 3 * kMinRingPixels) << view;
     for (const scenario::RingJob& job : layout.jobsOf(arm)) {
@@ -152,10 +151,10 @@ TEST(TaskViews, AGrasperViewFollowsItsJaws) {
     const viewer::Camera camera = view.at(poses);
     // The jaw's own origin lands in the middle of the picture.
     const auto jaw =
-        camera.toPixel(poses[*view.follow_body].translation(), kSceneWidth, kSceneHeight);
+        camera.toPixel(poses[*view.follow_body].translation(), PegScene::kWidth, PegScene::kHeight);
     ASSERT_TRUE(jaw);
-    EXPECT_NEAR(jaw->x(), kSceneWidth / 2.0, 1.0);
-    EXPECT_NEAR(jaw->y(), kSceneHeight / 2.0, 1.0);
+    EXPECT_NEAR(jaw->x(), PegScene::kWidth / 2.0, 1.0);
+    EXPECT_NEAR(jaw->y(), PegScene::kHeight / 2.0, 1.0);
     EXPECT_NE(scene.world->body(*view.follow_body).qualifiedName().find(raven::armName(arm)),
               std::string::npos);
   }
