@@ -3,6 +3,7 @@
 #include <spdlog/spdlog.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 
@@ -223,7 +224,41 @@ IterationReport DualPlatformController::sineDance() {
 }
 
 IterationReport DualPlatformController::moveTo(const ArmPair& joints) {
-  return scriptedMove(joints, std::numeric_limits<int>::max());
+  IterationReport report = scriptedMove(joints, std::numeric_limits<int>::max());
+  if (options_.arrival) arrive(report);
+  return report;
+}
+
+void DualPlatformController::arrive(IterationReport& report) {
+  const bridge::RavenPlatform& robot = *platforms_.front().platform;
+  std::optional<raven::ArmJoints> most_lead;
+  if (options_.following_limit) most_lead = options_.following_limit->lead;
+  const raven::ArmJoints most_per_step = options_.caps.perStep(period());
+  std::array<ArmArrival, 2> arms{
+      ArmArrival(*options_.arrival, raven::ArmKinematics::of(profile_, Arm::Left), most_per_step,
+                 most_lead, period()),
+      ArmArrival(*options_.arrival, raven::ArmKinematics::of(profile_, Arm::Right), most_per_step,
+                 most_lead, period())};
+  const auto most = std::lround(options_.arrival->most_wait / period());
+  for (long k = 0;; ++k) {
+    bool arrived = true;
+    ArmPair make_up;
+    for (Arm arm : raven::kArms) {
+      const auto a = raven::slot(arm);
+      const bool this_one = arms[a].arrived(commanded_[a], robot.measuredJs(arm).position,
+                                            robot.setpointJs(arm).position, make_up[a]);
+      arrived = arrived && this_one;
+    }
+    if (arrived || k == most) return;
+    // Holding the targets, a tool joint past its torque bound is drawn back meanwhile (holdStill).
+    InterpolationPlan hold = planMove(commanded_, commanded_, options_.caps, period());
+    ArmPair drawn{raven::ArmJoints::Zero(), raven::ArmJoints::Zero()};
+    const bool held = options_.following_limit && holdAtFollowingLimit(hold, 0, drawn);
+    send(hold, 1, report, {make_up[0] + drawn[0], make_up[1] + drawn[1]});
+    if (held) commanded_ = hold.at(1);
+    waitPeriod({}, true);
+    ++report.steps;
+  }
 }
 
 IterationReport DualPlatformController::scriptedMove(const ArmPair& joints, int most) {

@@ -28,6 +28,12 @@ controller::FollowingLimit followingLimit() {
   return limit;
 }
 
+controller::Arrival arrival() {
+  controller::Arrival arrival;
+  arrival.most_make_up = 0.002;
+  return arrival;
+}
+
 EnvAction envActionNamed(std::string_view name) {
   if (name == "joints") return EnvAction::Joints;
   if (name == "joint_deltas") return EnvAction::JointDeltas;

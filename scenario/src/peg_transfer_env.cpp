@@ -56,6 +56,7 @@ Eigen::VectorXd PegTransferEnv::reset(std::uint64_t seed) {
   session_.reset();  // the old twin goes before the new one is built
   controller::ControllerOptions control;
   control.following_limit = followingLimit();
+  control.arrival = arrival();
   session_ = std::make_unique<ScriptedSession>(pegTransferTwin(run, variation), control);
   session_->makeReady(options_.time_limit);
   expert_.emplace(pegTransferOperators(layout_, options_.squeeze));

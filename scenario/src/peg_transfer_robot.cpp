@@ -26,6 +26,7 @@ void PegTransferRobot::makeReady(double timeout) {
   }
   controller::ControllerOptions control;
   control.following_limit = followingLimit();
+  control.arrival = arrival();
   controller_.emplace(
       std::vector<controller::PlatformSlot>{{"robot", &robot_, controller::CommandStyle::ServoJr}},
       control);

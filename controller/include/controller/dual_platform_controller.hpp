@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "bridge/raven_platform.hpp"
+#include "controller/arrival.hpp"
 #include "controller/following_limit.hpp"
 #include "controller/gamepad_mapping.hpp"
 #include "controller/velocity_cap.hpp"
@@ -48,6 +49,9 @@ struct ControllerOptions {
   /// of both arms, go on.
   /// None: they never stop (the paper's controller).
   std::optional<FollowingLimit> following_limit;
+  /// moveTo waits at its end until each arm has arrived (or stopped where it goes), making a
+  /// stopped arm's shortfall up within its bounds. None: a move ends with its last command.
+  std::optional<Arrival> arrival;
 };
 
 /// What one iteration did.
@@ -162,6 +166,11 @@ class DualPlatformController {
   /// One command period at the targets; under a following limit a joint past its torque's is
   /// drawn back meanwhile.
   void holdStill();
+  /// moveTo's end under an arrival: holds the targets (a tool joint past its torque bound drawn
+  /// back, as holdStill does), each time an arm's wrist has stopped short moving its shoulder's,
+  /// elbow's and insertion's setpoints on by half the shortfall (within the bound, a capped step
+  /// a period), until every joint has arrived or stopped, for at most the longest wait.
+  void arrive(IterationReport& report);
   /// moveTo / moveFor: clamped to the limits, at most `most` steps, the mapping following.
   IterationReport scriptedMove(const ArmPair& joints, int most);
   ArmPair measured(const PlatformSlot& slot) const;

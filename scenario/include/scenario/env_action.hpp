@@ -8,6 +8,7 @@
 #include <array>
 #include <string_view>
 
+#include "controller/arrival.hpp"
 #include "controller/following_limit.hpp"
 #include "controller/velocity_cap.hpp"
 #include "raven/arm_kinematics.hpp"
@@ -37,6 +38,13 @@ int actionSize(EnvAction kind);
 /// wind up under any lasting lead (GRASP2's command is never checked: none); `give` is
 /// 1 / (KP x TR).
 controller::FollowingLimit followingLimit();
+
+/// When a step has arrived (controller::ControllerOptions::arrival), at the scripted operator's
+/// own tolerances (ArmRoutine): the wrist's axis within 0.1 mm of its targets' (kAligned) or
+/// stopped (under 20 um in a 20 ms iteration, kStill), the tool's joints within 0.01 rad
+/// (kJawReached) or stopped (1 mrad in 10 ms); a stopped arm's shortfall made up within 2 mm at
+/// the wrist (kAlignReach); at most half a second.
+controller::Arrival arrival();
 
 /// Largest tool displacement per step (m).
 inline constexpr double kMaxToolDelta = 0.005;

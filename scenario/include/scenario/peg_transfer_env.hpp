@@ -28,8 +28,10 @@ namespace scenario {
 
 /// How long a step lasts.
 enum class EnvControl {
-  Waypoint,  ///< until the arms reach the action's targets under the caps (a manual iteration)
-  Period     ///< exactly PegTransferEnvOptions::period: a move cut short there, or held after
+  /// Until the arms' setpoints reach the action's targets under the caps (a manual iteration),
+  /// then until the arms arrive or stop (arrival()).
+  Waypoint,
+  Period  ///< exactly PegTransferEnvOptions::period: a move cut short there, or held after
 };
 
 /// How the environment's episodes run.
