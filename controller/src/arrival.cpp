@@ -44,7 +44,8 @@ raven::ArmJoints ArmArrival::nextMakeUp(const raven::ArmJoints& targets,
   if (most_lead_) {  // nor a lead past the following limit
     const raven::ArmJoints lead = setpoint - now;
     for (int i = raven::kShoulder; i <= raven::kInsertion; ++i) {
-      const double room = std::max(0.0, (*most_lead_)(i)-std::abs(lead(i)));
+      const double bound = (*most_lead_)(i);
+      const double room = std::max(0.0, bound - std::abs(lead(i)));
       if (change(i) * lead(i) > 0.0) change(i) = std::clamp(change(i), -room, room);
     }
   }

@@ -25,7 +25,7 @@ struct Arrival {
   double still_window = 0.02;  ///< s
   /// How far the shoulder's, elbow's and insertion's setpoints may put the wrist past where
   /// the targets put it, to make a stopped arm's shortfall up by half of it each time it stopped
-  /// (m; the tool's joints have integrators and are only waited for).
+  /// (m; 0: none; the tool's joints have integrators and are only waited for).
   double most_make_up = 0.0;
   double most_wait = 0.5;  ///< the longest a move waits at its end (s)
 };

@@ -42,8 +42,8 @@ controller::FollowingLimit followingLimit();
 /// When a step has arrived (controller::ControllerOptions::arrival), at the scripted operator's
 /// own tolerances (ArmRoutine): the wrist's axis within 0.1 mm of its targets' (kAligned) or
 /// stopped (under 20 um in a 20 ms iteration, kStill), the tool's joints within 0.01 rad
-/// (kJawReached) or stopped (1 mrad in 10 ms); a stopped arm's shortfall made up within 2 mm at
-/// the wrist (kAlignReach); at most half a second.
+/// (kJawReached) or stopped (under 2 mrad in the same 20 ms); a stopped arm's shortfall made up
+/// within 2 mm at the wrist (kAlignReach); at most half a second.
 controller::Arrival arrival();
 
 /// Largest tool displacement per step (m).
