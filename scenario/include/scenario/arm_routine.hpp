@@ -31,8 +31,10 @@ class ArmRoutine {
   ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile, const PegLayout& layout,
              std::vector<RingJob> jobs, double squeeze = kDefaultSqueeze);
 
-  /// 0.35 mm of the silicone ring's 4 mm wall: each jaw then presses on it with about 2-3 N, the
-  /// force a real grasp of a peg-transfer ring takes (../shared/reference/soft-materials.md).
+  /// 0.35 mm of the silicone ring's 4 mm wall: each jaw then presses on it with about 1.6-3.2 N
+  /// on the nominal scene, within the few tenths to few newtons a grasper puts on a small silicone
+  /// ring and harder than the 0.33-0.43 N measured in box-trainer peg transfers
+  /// (../shared/reference/soft-materials.md); shallower grips re-grasp more (docs/main-job.md).
   static constexpr double kDefaultSqueeze = 0.00035;
 
   /// The arm's next target. `target` is its current one, `measured` where its encoders say it
