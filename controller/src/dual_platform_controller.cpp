@@ -127,7 +127,8 @@ int DualPlatformController::cyclesPerPeriod() const {
 }
 
 IterationReport DualPlatformController::execute(const ArmPair& next, int most,
-                                                const std::function<bool()>& stop, bool following) {
+                                                const std::function<bool()>& stop, bool following,
+                                                const ArmPair* first_jump) {
   const double lead = std::min(since_command_ / period(), 1.0);
   InterpolationPlan plan = planMove(commanded_, next, options_.caps, period(), lead);
   IterationReport report;
@@ -135,6 +136,7 @@ IterationReport DualPlatformController::execute(const ArmPair& next, int most,
   report.steps = std::min(plan.commands(), most);
   for (int k = 1; k <= report.steps; ++k) {
     ArmPair jump{raven::ArmJoints::Zero(), raven::ArmJoints::Zero()};
+    if (first_jump && k == 1) jump = *first_jump;
     if (following && holdAtFollowingLimit(plan, k - 1, jump)) {
       report.held_back = true;
       const auto still = [](const ArmPair& p) { return p[0].isZero(0.0) && p[1].isZero(0.0); };
@@ -250,13 +252,9 @@ void DualPlatformController::arrive(IterationReport& report) {
       arrived = arrived && this_one;
     }
     if (arrived || k == most) return;
-    // Holding the targets, a tool joint past its torque bound is drawn back meanwhile (holdStill).
-    InterpolationPlan hold = planMove(commanded_, commanded_, options_.caps, period());
-    ArmPair drawn{raven::ArmJoints::Zero(), raven::ArmJoints::Zero()};
-    const bool held = options_.following_limit && holdAtFollowingLimit(hold, 0, drawn);
-    send(hold, 1, report, {make_up[0] + drawn[0], make_up[1] + drawn[1]});
-    if (held) commanded_ = hold.at(1);
-    waitPeriod({}, true);
+    const IterationReport held = holdStill(&make_up);
+    if (report.refused == 0) report.refusal = held.refusal;
+    report.refused += held.refused;
     ++report.steps;
   }
 }
@@ -287,9 +285,12 @@ void DualPlatformController::idle() {
   advanceAll(period());
 }
 
-void DualPlatformController::holdStill() {
+IterationReport DualPlatformController::holdStill(const ArmPair* make_up) {
   const bool following = options_.following_limit.has_value();
-  if (!following || execute(commanded_, 1, {}, true).steps == 0) idle();
+  IterationReport report;
+  if (following || make_up) report = execute(commanded_, 1, {}, following, make_up);
+  if (report.steps == 0) idle();
+  return report;
 }
 
 double DualPlatformController::divergence() const {

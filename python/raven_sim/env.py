@@ -3,8 +3,8 @@
 One step is one manual-loop iteration of the controller a gamepad drives (control="waypoint":
 until the arms' setpoints reach the action's targets under the controller's velocity caps, at
 least 2 ms of robot time, and then until the arms arrive there or stop, at most 0.5 s, a stopped
-arm's shortfall made up: scenario::arrival()) or exactly `period` seconds (control="period": a move cut short there, or held
-after it arrives). The action (action_type) is both arms' joint targets ("joints", 14 values,
+arm's shortfall made up: scenario::arrival()) or exactly `period` seconds (control="period": a
+move cut short there, or held after it arrives). The action (action_type) is both arms' joint targets ("joints", 14 values,
 left arm first, ArmJoints order: shoulder, elbow, insertion (m), roll, wrist, jaw1, jaw2),
 deltas from the current targets ("joint_deltas", 14, at most a joint's range), per arm the tool
 tip's displacement with the wrist locked and the jaws' opening ("tool_deltas", 8: dx, dy, dz in

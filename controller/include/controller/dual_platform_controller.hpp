@@ -151,9 +151,11 @@ class DualPlatformController {
   /// the interpolation got to). A stop mid-period ends the period there.
   /// `stop`: asked between cycles, ends the move there (cut short); `following`: before each
   /// command, the joints at the following limit stop there (held back), the others go on, and
-  /// the move ends once none is left to move.
+  /// the move ends once none is left to move; `first_jump`: added to the first command's
+  /// increments (a setpoint moved off the targets).
   IterationReport execute(const ArmPair& next, int most = std::numeric_limits<int>::max(),
-                          const std::function<bool()>& stop = {}, bool following = false);
+                          const std::function<bool()>& stop = {}, bool following = false,
+                          const ArmPair* first_jump = nullptr);
   /// Sends command k of `plan` to every platform, its increments moved by `jump`.
   void send(const InterpolationPlan& plan, int k, IterationReport& report, const ArmPair& jump);
   /// One command period on every platform; with `stop`, in robot cycles, asking it after each
@@ -163,13 +165,13 @@ class DualPlatformController {
   int cyclesPerPeriod() const;
   /// Lets `seconds` pass on every platform.
   void advanceAll(double seconds);
-  /// One command period at the targets; under a following limit a joint past its torque's is
-  /// drawn back meanwhile.
-  void holdStill();
-  /// moveTo's end under an arrival: holds the targets (a tool joint past its torque bound drawn
-  /// back, as holdStill does), each time an arm's wrist has stopped short moving its shoulder's,
-  /// elbow's and insertion's setpoints on by half the shortfall (within the bound, a capped step
-  /// a period), until every joint has arrived or stopped, for at most the longest wait.
+  /// One command period at the targets, the setpoints moved by `make_up` if given; under a
+  /// following limit a joint past its torque's is drawn back meanwhile.
+  IterationReport holdStill(const ArmPair* make_up = nullptr);
+  /// moveTo's end under an arrival: holds the targets (holdStill), each time an arm's wrist has
+  /// stopped short moving its shoulder's, elbow's and insertion's setpoints on by half the
+  /// shortfall (within the bound, a capped step a period), until every joint has arrived or
+  /// stopped, for at most the longest wait.
   void arrive(IterationReport& report);
   /// moveTo / moveFor: clamped to the limits, at most `most` steps, the mapping following.
   IterationReport scriptedMove(const ArmPair& joints, int most);
