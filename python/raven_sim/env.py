@@ -1,17 +1,16 @@
 """The peg transfer as a learning environment, in Gymnasium's API convention.
 
-One step is one manual-loop iteration of the controller a gamepad drives (control="waypoint":
-until the arms' setpoints reach the action's targets under the controller's velocity caps, at
-least 2 ms of robot time, and then until the arms arrive there or stop, at most 0.5 s, a stopped
-arm's shortfall made up: scenario::arrival()) or exactly `period` seconds (control="period": a
-move cut short there, or held after it arrives). The action (action_type) is both arms' joint targets ("joints", 14 values,
-left arm first, ArmJoints order: shoulder, elbow, insertion (m), roll, wrist, jaw1, jaw2),
-deltas from the current targets ("joint_deltas", 14, at most a joint's range), per arm the tool
-tip's displacement with the wrist locked and the jaws' opening ("tool_deltas", 8: dx, dy, dz in
-m (at most 5 mm) in the controller's frame {B}, the one a gamepad's sticks move the tool in (not
-the observation's pose frame), then jaw1 + jaw2 in rad), or a pad reading ("pad", a ci row of
-14 values).
-Actions are clipped to their bounds, their targets to the joint limits.
+One step is one manual-loop iteration of the controller a gamepad drives (control="waypoint": until
+the arms' setpoints reach the action's targets under the controller's velocity caps, at least 2 ms
+of robot time, and then until the arms arrive there or stop, at most 0.5 s, a stopped arm's
+shortfall made up: scenario::arrival()) or exactly `period` seconds (control="period": a move cut
+short there, or held after it arrives). The action (action_type) is both arms' joint targets
+("joints", 14 values, left arm first, ArmJoints order: shoulder, elbow, insertion (m), roll, wrist,
+jaw1, jaw2), deltas from the current targets ("joint_deltas", 14, at most a joint's range), per arm
+the tool tip's displacement with the wrist locked and the jaws' opening ("tool_deltas", 8: dx, dy,
+dz in m (at most 5 mm) in the controller's frame {B}, the one a gamepad's sticks move the tool in
+(not the observation's pose frame), then jaw1 + jaw2 in rad), or a pad reading ("pad", a ci row of
+14 values). Actions are clipped to their bounds, their targets to the joint limits.
 
 Observations (obs): "state" alone gives the vector below; with "rgb" (H, W, 3) uint8, "depth"
 (H, W) float32 metres along the camera's axis (+inf where nothing is) or "segmentation" (H, W)
