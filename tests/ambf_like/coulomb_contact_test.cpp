@@ -1,5 +1,6 @@
 // Coulomb contacts of soft bodies (`contact friction: coulomb`): the friction cone on an
-// incline, the contact forces against the weight, and a pinch that holds only when squeezed.
+// incline, the contact forces against the weight, a pinch that holds only when squeezed, and a
+// body resting on a link that never sleeps while the link may move.
 
 #include <gtest/gtest.h>
 
@@ -257,6 +258,47 @@ TEST(CoulombContact, AGearedPaddleUnderACubeIsHeldByItsMotorsFrictionWithoutCree
   EXPECT_NEAR(hinge.position(), settled, 1e-6) << "the paddle crept";
   EXPECT_NEAR(load.effort, expected, 0.05 * kCubeMass * kGravity * load.cube_x);
   EXPECT_TRUE(world.softBody("cube").isFinite());
+}
+
+TEST(CoulombContact, ACubeOnAJointedPaddleStaysAwakeAndFollowsItDownHoweverSlowly) {
+  // Soft-body sleep on (the default). The paddle tilts down at 5 mrad/s: under the cube its
+  // surface sinks 0.75 mm/s and its fastest point moves slower than the 2 mm/s that wakes a
+  // sleeper. A cube asleep on it would hang in the air, as a ring asleep in jaws that open slowly
+  // would; a body touching a link (which a command can move at any step) must stay awake.
+  for (const auto articulation :
+       {ambf_like::Articulation::Reduced, ambf_like::Articulation::Maximal}) {
+    test_support::TempDir dir;
+    dir.write("cube.obj", subdividedCubeObj(4));
+    auto sim = test_support::simulate(
+        {dir.write("scene.yaml", cubeOnAPaddle(0.15))},
+        [articulation](ambf_like::WorldSpec& world) { world.articulation = articulation; });
+    auto& world = *sim->world;
+    const auto& cube = world.softBody("cube");
+    const auto& paddle = world.body("paddle");
+    auto& hinge = world.joint("hinge");
+    hinge.commandPosition(0.0);
+    while (world.time() < 3.0) {  // long past the 0.5 s of rest a sleeper needs
+      world.step();
+      ASSERT_FALSE(cube.isAsleep()) << "asleep at " << world.time() << " s on a jointed paddle";
+    }
+    // Its contacts keep carrying its weight (what a grasp's force sensor reads).
+    Eigen::Vector3d carried = Eigen::Vector3d::Zero();
+    for (const auto& f : world.softContactForces()) carried += f.normal_force + f.friction_force;
+    EXPECT_NEAR(carried.z(), kCubeMass * kGravity, 0.2 * kCubeMass * kGravity);
+    // The cube's centre above the paddle's top face, in the paddle's frame.
+    const auto height = [&] { return (paddle.pose().inverse() * cube.centerOfMass()).z() - 0.005; };
+    const double resting = height();
+    const double tilt = 0.02;  // rad: 3 mm lower under the cube, over 4 s
+    const double start = world.time();
+    while (world.time() < start + tilt / 0.005) {
+      hinge.commandPosition(0.005 * (world.time() - start));  // positive: the free end down
+      world.step();
+    }
+    world.step(500);
+    ASSERT_NEAR(hinge.position(), tilt, 0.002);
+    EXPECT_NEAR(height(), resting, 0.0005) << "the cube stayed behind as the paddle went down";
+    EXPECT_TRUE(cube.isFinite());
+  }
 }
 
 }  // namespace

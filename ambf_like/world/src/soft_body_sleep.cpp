@@ -4,6 +4,8 @@
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
+#include <BulletDynamics/Featherstone/btMultiBody.h>
+#include <BulletDynamics/Featherstone/btMultiBodyLinkCollider.h>
 #include <BulletSoftBody/btSoftBody.h>
 
 #include <algorithm>
@@ -32,6 +34,26 @@ struct AnyPoint : btCollisionWorld::ContactResultCallback {
     return 0;
   }
 };
+
+/// True when the object can move at the next step: an awake dynamic rigid body, or a link of an
+/// articulation other than its fixed base (a joint's command can come at any step).
+bool canMove(const btCollisionObject& object) {
+  if (const auto* link = btMultiBodyLinkCollider::upcast(&object)) {
+    return link->m_link >= 0 || !link->m_multiBody->hasFixedBase();
+  }
+  const auto* rigid = btRigidBody::upcast(&object);
+  return rigid != nullptr && rigid->getInvMass() > 0.0 && rigid->isActive();
+}
+
+/// True when the soft body touches something that can move: what holds it (a jaw) may let it go
+/// or push it at any step, however slowly, so it must not sleep (Bullet's islands: a body sleeps
+/// only with everything it touches).
+bool touchesAMovableBody(const btSoftBody& body) {
+  for (int c = 0; c < body.m_rcontacts.size(); ++c) {
+    if (canMove(*body.m_rcontacts[c].m_cti.m_colObj)) return true;
+  }
+  return false;
+}
 
 void wake(SoftBody& soft) {
   soft.bullet().forceActivationState(ACTIVE_TAG);
@@ -117,7 +139,7 @@ void SoftBodySleeper::afterStep(const std::vector<std::unique_ptr<SoftBody>>& so
     rest.rested += h;
     // Not ISLAND_SLEEPING: Bullet's island manager wakes that whenever a dynamic body's bounds
     // overlap (a resting arm link's box spans the board), and then solves it unpredicted.
-    if (rest.resting(settings_) && b.m_anchors.size() == 0) {
+    if (rest.resting(settings_) && b.m_anchors.size() == 0 && !touchesAMovableBody(b)) {
       b.forceActivationState(DISABLE_SIMULATION);
       rest.rigid_contacts = b.m_rcontacts.size();
       rest.soft_contacts = b.m_scontacts.size();
