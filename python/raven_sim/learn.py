@@ -254,9 +254,11 @@ def dagger(args):
     enough_seeds(args)
     single_threaded()
     rng = np.random.default_rng(args.noise_seed)
-    kwargs = {**demos.ENV_KWARGS, "actuation": args.actuation, "randomize": args.randomize}
+    policy = load_policy(args.policy)
+    # An image policy's episodes keep its camera images: its ring locator learns from them.
+    kwargs = {**demos.ENV_KWARGS, **policy.env_kwargs, "actuation": args.actuation,
+              "randomize": args.randomize}
     env = PegTransferEnv(**kwargs)
-    policy = Policy.load(args.policy)
 
     def drive(observation, label):
         action = policy.act(observation)  # every step: the policy keeps its memory

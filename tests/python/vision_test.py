@@ -147,6 +147,20 @@ class ImageDemonstrations(unittest.TestCase):
             for a, b in zip(vision.load_policy(again).locator.state_dict().values(),
                             loaded.locator.state_dict().values()):
                 self.assertTrue(torch.allclose(a.float(), b.float(), atol=1e-6))
+            # A DAgger round the image policy drives keeps its camera images, so its locator
+            # learns on from the states the policy reaches itself.
+            import h5py
+            rolled = os.path.join(d, "rolled.hdf5")
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["dagger", "--policy", policy, "--episodes", "1", "--seeds", "9",
+                            "--max-steps", "6", "--collect", rolled])
+                learn.main(["train", "--obs", "rgb", "--demos", demos, rolled, "--state-policy",
+                            SHIPPED_STATE, "--init", policy, "--epochs", "1", "--batch", "8",
+                            "--out", again])
+            with h5py.File(rolled, "r") as f:
+                for camera in vision.CAMERAS:
+                    self.assertEqual(f[f"data/demo_0/obs/{camera}_rgb"].shape, (6, 24, 32, 3))
+                self.assertEqual(f["data/demo_0/obs/state"].shape, (6, 72))
             # Without images in the demos the image policy cannot train, and says why.
             state_only = os.path.join(d, "state.hdf5")
             with contextlib.redirect_stdout(io.StringIO()):
