@@ -30,7 +30,9 @@ on its scene, recorded in the same layout.
 train: behaviour cloning, one multilayer perceptron for either arm from its imitation.ArmFeatures
 to its waypoint (standardised, mean squared error, Adam), on the CPU. With --obs rgb: an image
 policy (vision.ImagePolicy), a ring locator trained on the demos' task-camera images that the
-state policy --state-policy acts through.
+state policy --state-policy acts through. With --rings-from IMAGE_POLICY: the acting part
+trained on the rings that policy's locator sees in the demos' images (its errors included),
+saved with that locator as an image policy.
 
 join: an image policy's ring locator acting through another state policy (the locator only
 sees rings; a state policy trained again needs no new locator).
@@ -66,7 +68,8 @@ from .env import OBSERVATIONS, PegTransferEnv
 from .imitation import Policy, SteppedExpert, fit
 from .robot import run
 from .vision import KIND as IMAGE_POLICY
-from .vision import ImagePolicy, fit_locator, load_locator_samples, load_policy, locator_of
+from .vision import (ImagePolicy, fit_locator, load_located, load_locator_samples,
+                     load_policy, locator_of)
 
 # DART's noise scale per joint (rad; the insertion m), times --noise.
 NOISE_SCALE = np.array([0.004, 0.004, 0.0004, 0.02, 0.02, 0.02, 0.02] * 2)
@@ -181,11 +184,22 @@ def train(args):
     torch.set_num_threads(args.threads)
     if args.obs == "rgb":
         return train_image_policy(args)
-    states, waypoints = demos.load_all(args.demos)
+    locator = None
+    if args.rings_from:  # the acting part of an image policy, on the rings its locator sees
+        saved = torch.load(args.rings_from)
+        if saved.get("kind") != IMAGE_POLICY:
+            sys.exit(f"train --rings-from: {args.rings_from} is not an image policy")
+        locator = locator_of(saved)
+        states, waypoints = load_located(args.demos, locator)
+    else:
+        states, waypoints = demos.load_all(args.demos)
     start = Policy.load(args.init) if args.init else None
     policy, samples, seconds = fit(states, waypoints, [args.width] * args.layers, args.epochs,
                                    args.batch, args.lr, args.seed, start=start)
-    policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds)
+    if locator is not None:
+        policy = ImagePolicy(locator, policy, saved["image_size"])
+    policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds,
+                rings_from=args.rings_from)
     print(f"trained on {len(states)} demonstrations, {samples} steps, in {seconds:.0f} s: "
           f"{args.out}")
 
@@ -374,6 +388,10 @@ def main(argv=None):
                         "the demos' task-camera images, acting through --state-policy "
                         "(scripts/retrain-image-policy.sh: --epochs 16 --batch 128 --lr 1e-3)")
     p.add_argument("--state-policy", help="with --obs rgb: the state policy that acts")
+    p.add_argument("--rings-from", metavar="IMAGE_POLICY",
+                   help="with --obs state: train on the rings this image policy's locator sees "
+                        "in the demos' task-camera images instead of the recorded ones, and save "
+                        "an image policy (that locator acting through what was trained)")
     p.set_defaults(run=train)
     p = sub.add_parser("join", help="an image policy's ring locator with another state policy")
     p.add_argument("--image-policy", required=True, help="the image policy whose locator is kept")

@@ -188,6 +188,40 @@ def load_locator_samples(paths):
     return tuple(np.concatenate([p[i] for p in parts]) for i in range(2))
 
 
+def with_located_rings(demo, locator, batch=256):
+    """One demo's states with the rings its task cameras show (the locator's reading of each
+    step's images) in place of the recorded ones: what an image policy's acting part is given."""
+    import torch
+    states = np.array(demo["obs/state"], dtype=np.float64)
+    rings = states[:, RINGS].reshape(len(states), 6, 3)
+    for arm in (0, 1):
+        frames = demo[f"obs/{image_key(arm).replace('/', '_')}"]
+        with torch.no_grad():
+            seen = np.concatenate([locator(torch.as_tensor(seen_image(frames[i:i + batch], arm)))
+                                   .numpy() for i in range(0, len(states), batch)])
+        offsets = seen.astype(np.float64).reshape(-1, 3, 3) / MM * (MIRROR if arm else 1.0)
+        rings[:, RING_ROWS[arm]] = offsets + ORIGINS[arm]
+    states[:, RINGS] = rings.reshape(len(states), -1)
+    return states
+
+
+def load_located(paths, locator):
+    """Every demo of the files: its states with located rings (with_located_rings) and its
+    waypoints, as demos.load_all gives them with the recorded rings."""
+    import h5py
+    states, waypoints = [], []
+    for path in paths:
+        with h5py.File(path, "r") as f:
+            for k in sorted(f["data"].keys(), key=lambda k: int(k[5:])):
+                demo = f["data"][k]
+                if f"obs/{image_key(0).replace('/', '_')}" not in demo:
+                    raise ValueError(f"{path}: {k} has no {CAMERAS} images (record with --obs "
+                                     f"state,rgb --camera {','.join(CAMERAS)})")
+                states.append(with_located_rings(demo, locator))
+                waypoints.append(np.asarray(demo["waypoints"]))
+    return states, waypoints
+
+
 def fit_locator(images, rings, epochs, batch=128, lr=1e-3, seed=0, log=print, start=None):
     """Trains a RingLocator (a new one, or on from `start`): mean squared error in mm, Adam with
     a cosine schedule. Returns it, with its mean error (mm) on the last epoch's batches and the

@@ -161,6 +161,27 @@ class ImageDemonstrations(unittest.TestCase):
                 for camera in vision.CAMERAS:
                     self.assertEqual(f[f"data/demo_0/obs/{camera}_rgb"].shape, (6, 24, 32, 3))
                 self.assertEqual(f["data/demo_0/obs/state"].shape, (6, 72))
+            # The acting part trained on the rings the locator sees: only the rings differ from
+            # the recorded states, and the result is an image policy with that locator.
+            acting = os.path.join(d, "acting.pt")
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["train", "--demos", demos, "--rings-from", policy, "--epochs", "1",
+                            "--out", acting])
+            with h5py.File(demos, "r") as f:
+                recorded = np.asarray(f["data/demo_0/obs/state"])
+                located = vision.with_located_rings(f["data/demo_0"], loaded.locator)
+            rings = np.zeros(recorded.shape[1], bool)
+            rings[imitation.RINGS] = True
+            self.assertTrue(np.array_equal(located[:, ~rings], recorded[:, ~rings]))
+            self.assertFalse(np.allclose(located[:, rings], recorded[:, rings], atol=1e-4))
+            trained = vision.load_policy(acting)
+            self.assertIsInstance(trained, vision.ImagePolicy)
+            for a, b in zip(trained.locator.state_dict().values(),
+                            loaded.locator.state_dict().values()):
+                self.assertTrue(torch.equal(a, b))
+            with self.assertRaisesRegex(SystemExit, "not an image policy"):
+                learn.main(["train", "--demos", demos, "--rings-from", SHIPPED_STATE, "--out",
+                            acting])
             # Without images in the demos the image policy cannot train, and says why.
             state_only = os.path.join(d, "state.hdf5")
             with contextlib.redirect_stdout(io.StringIO()):
