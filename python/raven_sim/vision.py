@@ -56,7 +56,9 @@ def rings_seen(rings, arm):
 
 
 def rings_in_world(seen, arm):
-    return np.asarray(seen).reshape(3, 3) / MM * (MIRROR if arm else 1.0) + ORIGINS[arm]
+    """What the locator gave (9 values, or N x 9) -> the arm's rings in the world ((N,) 3, 3)."""
+    seen = np.asarray(seen, dtype=np.float64)
+    return seen.reshape(*seen.shape[:-1], 3, 3) / MM * (MIRROR if arm else 1.0) + ORIGINS[arm]
 
 
 def make_locator(channels=16, keypoints=32, hidden=256):
@@ -175,16 +177,21 @@ def locator_samples(demo):
     return np.concatenate(images), np.concatenate(rings)
 
 
-def load_locator_samples(paths):
+def image_demos(paths):
+    """Each demo of the files, in order, open while it is used; one without both task cameras'
+    images is an error naming the file and the demo."""
     import h5py
-    parts = []
     for path in paths:
         with h5py.File(path, "r") as f:
             for k in sorted(f["data"].keys(), key=lambda k: int(k[5:])):
                 if f"obs/{image_key(0).replace('/', '_')}" not in f["data"][k]:
                     raise ValueError(f"{path}: {k} has no {CAMERAS} images (record with --obs "
                                      f"state,rgb --camera {','.join(CAMERAS)})")
-                parts.append(locator_samples(f["data"][k]))
+                yield f["data"][k]
+
+
+def load_locator_samples(paths):
+    parts = [locator_samples(demo) for demo in image_demos(paths)]
     return tuple(np.concatenate([p[i] for p in parts]) for i in range(2))
 
 
@@ -199,8 +206,7 @@ def with_located_rings(demo, locator, batch=256):
         with torch.no_grad():
             seen = np.concatenate([locator(torch.as_tensor(seen_image(frames[i:i + batch], arm)))
                                    .numpy() for i in range(0, len(states), batch)])
-        offsets = seen.astype(np.float64).reshape(-1, 3, 3) / MM * (MIRROR if arm else 1.0)
-        rings[:, RING_ROWS[arm]] = offsets + ORIGINS[arm]
+        rings[:, RING_ROWS[arm]] = rings_in_world(seen, arm)
     states[:, RINGS] = rings.reshape(len(states), -1)
     return states
 
@@ -208,17 +214,10 @@ def with_located_rings(demo, locator, batch=256):
 def load_located(paths, locator):
     """Every demo of the files: its states with located rings (with_located_rings) and its
     waypoints, as demos.load_all gives them with the recorded rings."""
-    import h5py
     states, waypoints = [], []
-    for path in paths:
-        with h5py.File(path, "r") as f:
-            for k in sorted(f["data"].keys(), key=lambda k: int(k[5:])):
-                demo = f["data"][k]
-                if f"obs/{image_key(0).replace('/', '_')}" not in demo:
-                    raise ValueError(f"{path}: {k} has no {CAMERAS} images (record with --obs "
-                                     f"state,rgb --camera {','.join(CAMERAS)})")
-                states.append(with_located_rings(demo, locator))
-                waypoints.append(np.asarray(demo["waypoints"]))
+    for demo in image_demos(paths):
+        states.append(with_located_rings(demo, locator))
+        waypoints.append(np.asarray(demo["waypoints"]))
     return states, waypoints
 
 

@@ -168,8 +168,16 @@ class ImageDemonstrations(unittest.TestCase):
                 learn.main(["train", "--demos", demos, "--rings-from", policy, "--epochs", "1",
                             "--out", acting])
             with h5py.File(demos, "r") as f:
-                recorded = np.asarray(f["data/demo_0/obs/state"])
-                located = vision.with_located_rings(f["data/demo_0"], loaded.locator)
+                demo = f["data/demo_0"]
+                recorded = np.asarray(demo["obs/state"])
+                located = vision.with_located_rings(demo, loaded.locator)
+                # Step by step, what the image policy sees when it acts (to a micrometre: the
+                # locator's float32 output may round otherwise in a batch than alone).
+                for step in (0, len(recorded) - 1):
+                    observation = {vision.image_key(arm): demo[
+                        f"obs/{vision.image_key(arm).replace('/', '_')}"][step] for arm in (0, 1)}
+                    self.assertTrue(np.allclose(located[step, imitation.RINGS],
+                                                loaded.locate(observation), atol=1e-6))
             rings = np.zeros(recorded.shape[1], bool)
             rings[imitation.RINGS] = True
             self.assertTrue(np.array_equal(located[:, ~rings], recorded[:, ~rings]))
