@@ -29,6 +29,11 @@ def open_demos(path, env_kwargs, source, mode="w"):
     return f, data
 
 
+def stored(key):
+    """Where observation `key` (e.g. an image key "cameras/left-task/rgb") is kept in a demo."""
+    return f"obs/{key.replace('/', '_')}"
+
+
 def write_demo(data, seed, observations, actions, waypoints, rewards, source, variation=None):
     k = len(data.keys())
     demo = data.create_group(f"demo_{k}")
@@ -40,7 +45,7 @@ def write_demo(data, seed, observations, actions, waypoints, rewards, source, va
     if isinstance(observations[0], dict):  # images besides the state: obs/<camera>_<kind>
         for key in observations[0]:
             array = np.stack([o[key] for o in observations])
-            demo.create_dataset(f"obs/{key.replace('/', '_')}", data=array,
+            demo.create_dataset(stored(key), data=array,
                                 compression="lzf" if array.ndim > 2 else None)
     else:
         demo.create_dataset("obs/state", data=np.asarray(observations, np.float64))

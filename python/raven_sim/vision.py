@@ -20,6 +20,7 @@ policy from the same demonstrations' states (behaviour cloning, imitation.fit).
 
 import numpy as np
 
+from .demos import stored
 from .imitation import LAYOUT, REST_Z, RINGS, Policy, train_mse
 
 CAMERAS = ("left-task", "right-task")  # per arm, left first
@@ -171,7 +172,7 @@ def locator_samples(demo):
     for arm in (0, 1):
         seen = np.array([rings_seen(s[RINGS].reshape(6, 3)[RING_ROWS[arm]], arm) for s in states])
         kept = np.abs(seen).max(axis=1) < WORKSPACE * MM
-        frames = demo[f"obs/{image_key(arm).replace('/', '_')}"][()][::FRAME_STRIDE]
+        frames = demo[stored(image_key(arm))][()][::FRAME_STRIDE]
         images.append(seen_image(frames[kept], arm))
         rings.append(seen[kept])
     return np.concatenate(images), np.concatenate(rings)
@@ -184,7 +185,7 @@ def image_demos(paths):
     for path in paths:
         with h5py.File(path, "r") as f:
             for k in sorted(f["data"].keys(), key=lambda k: int(k[5:])):
-                if f"obs/{image_key(0).replace('/', '_')}" not in f["data"][k]:
+                if stored(image_key(0)) not in f["data"][k]:
                     raise ValueError(f"{path}: {k} has no {CAMERAS} images (record with --obs "
                                      f"state,rgb --camera {','.join(CAMERAS)})")
                 yield f["data"][k]
@@ -202,7 +203,7 @@ def with_located_rings(demo, locator, batch=256):
     states = np.array(demo["obs/state"], dtype=np.float64)
     rings = states[:, RINGS].reshape(len(states), 6, 3)
     for arm in (0, 1):
-        frames = demo[f"obs/{image_key(arm).replace('/', '_')}"]
+        frames = demo[stored(image_key(arm))]
         with torch.no_grad():
             seen = np.concatenate([locator(torch.as_tensor(seen_image(frames[i:i + batch], arm)))
                                    .numpy() for i in range(0, len(states), batch)])

@@ -16,6 +16,7 @@ import numpy as np
 
 import raven_sim
 from raven_sim import imitation, learn, vision
+from raven_sim.demos import stored
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 SHIPPED_STATE = os.path.join(ROOT, "python", "policies", "bc_state.pt")
@@ -175,7 +176,7 @@ class ImageDemonstrations(unittest.TestCase):
                 # locator's float32 output may round otherwise in a batch than alone).
                 for step in (0, len(recorded) - 1):
                     observation = {vision.image_key(arm): demo[
-                        f"obs/{vision.image_key(arm).replace('/', '_')}"][step] for arm in (0, 1)}
+                        stored(vision.image_key(arm))][step] for arm in (0, 1)}
                     self.assertTrue(np.allclose(located[step, imitation.RINGS],
                                                 loaded.locate(observation), atol=1e-6))
             rings = np.zeros(recorded.shape[1], bool)
