@@ -50,7 +50,14 @@ constexpr int kJawIterations = 30;    ///< ... or this many iterations of waitin
 // integrators wound against while the jaws closed, is gone, and they take about a second to bring
 // roll, wrist and jaws back. A person waits for the ring to hang still before carrying it.
 constexpr int kHangIterations = 150;  ///< ... at most this many iterations
-constexpr double kCentred = 0.0005;   ///< the ring's centre this near the post's axis (m)
+// Holding a ring, the jaws stop anywhere within their motors' friction band around the command, a
+// few mrad either way, and the squeeze follows the measured opening (about 110 N per rad on the
+// nominal ring: docs/main-job.md). Watching the jaws, the operator trims the outer jaw's command
+// by this share of the opening's lack each iteration (about a second to settle, slower than the
+// jaw motors' own loop), at most kGripTrim from the grasp's angle.
+constexpr double kGripGain = 0.1;
+constexpr double kGripTrim = 0.02;   ///< rad
+constexpr double kCentred = 0.0005;  ///< the ring's centre this near the post's axis (m)
 // A ring held by its wall swings on the grip by a few millimetres as it is carried; one whose
 // centre strays further from the jaws than this since it came up is held by something else (its
 // post, the board) and is not coming along: centring by sight would chase it without end.
@@ -176,6 +183,11 @@ bool ArmRoutine::jawsOnCommand(const raven::ArmJoints& measured) const {
          std::abs(measured(raven::kJaw2) - outer_) <= kJawReached;
 }
 
+void ArmRoutine::keepGrip(const raven::ArmJoints& measured) {
+  const double lack = inner_ + closed_ - (measured(raven::kJaw1) + measured(raven::kJaw2));
+  outer_ = std::clamp(outer_ + kGripGain * lack, closed_ - kGripTrim, closed_ + kGripTrim);
+}
+
 bool ArmRoutine::toolOnCommand(const raven::ArmJoints& target,
                                const raven::ArmJoints& measured) const {
   return std::abs(measured(raven::kRoll) - target(raven::kRoll)) <= kJawReached &&
@@ -247,7 +259,10 @@ raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
     }
     case Phase::Lift:
       q = translate(target, grasp_.pivot + Eigen::Vector3d(0, 0, kLift), kStep, arrived);
-      if (!arrived || (!toolOnCommand(q, measured) && ++waited_ <= kHangIterations)) return q;
+      if (!arrived) return q;
+      keepGrip(measured);
+      q = withJaws(q);
+      if (!toolOnCommand(q, measured) && ++waited_ <= kHangIterations) return q;
       if (!ringFollows(scene) && decideToRegrasp("did not come up with the jaws")) {
         advance(Phase::Open);
       } else {
@@ -257,9 +272,11 @@ raven::ArmJoints ArmRoutine::stepPhase(const raven::ArmJoints& target,
       }
       return q;
     case Phase::Carry:
-      return carry(target, scene);
+      keepGrip(measured);
+      return withJaws(carry(target, scene));
     case Phase::Lower:
-      return lower(target, scene);
+      keepGrip(measured);
+      return withJaws(lower(target, scene));
     case Phase::Open:
       outer_ = std::min(kOpen, outer_ + kJawStep);
       if (outer_ >= kOpen) advance(Phase::Settle);

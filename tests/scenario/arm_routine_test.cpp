@@ -1,14 +1,17 @@
 // The scripted operator against a scene the test scripts: a ring lifted a little and caught on its
 // start post does not come along with the tool, and the operator must not chase it; a ring pushed
 // off its post's axis is grasped again where the post leaves the inner jaw room; handed the pad
-// mid-transfer, an operator with no memory of it takes up the step the state shows.
+// mid-transfer, an operator with no memory of it takes up the step the state shows; holding a
+// ring whose jaws stop off their command, it trims the outer jaw until they stand where planned.
 
 #include "scenario/arm_routine.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <vector>
 
 #include "bridge/scene_perception.hpp"
@@ -153,6 +156,63 @@ TEST(ArmRoutine, HandedThePadMidTransferItTakesUpTheStepTheStateShows) {
     target = steady.next(target, target, scene);
   }
   EXPECT_EQ(steady.phase(), Phase::Lift) << "resumed at every step, it still reaches the lift";
+}
+
+/// Where the jaws stood when the carry ended, the outer jaw's motors holding it `held` (rad) more
+/// closed than commanded (inside their friction band); the arm follows every other command.
+struct GripAtTheEnd {
+  double commanded_outer = 0.0;
+  double measured_opening = 0.0;
+  double widest_outer = 0.0;  ///< the outer jaw's widest command while carrying
+};
+
+GripAtTheEnd carriedWithJawsHeld(double held) {
+  const scenario::PegLayout layout;
+  const auto profile = raven::builtinProfile("physical");
+  const std::vector<scenario::RingJob> job{layout.jobsOf(raven::Arm::Left)[0]};
+  const auto kinematics = raven::ArmKinematics::of(profile, raven::Arm::Left);
+  scenario::ArmRoutine routine(raven::Arm::Left, profile, layout, job);
+  const Eigen::Isometry3d resting = restingAt(layout, job[0]);
+  ScriptedRing scene(job[0].ring, resting);
+  raven::ArmJoints target = profile.home;
+  std::optional<Eigen::Vector3d> lift_start;  // the ring rides with the tool from the lift on
+  GripAtTheEnd end;
+  for (int i = 0; i < 20000 && routine.phase() != Phase::Lower; ++i) {
+    raven::ArmJoints measured = target;
+    measured(raven::kJaw2) -= held;
+    target = routine.next(target, measured, scene);
+    const Eigen::Vector3d tool = kinematics.toolPose(target).translation();
+    if (routine.phase() == Phase::Lift && !lift_start) lift_start = tool;
+    if (lift_start) scene.pose.translation() = resting.translation() + tool - *lift_start;
+    end.commanded_outer = target(raven::kJaw2);
+    end.measured_opening = measured(raven::kJaw1) + measured(raven::kJaw2);
+    if (routine.phase() == Phase::Carry)
+      end.widest_outer = std::max(end.widest_outer, end.commanded_outer);
+  }
+  EXPECT_EQ(routine.phase(), Phase::Lower) << "the ring was carried over its target post";
+  EXPECT_EQ(routine.regrasps()[0], 0);
+  return end;
+}
+
+TEST(ArmRoutine, HoldingARingItTrimsTheOuterJawUntilTheMeasuredOpeningIsTheGrasps) {
+  const scenario::PegLayout layout;
+  const scenario::ArmRoutine planner(raven::Arm::Left, raven::builtinProfile("physical"), layout,
+                                     layout.jobsOf(raven::Arm::Left));
+  const double closed = planner.jawAngleFor(scenario::ArmRoutine::kDefaultSqueeze);
+  // Jaws that stand on their command (ideal servos) are left as they are.
+  const GripAtTheEnd on = carriedWithJawsHeld(0.0);
+  EXPECT_DOUBLE_EQ(on.commanded_outer, closed);
+  EXPECT_DOUBLE_EQ(on.widest_outer, closed);
+  // Held 7 mrad closed (the nominal ring4's right jaws, 0.8 N too hard): the command opens by as
+  // much, and the measured opening comes to the grasp's (inner jaw at 0).
+  const GripAtTheEnd tight = carriedWithJawsHeld(0.007);
+  EXPECT_NEAR(tight.measured_opening, closed, 2e-4);
+  EXPECT_NEAR(tight.commanded_outer, closed + 0.007, 2e-4);
+  // Held further than any friction band (the reading is off, or something else holds the jaws):
+  // the operator opens them at most 0.02 rad past the grasp's angle, never letting the ring go.
+  const GripAtTheEnd stuck = carriedWithJawsHeld(0.05);
+  EXPECT_NEAR(stuck.widest_outer, closed + 0.02, 1e-12);
+  EXPECT_NEAR(stuck.measured_opening, closed + 0.02 - 0.05, 1e-12);
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "raven/design/arm_design.hpp"
+#include "scenario/arm_routine.hpp"
 
 namespace {
 
@@ -159,14 +160,14 @@ TEST(PegArmGoals, TheOpeningClearsTheTubeAndThePostAndTheSqueezeReachesIntoTheWa
       jaw.jaw_length * std::sin(open / 2) + 0.6 * jaw.jaw_width * std::cos(open / 2);
   EXPECT_LT(tip_back, ring.major_radius - layout.geometry.post_radius);
   // Closed for the squeeze: each face reaches into the tube's outline (an ellipse a half-height
-  // tall under the 5 mm) at most about half the scripted operator's 0.35 mm.
+  // tall under the 5 mm) at most about half the scripted operator's squeeze.
   double deepest = -1.0;
   for (double d = 0.005; d <= std::min(jaw.jaw_length, 0.005 + 2 * ring.half_height); d += 1e-5) {
     const double u = (d - widest) / ring.half_height;
     deepest = std::max(deepest, ring.tube_half_width * std::sqrt(std::max(0.0, 1 - u * u)) -
                                     d * std::tan(squeeze / 2));
   }
-  EXPECT_NEAR(deepest, 0.00035 / 2, 1e-5);
+  EXPECT_NEAR(deepest, scenario::ArmRoutine::kDefaultSqueeze / 2, 1e-5);
   EXPECT_LT(squeeze, open);
 }
 

@@ -31,11 +31,12 @@ class ArmRoutine {
   ArmRoutine(raven::Arm arm, const raven::PlatformProfile& profile, const PegLayout& layout,
              std::vector<RingJob> jobs, double squeeze = kDefaultSqueeze);
 
-  /// 0.35 mm of the silicone ring's 4 mm wall: each jaw then presses on it with about 1.6-3.2 N
-  /// on the nominal scene, within the few tenths to few newtons a grasper puts on a small silicone
-  /// ring and harder than the 0.33-0.43 N measured in box-trainer peg transfers
-  /// (../shared/reference/soft-materials.md); shallower grips re-grasp more (docs/main-job.md).
-  static constexpr double kDefaultSqueeze = 0.00035;
+  /// 0.30 mm of the silicone ring's 4 mm wall: with the jaws kept at the grasp's opening
+  /// (keepGrip) each jaw then presses on the nominal scene's rings with 1.6-2.8 N, within the few
+  /// tenths to few newtons a grasper puts on a small silicone ring and harder than the 0.33-0.43 N
+  /// measured in box-trainer peg transfers (../shared/reference/soft-materials.md); shallower
+  /// grips slip more on the way (docs/main-job.md).
+  static constexpr double kDefaultSqueeze = 0.00030;
 
   /// The arm's next target. `target` is its current one, `measured` where its encoders say it
   /// is, `scene` shows the rings. Where the arm stops short of its target (friction, a load),
@@ -96,6 +97,8 @@ class ArmRoutine {
   void advance(Phase next);
   /// True when each measured jaw is within kJawReached of its command.
   bool jawsOnCommand(const raven::ArmJoints& measured) const;
+  /// Holding a ring: trims the outer jaw's command so the measured opening comes to the grasp's.
+  void keepGrip(const raven::ArmJoints& measured);
   /// True when the measured roll and wrist are within kJawReached of `target`'s, and the jaws on
   /// their command.
   bool toolOnCommand(const raven::ArmJoints& target, const raven::ArmJoints& measured) const;
