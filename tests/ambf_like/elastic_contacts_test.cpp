@@ -41,7 +41,7 @@ void solveSteps(std::vector<ElasticContact>& contacts, int steps) {
   const NodeResponse response = freeNode();
   const Eigen::VectorXd rest = Eigen::VectorXd::Zero(3);
   for (int s = 0; s < steps; ++s) {
-    solver.solve(rest, contacts, {}, [&](int) -> const NodeResponse& { return response; });
+    solver.solve(rest, contacts, [&](int) -> const NodeResponse& { return response; });
   }
 }
 

@@ -3,8 +3,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 
-#include "ambf_like/dynamics/contact_body_motion.hpp"
-
 namespace ambf_like::detail {
 
 namespace {
@@ -124,7 +122,6 @@ void ElasticContactSolver::forget() {
 
 void ElasticContactSolver::solve(const Eigen::VectorXd& free_velocity,
                                  std::vector<ElasticContact>& contacts,
-                                 const std::vector<ContactBody>& bodies,
                                  const ResponseOf& response) {
   if (contacts.empty()) return;
   std::vector<int> nodes;
@@ -155,22 +152,11 @@ void ElasticContactSolver::solve(const Eigen::VectorXd& free_velocity,
   for (std::size_t j = 0; j < slots; ++j) {
     velocity[j] = free_velocity.segment<3>(3 * blocks_.nodes[j]);
   }
-  ContactBodyMotion motion(bodies);
-  solveAsStuck(contacts, slot_of, velocity, motion);
-  for (const ElasticContact& contact : contacts) motion.push(contact, contact.impulse);
+  solveAsStuck(contacts, slot_of, velocity);
   for (std::size_t j = 0; j < slots; ++j) {
     for (std::size_t c = 0; c < contacts.size(); ++c) {
       velocity[j] += w[j * slots + slot_of[c]] * contacts[c].impulse;
     }
-  }
-  // A contact on a moving body answers its own impulse with its node's and its surface's
-  // response together.
-  std::vector<Eigen::Matrix3d> relative(contacts.size());
-  std::vector<Eigen::Matrix3d> relative_inverse(contacts.size());
-  for (std::size_t c = 0; c < contacts.size(); ++c) {
-    if (contacts[c].body < 0) continue;
-    relative[c] = w[slot_of[c] * slots + slot_of[c]] + motion.response(contacts[c], contacts[c]);
-    relative_inverse[c] = relative[c].inverse();
   }
   const std::vector<ContactPair> pinches = facingPairs(contacts);
   for (int sweep = 0; sweep < kMostContactSweeps; ++sweep) {
@@ -180,18 +166,14 @@ void ElasticContactSolver::solve(const Eigen::VectorXd& free_velocity,
       const std::size_t i = slot_of[c];
       const Eigen::Matrix3d& own = w[i * slots + i];
       const Eigen::Vector3d others = velocity[i] - own * contact.impulse;
-      const Eigen::Vector3d wanted =
-          contact.body < 0
-              ? contactImpulse(contact, own, w_inverse[i], others)
-              : contactImpulse(motion.seenBy(contact), relative[c], relative_inverse[c], others);
-      const Eigen::Vector3d change = wanted - contact.impulse;
+      const Eigen::Vector3d change =
+          contactImpulse(contact, own, w_inverse[i], others) - contact.impulse;
       if (change.isZero(0.0)) continue;
       for (std::size_t j = 0; j < slots; ++j) velocity[j] += w[j * slots + i] * change;
       contact.impulse += change;
-      motion.push(contact, change);
       largest_change = std::max(largest_change, change.norm());
     }
-    releasePinches(contacts, slot_of, pinches, velocity, motion);
+    releasePinches(contacts, slot_of, pinches, velocity);
     if (largest_change <= kImpulseTolerance) break;
   }
 }
@@ -207,15 +189,11 @@ void ElasticContactSolver::solve(const Eigen::VectorXd& free_velocity,
 void ElasticContactSolver::releasePinches(std::vector<ElasticContact>& contacts,
                                           const std::vector<std::size_t>& slot_of,
                                           const std::vector<ContactPair>& pinches,
-                                          std::vector<Eigen::Vector3d>& velocity,
-                                          ContactBodyMotion& motion) const {
+                                          std::vector<Eigen::Vector3d>& velocity) const {
   const std::size_t slots = blocks_.nodes.size();
   for (const auto& [a, b] : pinches) {
     if (contacts[a].fixed_surface == contacts[b].fixed_surface) {
-      const Eigen::Vector3d before = contacts[a].impulse;
       releasePinch(contacts[a], contacts[b]);
-      motion.push(contacts[a], contacts[a].impulse - before);
-      motion.push(contacts[b], before - contacts[a].impulse);  // their sum is kept
       continue;
     }
     ElasticContact& fixed = contacts[a].fixed_surface ? contacts[a] : contacts[b];
@@ -223,7 +201,6 @@ void ElasticContactSolver::releasePinches(std::vector<ElasticContact>& contacts,
     const std::size_t i = slot_of[a];
     const Eigen::Matrix3d& own = blocks_.w[i * slots + i];
     const Eigen::Vector3d before = fixed.impulse + moving.impulse;
-    motion.push(moving, -moving.impulse);
     moving.impulse.setZero();
     fixed.impulse = contactImpulse(fixed, own, blocks_.w_inverse[i], velocity[i] - own * before);
     const Eigen::Vector3d change = fixed.impulse - before;
@@ -238,8 +215,7 @@ void ElasticContactSolver::releasePinches(std::vector<ElasticContact>& contacts,
 /// rest frame), so a steady grasp factors it once.
 void ElasticContactSolver::solveAsStuck(std::vector<ElasticContact>& contacts,
                                         const std::vector<std::size_t>& slot_of,
-                                        const std::vector<Eigen::Vector3d>& free_velocity,
-                                        const ContactBodyMotion& motion) {
+                                        const std::vector<Eigen::Vector3d>& free_velocity) {
   const std::size_t slots = blocks_.nodes.size();
   std::vector<std::size_t> pressing;
   std::vector<bool> taken(slots, false);
@@ -252,23 +228,16 @@ void ElasticContactSolver::solveAsStuck(std::vector<ElasticContact>& contacts,
   if (pressing.empty()) return;
   const auto size = static_cast<Eigen::Index>(3 * pressing.size());
   std::vector<int> nodes;
-  bool on_moving_bodies = false;  // then their arms and inertia change: factored every time
-  for (const std::size_t c : pressing) {
-    nodes.push_back(contacts[c].node);
-    on_moving_bodies = on_moving_bodies || contacts[c].body >= 0;
-  }
-  if (on_moving_bodies || nodes != stuck_.nodes) {
+  for (const std::size_t c : pressing) nodes.push_back(contacts[c].node);
+  if (nodes != stuck_.nodes) {
     Eigen::MatrixXd response(size, size);
     for (std::size_t r = 0; r < pressing.size(); ++r) {
       for (std::size_t k = 0; k < pressing.size(); ++k) {
-        const ElasticContact& at = contacts[pressing[r]];
-        const ElasticContact& by = contacts[pressing[k]];
         response.block<3, 3>(static_cast<Eigen::Index>(3 * r), static_cast<Eigen::Index>(3 * k)) =
-            blocks_.w[slot_of[pressing[r]] * slots + slot_of[pressing[k]]] +
-            motion.response(at, by);
+            blocks_.w[slot_of[pressing[r]] * slots + slot_of[pressing[k]]];
       }
     }
-    stuck_.nodes = on_moving_bodies ? std::vector<int>{} : std::move(nodes);
+    stuck_.nodes = std::move(nodes);
     stuck_.factor.compute(response);
   }
   if (stuck_.factor.info() != Eigen::Success) return;

@@ -21,7 +21,6 @@ void turnContact(ElasticContact& contact, const Eigen::Matrix3d& turn) {
   contact.normal = turn * contact.normal;
   contact.surface_velocity = turn * contact.surface_velocity;
   contact.impulse = turn * contact.impulse;
-  contact.arm = turn * contact.arm;
 }
 
 /// Half the angle (rad) of the body's turn in a step above which the tetrahedra's rotations are
@@ -132,7 +131,6 @@ void ImplicitElasticBody::evaluate(Elastic& at) {
 void ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity, bool from_rest,
                                     const Eigen::VectorXd& residual,
                                     std::vector<ElasticContact>& contacts,
-                                    const std::vector<ContactBody>& bodies,
                                     Eigen::VectorXd& direction) {
   // Solved, contacts too, in the rest frame, where the matrix was factored: the free velocity
   // v + A^-1 r, then the impulses that keep the contacts and pins.
@@ -147,9 +145,7 @@ void ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity, bool from_r
         Eigen::Map<const Eigen::Matrix3Xd>(velocity.data(), 3, velocity.size() / 3);
   }
   for (auto& c : contacts) turnContact(c, turn.transpose());
-  turned_bodies_ = bodies;
-  for (auto& b : turned_bodies_) b.inverse_inertia = turn.transpose() * b.inverse_inertia * turn;
-  contact_solver_.solve(free_velocity_, contacts, turned_bodies_,
+  contact_solver_.solve(free_velocity_, contacts,
                         [this](int node) -> const NodeResponse& { return responseTo(node); });
   pushed_.clear();
   for (const auto& c : contacts) {
@@ -162,8 +158,7 @@ void ImplicitElasticBody::solveFrom(const Eigen::VectorXd& velocity, bool from_r
 
 ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
                                             const std::vector<btVector3>& acceleration,
-                                            std::vector<ElasticContact>& contacts,
-                                            const std::vector<ContactBody>& bodies) {
+                                            std::vector<ElasticContact>& contacts) {
   if (h != factored_step_) factor(h);
   const int count = body.m_nodes.size();
   loadNodes(body, acceleration);
@@ -211,7 +206,7 @@ ElasticStepReport ImplicitElasticBody::step(btSoftBody& body, double h,
   for (;;) {
     residual_ = (mass_.cwiseProduct(start_velocity - velocity) + h * (at.forces + weight))
                     .cwiseProduct(moves_);
-    solveFrom(velocity, report.iterations == 0, residual_, contacts, bodies, direction);
+    solveFrom(velocity, report.iterations == 0, residual_, contacts, direction);
     ++report.iterations;
     tryStep(1.0);
     double share = 1.0;

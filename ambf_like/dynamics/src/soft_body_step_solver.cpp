@@ -217,8 +217,6 @@ void SoftBodyStepSolver::elasticSubstep(btSoftBody& body, Registered& registered
     c.start_depth = -(n.dot(x) + rc.m_cti.m_offset - surfaceAdvance(rc, index, elapsed - hs));
     c.friction = kdf * rc.m_cti.m_colObj->getFriction();
     c.fixed_surface = contacts_[index].fixed;
-    c.body = contacts_[index].body;
-    c.arm = toEigen(contacts_[index].arm);
     if (const auto last = registered.last_impulse.find({c.node, rc.m_cti.m_colObj});
         last != registered.last_impulse.end()) {
       c.impulse = last->second;
@@ -235,9 +233,7 @@ void SoftBodyStepSolver::elasticSubstep(btSoftBody& body, Registered& registered
       contacts.back().impulse = last->second;
     }
   }
-  const ElasticStepReport report =
-      registered.elasticity->step(body, hs, acceleration_, contacts, contact_bodies_);
-  moveBodies(body, contacts, source, elapsed, hs);
+  const ElasticStepReport report = registered.elasticity->step(body, hs, acceleration_, contacts);
   ElasticSolveStats& stats = registered.stats;
   ++stats.steps;
   stats.iterations += static_cast<std::uint64_t>(report.iterations);
@@ -274,12 +270,6 @@ ElasticContact SoftBodyStepSolver::pinOf(const btSoftBody& body, const btSoftBod
   ElasticContact pin;
   pin.node = static_cast<int>(anchor.m_node - &body.m_nodes[0]);
   pin.pinned = true;
-  const auto moved = std::find_if(moved_bodies_.begin(), moved_bodies_.end(),
-                                  [&](const MovedBody& m) { return m.rigid == anchor.m_body; });
-  if (moved != moved_bodies_.end()) {
-    pin.body = static_cast<int>(moved - moved_bodies_.begin());
-    pin.arm = toEigen(arm);
-  }
   pin.surface_velocity = toEigen((point - anchor.m_node->m_x) / hs);
   return pin;
 }
@@ -307,7 +297,6 @@ void SoftBodyStepSolver::finishStep(btSoftBody& body) {
 void SoftBodyStepSolver::startContacts(btSoftBody& body, bool elastic) {
   contacts_.assign(static_cast<std::size_t>(body.m_rcontacts.size()), Accumulated{});
   pin_impulses_.assign(static_cast<std::size_t>(body.m_anchors.size()), btVector3(0, 0, 0));
-  moved_bodies_.clear();
   for (int i = 0; i < body.m_rcontacts.size(); ++i) {
     btSoftBody::RContact& contact = body.m_rcontacts[i];
     if (elastic) contact.m_cti.m_offset += kCoulombContactBand;
@@ -317,10 +306,6 @@ void SoftBodyStepSolver::startContacts(btSoftBody& body, bool elastic) {
     if (const btRigidBody* rigid = movingRigidBody(contact.m_cti.m_colObj)) {
       state.surface_velocity = rigid->getVelocityInLocalPoint(arm);
       state.fixed = false;
-      if (elastic) {
-        state.body = movedBodyIndex(rigid);
-        state.arm = arm;
-      }
     } else if (const auto* link = movingLink(contact.m_cti.m_colObj)) {
       state.surface_velocity = linkPointVelocity(*link, contact.m_node->m_x);
       state.fixed = false;
@@ -333,58 +318,12 @@ void SoftBodyStepSolver::startContacts(btSoftBody& body, bool elastic) {
       state.fixed = false;
     }
   }
-  if (elastic) {
-    for (int a = 0; a < body.m_anchors.size(); ++a) movedBodyIndex(body.m_anchors[a].m_body);
-  }
-  contact_bodies_.clear();
-  for (const MovedBody& moved : moved_bodies_) {
-    contact_bodies_.push_back(
-        {moved.rigid->getInvMass(), toEigen(moved.rigid->getInvInertiaTensorWorld())});
-  }
-}
-
-int SoftBodyStepSolver::movedBodyIndex(const btCollisionObject* object) {
-  btRigidBody* rigid = movingRigidBody(object);
-  if (rigid == nullptr) return -1;
-  const auto found = std::find_if(moved_bodies_.begin(), moved_bodies_.end(),
-                                  [&](const MovedBody& m) { return m.rigid == rigid; });
-  if (found != moved_bodies_.end()) return static_cast<int>(found - moved_bodies_.begin());
-  moved_bodies_.push_back({rigid});
-  return static_cast<int>(moved_bodies_.size()) - 1;
-}
-
-void SoftBodyStepSolver::moveBodies(const btSoftBody& body,
-                                    const std::vector<ElasticContact>& contacts,
-                                    const std::vector<std::size_t>& source, btScalar elapsed,
-                                    btScalar hs) {
-  if (moved_bodies_.empty()) return;
-  for (const ElasticContact& c : contacts) {
-    if (c.body < 0) continue;
-    MovedBody& moved = moved_bodies_[static_cast<std::size_t>(c.body)];
-    const btVector3 impulse = toBt(c.impulse);
-    moved.velocity_change -= impulse * moved.rigid->getInvMass();
-    moved.spin_change -= moved.rigid->getInvInertiaTensorWorld() * toBt(c.arm).cross(impulse);
-  }
-  for (std::size_t k = 0; k < source.size(); ++k) {
-    Accumulated& state = contacts_[source[k]];
-    if (state.body < 0) continue;
-    const MovedBody& moved = moved_bodies_[static_cast<std::size_t>(state.body)];
-    // The substep's end velocity is the one its solve held the surface to, from its start.
-    const btVector3& normal = body.m_rcontacts[static_cast<int>(source[k])].m_cti.m_normal;
-    state.advanced += normal.dot(state.surface_velocity) * (elapsed - hs - state.advanced_at);
-    state.surface_velocity = moved.rigid->getVelocityInLocalPoint(state.arm) +
-                             moved.velocity_change + moved.spin_change.cross(state.arm);
-    state.advanced += normal.dot(state.surface_velocity) * hs;
-    state.advanced_at = elapsed;
-  }
 }
 
 btScalar SoftBodyStepSolver::surfaceAdvance(const btSoftBody::RContact& contact, std::size_t index,
                                             btScalar elapsed) const {
   const Accumulated& state = contacts_[index];
-  if (state.placed) return 0.0;
-  return state.advanced +
-         contact.m_cti.m_normal.dot(state.surface_velocity) * (elapsed - state.advanced_at);
+  return state.placed ? 0.0 : contact.m_cti.m_normal.dot(state.surface_velocity) * elapsed;
 }
 
 void SoftBodyStepSolver::projectContacts(btSoftBody& body, btScalar elapsed) {

@@ -24,20 +24,8 @@ struct ElasticContact {
   /// A pin: the node ends the step moving at exactly surface_velocity, pushed or pulled, in no
   /// cone (normal, least_normal_velocity, start_depth and friction play no part).
   bool pinned = false;
-  /// The moving body whose surface (or pin) it is, an index into the solve's bodies, which
-  /// takes the opposite impulse within the solve; -1 for one the contacts do not move there.
-  int body = -1;
-  Eigen::Vector3d arm{0, 0, 0};      ///< from that body's centre of mass to the node
   Eigen::Vector3d impulse{0, 0, 0};  ///< on the node (N s): in, the last step's; out, this one's
 };
-
-/// A free rigid body the contacts push back on (two-way coupling), in the solve's frame.
-struct ContactBody {
-  double inverse_mass = 0;
-  Eigen::Matrix3d inverse_inertia = Eigen::Matrix3d::Zero();
-};
-
-class ContactBodyMotion;
 
 /// Two contacts, by their indices.
 using ContactPair = std::pair<std::size_t, std::size_t>;
@@ -53,17 +41,13 @@ using NodeResponse = Eigen::Matrix<double, Eigen::Dynamic, 3>;
 /// nodes press), taken only if every impulse presses and stays in its cone; a projected
 /// Gauss-Seidel then finishes, warm started from the last impulses; after each of its sweeps a
 /// node caught between two surfaces that face each other passes no load from one to the other.
-/// A contact on one of the `bodies` moves it by the opposite impulse: its surface's velocity
-/// answers every impulse on that body (K = 1/m I - [r_c]x I^-1 [r_d]x), so a light body and what
-/// presses on it end the step moving together rather than bouncing off each other.
 class ElasticContactSolver {
  public:
   using ResponseOf = std::function<const NodeResponse&(int node)>;
 
-  /// `contacts` get their impulses (in: a warm start); `free_velocity` has 3 entries per node;
-  /// `bodies` are those the contacts' `body` indices name.
+  /// `contacts` get their impulses (in: a warm start); `free_velocity` has 3 entries per node.
   void solve(const Eigen::VectorXd& free_velocity, std::vector<ElasticContact>& contacts,
-             const std::vector<ContactBody>& bodies, const ResponseOf& response);
+             const ResponseOf& response);
   /// Drops what was kept of the responses (the system changed).
   void forget();
 
@@ -86,11 +70,9 @@ class ElasticContactSolver {
   void releasePinches(std::vector<ElasticContact>& contacts,
                       const std::vector<std::size_t>& slot_of,
                       const std::vector<ContactPair>& pinches,
-                      std::vector<Eigen::Vector3d>& velocity, ContactBodyMotion& motion) const;
-  /// `motion` gives the bodies' responses (it is still at rest).
+                      std::vector<Eigen::Vector3d>& velocity) const;
   void solveAsStuck(std::vector<ElasticContact>& contacts, const std::vector<std::size_t>& slot_of,
-                    const std::vector<Eigen::Vector3d>& free_velocity,
-                    const ContactBodyMotion& motion);
+                    const std::vector<Eigen::Vector3d>& free_velocity);
 
   Blocks blocks_;
   Stuck stuck_;

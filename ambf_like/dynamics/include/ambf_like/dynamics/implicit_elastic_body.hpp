@@ -45,11 +45,9 @@ class ImplicitElasticBody {
 
   /// One step of `h` from the nodes' positions (m_x) and velocities (m_v): their new velocities
   /// in m_v and positions in m_x (the start kept in m_q). `acceleration` per node is the
-  /// external forces' (gravity); `contacts` (contacts and pins) get their impulses, which
-  /// move the `bodies` they name within the step.
+  /// external forces' (gravity); `contacts` (contacts and pins) get their impulses.
   ElasticStepReport step(btSoftBody& body, double h, const std::vector<btVector3>& acceleration,
-                         std::vector<ElasticContact>& contacts,
-                         const std::vector<ContactBody>& bodies);
+                         std::vector<ElasticContact>& contacts);
 
  private:
   /// The elastic forces and energy at a set of positions.
@@ -76,8 +74,7 @@ class ImplicitElasticBody {
   /// `residual` the forces' and inertia's imbalance there (solved in the rest frame): A^-1
   /// residual, then the contacts' and pins' impulses on the velocity it reaches.
   void solveFrom(const Eigen::VectorXd& velocity, bool from_rest, const Eigen::VectorXd& residual,
-                 std::vector<ElasticContact>& contacts, const std::vector<ContactBody>& bodies,
-                 Eigen::VectorXd& direction);
+                 std::vector<ElasticContact>& contacts, Eigen::VectorXd& direction);
 
   CorotatedTets tets_;
   Eigen::VectorXd mass_;   ///< per coordinate; 0 for a node that stays put
@@ -97,7 +94,6 @@ class ImplicitElasticBody {
   Eigen::VectorXd start_, start_velocity_, weight_, velocity_, direction_, residual_,
       free_velocity_;
   std::unordered_map<int, Eigen::Vector3d> pushed_;  ///< impulses by node, in a solve
-  std::vector<ContactBody> turned_bodies_;           ///< a solve's bodies, in the rest frame
 };
 
 }  // namespace ambf_like::detail

@@ -107,17 +107,6 @@ class SoftBodyStepSolver final : public btDefaultSoftBodySolver {
     bool fixed = true;           ///< a surface nothing moves (a static object, a fixed base)
     btVector3 impulse{0, 0, 0};  ///< on the node, over the step so far (N s)
     btVector3 normal_impulse{0, 0, 0};  ///< its part along the normal
-    int body = -1;            ///< its surface's index in moved_bodies_, or -1
-    btVector3 arm{0, 0, 0};   ///< from that body's centre of mass to the node
-    btScalar advanced = 0;    ///< how far its surface had moved along the normal by advanced_at
-    btScalar advanced_at = 0; ///< since when the surface moves at surface_velocity
-  };
-  /// A free rigid body a body with a material presses on: within its step the contacts' impulses
-  /// move it (two-way coupling), by velocity_change and spin_change over the substeps so far.
-  struct MovedBody {
-    btRigidBody* rigid = nullptr;
-    btVector3 velocity_change{0, 0, 0};
-    btVector3 spin_change{0, 0, 0};
   };
 
   void solve(btSoftBody& body, Registered& registered);
@@ -139,18 +128,9 @@ class SoftBodyStepSolver final : public btDefaultSoftBodySolver {
   /// Damping, the step's start back in m_q, forces cleared.
   void finishStep(btSoftBody& body);
   /// The surfaces' velocities; for an `elastic` body each contact plane moved from the
-  /// detection band back to the margin, and the free rigid bodies it touches or is pinned to
-  /// taken into moved_bodies_.
+  /// detection band back to the margin.
   void startContacts(btSoftBody& body, bool elastic);
-  /// The index in moved_bodies_ of `object` if it is a free rigid body, taken in if new; else -1.
-  int movedBodyIndex(const btCollisionObject* object);
-  /// After an elastic substep ending `elapsed` into the step: the moved bodies take its
-  /// impulses (`contacts` those of m_rcontacts[source[k]], then the pins), and their contacts'
-  /// surfaces move at their new velocities from where the substep began.
-  void moveBodies(const btSoftBody& body, const std::vector<ElasticContact>& contacts,
-                  const std::vector<std::size_t>& source, btScalar elapsed, btScalar hs);
-  /// How far along its normal a contact's surface has moved `elapsed` into the step (at the
-  /// velocity it moves at since advanced_at).
+  /// How far along its normal a contact's surface has moved `elapsed` into the step.
   btScalar surfaceAdvance(const btSoftBody::RContact& contact, std::size_t index,
                           btScalar elapsed) const;
   /// A substep's contacts, the rigid surfaces where they are `elapsed` into the step.
@@ -160,8 +140,6 @@ class SoftBodyStepSolver final : public btDefaultSoftBodySolver {
   std::unordered_map<const btSoftBody*, Registered> coulomb_;
   std::vector<Accumulated> contacts_;    ///< of the body being solved, by m_rcontacts index
   std::vector<btVector3> pin_impulses_;  ///< on its nodes over the step, by m_anchors index
-  std::vector<MovedBody> moved_bodies_;  ///< the free rigid bodies it presses on
-  std::vector<ContactBody> contact_bodies_;  ///< the same, as its contacts' solve sees them
   btScalar step_size_ = 0;               ///< of the step being solved
   std::vector<btVector3> acceleration_, pose_pull_, step_start_;  ///< scratch, per node
   std::vector<NodeContactImpulse> impulses_;
