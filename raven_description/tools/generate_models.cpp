@@ -64,8 +64,6 @@ int main(int argc, char** argv) {
             "gravity: {x: 0.0, y: 0.0, z: -9.81}\n"
             "ambf_like:\n"
             "  solver iterations: 20  # the ring grasps are checked at 20 (the 20-seed batch)\n"
-            "  articulation: maximal  # the ideal servos' grasps are checked so; the motor twin "
-            "articulates the arms\n"
             "  soft body sdf voxel size: 0.002  # the posts are 5 mm thick\n");
   writeText(out / "peg_transfer" / "launch.yaml",
             "# The peg-transfer scene: both arms, the board and six soft rings.\n"
