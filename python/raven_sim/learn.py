@@ -297,12 +297,13 @@ def drawn(variation):
             f"motors within {variation['actuation_sd']:g} sd of the fit")
 
 
-def evaluate_seed(policy, seed, time_limit, actuation="motors", randomize=True):
-    """One episode of the policy on `seed`'s scene: (rings placed, a line saying how it went and
-    on what scene)."""
+def evaluate_seed(policy, seed, time_limit, actuation="motors", randomize=True, launch_file=None):
+    """One episode of the policy on `seed`'s scene (of `launch_file`, else the shipped one):
+    (rings placed, a line saying how it went and on what scene)."""
     policy = policy.fresh()  # its own memory of the episode: episodes may run side by side
     env = PegTransferEnv(**{**demos.ENV_KWARGS, **policy.env_kwargs, "time_limit": time_limit,
-                            "actuation": actuation, "randomize": randomize})
+                            "actuation": actuation, "randomize": randomize,
+                            "launch_file": launch_file})
     episode = demos.run_episode(env, seed, lambda observation, _: policy.act(observation))
     info = episode.info
     why = f" (the world failed: {info['failure']})" if "failure" in info else ""
