@@ -220,6 +220,33 @@ class Policy:
         return Policy.from_checkpoint(torch.load(path), path)
 
 
+class RingsSeenOff:
+    """A state policy that sees every ring `error` m from where it is, in the board's plane, each
+    ring in its own direction drawn once from `seed`: what a camera's steady error of that size
+    costs the policy (learn evaluate --ring-error)."""
+
+    def __init__(self, policy, error, seed):
+        self.policy, self.error, self.seed = policy, error, seed
+        angles = np.random.default_rng(seed).uniform(0.0, 2.0 * np.pi, 6)
+        self.offsets = error * np.column_stack([np.cos(angles), np.sin(angles), np.zeros(6)])
+
+    @property
+    def env_kwargs(self):
+        return self.policy.env_kwargs
+
+    def reset(self):
+        self.policy.reset()
+
+    def fresh(self):
+        return RingsSeenOff(self.policy.fresh(), self.error, self.seed)
+
+    def act(self, observation):
+        state = np.array(observation["state"] if isinstance(observation, dict) else observation,
+                         dtype=np.float64)
+        state[RINGS] += self.offsets.ravel()
+        return self.policy.act(state)
+
+
 def train_mse(network, inputs, targets, epochs, batch, lr, seed, measure, log_epoch):
     """Trains `network` on the tensors (inputs, targets): mean squared error over shuffled
     batches, Adam with a cosine schedule. Per epoch it calls log_epoch(epoch, the sum of

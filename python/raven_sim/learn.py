@@ -49,7 +49,9 @@ scenario/ranges/looks.yaml).
 
 evaluate: the policy (state or image) on randomised scenes (--workers episodes side by side); its
 last line is
-"placed N/M rings; K/E episodes all six".
+"placed N/M rings; K/E episodes all six". --ring-error MM shows a state policy every ring MM off
+in the board's plane (each ring's direction drawn from the seed): how precisely the cameras of an
+image policy acting through it must see the rings.
 
 run: the policy on a Raven-II over ROS (raven_sim.RobotOverRos): the twin node in another process
 (--platform twin: its rings' topics and its rendered cameras) or the physical robot (--platform
@@ -65,7 +67,7 @@ import numpy as np
 
 from . import demos
 from .env import OBSERVATIONS, PegTransferEnv
-from .imitation import Policy, SteppedExpert, fit
+from .imitation import Policy, RingsSeenOff, SteppedExpert, fit
 from .robot import run
 from .vision import KIND as IMAGE_POLICY
 from .vision import (ImagePolicy, fit_locator, load_located, load_locator_samples,
@@ -108,6 +110,17 @@ def image_size(text):
     if w < 8 or h < 8:
         raise argparse.ArgumentTypeError(f"image size {text}: at least 8x8")
     return w, h
+
+
+def non_negative(text):
+    """A finite number >= 0 (a distance in mm)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"a distance in mm, not '{text}'") from None
+    if not np.isfinite(value) or value < 0.0:
+        raise argparse.ArgumentTypeError(f"{text}: a distance is finite and at least 0")
+    return value
 
 
 def enough_seeds(args):
@@ -297,18 +310,23 @@ def drawn(variation):
             f"motors within {variation['actuation_sd']:g} sd of the fit")
 
 
-def evaluate_seed(policy, seed, time_limit, actuation="motors", randomize=True, launch_file=None):
+def evaluate_seed(policy, seed, time_limit, actuation="motors", randomize=True, launch_file=None,
+                  ring_error=0.0):
     """One episode of the policy on `seed`'s scene (of `launch_file`, else the shipped one):
-    (rings placed, a line saying how it went and on what scene)."""
+    (rings placed, a line saying how it went and on what scene). `ring_error` (m, a state policy):
+    every ring seen that far off (imitation.RingsSeenOff)."""
     policy = policy.fresh()  # its own memory of the episode: episodes may run side by side
+    if ring_error > 0.0:
+        policy = RingsSeenOff(policy, ring_error, seed)
     env = PegTransferEnv(**{**demos.ENV_KWARGS, **policy.env_kwargs, "time_limit": time_limit,
                             "actuation": actuation, "randomize": randomize,
                             "launch_file": launch_file})
     episode = demos.run_episode(env, seed, lambda observation, _: policy.act(observation))
     info = episode.info
     why = f" (the world failed: {info['failure']})" if "failure" in info else ""
+    seen = f"; rings seen {ring_error * 1000:g} mm off" if ring_error > 0.0 else ""
     return info["placed"], (f"seed {seed}: placed {info['placed']}/6 in {env.core.time:.0f} s"
-                            f"{why}; {drawn(episode.variation)}")
+                            f"{why}; {drawn(episode.variation)}{seen}")
 
 
 def evaluate(args):
@@ -316,9 +334,13 @@ def evaluate(args):
     from concurrent.futures import ThreadPoolExecutor
     single_threaded()
     policy = load_policy(args.policy)
+    if args.ring_error > 0.0 and not isinstance(policy, Policy):
+        sys.exit(f"--ring-error: {args.policy} is an image policy; it takes a state policy")
     with ThreadPoolExecutor(args.workers) as pool:
         runs = pool.map(lambda seed: evaluate_seed(policy, seed, args.time_limit, args.actuation,
-                                                   args.randomize), args.seeds)
+                                                   args.randomize,
+                                                   ring_error=args.ring_error / 1000.0),
+                        args.seeds)
         placed = []
         for rings, line in runs:
             placed.append(rings)
@@ -421,6 +443,9 @@ def main(argv=None):
     p.add_argument("--seeds", type=seed_range, required=True)
     p.add_argument("--time-limit", type=float, default=240.0)
     p.add_argument("--workers", type=int, default=1, help="episodes run side by side")
+    p.add_argument("--ring-error", type=non_negative, default=0.0, metavar="MM",
+                   help="a state policy sees every ring this far off in the board's plane, each "
+                        "in its own direction drawn from the seed: the camera precision it needs")
     add_actuation(p)
     add_randomize(p)
     p.set_defaults(run=evaluate)

@@ -127,6 +127,64 @@ class PolicyInputsAndOutputs(unittest.TestCase):
         self.assertTrue(np.array_equal(np.abs(action), imitation.STEP_CAP))
 
 
+class RingsSeenOff(unittest.TestCase):
+    class Recorder:
+        """A stand-in policy that keeps the states it is asked to act on."""
+
+        env_kwargs = {}
+
+        def __init__(self):
+            self.seen = []
+
+        def fresh(self):
+            return RingsSeenOff.Recorder()
+
+        def reset(self):
+            pass
+
+        def act(self, state):
+            self.seen.append(np.array(state))
+            return np.zeros(14)
+
+    def test_every_ring_is_seen_the_error_off_in_the_boards_plane_the_same_way_all_episode(self):
+        state = np.arange(72, dtype=np.float64)
+        rings = imitation.RINGS
+        policy = imitation.RingsSeenOff(self.Recorder(), 0.0015, seed=3)
+        policy.act(state)
+        policy.act({"state": state})
+        first, second = policy.policy.seen
+        self.assertTrue(np.array_equal(first, second))  # one draw for the episode
+        off = (first[rings] - state[rings]).reshape(6, 3)
+        self.assertTrue(np.allclose(np.linalg.norm(off[:, :2], axis=1), 0.0015))
+        self.assertTrue(np.array_equal(off[:, 2], np.zeros(6)))  # in the board's plane
+        self.assertGreater(np.abs(off[0] - off[1]).max(), 1e-4)  # each ring its own way
+        others = np.ones(72, dtype=bool)
+        others[rings] = False
+        self.assertTrue(np.array_equal(first[others], state[others]))  # the rest as it is
+        again = imitation.RingsSeenOff(self.Recorder(), 0.0015, seed=3).fresh()
+        self.assertTrue(np.array_equal(again.offsets, policy.offsets))  # the seed decides
+        other = imitation.RingsSeenOff(self.Recorder(), 0.0015, seed=4)
+        self.assertFalse(np.array_equal(other.offsets, policy.offsets))
+
+    def test_evaluate_says_how_far_off_and_refuses_an_image_policy_or_a_negative_error(self):
+        run = subprocess.run(
+            [sys.executable, "-m", "raven_sim.learn", "evaluate", "--policy", SHIPPED_POLICY,
+             "--seeds", "7", "--time-limit", "2", "--ring-error", "0.9"], capture_output=True,
+            text=True, check=True)
+        self.assertTrue(run.stdout.splitlines()[0].endswith("; rings seen 0.9 mm off"),
+                        run.stdout)
+        image = os.path.join(ROOT, "python", "policies", "bc_rgb.pt")
+        refused = subprocess.run(
+            [sys.executable, "-m", "raven_sim.learn", "evaluate", "--policy", image, "--seeds",
+             "7", "--ring-error", "1"], capture_output=True, text=True)
+        self.assertNotEqual(refused.returncode, 0)
+        self.assertIn("is an image policy; it takes a state policy", refused.stderr)
+        with contextlib.redirect_stderr(io.StringIO()) as err, self.assertRaises(SystemExit):
+            learn.main(["evaluate", "--policy", SHIPPED_POLICY, "--seeds", "7",
+                        "--ring-error", "-1"])
+        self.assertIn("a distance is finite and at least 0", err.getvalue())
+
+
 class ShippedPolicy(unittest.TestCase):
     def test_the_shipped_state_policy_loads_and_places_rings(self):
         import torch
