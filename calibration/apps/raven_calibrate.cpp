@@ -11,8 +11,10 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <thread>
 
+#include "analysis/error_windows.hpp"
 #include "calibration/actuation_fit.hpp"
 #include "calibration/command_delivery.hpp"
 #include "calibration/excitation.hpp"
@@ -309,13 +311,75 @@ int runFit(const FitSettings& s) {
   return 0;
 }
 
+/// One motor as the score's table names it: "r.jaw1", "right.jaw1", "l.elbow".
+struct MotorName {
+  raven::Arm arm = raven::Arm::Left;
+  int joint = 0;
+};
+
+std::optional<MotorName> motorNamed(const std::string& text) {
+  const auto dot = text.find('.');
+  if (dot == std::string::npos) return std::nullopt;
+  const std::string arm = text.substr(0, dot), joint = text.substr(dot + 1);
+  MotorName m;
+  if (arm == "l" || arm == "left") {
+    m.arm = raven::Arm::Left;
+  } else if (arm == "r" || arm == "right") {
+    m.arm = raven::Arm::Right;
+  } else {
+    return std::nullopt;
+  }
+  const auto& names = raven::kJointNames;
+  const auto it = std::find(names.begin(), names.end(), joint);
+  if (it == names.end()) return std::nullopt;
+  m.joint = static_cast<int>(it - names.begin());
+  return m;
+}
+
+std::string motorNames() {
+  std::string all;
+  for (auto name : raven::kJointNames) all += (all.empty() ? "" : ", ") + std::string(name);
+  return all;
+}
+
 struct ScoreSettings {
   std::vector<std::filesystem::path> physical;
   ReplayFlags replay;
   std::filesystem::path calibration;
   common::ActuationKind actuation = common::ActuationKind::Motors;
   std::filesystem::path write;  ///< directory for the twin's replays, or none
+  std::string where;            ///< a motor whose difference is shown window by window, or none
+  std::string where_signal = "Tau";  ///< its recorder column name
 };
+
+/// Where in the trials the motor's difference sits, 100 rows at a time.
+void printWhere(const ScoreSettings& s, const calibration::ReplayScore& score,
+                const std::vector<analysis::Trial>& physical,
+                const analysis::ActuatorFidelity& fidelity) {
+  const MotorName motor = *motorNamed(s.where);
+  const auto signal =
+      *std::find_if(analysis::kActuatorSignals.begin(), analysis::kActuatorSignals.end(),
+                    [&](ActuatorSignal a) { return s.where_signal == analysis::columnName(a); });
+  const auto twin = replayTraces(score);
+  const auto robot = tracesOf(physical);
+  constexpr std::size_t kRows = 100;
+  const auto windows = analysis::errorWindows(twin, robot, signal, motor.arm, motor.joint, kRows);
+  const auto k = static_cast<std::size_t>(signal);
+  const double spread = fidelity.spread[k][raven::slot(motor.arm)](motor.joint);
+  std::printf(
+      "\nwhere the %s arm's %s differs in %s (rows paired as scored, %zu at a time; "
+      "times of %s)\n",
+      std::string(raven::armName(motor.arm)).c_str(),
+      std::string(raven::kJointNames[static_cast<std::size_t>(motor.joint)]).c_str(),
+      analysis::columnName(signal), kRows, robot.front().name.c_str());
+  for (const auto& w : windows) {
+    std::printf(
+        "  rows %4zu-%4zu  %6.1f-%6.1f s  %5.1f %% of it  mean %.4g %s (%.2fx the "
+        "spread)\n",
+        w.first_row, w.last_row, w.start, w.end, 100.0 * w.share, w.mean,
+        analysis::loggedUnit(signal), spread > 0.0 ? w.mean / spread : 0.0);
+  }
+}
 
 int runScore(const ScoreSettings& s) {
   const auto physical = loadPhysical(s.physical);
@@ -332,6 +396,7 @@ int runScore(const ScoreSettings& s) {
   const auto score = calibration::scoreReplays(setup, physical);
   printActuators("end-to-end replays of the inputs, each from its trial's start", score.actuators);
   printFigures(score);
+  if (!s.where.empty()) printWhere(s, score, physical, score.actuators);
   if (!s.write.empty()) {
     std::filesystem::create_directories(s.write);
     for (std::size_t k = 0; k < score.replays.size(); ++k) {
@@ -446,6 +511,20 @@ int main(int argc, char** argv) {
   common::addActuationFlag(*score_cmd, score.actuation);
   score_cmd->add_option("--write", score.write,
                         "directory to write the twin's replays to (rs files)");
+  score_cmd
+      ->add_option("--where", score.where,
+                   "a motor (l.jaw1, right.elbow, ...) whose difference is shown 100 rows at a "
+                   "time: where in the trials it sits")
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            return motorNamed(text) ? std::string()
+                                    : "a motor is l. or r. (left., right.) and one of " +
+                                          motorNames() + ", not '" + text + "'";
+          },
+          "ARM.JOINT"));
+  score_cmd
+      ->add_option("--where-signal", score.where_signal, "the signal --where shows (default Tau)")
+      ->check(CLI::IsMember({"mpos", "mvel", "Tau", "dac_vals"}));
 
   ProposeSettings propose;
   auto* propose_cmd = app.add_subcommand(
