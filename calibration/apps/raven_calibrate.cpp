@@ -354,8 +354,7 @@ struct ScoreSettings {
 
 /// Where in the trials the motor's difference sits, 100 rows at a time.
 void printWhere(const ScoreSettings& s, const calibration::ReplayScore& score,
-                const std::vector<analysis::Trial>& physical,
-                const analysis::ActuatorFidelity& fidelity) {
+                const std::vector<analysis::Trial>& physical) {
   const MotorName motor = *motorNamed(s.where);
   const auto signal =
       *std::find_if(analysis::kActuatorSignals.begin(), analysis::kActuatorSignals.end(),
@@ -365,7 +364,7 @@ void printWhere(const ScoreSettings& s, const calibration::ReplayScore& score,
   constexpr std::size_t kRows = 100;
   const auto windows = analysis::errorWindows(twin, robot, signal, motor.arm, motor.joint, kRows);
   const auto k = static_cast<std::size_t>(signal);
-  const double spread = fidelity.spread[k][raven::slot(motor.arm)](motor.joint);
+  const double spread = score.actuators.spread[k][raven::slot(motor.arm)](motor.joint);
   std::printf(
       "\nwhere the %s arm's %s differs in %s (rows paired as scored, %zu at a time; "
       "times of %s)\n",
@@ -396,7 +395,7 @@ int runScore(const ScoreSettings& s) {
   const auto score = calibration::scoreReplays(setup, physical);
   printActuators("end-to-end replays of the inputs, each from its trial's start", score.actuators);
   printFigures(score);
-  if (!s.where.empty()) printWhere(s, score, physical, score.actuators);
+  if (!s.where.empty()) printWhere(s, score, physical);
   if (!s.write.empty()) {
     std::filesystem::create_directories(s.write);
     for (std::size_t k = 0; k < score.replays.size(); ++k) {
