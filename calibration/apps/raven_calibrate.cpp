@@ -321,14 +321,12 @@ std::optional<MotorName> motorNamed(const std::string& text) {
   const auto dot = text.find('.');
   if (dot == std::string::npos) return std::nullopt;
   const std::string arm = text.substr(0, dot), joint = text.substr(dot + 1);
+  const auto named = std::find_if(raven::kArms.begin(), raven::kArms.end(), [&](raven::Arm a) {
+    return arm == raven::armName(a) || arm == raven::armName(a).substr(0, 1);  // as printed
+  });
+  if (named == raven::kArms.end()) return std::nullopt;
   MotorName m;
-  if (arm == "l" || arm == "left") {
-    m.arm = raven::Arm::Left;
-  } else if (arm == "r" || arm == "right") {
-    m.arm = raven::Arm::Right;
-  } else {
-    return std::nullopt;
-  }
+  m.arm = *named;
   const auto& names = raven::kJointNames;
   const auto it = std::find(names.begin(), names.end(), joint);
   if (it == names.end()) return std::nullopt;

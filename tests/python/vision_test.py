@@ -7,6 +7,7 @@ OpenGL (skipped, saying so, without it)."""
 import contextlib
 import io
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -25,19 +26,23 @@ SHIPPED_RGB = os.path.join(ROOT, "python", "policies", "bc_rgb.pt")
 
 def scene_with_maximal_arms(directory):
     """The shipped peg-transfer scene with its arms as rigid bodies held by joint constraints
-    (`articulation: maximal`): its launch file, written in `directory`."""
-    models = os.path.abspath(os.path.join(ROOT, "raven_description", "models"))
-    with open(os.path.join(models, "peg_transfer", "world.yaml")) as f:
+    (`articulation: maximal`): its launch file, written in `directory` (the shipped one with its
+    multibody files found where they are)."""
+    scene = os.path.abspath(os.path.join(ROOT, "raven_description", "models", "peg_transfer"))
+    with open(os.path.join(scene, "world.yaml")) as f:
         world = f.read().replace("ambf_like:\n", "ambf_like:\n  articulation: maximal\n")
     assert "articulation: maximal" in world, "the scene's world file has no ambf_like block"
     with open(os.path.join(directory, "world.yaml"), "w") as f:
         f.write(world)
+    with open(os.path.join(scene, "launch.yaml")) as f:
+        launch_text = re.sub(r"^(\s*-\s*)(\S+)",
+                             lambda m: m.group(1) + os.path.normpath(os.path.join(scene, m[2])),
+                             f.read(), flags=re.MULTILINE)
+    bodies = re.findall(r"^\s*-\s*(\S+)", launch_text, flags=re.MULTILINE)
+    assert bodies and all(os.path.isfile(b) for b in bodies), bodies
     launch = os.path.join(directory, "launch.yaml")
     with open(launch, "w") as f:
-        f.write("world config: world.yaml\nmultibody configs:\n" + "".join(
-            f"  - {os.path.join(models, name)}\n" for name in (
-                "raven2/raven2_left.yaml", "raven2/raven2_right.yaml",
-                "peg_transfer/peg_board.yaml", "peg_transfer/rings.yaml")))
+        f.write(launch_text)
     return launch
 
 
