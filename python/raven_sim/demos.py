@@ -1,7 +1,9 @@
 """Demonstrations in robomimic's HDF5 layout: data/demo_<k>/{actions, rewards, dones, obs/state},
 each demo's num_samples, seed and scene draw (variation, JSON) as attributes, the environment's
 arguments in data.attrs["env_args"] (JSON); besides, data/demo_<k>/waypoints: where the expert was heading,
-relative to the current targets (the actions are these capped per step). Episodes are recorded by
+relative to the current targets (the actions are these capped per step), and expert_jobs: per step
+and arm, how many rings the operator had finished with (placed, or given up after its re-grasps).
+Episodes are recorded by
 running a driver (the expert, a policy) while a labeller (the expert) says what it should have
 done."""
 
@@ -10,7 +12,7 @@ import json
 import numpy as np
 
 from .env import PegTransferEnv, part
-from .imitation import ACTION
+from .imitation import ACTION, JOBS_PER_ARM
 
 ENV_KWARGS = {"action_type": ACTION, "randomize": True, "time_limit": 240.0}
 
@@ -34,7 +36,8 @@ def stored(key):
     return f"obs/{key.replace('/', '_')}"
 
 
-def write_demo(data, seed, observations, actions, waypoints, rewards, source, variation=None):
+def write_demo(data, seed, observations, actions, waypoints, rewards, source, variation=None,
+               expert_jobs=None):
     k = len(data.keys())
     demo = data.create_group(f"demo_{k}")
     demo.attrs["num_samples"] = len(actions)
@@ -52,6 +55,8 @@ def write_demo(data, seed, observations, actions, waypoints, rewards, source, va
     demo.create_dataset("actions", data=np.asarray(actions, np.float64))
     demo.create_dataset("waypoints", data=np.asarray(waypoints, np.float64))
     demo.create_dataset("rewards", data=np.asarray(rewards, np.float64))
+    if expert_jobs:  # per step and arm, the operator's jobs finished when it labelled the step
+        demo.create_dataset("expert_jobs", data=np.asarray(expert_jobs, np.int64))
     dones = np.zeros(len(actions), np.int64)
     dones[-1] = 1
     demo.create_dataset("dones", data=dones)
@@ -59,7 +64,8 @@ def write_demo(data, seed, observations, actions, waypoints, rewards, source, va
 
 
 def load_demos(path):
-    """Per demo: its states and waypoints."""
+    """Per demo: its states, waypoints and the operator's jobs finished per step and arm (None
+    where an earlier version recorded it without them)."""
     import h5py
     with h5py.File(path, "r") as f:
         demos = [f["data"][k] for k in sorted(f["data"].keys(), key=lambda k: int(k[5:]))]
@@ -68,17 +74,23 @@ def load_demos(path):
             raise ValueError(f"{path}: {missing[0]} has no waypoints (recorded by an earlier "
                              "version); record it again")
         return ([np.asarray(d["obs/state"]) for d in demos],
-                [np.asarray(d["waypoints"]) for d in demos])
+                [np.asarray(d["waypoints"]) for d in demos], [expert_jobs_of(d) for d in demos])
+
+
+def expert_jobs_of(demo):
+    """A demo's expert_jobs, or None where an earlier version recorded none."""
+    return np.asarray(demo["expert_jobs"]) if "expert_jobs" in demo else None
 
 
 def load_all(paths):
-    """Every demo of every file: their states and waypoints."""
-    states, waypoints = [], []
+    """Every demo of every file: their states, waypoints and the operator's jobs."""
+    states, waypoints, jobs = [], [], []
     for path in paths:
-        s, w = load_demos(path)
+        s, w, j = load_demos(path)
         states += s
         waypoints += w
-    return states, waypoints
+        jobs += j
+    return states, waypoints, jobs
 
 
 class Episode:
@@ -87,14 +99,16 @@ class Episode:
 
     def __init__(self):
         self.observations, self.actions, self.waypoints, self.rewards = [], [], [], []
+        self.expert_jobs = []  # per labelled step, the operator's jobs finished per arm
         self.info = {}
         self.variation = {}  # reset's info["variation"]
 
 
 def run_episode(env, seed, drive, expert=None, max_steps=None):
     """One episode: `drive(observation, label)` gives the executed action, the expert (if any)
-    labels every step (`label`: its action, else None), until the episode ends or after
-    `max_steps`. Returns the Episode."""
+    labels every step (`label`: its action, else None), until the episode ends, the expert has
+    finished every job of both arms (it would only hold its targets), or after `max_steps`.
+    Returns the Episode."""
     observation, started = env.reset(seed=seed)
     episode = Episode()
     episode.info = {"placed": env.core.placed}
@@ -106,8 +120,12 @@ def run_episode(env, seed, drive, expert=None, max_steps=None):
         label = None
         if expert is not None:
             label, waypoint = expert.act(state), expert.waypoint(state)
+            jobs = env.expert_jobs_finished()
+            if (jobs == JOBS_PER_ARM).all():
+                break
             episode.actions.append(label)
             episode.waypoints.append(waypoint)
+            episode.expert_jobs.append(jobs)
         episode.observations.append(observation)
         action = drive(observation, label)
         observation, reward, terminated, truncated, episode.info = env.step(action)

@@ -223,6 +223,11 @@ class PegTransferEnv(_Env):
         up the task from the state reached, as after steps someone else (a policy) decided."""
         return self.core.expert_action(from_state)
 
+    def expert_jobs_finished(self):
+        """Per arm (left first), how many of its three rings the operator has finished with,
+        placed or given up after its re-grasps (3 once it is done)."""
+        return np.array(self.core.expert_jobs_finished())
+
 
 class VectorPegTransferEnv:
     """N peg-transfer environments stepped together, each on a worker thread (their steps

@@ -50,6 +50,7 @@ TARGETS = part("targets")
 RINGS = part("rings")
 LAYOUT = peg_layout()
 REST_Z = LAYOUT["board_top"] + LAYOUT["ring_height"] / 2  # a ring's centre lying on the board
+JOBS_PER_ARM = sum(j["arm"] == 0 for j in LAYOUT["jobs"])
 
 
 def joints_of(arm):
@@ -93,6 +94,7 @@ class ArmFeatures:
     """What the policy sees of one arm, from the observations so far of one episode."""
 
     size = 1 + 7 + 3 + 6 + 3 * 9 + 4 + 3 + 1
+    JOB = slice(1 + 7 + 3 + 6 + 3 * 9, 1 + 7 + 3 + 6 + 3 * 9 + 4)  # the first job not done, one-hot
 
     def __init__(self, arm):
         self.arm = arm
@@ -276,15 +278,35 @@ def train_mse(network, inputs, targets, epochs, batch, lr, seed, measure, log_ep
     return total, time.time() - began
 
 
-def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print, start=None):
+def labelled_as_seen(features, expert_jobs):
+    """Per arm-step of an episode (features: (2, steps, size)), whether the operator's label
+    answers what the features show: not once it has moved past a ring of the arm that is not on
+    its target post (given up after its re-grasps, or knocked off later). The features then name
+    that ring as the job while the operator works on the next ring or holds still, done; cloned,
+    such steps teach a policy to stand before a ring it has not placed. All, for demos recorded
+    without `expert_jobs`."""
+    if expert_jobs is None:
+        return np.ones(features.shape[:2], bool)
+    first_not_done = features[:, :, ArmFeatures.JOB].argmax(axis=2)
+    return np.asarray(expert_jobs).T <= first_not_done
+
+
+def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print, start=None,
+        expert_jobs=None):
     """Trains a Policy on episodes (lists of state and waypoint arrays): Adam with a cosine
-    schedule, mean squared error on the standardised learnt scale. `start`: a policy to go on
-    from."""
+    schedule, mean squared error on the standardised learnt scale, on the arm-steps whose labels
+    answer what the policy sees (labelled_as_seen, from each episode's `expert_jobs`, if given).
+    `start`: a policy to go on from."""
     import torch
     torch.manual_seed(seed)
-    x = np.vstack([f for s in states for f in Features.of_episode(s)])
+    jobs = expert_jobs if expert_jobs is not None else [None] * len(states)
+    features = [Features.of_episode(s) for s in states]
+    kept = [labelled_as_seen(f, j) for f, j in zip(features, jobs)]
+    x = np.vstack([f[arm][k[arm]] for f, k in zip(features, kept) for arm in (0, 1)])
     # Each arm's rows in the order of_episode gives them: per episode the left arm, then the right.
-    y = to_learnt(np.vstack([w[:, joints_of(arm)] for w in waypoints for arm in (0, 1)]))
+    y = to_learnt(np.vstack([w[k[arm]][:, joints_of(arm)] for w, k in zip(waypoints, kept)
+                             for arm in (0, 1)]))
+    log(f"{len(x)} of {sum(k.size for k in kept)} arm-steps labelled as the policy sees them")
     if start is None:
         stats = {"input_mean": x.mean(0), "input_std": x.std(0) + 1e-6,
                  "output_mean": y.mean(0), "output_std": y.std(0) + 1e-6}

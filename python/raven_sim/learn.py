@@ -144,7 +144,7 @@ def collect(env, expert, seeds, drive, data, source, max_steps=None, policy=None
 def store(data, seed, episode, source):
     """Writes `episode` (of `seed`) into `data`, prints it, and returns the rings it placed."""
     demos.write_demo(data, seed, episode.observations, episode.actions, episode.waypoints,
-                     episode.rewards, source, episode.variation)
+                     episode.rewards, source, episode.variation, episode.expert_jobs)
     placed = episode.info["placed"]
     print(f"seed {seed}: {len(episode.rewards)} steps, placed {placed}/6", flush=True)
     return placed
@@ -203,12 +203,12 @@ def train(args):
         if saved.get("kind") != IMAGE_POLICY:
             sys.exit(f"train --rings-from: {args.rings_from} is not an image policy")
         locator = locator_of(saved)
-        states, waypoints = load_located(args.demos, locator)
+        states, waypoints, jobs = load_located(args.demos, locator)
     else:
-        states, waypoints = demos.load_all(args.demos)
+        states, waypoints, jobs = demos.load_all(args.demos)
     start = Policy.load(args.init) if args.init else None
     policy, samples, seconds = fit(states, waypoints, [args.width] * args.layers, args.epochs,
-                                   args.batch, args.lr, args.seed, start=start)
+                                   args.batch, args.lr, args.seed, start=start, expert_jobs=jobs)
     if locator is not None:
         policy = ImagePolicy(locator, policy, saved["image_size"])
     policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds,

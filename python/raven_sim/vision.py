@@ -20,7 +20,7 @@ policy from the same demonstrations' states (behaviour cloning, imitation.fit).
 
 import numpy as np
 
-from .demos import stored
+from .demos import expert_jobs_of, stored
 from .imitation import LAYOUT, REST_Z, RINGS, Policy, train_mse
 
 CAMERAS = ("left-task", "right-task")  # per arm, left first
@@ -213,13 +213,14 @@ def with_located_rings(demo, locator, batch=256):
 
 
 def load_located(paths, locator):
-    """Every demo of the files: its states with located rings (with_located_rings) and its
-    waypoints, as demos.load_all gives them with the recorded rings."""
-    states, waypoints = [], []
+    """Every demo of the files: its states with located rings (with_located_rings), its
+    waypoints and the operator's jobs, as demos.load_all gives them with the recorded rings."""
+    states, waypoints, jobs = [], [], []
     for demo in image_demos(paths):
         states.append(with_located_rings(demo, locator))
         waypoints.append(np.asarray(demo["waypoints"]))
-    return states, waypoints
+        jobs.append(expert_jobs_of(demo))
+    return states, waypoints, jobs
 
 
 def fit_locator(images, rings, epochs, batch=128, lr=1e-3, seed=0, log=print, start=None):

@@ -147,6 +147,8 @@ void bindEnvironment(py::module_& m) {
       .def("expert_action", &E::expertAction, py::arg("from_state") = false,
            "the main job's scripted operator's next step, as an action of the environment's "
            "kind; from_state: taken up from the state reached (steps someone else decided)")
+      .def("expert_jobs_finished", &E::expertJobsFinished,
+           "per arm (left first), the expert's jobs finished, placed or given up (3 once done)")
       .def(
           "save_state",
           [](E& e) {

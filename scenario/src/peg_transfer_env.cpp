@@ -122,6 +122,11 @@ Eigen::VectorXd PegTransferEnv::expertAction(bool from_state) {
   return actionFor(options_.action, targets, current, kinematics_);
 }
 
+std::array<int, 2> PegTransferEnv::expertJobsFinished() const {
+  if (!expert_) return {0, 0};
+  return {static_cast<int>((*expert_)[0].finished()), static_cast<int>((*expert_)[1].finished())};
+}
+
 Eigen::VectorXd PegTransferEnv::actionLow() const {
   return actionBounds(options_.action, profile_.limits).low;
 }

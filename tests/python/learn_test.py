@@ -100,7 +100,7 @@ class PolicyInputsAndOutputs(unittest.TestCase):
         env = raven_sim.PegTransferEnv(action_type="joint_deltas")
         state = env.reset(seed=0)[0].copy()
         features = imitation.Features()
-        current = slice(imitation.ArmFeatures.size - 8, imitation.ArmFeatures.size - 4)
+        current = imitation.ArmFeatures.JOB
         self.assertEqual(list(features(state)[:, current].argmax(1)), [0, 0])
         # ring1 (the left arm's first) and ring4 (the right's) down on their target posts.
         for ring in (0, 3):
@@ -109,6 +109,20 @@ class PolicyInputsAndOutputs(unittest.TestCase):
         self.assertEqual(list(imitation.Features()(state)[:, current].argmax(1)), [1, 1])
         state[raven_sim.part("rings", 0)][2] += 0.02  # ring1 lifted off its post again
         self.assertEqual(list(imitation.Features()(state)[:, current].argmax(1)), [0, 1])
+
+    def test_labels_past_a_ring_the_operator_gave_up_are_not_cloned(self):
+        features = np.zeros((2, 5, imitation.ArmFeatures.size))
+        # The left arm's first job not done: 0, 0, 1, 1, 1; the right's: 0, 0, 0, 0, 2.
+        for t, (left, right) in enumerate([(0, 0), (0, 0), (1, 0), (1, 0), (1, 2)]):
+            features[0, t, imitation.ArmFeatures.JOB.start + left] = 1.0
+            features[1, t, imitation.ArmFeatures.JOB.start + right] = 1.0
+        # The operator finished the left's ring 1 (placed) at step 2, and gave up the right's
+        # ring 4 at step 1: ring 4 still lies there (first not done 0) while it works on ring 5.
+        jobs = [(0, 0), (0, 1), (1, 1), (1, 1), (2, 2)]
+        kept = imitation.labelled_as_seen(features, jobs)
+        self.assertEqual(kept.tolist(), [[True, True, True, True, False],
+                                         [True, False, False, False, True]])
+        self.assertTrue(imitation.labelled_as_seen(features, None).all())
 
     def test_a_policy_moves_at_most_a_step_towards_its_waypoint(self):
         self.assertTrue(np.allclose(imitation.from_learnt(imitation.to_learnt(
@@ -244,6 +258,31 @@ class Demonstrations(unittest.TestCase):
                 text=True, check=True)
             self.assertTrue(nominal.stdout.splitlines()[0].endswith("; the nominal scene"),
                             nominal.stdout)
+
+    def test_a_recording_ends_when_the_operator_has_finished_every_job(self):
+        import h5py
+        with tempfile.TemporaryDirectory() as d:
+            ranges, demos = os.path.join(d, "slip.yaml"), os.path.join(d, "slip.hdf5")
+            with open(ranges, "w") as f:
+                f.write("ring_kDF: [0, 0]\nring_offset: 0\n")  # rings the jaws cannot lift
+            with contextlib.redirect_stdout(io.StringIO()):
+                learn.main(["record", "--actuation", "ideal", "--episodes", "1", "--seeds", "5",
+                            "--randomize", ranges, "--out", demos])
+            with h5py.File(demos, "r") as f:
+                demo = f["data/demo_0"]
+                jobs = np.asarray(demo["expert_jobs"])
+                self.assertEqual(sum(demo["rewards"]), 0)
+                self.assertEqual(jobs.shape, (demo.attrs["num_samples"], 2))
+                self.assertEqual(list(jobs[0]), [0, 0])
+                self.assertTrue((np.diff(jobs, axis=0) >= 0).all())
+                # Each ring given up after its re-grasps; the demo stops once both arms are done
+                # (its last step still has one arm on its last ring), not at the time limit.
+                self.assertEqual(sorted(jobs[-1]), [2, 3])
+                kept = imitation.labelled_as_seen(
+                    imitation.Features.of_episode(np.asarray(demo["obs/state"])), jobs)
+                # Each arm's steps are cloned up to where its operator gave its first ring up.
+                self.assertEqual(list(kept.sum(axis=1)), [int(np.argmax(jobs[:, arm] > 0))
+                                                          for arm in (0, 1)])
 
     def test_a_ranges_file_sets_the_draws_each_demo_and_evaluation_line_records(self):
         import h5py

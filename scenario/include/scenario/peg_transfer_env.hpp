@@ -98,6 +98,9 @@ class PegTransferEnv {
   /// `from_state`: the operator first takes up the task from the state reached
   /// (ArmRoutine::resume), for steps someone else decided (DAgger's labels).
   Eigen::VectorXd expertAction(bool from_state = false);
+  /// Per arm (left first), how many of its jobs the expert has finished, placed or given up
+  /// (ArmRoutine::finished): 0 at reset, 3 once it is done.
+  std::array<int, 2> expertJobsFinished() const;
 
   /// The episode's state between steps: the twin's (TwinPlatform::saveState), the controller's,
   /// the expert's progress and the episode's count. The same actions after a restore give the
