@@ -3,9 +3,8 @@ each demo's num_samples, seed and scene draw (variation, JSON) as attributes, th
 arguments in data.attrs["env_args"] (JSON); besides, data/demo_<k>/waypoints: where the expert was heading,
 relative to the current targets (the actions are these capped per step), and expert_jobs: per step
 and arm, how many rings the operator had finished with (placed, or given up after its re-grasps).
-Episodes are recorded by
-running a driver (the expert, a policy) while a labeller (the expert) says what it should have
-done."""
+Episodes are recorded by running a driver (the expert, a policy) while a labeller (the expert)
+says what it should have done."""
 
 import json
 
