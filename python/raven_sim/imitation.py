@@ -93,8 +93,9 @@ class SteppedExpert:
 class ArmFeatures:
     """What the policy sees of one arm, from the observations so far of one episode."""
 
-    size = 1 + 7 + 3 + 6 + 3 * 9 + 4 + 3 + 1
-    JOB = slice(1 + 7 + 3 + 6 + 3 * 9, 1 + 7 + 3 + 6 + 3 * 9 + 4)  # the first job not done, one-hot
+    _BEFORE_JOB = 1 + 7 + 3 + 6 + 3 * 9  # the arm, targets, tool, wrench, per ring
+    JOB = slice(_BEFORE_JOB, _BEFORE_JOB + 4)  # the first job not done, one-hot
+    size = JOB.stop + 3 + 1
 
     def __init__(self, arm):
         self.arm = arm
