@@ -63,8 +63,11 @@ bool DualPlatformController::holdAtFollowingLimit(InterpolationPlan& plan, int d
       const double torque = state->tau[static_cast<std::size_t>(bridge::ravenStateIndex(arm, i))];
       const double past = std::abs(torque) - limit.torque(i);
       if (!(past > 0.0)) continue;
-      const double relieved =
-          now[a](i) - std::copysign(std::min(past * limit.give(i), most_back(i)), torque);
+      // Never past the joint's limit: the robot clamps its setpoint there, so a setpoint drawn
+      // on beyond it relieves nothing and would run away from the arm a command at a time.
+      const double relieved = std::clamp(
+          now[a](i) - std::copysign(std::min(past * limit.give(i), most_back(i)), torque),
+          profile_.limits.low(i), profile_.limits.high(i));
       if ((next[a](i) - relieved) * torque > 0.0) {  // the move would push on past it
         jump[a](i) = relieved - now[a](i);
         hold_at(relieved);

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <random>
@@ -48,6 +49,62 @@ class CommandLog final : public bridge::RavenPlatform {
  private:
   bridge::RavenPlatform& inner_;
 };
+
+/// The twin, but its raven_state reports the left wrist's motor pushing up with 1 N m, past the
+/// following limit's torque bound: a wrist whose integrator wound up while something held it
+/// down on its lower stop (traced in a learning episode, docs/learning.md).
+class WoundWrist final : public bridge::RavenPlatform {
+ public:
+  explicit WoundWrist(bridge::RavenPlatform& inner) : inner_(inner) {}
+  bridge::CommandResult send(const bridge::PlatformCommand& c) override { return inner_.send(c); }
+  bridge::OperatingStatus operatingStatus() const override { return inner_.operatingStatus(); }
+  bridge::JointSample measuredJs(Arm a) const override { return inner_.measuredJs(a); }
+  bridge::JointSample setpointJs(Arm a) const override { return inner_.setpointJs(a); }
+  bridge::PoseSample measuredCp(Arm a) const override { return inner_.measuredCp(a); }
+  bridge::PoseSample setpointCp(Arm a) const override { return inner_.setpointCp(a); }
+  std::optional<bridge::RavenStateSnapshot> ravenState() const override {
+    auto state = inner_.ravenState();
+    if (state)
+      state->tau[static_cast<std::size_t>(bridge::ravenStateIndex(Arm::Left, raven::kWrist))] = 1.0;
+    return state;
+  }
+  bridge::ClockKind clockKind() const override { return inner_.clockKind(); }
+  double now() const override { return inner_.now(); }
+  void advance(double s) override { inner_.advance(s); }
+
+ private:
+  bridge::RavenPlatform& inner_;
+};
+
+TEST(FollowingLimitTorque, ASetpointDrawnBackStopsAtTheJointsLimit) {
+  // The bound draws the wrist's setpoint down, away from the torque, a capped step a command;
+  // at the lower limit the robot's own clamp holds its setpoint, so drawing on relieves nothing.
+  // Before the fix the controller's targets ran on past the limit, each step twice as long as
+  // the last (-2.3 to -31 rad in six steps).
+  auto twin = test_support::readyTwin();
+  WoundWrist wound(*twin);
+  controller::ControllerOptions options;
+  controller::FollowingLimit limit;
+  limit.lead.setConstant(1e9);
+  limit.torque.setConstant(1e9);
+  limit.torque(raven::kWrist) = 0.366;
+  limit.give.setConstant(0.01);
+  options.following_limit = limit;
+  controller::DualPlatformController control({{"twin", &wound}}, options);
+  const auto& limits = test_support::physicalProfile().limits;
+  ArmPair target = control.commanded();
+  target[0](raven::kWrist) = limits.low(raven::kWrist);
+  int longest = 0;
+  for (int step = 0; step < 6; ++step) {
+    longest = std::max(longest, control.moveTo(target).steps);
+    ASSERT_GE(control.commanded()[0](raven::kWrist), limits.low(raven::kWrist)) << "step " << step;
+    ASSERT_GE(twin->setpointJs(Arm::Left).position(raven::kWrist),
+              limits.low(raven::kWrist) - 1e-9);
+  }
+  EXPECT_EQ(control.commanded()[0](raven::kWrist), limits.low(raven::kWrist))
+      << "drawn back to the limit, and held there";
+  EXPECT_LE(control.moveTo(target).steps, longest) << "no step grows past the first move";
+}
 
 TEST(VelocityCap, AtLeastTenStepsMoreWhenAJointWouldExceedItsCap) {
   const controller::VelocityCaps caps;
