@@ -20,17 +20,11 @@ using raven::Arm;
 using raven::ArmJoints;
 using recording::GamepadState;
 
-/// A platform that passes everything to another and keeps every servo_jr increment it saw.
-class CommandLog final : public bridge::RavenPlatform {
+/// A platform that passes everything to another; the fakes below change one call each.
+class Forwarding : public bridge::RavenPlatform {
  public:
-  explicit CommandLog(bridge::RavenPlatform& inner) : inner_(inner) {}
-  bridge::CommandResult send(const bridge::PlatformCommand& c) override {
-    if (const auto* jr = std::get_if<bridge::ServoJr>(&c)) {
-      servo_jr.push_back(*jr);
-      sent_at.push_back(inner_.now());
-    }
-    return inner_.send(c);
-  }
+  explicit Forwarding(bridge::RavenPlatform& inner) : inner_(inner) {}
+  bridge::CommandResult send(const bridge::PlatformCommand& c) override { return inner_.send(c); }
   bridge::OperatingStatus operatingStatus() const override { return inner_.operatingStatus(); }
   bridge::JointSample measuredJs(Arm a) const override { return inner_.measuredJs(a); }
   bridge::JointSample setpointJs(Arm a) const override { return inner_.setpointJs(a); }
@@ -43,37 +37,38 @@ class CommandLog final : public bridge::RavenPlatform {
   double now() const override { return inner_.now(); }
   void advance(double s) override { inner_.advance(s); }
 
+ protected:
+  bridge::RavenPlatform& inner_;
+};
+
+/// A platform that passes everything to another and keeps every servo_jr increment it saw.
+class CommandLog final : public Forwarding {
+ public:
+  using Forwarding::Forwarding;
+  bridge::CommandResult send(const bridge::PlatformCommand& c) override {
+    if (const auto* jr = std::get_if<bridge::ServoJr>(&c)) {
+      servo_jr.push_back(*jr);
+      sent_at.push_back(inner_.now());
+    }
+    return inner_.send(c);
+  }
+
   std::vector<bridge::ServoJr> servo_jr;
   std::vector<double> sent_at;  ///< each servo_jr's platform time
-
- private:
-  bridge::RavenPlatform& inner_;
 };
 
 /// The twin, but its raven_state reports the left wrist's motor pushing up with 1 N m, past the
 /// following limit's torque bound: a wrist whose integrator wound up while something held it
 /// down on its lower stop (traced in a learning episode, docs/learning.md).
-class WoundWrist final : public bridge::RavenPlatform {
+class WoundWrist final : public Forwarding {
  public:
-  explicit WoundWrist(bridge::RavenPlatform& inner) : inner_(inner) {}
-  bridge::CommandResult send(const bridge::PlatformCommand& c) override { return inner_.send(c); }
-  bridge::OperatingStatus operatingStatus() const override { return inner_.operatingStatus(); }
-  bridge::JointSample measuredJs(Arm a) const override { return inner_.measuredJs(a); }
-  bridge::JointSample setpointJs(Arm a) const override { return inner_.setpointJs(a); }
-  bridge::PoseSample measuredCp(Arm a) const override { return inner_.measuredCp(a); }
-  bridge::PoseSample setpointCp(Arm a) const override { return inner_.setpointCp(a); }
+  using Forwarding::Forwarding;
   std::optional<bridge::RavenStateSnapshot> ravenState() const override {
     auto state = inner_.ravenState();
     if (state)
       state->tau[static_cast<std::size_t>(bridge::ravenStateIndex(Arm::Left, raven::kWrist))] = 1.0;
     return state;
   }
-  bridge::ClockKind clockKind() const override { return inner_.clockKind(); }
-  double now() const override { return inner_.now(); }
-  void advance(double s) override { inner_.advance(s); }
-
- private:
-  bridge::RavenPlatform& inner_;
 };
 
 TEST(FollowingLimitTorque, ASetpointDrawnBackStopsAtTheJointsLimit) {
