@@ -2,18 +2,22 @@
 // input (any length, any double bit pattern: NaN, inf, 1e308), checked as the twin node checks
 // them and sent to the robot's command layer, which then runs cycles. Whatever arrives, every
 // setpoint stays finite and within the joint limits (the safety limits hold on every path).
+// Camera images (colour or depth, any encoding, sizes, step and data) a policy takes in are read
+// or refused, and a frame read has exactly its width x height pixels.
 
 #include <fuzzer/FuzzedDataProvider.h>
 #include <geometry_msgs/Transform.h>
 #include <geometry_msgs/Wrench.h>
 #include <raven_2/raven_state.h>
 #include <raven_twin/GraspForces.h>
+#include <sensor_msgs/Image.h>
 #include <sensor_msgs/JointState.h>
 
 #include <cstdint>
 #include <cstring>
 
 #include "bridge/operating_state.hpp"
+#include "bridge/ros/image_conversions.hpp"
 #include "bridge/ros/ros_conversions.hpp"
 #include "fuzz_file.hpp"
 #include "raven/platform_profile.hpp"
@@ -59,6 +63,30 @@ geometry_msgs::Transform anyTransform(FuzzedDataProvider& in) {
   return m;
 }
 
+/// An image message of any encoding a camera may send (or another), sizes and data.
+sensor_msgs::Image anyImage(FuzzedDataProvider& in) {
+  static const char* const kEncodings[] = {"rgb8",  "bgr8",  "rgba8", "bgra8",   "mono8",
+                                           "32FC1", "16UC1", "bgr16", "nonsense"};
+  sensor_msgs::Image m;
+  m.encoding = kEncodings[in.ConsumeIntegralInRange<std::size_t>(0, 8)];
+  m.width = in.ConsumeIntegralInRange<std::uint32_t>(0, 40);
+  m.height = in.ConsumeIntegralInRange<std::uint32_t>(0, 40);
+  m.step = in.ConsumeBool() ? in.ConsumeIntegral<std::uint32_t>()
+                            : in.ConsumeIntegralInRange<std::uint32_t>(0, 200);
+  m.is_bigendian = in.ConsumeIntegral<std::uint8_t>();
+  m.data = in.ConsumeBytes<std::uint8_t>(in.ConsumeIntegralInRange<std::size_t>(0, 8000));
+  return m;
+}
+
+void checkImage(const sensor_msgs::Image& message) {
+  const auto frame = r1::frameFromImage(message);
+  if (!frame.value) return;
+  const auto pixels = static_cast<std::size_t>(frame.value->width) * frame.value->height;
+  const bool whole = frame.value->isDepth() ? frame.value->depth.size() == pixels
+                                            : frame.value->rgb.size() == 3 * pixels;
+  if (pixels == 0 || !whole) fuzz::fail("an image frame that is not width x height pixels");
+}
+
 /// An enabled, homed command layer of the physical robot, made once and copied per input.
 const twin::RavenCore& readyCore() {
   static const twin::RavenCore ready = [] {
@@ -93,7 +121,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   twin::RavenCore core = readyCore();
   while (in.remaining_bytes() > 0) {
     const Arm arm = in.ConsumeBool() ? Arm::Left : Arm::Right;
-    switch (in.ConsumeIntegralInRange<int>(0, 7)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 8)) {
       case 0: {
         const auto q = r1::armJointsFromCommand(anyJointState(in));
         if (!q.value) break;
@@ -151,6 +179,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       case 6:
         (void)r1::jointSampleFromState(anyJointState(in));
+        break;
+      case 7:
+        checkImage(anyImage(in));
         break;
       default: {
         raven_twin::GraspForces jaws;

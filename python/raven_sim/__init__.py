@@ -20,6 +20,6 @@ from ._raven_sim import (Arm, CommandResult, Controller, ControllerSession, Mode
                          RecordingError, RobotOverRos, RsRecording, RsWriter, ServoCp, ServoCr, ServoJawJp,
                          SimulationDiverged, estimate_forces,
                          ServoJawJr, ServoJp, ServoJr, StateCommand, Twin, World, ci_columns,
-                         observation_layout, peg_layout, read_ci, read_rs, ring_placed, tool_points,
+                         observation_layout, peg_layout, read_ci, read_rs, ring_placed, task_camera, tool_points,
                          write_ci)
 from .env import SEGMENT_IDS, PegTransferEnv, VectorPegTransferEnv, part

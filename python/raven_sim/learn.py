@@ -13,6 +13,7 @@
         --out bc_rgb.pt
     python3 -m raven_sim.learn join --image-policy bc_rgb.pt --state-policy bc_state.pt \\
         --out bc_rgb.pt
+    python3 -m raven_sim.learn join --rgbd --state-policy bc_state.pt --out bc_rgbd.pt
     python3 -m raven_sim.learn locate --policy bc_rgb.pt --demos held_out.hdf5
     python3 -m raven_sim.learn run --policy bc_rgb.pt --platform twin   # a raven_twin_node
 
@@ -35,7 +36,9 @@ trained on the rings that policy's locator sees in the demos' images (its errors
 saved with that locator as an image policy.
 
 join: an image policy's ring locator acting through another state policy (the locator only
-sees rings; a state policy trained again needs no new locator).
+sees rings; a state policy trained again needs no new locator). With --rgbd: the image policy
+whose eyes are a model fit, not a network (rgbd_policy.RgbdPolicy: each ring's shape fitted to
+what each arm's RGB-D task camera sees of it, raven_sim.ring_fit).
 
 dagger: one round of DAgger (Ross et al. 2011): the policy drives on new seeds (the expert's
 action instead with probability --beta) while the expert, taking up the task from each state
@@ -68,6 +71,7 @@ import numpy as np
 from . import demos
 from .env import OBSERVATIONS, PegTransferEnv
 from .imitation import Policy, RingsSeenOff, SteppedExpert, fit
+from .rgbd_policy import RgbdPolicy
 from .robot import run
 from .vision import KIND as IMAGE_POLICY
 from .vision import (ImagePolicy, fit_locator, load_located, load_locator_samples,
@@ -242,9 +246,14 @@ def train_image_policy(args):
 
 
 def join(args):
-    """An image policy's ring locator acting through another state policy: the locator sees
-    rings, whatever acts on them."""
+    """An image policy's ring locator, or the RGB-D ring fit (--rgbd), acting through a state
+    policy: the eyes see rings, whatever acts on them."""
     import torch
+    if args.rgbd:
+        joined = RgbdPolicy(Policy.load(args.state_policy))
+        joined.save(args.out, state_policy=args.state_policy)
+        print(f"rings fitted in the RGB-D task cameras with {args.state_policy}: {args.out}")
+        return
     saved = torch.load(args.image_policy)
     if saved.get("kind") != IMAGE_POLICY:
         sys.exit(f"join: {args.image_policy} is not an image policy (train --obs rgb makes one)")
@@ -416,8 +425,11 @@ def main(argv=None):
                         "in the demos' task-camera images instead of the recorded ones, and save "
                         "an image policy (that locator acting through what was trained)")
     p.set_defaults(run=train)
-    p = sub.add_parser("join", help="an image policy's ring locator with another state policy")
-    p.add_argument("--image-policy", required=True, help="the image policy whose locator is kept")
+    p = sub.add_parser("join", help="an image policy's eyes with another state policy")
+    eyes = p.add_mutually_exclusive_group(required=True)
+    eyes.add_argument("--image-policy", help="the image policy whose ring locator is kept")
+    eyes.add_argument("--rgbd", action="store_true",
+                      help="rings fitted in each arm's RGB-D task camera (rgbd_policy.RgbdPolicy)")
     p.add_argument("--state-policy", required=True, help="the state policy that acts")
     p.add_argument("--out", required=True)
     p.set_defaults(run=join)
@@ -453,11 +465,16 @@ def main(argv=None):
     p.add_argument("--policy", required=True)
     p.add_argument("--platform", choices=["twin", "physical"], required=True,
                    help="twin: a raven_twin_node serving the peg-transfer scene with --cameras "
-                        "(its rings' topics judge the run); physical: the robot's own topics")
+                        "(and --camera-depth for an RGB-D policy; its rings' topics judge the "
+                        "run); physical: the robot's own topics")
     p.add_argument("--robot-namespace", default="", help="the robot's (or node's) namespace")
     p.add_argument("--camera-topics", nargs=2, metavar=("LEFT", "RIGHT"),
                    help="the left and right arms' task cameras (sensor_msgs/Image; default on "
                         "the twin: <namespace>/cameras/left_task/image_raw and right_task)")
+    p.add_argument("--depth-topics", nargs=2, metavar=("LEFT", "RIGHT"),
+                   help="for an RGB-D policy, the same cameras' depth images (sensor_msgs/Image "
+                        "32FC1 m or 16UC1 mm, registered to the colour images; default on the "
+                        "twin: <namespace>/cameras/left_task/depth/image_raw and right_task)")
     p.add_argument("--scene-namespace",
                    help="where the rings' poses are (AMBF's <ns><ring>/State; default on the "
                         "twin: /peg_transfer/; none on the robot: the cameras judge)")

@@ -1,7 +1,7 @@
 """A cloned policy on a Raven-II over ROS (`python3 -m raven_sim.learn run`): the robot reached
 through raven_sim.RobotOverRos, the same client, controller, caps and limits as the gamepad path,
-on the wall clock; an image policy sees the cameras' topics, a state policy the rings' pose
-topics. The run is judged by the rings' topics where there are some (the twin node's), else by
+on the wall clock; an image policy sees the cameras' topics (an RGB-D one their depth topics as
+well), a state policy the rings' pose topics. The run is judged by the rings' topics where there are some (the twin node's), else by
 what the cameras show (the policy's own ring locator).
 """
 
@@ -11,19 +11,26 @@ import numpy as np
 
 from ._raven_sim import RobotOverRos, ring_placed
 from .imitation import LAYOUT
+from .rgbd_policy import RgbdPolicy, depth_key
 from .vision import CAMERAS, ImagePolicy, image_key, load_policy
 
 TWIN_SCENE = "/peg_transfer/"  # the twin node's peg-transfer scene: its objects' topics
 
 
-def twin_camera_topic(namespace, camera):
-    """The twin node's topic of a named camera (raven_twin_node --cameras)."""
-    return f"{namespace.rstrip('/')}/cameras/{camera.replace('-', '_')}/image_raw"
+def twin_camera_topic(namespace, camera, depth=False):
+    """The twin node's topic of a named camera's colour (or depth) images (raven_twin_node
+    --cameras, --camera-depth)."""
+    kind = "depth/image_raw" if depth else "image_raw"
+    return f"{namespace.rstrip('/')}/cameras/{camera.replace('-', '_')}/{kind}"
+
+
+def sees(policy):
+    return isinstance(policy, (ImagePolicy, RgbdPolicy))
 
 
 def fitted(image, size):
-    """`image` (H, W, 3) at the policy's (W, H): sampled at the nearest pixels when a camera
-    gives another size."""
+    """`image` (H, W, 3) or a depth image (H, W) at the policy's (W, H): sampled at the nearest
+    pixels when a camera gives another size."""
     width, height = size
     if image.shape[:2] == (height, width):
         return image
@@ -51,33 +58,47 @@ class Judge:
         return rings_on_targets(self.policy.locate(observation))
 
 
-def connect(args, policy):
-    """The robot, its rings' topics and its cameras as --platform and the flags say."""
+def camera_topics(args, policy):
+    """The colour topics of the two task cameras, then (an RGB-D policy) their depth topics."""
     twin = args.platform == "twin"
-    sees = isinstance(policy, ImagePolicy)
-    scene = args.scene_namespace if args.scene_namespace is not None else (
-        TWIN_SCENE if twin else None)
     cameras = args.camera_topics or (
         [twin_camera_topic(args.robot_namespace, c) for c in CAMERAS] if twin else None)
-    if sees and not cameras:
+    if not cameras:
         sys.exit("run --platform physical with an image policy: --camera-topics LEFT RIGHT names "
                  "the robot's left and right task cameras")
-    if not sees and not scene:
+    if not isinstance(policy, RgbdPolicy):
+        return list(cameras)
+    depths = args.depth_topics or (
+        [twin_camera_topic(args.robot_namespace, c, depth=True) for c in CAMERAS] if twin else
+        None)
+    if not depths:
+        sys.exit("run --platform physical with an RGB-D policy: --depth-topics LEFT RIGHT names "
+                 "the task cameras' depth images")
+    return list(cameras) + list(depths)
+
+
+def connect(args, policy):
+    """The robot, its rings' topics and its cameras as --platform and the flags say."""
+    scene = args.scene_namespace if args.scene_namespace is not None else (
+        TWIN_SCENE if args.platform == "twin" else None)
+    if not sees(policy) and not scene:
         sys.exit("run: a state policy reads the rings' poses; --scene-namespace names their topics "
                  "(a tracker's), or run an image policy")
     return RobotOverRos(robot_namespace=args.robot_namespace, arm_swap=not args.no_arm_swap,
                         scene_namespace=scene or None,
-                        camera_topics=list(cameras) if sees else [],
+                        camera_topics=camera_topics(args, policy) if sees(policy) else [],
                         connect_timeout=args.connect_timeout)
 
 
 def observe(robot, policy, seen):
     """The policy's observation now: the state, and for an image policy each camera's first
-    image taken in after `seen` (received() when the last step ended)."""
+    image taken in after `seen` (received() when the last step ended): the colour images, then
+    an RGB-D policy's depth images."""
     observation = {"state": robot.observe()}
-    if isinstance(policy, ImagePolicy):
-        for arm, image in enumerate(robot.images(seen)):
-            observation[image_key(arm)] = fitted(image, policy.image_size)
+    if sees(policy):
+        keys = [image_key(arm) for arm in (0, 1)] + [depth_key(arm) for arm in (0, 1)]
+        for key, image in zip(keys, robot.images(seen)):
+            observation[key] = fitted(image, policy.image_size)
     return observation
 
 

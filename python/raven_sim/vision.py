@@ -155,11 +155,16 @@ def locator_of(saved):
 
 
 def load_policy(path):
-    """A state policy (imitation.Policy) or an image policy, whichever the file holds."""
+    """A state policy (imitation.Policy) or an image policy (vision.ImagePolicy or
+    rgbd_policy.RgbdPolicy), whichever the file holds."""
     import torch
+
+    from . import rgbd_policy
     saved = torch.load(path)
     if saved.get("kind") == KIND:
         return ImagePolicy.from_checkpoint(saved, path)
+    if saved.get("kind") == rgbd_policy.KIND:
+        return rgbd_policy.RgbdPolicy.from_checkpoint(saved, path)
     return Policy.from_checkpoint(saved, path)
 
 

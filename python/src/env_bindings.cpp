@@ -10,6 +10,7 @@
 #include "common/actuation_kind.hpp"
 #include "scenario/peg_cameras.hpp"
 #include "scenario/peg_transfer_env.hpp"
+#include "scenario/task_views.hpp"
 
 namespace py = pybind11;
 
@@ -46,11 +47,33 @@ void bindLayouts(py::module_& m) {
         out["board_top"] = layout.geometry.board_top;
         out["ring_radius"] = layout.ring.major_radius;
         out["ring_height"] = 2.0 * layout.ring.half_height;
+        out["ring_tube_half_width"] = layout.ring.tube_half_width;
+        out["ring_stations"] = layout.ring.stations;
+        out["ring_tube_stations"] = layout.ring.tube_stations;
+        out["post_height"] = layout.geometry.post_height;
         return out;
       },
       "the peg transfer's design values: its six jobs (ring, arm 0 left / 1 right, the start and "
       "target posts' x, y in m, in the order of the state's ring centres), the board's top z, "
-      "the rings' centre-line radius and height");
+      "the rings' centre-line radius, height and tube half-width, the stations the ring is "
+      "drawn with around it and around its tube, and the posts' height");
+  m.def(
+      "task_camera",
+      [](int arm) {
+        if (arm != 0 && arm != 1)
+          throw py::value_error("task_camera: arm is 0 (left) or 1 (right)");
+        const viewer::Camera c = scenario::taskCamera(
+            scenario::PegLayout{}, arm == 0 ? raven::Arm::Left : raven::Arm::Right);
+        py::dict out;
+        out["eye"] = Eigen::Vector3d(c.eye());
+        out["target"] = c.target;
+        out["fov_y"] = c.fov_y;
+        return out;
+      },
+      py::arg("arm"),
+      "one arm's task camera (arm 0: left-task, 1: right-task) as designed: its eye and the "
+      "point it looks at (m, the rings' frame) and its vertical field of view (rad), the "
+      "calibration an RGB-D policy takes its images back into the world with");
   m.def(
       "ring_placed",
       [](const Eigen::Vector3d& centre, const Eigen::Vector2d& post) {

@@ -87,7 +87,13 @@ class RobotOverRos {
   std::optional<scenario::PegTransferRobot> robot_;
 };
 
-py::array_t<std::uint8_t> imageArray(const bridge::CameraFrame& frame) {
+/// A colour frame as (H, W, 3) uint8, a depth frame as (H, W) float32 (m).
+py::array imageArray(const bridge::CameraFrame& frame) {
+  if (frame.isDepth()) {
+    py::array_t<float> out({frame.height, frame.width});
+    std::copy(frame.depth.begin(), frame.depth.end(), out.mutable_data());
+    return out;
+  }
   py::array_t<std::uint8_t> out({frame.height, frame.width, 3});
   std::copy(frame.rgb.begin(), frame.rgb.end(), out.mutable_data());
   return out;
@@ -111,7 +117,7 @@ void bindRobotOverRos(py::module_& m) {
            py::arg("camera_topics") = std::vector<std::string>{}, py::arg("connect_timeout") = 10.0,
            "ROS_MASTER_URI names the master. scene_namespace: the rings' AMBF object topics "
            "('/peg_transfer/' on the twin node), or None; camera_topics: sensor_msgs/Image "
-           "topics. Throws naming what is not found within connect_timeout s")
+           "topics (colour or depth). Throws naming what is not found within connect_timeout s")
       .def(
           "make_ready",
           [](RobotOverRos& r, double timeout) {
@@ -151,7 +157,8 @@ void bindRobotOverRos(py::module_& m) {
             return out;
           },
           py::arg("after"),
-          "per camera topic its latest image (H, W, 3) once more than `after` (received()) came")
+          "per camera topic its latest image once more than `after` (received()) came: colour "
+          "(H, W, 3) uint8, depth (H, W) float32 in m (+inf: no reading)")
       .def_property_readonly("time", [](RobotOverRos& r) { return r.robot().time(); });
 }
 

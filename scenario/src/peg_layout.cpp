@@ -43,7 +43,8 @@ PegLayout::PegLayout(const raven::design::PegSceneDesign& design,
   ring = {.major_radius = design.ring_major_radius,
           .tube_half_width = design.ring_minor_radius,
           .half_height = design.ring_half_height,
-          .stations = design.ring_segments};
+          .stations = design.ring_segments,
+          .tube_stations = design.ring_tube_segments};
   geometry.board_top = at.translation().z();
   geometry.post_radius = design.post_radius;
   geometry.post_height = design.post_height;

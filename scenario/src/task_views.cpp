@@ -19,7 +19,18 @@ std::size_t bodyIndex(const ambf_like::World& world, const std::string& name) {
   throw std::invalid_argument("peg-transfer views: no body " + name + " to follow");
 }
 
-/// A camera on one arm's six posts.
+viewer::View grasperView(const ambf_like::World& world, raven::Arm arm) {
+  viewer::Camera c;
+  c.target = Eigen::Vector3d::Zero();  // the jaw axis
+  c.yaw = kFromFront + (arm == raven::Arm::Left ? 0.5 : -0.5);
+  c.pitch = 0.45;
+  c.distance = 0.07;
+  return {std::string("grasper-") + std::string(raven::armName(arm)), c,
+          bodyIndex(world, "/raven2/" + std::string(raven::armName(arm)) + "/jaw1_link")};
+}
+
+}  // namespace
+
 viewer::Camera taskCamera(const PegLayout& layout, raven::Arm arm) {
   Eigen::Vector2d centre = Eigen::Vector2d::Zero();
   const auto jobs = layout.jobsOf(arm);
@@ -33,18 +44,6 @@ viewer::Camera taskCamera(const PegLayout& layout, raven::Arm arm) {
   c.distance = 0.20;
   return c;
 }
-
-viewer::View grasperView(const ambf_like::World& world, raven::Arm arm) {
-  viewer::Camera c;
-  c.target = Eigen::Vector3d::Zero();  // the jaw axis
-  c.yaw = kFromFront + (arm == raven::Arm::Left ? 0.5 : -0.5);
-  c.pitch = 0.45;
-  c.distance = 0.07;
-  return {std::string("grasper-") + std::string(raven::armName(arm)), c,
-          bodyIndex(world, "/raven2/" + std::string(raven::armName(arm)) + "/jaw1_link")};
-}
-
-}  // namespace
 
 std::vector<std::string> pegTransferViewNames() {
   return {"overview", "left-task", "right-task", "grasper-left", "grasper-right"};

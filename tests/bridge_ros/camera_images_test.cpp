@@ -6,6 +6,8 @@
 #include <ros/ros.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "bridge/ros/image_conversions.hpp"
 #include "bridge/ros/ros_camera_images.hpp"
@@ -23,7 +25,7 @@ using bridge::ros1::toImage;
 
 /// A 3 x 2 frame whose every byte differs.
 CameraFrame smallFrame() {
-  CameraFrame f{3, 2, {}, 12.5};
+  CameraFrame f{3, 2, {}, {}, 12.5};
   for (int i = 0; i < 18; ++i) f.rgb.push_back(static_cast<std::uint8_t>(10 + i));
   return f;
 }
@@ -70,14 +72,46 @@ TEST(ImageConversions, WhatIsNotAWholeImageIsRefusedSayingWhy) {
   m.step = 8;
   EXPECT_NE(frameFromImage(m).error.find("step 8 is shorter"), std::string::npos);
   m = toImage(smallFrame(), "x");
-  m.encoding = "16UC1";
-  EXPECT_NE(frameFromImage(m).error.find("encoding '16UC1'"), std::string::npos);
+  m.encoding = "bayer_rggb8";
+  EXPECT_NE(frameFromImage(m).error.find("encoding 'bayer_rggb8'"), std::string::npos);
   m = toImage(smallFrame(), "x");
   m.width = 0;
   EXPECT_FALSE(frameFromImage(m).value);
   CameraFrame short_frame = smallFrame();
   short_frame.rgb.resize(5);
   EXPECT_THROW(toImage(short_frame, "x"), std::invalid_argument);
+}
+
+TEST(ImageConversions, ADepthFrameComesBackInMetresAsTheDriversSendIt) {
+  CameraFrame depth;
+  depth.width = 2;
+  depth.height = 2;
+  depth.depth = {0.2f, 0.25f, std::numeric_limits<float>::infinity(), 1.5f};
+  const sensor_msgs::Image m = toImage(depth, "left-task");
+  EXPECT_EQ(m.encoding, "32FC1");
+  EXPECT_EQ(m.step, 8u);
+  const auto back = frameFromImage(m);
+  ASSERT_TRUE(back.value) << back.error;
+  EXPECT_TRUE(back.value->rgb.empty());
+  EXPECT_EQ(back.value->depth, depth.depth);
+  // A 16-bit driver's millimetres, big-endian, a padded row, 0 for no reading.
+  sensor_msgs::Image mm;
+  mm.encoding = "16UC1";
+  mm.width = 2;
+  mm.height = 1;
+  mm.step = 6;
+  mm.is_bigendian = 1;
+  mm.data = {0x00, 0xC8, 0x00, 0x00, 0xEE, 0xEE};  // 200 mm, none, padding
+  const auto read = frameFromImage(mm);
+  ASSERT_TRUE(read.value) << read.error;
+  ASSERT_EQ(read.value->depth.size(), 2u);
+  EXPECT_FLOAT_EQ(read.value->depth[0], 0.2f);
+  EXPECT_TRUE(std::isinf(read.value->depth[1]));
+  mm.data.resize(5);
+  EXPECT_NE(frameFromImage(mm).error.find("5 bytes of data, not step x height = 6"),
+            std::string::npos);
+  depth.depth.pop_back();
+  EXPECT_THROW(toImage(depth, "x"), std::invalid_argument);
 }
 
 TEST(CameraImagesOverRos, TheLatestImageAfterACountAndARefusedOneNamed) {
@@ -131,6 +165,35 @@ TEST(CameraImagesOverRos, TheTwinNodesTaskCamerasReachAPolicysClient) {
   EXPECT_NE(left.rgb, right.rgb);  // two views of two arms' posts
   const auto [darkest, brightest] = std::minmax_element(left.rgb.begin(), left.rgb.end());
   EXPECT_GT(*brightest - *darkest, 100);  // a scene, not a blank
+}
+
+TEST(CameraImagesOverRos, AnRgbdTwinNodePublishesEachViewsDepthBesideItsColour) {
+  twin::TwinOptions options;
+  options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
+  options.clock = bridge::ClockKind::Simulated;
+  twin::TwinPlatform twin(options);
+  std::optional<twin::ros1::CameraTopics> cameras;
+  twin::ros1::CameraTopicOptions rgbd{{"left-task"}, 64, 48, 10.0};
+  rgbd.depth = true;
+  try {
+    cameras.emplace(twin.world(), rgbd);
+  } catch (const viewer::NoDisplay& e) {
+    GTEST_SKIP() << "no headless OpenGL here: " << e.what();
+  }
+  EXPECT_EQ(twin::ros1::CameraTopics::depthTopicOf("left-task"),
+            "cameras/left_task/depth/image_raw");
+  bridge::ros1::RosCameraImages images({{ros::names::resolve("cameras/left_task/image_raw"),
+                                         ros::names::resolve("cameras/left_task/depth/image_raw")},
+                                        5.0});
+  cameras->update(twin.world(), 0.0, 0.0);
+  const CameraFrame colour = images.latest(0, 0);
+  const CameraFrame depth = images.latest(1, 0);
+  EXPECT_EQ(colour.rgb.size(), 64u * 48 * 3);
+  ASSERT_EQ(depth.depth.size(), 64u * 48);
+  // The task camera stands 0.2 m from a point over the board: what it sees lies about that far.
+  const float middle = depth.depth[24 * 64 + 32];
+  EXPECT_GT(middle, 0.15f);
+  EXPECT_LT(middle, 0.30f);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """A policy run through the robot's interface: `python3 -m raven_sim.learn run` against
 raven_twin_node in another process over a real rosmaster, on the wall clock, with the node's
-rendered task cameras; the same command's refusals when what the policy needs is missing.
+rendered task cameras (colour, and depth for the RGB-D policy); the same command's refusals when
+what the policy needs is missing.
 
 Usage: robot_run_test.py <raven_twin_node>; PYTHONPATH must hold the build tree's python/.
 """
@@ -32,6 +33,13 @@ class RunRefusesWhatItCannotDo(unittest.TestCase):
                     "physical", timeout=120)
         self.assertNotEqual(run.returncode, 0)
         self.assertIn("--camera-topics LEFT RIGHT", run.stderr)
+
+    def test_an_rgbd_policy_on_the_robot_needs_its_depth_images_too(self):
+        run = learn("run", "--policy", os.path.join(POLICIES, "bc_rgbd.pt"), "--platform",
+                    "physical", "--camera-topics", "/left/image_raw", "/right/image_raw",
+                    timeout=120)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("--depth-topics LEFT RIGHT", run.stderr)
 
     def test_a_state_policy_on_the_robot_needs_the_rings_poses(self):
         run = learn("run", "--policy", os.path.join(POLICIES, "bc_state.pt"), "--platform",
@@ -65,6 +73,35 @@ class RunOnTheTwinNode(unittest.TestCase):
         found = re.fullmatch(r"placed (\d) rings", last)
         self.assertIsNotNone(found, run.stdout)
         self.assertGreaterEqual(int(found.group(1)), 1, run.stdout + self.node.output()[-2000:])
+
+
+class RunRgbdOnTheTwinNode(unittest.TestCase):
+    """The RGB-D image policy drives the twin node from its colour and depth camera topics (the
+    node renders both, as an RGB-D camera's driver publishes them); the node's ring topics
+    judge."""
+
+    @classmethod
+    def setUpClass(cls):
+        if not NODE:
+            raise unittest.SkipTest("no raven_twin_node given")
+        cls.master = RosMaster()
+        cls.node = TwinNode(NODE, cls.master.dir.name, "/r2", "--launch", SCENE,
+                            "--soft-body-sleep", "--cameras", "left-task,right-task",
+                            "--camera-depth")
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.node.stop()
+        cls.master.stop()
+
+    def test_the_rgbd_policy_places_four_rings_through_the_robots_interface(self):
+        run = learn("run", "--policy", os.path.join(POLICIES, "bc_rgbd.pt"), "--platform", "twin",
+                    "--robot-namespace", "/r2", "--time-limit", "240", "--connect-timeout", "30")
+        self.assertEqual(run.returncode, 0, run.stderr[-3000:])
+        last = run.stdout.strip().splitlines()[-1]
+        found = re.fullmatch(r"placed (\d) rings", last)
+        self.assertIsNotNone(found, run.stdout)
+        self.assertGreaterEqual(int(found.group(1)), 4, run.stdout + self.node.output()[-2000:])
 
 
 if __name__ == "__main__":

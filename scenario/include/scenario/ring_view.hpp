@@ -18,6 +18,8 @@ struct RingDimensions {
   /// Stations around the ring (the design's ring_segments): its centre line is a polygon
   /// with a vertex at each, the first on the ring frame's x axis; 0 for a smooth ring.
   int stations = 0;
+  /// Stations around the tube's section, as the ring is drawn (ring_tube_segments); 0: smooth.
+  int tube_stations = 0;
 
   double innerRadius() const { return major_radius - tube_half_width; }
 };

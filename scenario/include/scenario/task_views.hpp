@@ -16,6 +16,10 @@ namespace scenario {
 std::vector<viewer::View> pegTransferViews(const ambf_like::World& world,
                                            const PegLayout& layout = {});
 
+/// The fixed camera on one arm's six posts (`left-task`, `right-task`), as designed: a
+/// calibrated camera's pose and field of view.
+viewer::Camera taskCamera(const PegLayout& layout, raven::Arm arm);
+
 /// The view names, in the order pegTransferViews returns them.
 std::vector<std::string> pegTransferViewNames();
 

@@ -84,6 +84,9 @@ void addOptions(CLI::App& app, NodeSettings& s) {
   app.add_option("--camera-rate", s.cameras.rate, "the cameras' frames per second of twin time")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  app.add_flag("--camera-depth", s.cameras.depth,
+               "each view's depth image too, as an RGB-D camera's driver publishes it: "
+               "cameras/<view>/depth/image_raw (sensor_msgs/Image, 32FC1, m along the axis)");
   app.add_option("--duration", s.duration,
                  "stop after this much platform time (s); 0: run until "
                  "interrupted")

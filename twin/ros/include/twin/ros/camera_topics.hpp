@@ -2,8 +2,9 @@
 // The peg-transfer scene's named cameras (overview, left-task, right-task, grasper-left,
 // grasper-right: scenario/task_views.hpp) rendered headless at a camera's frame rate on the
 // twin's clock and published as a camera driver would (sensor_msgs/Image, rgb8, on
-// cameras/<view>/image_raw with '-' written '_'), so a policy that sees reaches the twin node as
-// it would reach the robot's cameras.
+// cameras/<view>/image_raw with '-' written '_'; with depth, as an RGB-D camera's driver also
+// publishes it, 32FC1 in m on cameras/<view>/depth/image_raw), so a policy that sees reaches the
+// twin node as it would reach the robot's cameras.
 
 #include <memory>
 #include <string>
@@ -24,6 +25,7 @@ struct CameraTopicOptions {
   int width = 128;
   int height = 96;
   double rate = 30.0;  ///< frames per second of the twin's clock
+  bool depth = false;  ///< each view's depth image too (an RGB-D camera)
 };
 
 /// Renders and publishes the views (needs initRos() and a headless OpenGL).
@@ -40,13 +42,15 @@ class CameraTopics {
   /// the images' headers.
   void update(const ambf_like::World& world, double now, double stamp);
 
-  /// The topic a view is published on, relative to the node's namespace.
+  /// The topic a view's colour images are published on, relative to the node's namespace.
   static std::string topicOf(const std::string& view);
+  /// The topic its depth images are published on.
+  static std::string depthTopicOf(const std::string& view);
 
  private:
   CameraTopicOptions options_;
   std::unique_ptr<scenario::PegCameras> cameras_;
-  bridge::ros1::RosImagePublisher publisher_;
+  bridge::ros1::RosImagePublisher publisher_;  ///< colour topics, then depth topics
   double next_frame_ = 0.0;
 };
 
