@@ -3,14 +3,17 @@ images (ring_fit), then the state policy's network acting on them.
 
 It sees what vision.ImagePolicy sees, each arm's task camera and the arm's own joints, with the
 depth image beside the colour one (an RGB-D camera, or a stereo pair's depth), and it knows the
-camera's calibration (raven_sim.task_camera) and the ring's shape (raven_sim.peg_layout), as a
-robot's perception of a known object does. Nothing of the world's state is read: a test gives it
-rings a kilometre away in the state and it acts the same.
+camera's calibration (raven_sim.task_camera), the board's and the ring's shapes
+(raven_sim.peg_layout), as a robot's perception of known objects does. From each episode's first
+images it finds where each camera really is from the board it sees (board_calibration: a camera
+mounted again sits millimetres from its calibration). Nothing of the world's state is read: a
+test gives it rings a kilometre away in the state and it acts the same.
 """
 
 import numpy as np
 
 from ._raven_sim import peg_layout, task_camera
+from .board_calibration import calibrate
 from .imitation import LAYOUT, REST_Z, RINGS, Policy
 from .ring_fit import RingShape, RingTracker, TaskCamera
 from .vision import CAMERAS, image_key
@@ -30,8 +33,9 @@ class RgbdPolicy:
 
     def __init__(self, policy, image_size=(128, 96)):
         self.policy, self.image_size = policy, tuple(image_size)
-        self.shape = RingShape.of_layout(peg_layout())
-        self.cameras = [TaskCamera(**task_camera(arm)) for arm in (0, 1)]
+        self.layout = peg_layout()
+        self.shape = RingShape.of_layout(self.layout)
+        self.cameras = [TaskCamera(**task_camera(arm)) for arm in (0, 1)]  # as calibrated
         self.reset()
 
     @property
@@ -41,18 +45,27 @@ class RgbdPolicy:
                 "image_size": self.image_size}
 
     def reset(self):
-        """A new episode: each ring lying on its start post until the cameras say otherwise."""
+        """A new episode: the cameras to be found again from its first images."""
         self.policy.reset()
-        self.trackers = [
-            RingTracker(self.cameras[arm], self.shape,
-                        [[*LAYOUT["jobs"][i]["from"], REST_Z] for i in RING_ROWS[arm]], POSTS)
-            for arm in (0, 1)]
+        self.trackers = None
+
+    def start(self, observation):
+        """Each camera found from the board in its first images, and its rings lying on their
+        start posts until the images say otherwise."""
+        self.trackers = []
+        for arm in (0, 1):
+            camera = calibrate(self.cameras[arm], observation[image_key(arm)],
+                               observation[depth_key(arm)], self.layout, POSTS)
+            starts = [[*LAYOUT["jobs"][i]["from"], REST_Z] for i in RING_ROWS[arm]]
+            self.trackers.append(RingTracker(camera, self.shape, starts, POSTS))
 
     def fresh(self):
         return RgbdPolicy(self.policy.fresh(), self.image_size)
 
     def locate(self, observation):
         """Each arm's rings as its camera sees them: the 18 ring values of a state."""
+        if self.trackers is None:
+            self.start(observation)
         rings = np.zeros((6, 3))
         for arm in (0, 1):
             rings[RING_ROWS[arm]] = self.trackers[arm].update(observation[image_key(arm)],

@@ -93,7 +93,8 @@ class TaskCamera:
 
     def __init__(self, eye, target, fov_y):
         self.eye = np.asarray(eye, dtype=np.float64)
-        forward = np.asarray(target, dtype=np.float64) - self.eye
+        self.target = np.asarray(target, dtype=np.float64)
+        forward = self.target - self.eye
         self.forward = forward / np.linalg.norm(forward)
         side = np.cross(self.forward, [0.0, 0.0, 1.0])
         self.side = side / np.linalg.norm(side)

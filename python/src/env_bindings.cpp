@@ -51,12 +51,13 @@ void bindLayouts(py::module_& m) {
         out["ring_stations"] = layout.ring.stations;
         out["ring_tube_stations"] = layout.ring.tube_stations;
         out["post_height"] = layout.geometry.post_height;
+        out["post_radius"] = layout.geometry.post_radius;
         return out;
       },
       "the peg transfer's design values: its six jobs (ring, arm 0 left / 1 right, the start and "
       "target posts' x, y in m, in the order of the state's ring centres), the board's top z, "
       "the rings' centre-line radius, height and tube half-width, the stations the ring is "
-      "drawn with around it and around its tube, and the posts' height");
+      "drawn with around it and around its tube, and the posts' height and radius");
   m.def(
       "task_camera",
       [](int arm) {

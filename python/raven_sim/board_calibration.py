@@ -1,0 +1,99 @@
+"""A task camera's pose found from what it sees of the board: the board's top and the posts that
+stand on it, in its depth image. A camera mounted again by hand sits a few millimetres and a
+degree or two from where it was calibrated, and a ring seen through the old calibration is
+several millimetres off; the board and its posts do not move, so an episode's first depth image
+says where the camera is.
+
+The pose (the point it aims at, in the calibrated aim point's horizontal plane, the camera's yaw
+and pitch and its distance from that point; its roll and field of view are taken as calibrated)
+is fitted by robust least squares so that every pixel, taken back into the
+world through it, lies on the board's top or on a post. The rings' pixels are left out (a ring
+around a post would pull the camera onto it); pixels of anything else (the arms, the
+background) lie on neither and count little (soft L1, its scale narrowed from 5 mm to
+0.5 mm as the fit closes in). Only the posts fix the camera across the board, and they are
+narrow: their points weigh more, and the fit starts from the calibration and from poses around
+it, the cheapest kept.
+"""
+
+import itertools
+import math
+
+import numpy as np
+
+from .ring_fit import TaskCamera, ring_pixels
+
+POST_WEIGHT = 5.0  # a point on a post counts this many times one on the board's top
+# m: the soft L1 scales, coarse to fine (a camera a few millimetres off sees the posts that far)
+ROBUST_SCALES = (0.005, 0.0015, 0.0005)
+SCALES = np.array([0.001, 0.001, 0.01, 0.01, 0.001])  # m, m, rad, rad, m: the parameters' sizes
+FAR = 0.02  # m: a point farther than this from the board's top and every post is not the board's
+# The starts around the calibration: the aim point this far along x and y and the view turned
+# this much, each either way (as far as a camera mounted again by hand moves).
+START_SHIFT = 0.003  # m
+START_TURN = 0.03  # rad
+
+
+def camera_at(target, yaw, pitch, distance, fov_y):
+    """The camera looking at `target` from `distance` along yaw and pitch (viewer::Camera's
+    angles: the eye lies at the target plus distance (cos p cos y, cos p sin y, sin p))."""
+    back = np.array([math.cos(pitch) * math.cos(yaw), math.cos(pitch) * math.sin(yaw),
+                     math.sin(pitch)])
+    return TaskCamera(np.asarray(target) + distance * back, target, fov_y)
+
+
+def angles_of(camera):
+    """The yaw and pitch of a TaskCamera's view."""
+    back = -camera.forward
+    return math.atan2(back[1], back[0]), math.asin(back[2])
+
+
+def scene_distances(points, board_top, posts, post_radius, post_height):
+    """Each point's distance from the board's top or the nearest post (its side or its top),
+    whichever is nearer (m), a post's weighted by POST_WEIGHT, at most FAR."""
+    best = np.abs(points[:, 2] - board_top)
+    top = board_top + post_height
+    for x, y in posts:
+        across = np.hypot(points[:, 0] - x, points[:, 1] - y)
+        side = np.abs(across - post_radius) + np.maximum(points[:, 2] - top, 0.0)
+        cap = np.abs(points[:, 2] - top) + np.maximum(across - post_radius, 0.0)
+        post = np.minimum(side, cap)
+        near = (points[:, 2] > board_top + 0.001) & (post < best)
+        best = np.where(near, POST_WEIGHT * post, best)
+    return np.minimum(best, FAR)
+
+
+def calibrate(camera, rgb, depth, layout, posts):
+    """`camera` (the calibration: a TaskCamera with its target) moved to where its colour and
+    depth images (H, W, 3 and H, W: m along the axis) show the board (`layout`:
+    raven_sim.peg_layout(), with the posts' height and radius) and its `posts` (P, 2) to be."""
+    from scipy.optimize import least_squares
+    depth = np.asarray(depth, dtype=np.float64)
+    ring = ring_pixels(rgb)
+    ring[1:, :] |= ring[:-1, :].copy()  # and the pixels beside them: a ring's edge
+    ring[:-1, :] |= ring[1:, :].copy()
+    ring[:, 1:] |= ring[:, :-1].copy()
+    ring[:, :-1] |= ring[:, 1:].copy()
+    every = ~ring
+    height = camera.target[2]
+
+    def at(x):
+        return camera_at([x[0], x[1], height], x[2], x[3], x[4], camera.fov_y)
+
+    def residuals(x):
+        return scene_distances(at(x).points(depth, every), layout["board_top"], posts,
+                               layout["post_radius"], layout["post_height"])
+
+    def fitted(x):
+        for scale in ROBUST_SCALES:
+            fit = least_squares(residuals, x, loss="soft_l1", f_scale=scale, x_scale=SCALES,
+                                max_nfev=100)
+            x = fit.x
+        return fit.cost, x
+
+    calibrated = np.array([camera.target[0], camera.target[1], *angles_of(camera),
+                           np.linalg.norm(camera.eye - camera.target)])
+    starts = [calibrated] + [
+        calibrated + np.array([sx * START_SHIFT, sy * START_SHIFT, yaw * START_TURN, 0.0, 0.0])
+        for sx, sy, yaw in itertools.product((-1, 1), repeat=3)]
+    _, best = min((fitted(start) for start in starts), key=lambda fit: fit[0])
+    return at(best)
