@@ -20,7 +20,7 @@ the_rest=(
   pybind11-dev python3-dev
   python3-rosmaster rosout python3-roslaunch python3-rostopic python3-rosnode python3-rosbag
   python3-sensor-msgs python3-geometry-msgs
-  python3-rospy python3-pykdl python3-matplotlib python3-numpy python3-torch python3-h5py
+  python3-rospy python3-pykdl python3-matplotlib python3-numpy python3-torch python3-h5py python3-scipy
   xvfb xauth chromium chromium-driver python3-selenium
   clang libfuzzer-14-dev
   slurm-wlm parallel

@@ -12,15 +12,13 @@ test gives it rings a kilometre away in the state and it acts the same.
 
 import numpy as np
 
-from ._raven_sim import peg_layout, task_camera
+from ._raven_sim import task_camera
 from .board_calibration import calibrate
-from .imitation import LAYOUT, REST_Z, RINGS, Policy
+from .imitation import LAYOUT, REST_Z, Policy
 from .ring_fit import RingShape, RingTracker, TaskCamera
-from .vision import CAMERAS, image_key
+from .vision import CAMERAS, RING_ROWS, SeeingPolicy, image_key
 
 KIND = "image policy: rings fitted in each arm's RGB-D task camera + imitation.Policy"
-# Per arm: its rings' rows in the state, in the state's order.
-RING_ROWS = [[i for i, j in enumerate(LAYOUT["jobs"]) if j["arm"] == arm] for arm in (0, 1)]
 POSTS = np.array([p for j in LAYOUT["jobs"] for p in (j["from"], j["to"])])
 
 
@@ -28,13 +26,12 @@ def depth_key(arm):
     return f"{CAMERAS[arm]}/depth"
 
 
-class RgbdPolicy:
+class RgbdPolicy(SeeingPolicy):
     """Rings fitted in each arm's RGB-D task camera, then a state policy acting on them."""
 
     def __init__(self, policy, image_size=(128, 96)):
         self.policy, self.image_size = policy, tuple(image_size)
-        self.layout = peg_layout()
-        self.shape = RingShape.of_layout(self.layout)
+        self.shape = RingShape.of_layout(LAYOUT)
         self.cameras = [TaskCamera(**task_camera(arm)) for arm in (0, 1)]  # as calibrated
         self.reset()
 
@@ -46,7 +43,7 @@ class RgbdPolicy:
 
     def reset(self):
         """A new episode: the cameras to be found again from its first images."""
-        self.policy.reset()
+        super().reset()
         self.trackers = None
 
     def start(self, observation):
@@ -55,7 +52,7 @@ class RgbdPolicy:
         self.trackers = []
         for arm in (0, 1):
             camera = calibrate(self.cameras[arm], observation[image_key(arm)],
-                               observation[depth_key(arm)], self.layout, POSTS)
+                               observation[depth_key(arm)], LAYOUT, POSTS)
             starts = [[*LAYOUT["jobs"][i]["from"], REST_Z] for i in RING_ROWS[arm]]
             self.trackers.append(RingTracker(camera, self.shape, starts, POSTS))
 
@@ -71,11 +68,6 @@ class RgbdPolicy:
             rings[RING_ROWS[arm]] = self.trackers[arm].update(observation[image_key(arm)],
                                                               observation[depth_key(arm)])
         return rings.ravel()
-
-    def act(self, observation):
-        state = np.array(observation["state"], dtype=np.float64)
-        state[RINGS] = self.locate(observation)  # the true rings are not seen
-        return self.policy.act(state)
 
     def save(self, path, **about):
         import torch

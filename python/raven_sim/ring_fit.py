@@ -129,8 +129,11 @@ class RingTracker:
         posts' x, y."""
         self.camera, self.shape = camera, shape
         self.estimates = np.array(starts, dtype=np.float64)
-        self.posts = np.asarray(posts, dtype=np.float64)
+        self.posts = np.asarray(posts, dtype=np.float64).reshape(-1, 2)
         self.fitted_to = [None] * len(self.estimates)  # the points each estimate was fitted to
+        # Away from the camera in the board's plane: a ring's centre lies behind its visible half.
+        away = np.array([camera.forward[0], camera.forward[1], 0.0])
+        self.behind = FRONT_HALF * away / np.linalg.norm(away)
 
     def update(self, rgb, depth):
         """The rings (K, 3) after this image pair."""
@@ -167,14 +170,9 @@ class RingTracker:
         fits = [fit_ring(self.shape, points, last)]
         if math.sqrt(2.0 * fits[0][1] / len(points)) <= GOOD_FIT:
             return fits[0][0]
-        starts = [points.mean(axis=0) + FRONT_HALF * self.camera_depth_direction()]
+        starts = [points.mean(axis=0) + self.behind]
         to_post = np.linalg.norm(self.posts - last[:2], axis=1)
-        if to_post.min() < ABOVE_POST:
+        if len(to_post) and to_post.min() < ABOVE_POST:
             starts.append(np.array([*self.posts[to_post.argmin()], last[2]]))
         fits += [fit_ring(self.shape, points, start) for start in starts]
         return min(fits, key=lambda fit: fit[1])[0]
-
-    def camera_depth_direction(self):
-        """The camera's forward direction in the board's plane (unit)."""
-        flat = np.array([self.camera.forward[0], self.camera.forward[1], 0.0])
-        return flat / np.linalg.norm(flat)

@@ -12,7 +12,7 @@ import numpy as np
 from ._raven_sim import RobotOverRos, ring_placed
 from .imitation import LAYOUT
 from .rgbd_policy import RgbdPolicy, depth_key
-from .vision import CAMERAS, ImagePolicy, image_key, load_policy
+from .vision import CAMERAS, SeeingPolicy, image_key, load_policy
 
 TWIN_SCENE = "/peg_transfer/"  # the twin node's peg-transfer scene: its objects' topics
 
@@ -22,10 +22,6 @@ def twin_camera_topic(namespace, camera, depth=False):
     --cameras, --camera-depth)."""
     kind = "depth/image_raw" if depth else "image_raw"
     return f"{namespace.rstrip('/')}/cameras/{camera.replace('-', '_')}/{kind}"
-
-
-def sees(policy):
-    return isinstance(policy, (ImagePolicy, RgbdPolicy))
 
 
 def fitted(image, size):
@@ -81,12 +77,13 @@ def connect(args, policy):
     """The robot, its rings' topics and its cameras as --platform and the flags say."""
     scene = args.scene_namespace if args.scene_namespace is not None else (
         TWIN_SCENE if args.platform == "twin" else None)
-    if not sees(policy) and not scene:
+    sees = isinstance(policy, SeeingPolicy)
+    if not sees and not scene:
         sys.exit("run: a state policy reads the rings' poses; --scene-namespace names their topics "
                  "(a tracker's), or run an image policy")
     return RobotOverRos(robot_namespace=args.robot_namespace, arm_swap=not args.no_arm_swap,
                         scene_namespace=scene or None,
-                        camera_topics=camera_topics(args, policy) if sees(policy) else [],
+                        camera_topics=camera_topics(args, policy) if sees else [],
                         connect_timeout=args.connect_timeout)
 
 
@@ -95,7 +92,7 @@ def observe(robot, policy, seen):
     image taken in after `seen` (received() when the last step ended): the colour images, then
     an RGB-D policy's depth images."""
     observation = {"state": robot.observe()}
-    if sees(policy):
+    if isinstance(policy, SeeingPolicy):
         keys = [image_key(arm) for arm in (0, 1)] + [depth_key(arm) for arm in (0, 1)]
         for key, image in zip(keys, robot.images(seen)):
             observation[key] = fitted(image, policy.image_size)

@@ -100,7 +100,20 @@ def make_locator(channels=16, keypoints=32, hidden=256):
     return RingLocator()
 
 
-class ImagePolicy:
+class SeeingPolicy:
+    """A state policy acting on the rings a subclass's `locate(observation)` sees (the 18 ring
+    values of a state), never on the true ones; `policy` is the state policy."""
+
+    def reset(self):
+        self.policy.reset()
+
+    def act(self, observation):
+        state = np.array(observation["state"], dtype=np.float64)
+        state[RINGS] = self.locate(observation)  # the true rings are not seen
+        return self.policy.act(state)
+
+
+class ImagePolicy(SeeingPolicy):
     """Rings located from each arm's task camera, then a state policy acting on them."""
 
     def __init__(self, locator, policy, image_size):
@@ -110,9 +123,6 @@ class ImagePolicy:
     def env_kwargs(self):
         """The observations this policy needs of PegTransferEnv."""
         return {"obs": ("state", "rgb"), "camera": list(CAMERAS), "image_size": self.image_size}
-
-    def reset(self):
-        self.policy.reset()
 
     def fresh(self):
         return ImagePolicy(self.locator, self.policy.fresh(), self.image_size)
@@ -128,11 +138,6 @@ class ImagePolicy:
         for arm in (0, 1):
             rings[RING_ROWS[arm]] = rings_in_world(seen[arm], arm)
         return rings.ravel()
-
-    def act(self, observation):
-        state = np.array(observation["state"], dtype=np.float64)
-        state[RINGS] = self.locate(observation)  # the true rings are not seen
-        return self.policy.act(state)
 
     def save(self, path, **about):
         import torch

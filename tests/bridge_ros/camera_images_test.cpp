@@ -140,23 +140,41 @@ TEST(CameraImagesOverRos, TheLatestImageAfterACountAndARefusedOneNamed) {
   }
 }
 
-TEST(CameraImagesOverRos, TheTwinNodesTaskCamerasReachAPolicysClient) {
-  twin::TwinOptions options;
-  options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
-  options.clock = bridge::ClockKind::Simulated;
-  twin::TwinPlatform twin(options);
-  std::optional<twin::ros1::CameraTopics> cameras;
-  try {
-    cameras.emplace(twin.world(),
-                    twin::ros1::CameraTopicOptions{{"left-task", "right-task"}, 64, 48, 10.0});
-  } catch (const viewer::NoDisplay& e) {
-    GTEST_SKIP() << "no headless OpenGL here: " << e.what();
+/// The peg-transfer twin on the simulated clock, and its camera topics once start() made them.
+class TwinNodeCameras : public ::testing::Test {
+ protected:
+  static twin::TwinOptions pegTransfer() {
+    twin::TwinOptions options;
+    options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
+    options.clock = bridge::ClockKind::Simulated;
+    return options;
+  }
+
+  /// The topics of `options`' views; empty, saying why in `no_display_`, without headless GL.
+  bool start(const twin::ros1::CameraTopicOptions& options) {
+    try {
+      cameras_.emplace(twin_.world(), options);
+      return true;
+    } catch (const viewer::NoDisplay& e) {
+      no_display_ = e.what();
+      return false;
+    }
+  }
+
+  twin::TwinPlatform twin_{pegTransfer()};
+  std::optional<twin::ros1::CameraTopics> cameras_;
+  std::string no_display_;
+};
+
+TEST_F(TwinNodeCameras, TheTwinNodesTaskCamerasReachAPolicysClient) {
+  if (!start({{"left-task", "right-task"}, 64, 48, 10.0})) {
+    GTEST_SKIP() << "no headless OpenGL here: " << no_display_;
   }
   EXPECT_EQ(twin::ros1::CameraTopics::topicOf("left-task"), "cameras/left_task/image_raw");
   bridge::ros1::RosCameraImages images({{ros::names::resolve("cameras/left_task/image_raw"),
                                          ros::names::resolve("cameras/right_task/image_raw")},
                                         5.0});
-  cameras->update(twin.world(), 0.0, 0.0);
+  cameras_->update(twin_.world(), 0.0, 0.0);
   const CameraFrame left = images.latest(0, 0);
   const CameraFrame right = images.latest(1, 0);
   ASSERT_EQ(left.width, 64);
@@ -167,25 +185,16 @@ TEST(CameraImagesOverRos, TheTwinNodesTaskCamerasReachAPolicysClient) {
   EXPECT_GT(*brightest - *darkest, 100);  // a scene, not a blank
 }
 
-TEST(CameraImagesOverRos, AnRgbdTwinNodePublishesEachViewsDepthBesideItsColour) {
-  twin::TwinOptions options;
-  options.launch_file = raven::modelDirectory() / "peg_transfer" / "launch.yaml";
-  options.clock = bridge::ClockKind::Simulated;
-  twin::TwinPlatform twin(options);
-  std::optional<twin::ros1::CameraTopics> cameras;
+TEST_F(TwinNodeCameras, AnRgbdTwinNodePublishesEachViewsDepthBesideItsColour) {
   twin::ros1::CameraTopicOptions rgbd{{"left-task"}, 64, 48, 10.0};
   rgbd.depth = true;
-  try {
-    cameras.emplace(twin.world(), rgbd);
-  } catch (const viewer::NoDisplay& e) {
-    GTEST_SKIP() << "no headless OpenGL here: " << e.what();
-  }
+  if (!start(rgbd)) GTEST_SKIP() << "no headless OpenGL here: " << no_display_;
   EXPECT_EQ(twin::ros1::CameraTopics::depthTopicOf("left-task"),
             "cameras/left_task/depth/image_raw");
   bridge::ros1::RosCameraImages images({{ros::names::resolve("cameras/left_task/image_raw"),
                                          ros::names::resolve("cameras/left_task/depth/image_raw")},
                                         5.0});
-  cameras->update(twin.world(), 0.0, 0.0);
+  cameras_->update(twin_.world(), 0.0, 0.0);
   const CameraFrame colour = images.latest(0, 0);
   const CameraFrame depth = images.latest(1, 0);
   EXPECT_EQ(colour.rgb.size(), 64u * 48 * 3);

@@ -16,6 +16,7 @@ import numpy as np
 import raven_sim
 from raven_sim import board_calibration, imitation, learn, rgbd_policy, vision
 from raven_sim.ring_fit import RingShape, RingTracker, TaskCamera, facet_scale, fit_ring
+from vision_test import task_cameras
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
 SHIPPED_STATE = os.path.join(ROOT, "python", "policies", "bc_state.pt")
@@ -89,29 +90,18 @@ class RingFit(unittest.TestCase):
         lying = np.array([-0.30, 0.08, -0.1995])
         seen = surface_points(SMOOTH, lying, toward=np.array([0, -0.7, 0.7]), count=150)
         other = np.array([-0.334, 0.058, -0.1995])  # another ring, where it is seen
-        near_other = surface_points(SMOOTH, other, toward=np.array([0, -0.7, 0.7]), count=150)
         camera = TaskCamera([-0.3, -0.05, 0.0], [-0.3, 0.08, -0.19], 0.6)
         carried = lying + [0.0, 0.0, 0.027]  # last seen in the jaws, 27 mm up: beyond the gate
         tracker = RingTracker(camera, SMOOTH, [carried, other], [])
-        apart = seen  # none of these lies within the gate of either ring
-        found = tracker.fallen(apart, 0)
+        found = tracker.fallen(seen, 0)  # none of these lies within the gate of either ring
         self.assertEqual(len(found), len(seen))
         self.assertLess(np.linalg.norm(tracker.best_fit(found, carried) - lying), 1e-4)
         self.assertEqual(len(tracker.fallen(seen[:5], 0)), 0)  # too few to be a ring
-        self.assertEqual(len(tracker.fallen(near_other[:0], 0)), 0)
 
 
 def rgbd_cameras(seed, size=(128, 96), randomize=True):
     """An environment with both arms' RGB-D task cameras and its first observation."""
-    try:
-        env = raven_sim.PegTransferEnv(action_type="joint_deltas", randomize=randomize,
-                                       obs=("state", "rgb", "depth"),
-                                       camera=list(vision.CAMERAS), image_size=size)
-        return env, env.reset(seed=seed)[0]
-    except RuntimeError as e:
-        if "EGL" in str(e) or "headless" in str(e):
-            raise unittest.SkipTest(f"no headless OpenGL: {e}")
-        raise
+    return task_cameras(size, ("state", "rgb", "depth"), seed, randomize)
 
 
 class RenderedRings(unittest.TestCase):

@@ -48,60 +48,59 @@ class RunRefusesWhatItCannotDo(unittest.TestCase):
         self.assertIn("--scene-namespace", run.stderr)
 
 
-class RunOnTheTwinNode(unittest.TestCase):
-    """The image policy drives the twin node (the robot's motor-level actuation, real time) from
-    its camera topics; the node's ring topics judge."""
+class PolicyOnATwinNode:
+    """A policy run against a raven_twin_node of its own (another process, real time, the
+    robot's motor-level actuation, both task cameras); the node's ring topics judge. A subclass
+    names the node's namespace and its extra arguments."""
+
+    NAMESPACE = ""
+    NODE_ARGS = ()
 
     @classmethod
     def setUpClass(cls):
         if not NODE:
             raise unittest.SkipTest("no raven_twin_node given")
         cls.master = RosMaster()
-        cls.node = TwinNode(NODE, cls.master.dir.name, "/r1", "--launch", SCENE,
-                            "--soft-body-sleep", "--cameras", "left-task,right-task")
+        cls.node = TwinNode(NODE, cls.master.dir.name, cls.NAMESPACE, "--launch", SCENE,
+                            "--soft-body-sleep", "--cameras", "left-task,right-task",
+                            *cls.NODE_ARGS)
 
     @classmethod
     def tearDownClass(cls):
         cls.node.stop()
         cls.master.stop()
+
+    def assert_places(self, policy, seconds, least):
+        """`learn run --policy policy` for `seconds` of the node's clock ends with "placed N
+        rings", N at least `least`."""
+        run = learn("run", "--policy", os.path.join(POLICIES, policy), "--platform", "twin",
+                    "--robot-namespace", self.NAMESPACE, "--time-limit", str(seconds),
+                    "--connect-timeout", "30")
+        self.assertEqual(run.returncode, 0, run.stderr[-3000:])
+        last = run.stdout.strip().splitlines()[-1]
+        found = re.fullmatch(r"placed (\d) rings", last)
+        self.assertIsNotNone(found, run.stdout)
+        self.assertGreaterEqual(int(found.group(1)), least, run.stdout + self.node.output()[-2000:])
+
+
+class RunOnTheTwinNode(PolicyOnATwinNode, unittest.TestCase):
+    """The image policy drives the twin node from its camera topics."""
+
+    NAMESPACE = "/r1"
 
     def test_the_image_policy_places_rings_through_the_robots_interface(self):
-        run = learn("run", "--policy", os.path.join(POLICIES, "bc_rgb.pt"), "--platform", "twin",
-                    "--robot-namespace", "/r1", "--time-limit", "120", "--connect-timeout", "30")
-        self.assertEqual(run.returncode, 0, run.stderr[-3000:])
-        last = run.stdout.strip().splitlines()[-1]
-        found = re.fullmatch(r"placed (\d) rings", last)
-        self.assertIsNotNone(found, run.stdout)
-        self.assertGreaterEqual(int(found.group(1)), 1, run.stdout + self.node.output()[-2000:])
+        self.assert_places("bc_rgb.pt", 120, 1)
 
 
-class RunRgbdOnTheTwinNode(unittest.TestCase):
+class RunRgbdOnTheTwinNode(PolicyOnATwinNode, unittest.TestCase):
     """The RGB-D image policy drives the twin node from its colour and depth camera topics (the
-    node renders both, as an RGB-D camera's driver publishes them); the node's ring topics
-    judge."""
+    node renders both, as an RGB-D camera's driver publishes them)."""
 
-    @classmethod
-    def setUpClass(cls):
-        if not NODE:
-            raise unittest.SkipTest("no raven_twin_node given")
-        cls.master = RosMaster()
-        cls.node = TwinNode(NODE, cls.master.dir.name, "/r2", "--launch", SCENE,
-                            "--soft-body-sleep", "--cameras", "left-task,right-task",
-                            "--camera-depth")
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.node.stop()
-        cls.master.stop()
+    NAMESPACE = "/r2"
+    NODE_ARGS = ("--camera-depth",)
 
     def test_the_rgbd_policy_places_four_rings_through_the_robots_interface(self):
-        run = learn("run", "--policy", os.path.join(POLICIES, "bc_rgbd.pt"), "--platform", "twin",
-                    "--robot-namespace", "/r2", "--time-limit", "240", "--connect-timeout", "30")
-        self.assertEqual(run.returncode, 0, run.stderr[-3000:])
-        last = run.stdout.strip().splitlines()[-1]
-        found = re.fullmatch(r"placed (\d) rings", last)
-        self.assertIsNotNone(found, run.stdout)
-        self.assertGreaterEqual(int(found.group(1)), 4, run.stdout + self.node.output()[-2000:])
+        self.assert_places("bc_rgbd.pt", 240, 4)
 
 
 if __name__ == "__main__":

@@ -46,12 +46,13 @@ def scene_with_maximal_arms(directory):
     return launch
 
 
-def task_cameras(size=(32, 24), obs=("state", "rgb")):
-    """An environment with both arms' task cameras and its first observation."""
+def task_cameras(size=(32, 24), obs=("state", "rgb"), seed=3, randomize=True):
+    """An environment with both arms' task cameras and its first observation (skips without
+    headless OpenGL)."""
     try:
-        env = raven_sim.PegTransferEnv(action_type="joint_deltas", randomize=True, obs=obs,
+        env = raven_sim.PegTransferEnv(action_type="joint_deltas", randomize=randomize, obs=obs,
                                        camera=list(vision.CAMERAS), image_size=size)
-        return env, env.reset(seed=3)[0]
+        return env, env.reset(seed=seed)[0]
     except RuntimeError as e:
         if "EGL" in str(e) or "headless" in str(e):
             raise unittest.SkipTest(f"no headless OpenGL: {e}")

@@ -79,7 +79,7 @@ float depthAt(const std::uint8_t* at, const DepthLayout& layout, bool big_endian
   }
   float value = 0.0f;
   std::memcpy(&value, b.data(), sizeof(value));  // little-endian hosts (x86, ARM)
-  return value;
+  return static_cast<float>(value * layout.metres);
 }
 
 Parsed<CameraFrame> depthFromImage(const sensor_msgs::Image& message, const DepthLayout& layout) {
