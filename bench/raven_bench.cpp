@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
       {"memory", bench::measureMemory},         {"micro", bench::measureMicro},
       {"python", bench::measurePython},         {"cameras", bench::measureCameras},
       {"snapshots", bench::measureSnapshots},   {"soak", bench::measureSoak},
-      {"training", bench::measureTraining}};
+      {"training", bench::measureTraining},     {"robustness", bench::measurePolicyRobustness}};
   std::vector<std::string> names;
   for (const auto& section : sections) names.push_back(section.first);
 

@@ -49,5 +49,7 @@ void measureSoak(const BenchSettings& settings, Report& report);
 void measureForces(const BenchSettings& settings, Report& report);
 /// Learning at full size: demonstrations, training and success of the state policy.
 void measureTraining(const BenchSettings& settings, Report& report);
+/// A policy's robustness: the image policy at the ranges' edges against the nominal scene.
+void measurePolicyRobustness(const BenchSettings& settings, Report& report);
 
 }  // namespace bench

@@ -9,6 +9,7 @@
 
 #include "child_output.hpp"
 #include "harness/temp_dir.hpp"
+#include "placed_rings.hpp"
 #include "sections.hpp"
 
 namespace bench {
@@ -34,23 +35,20 @@ void measure(const BenchSettings& s, Report& report, const Retraining& r) {
     return;
   }
   const std::regex times(R"(recorded in (\d+) s, trained in (\d+) s)");
-  const std::regex placed(R"(placed (\d+)/(\d+) rings; (\d+)/(\d+) episodes all six)");
   std::smatch m;
   for (const std::string& line : *lines) {
-    if (std::regex_search(line, m, times)) {
-      report.add(measured(kSection, fmt::format("{}: expert demonstrations, {}", r.policy, r.demos),
-                          Spread::of({std::stod(m[1])}), "s", "two recordings side by side"));
-      report.add(measured(kSection, fmt::format("{}: {}", r.policy, r.training),
-                          Spread::of({std::stod(m[2])}), "s", "torch on the CPU, 2 threads"));
-    } else if (std::regex_search(line, m, placed)) {
-      const double share = 100.0 * std::stod(m[1]) / std::stod(m[2]);
-      const std::string what = fmt::format("{}/{} rings; {}/{} episodes all six", m[1].str(),
-                                           m[2].str(), m[3].str(), m[4].str());
-      const std::string row = fmt::format("{}: rings placed on unseen seeds 1-20", r.policy);
-      report.add(r.target_percent > 0.0
-                     ? atLeast(kSection, row, Spread::of({share}), "%", r.target_percent, what)
-                     : measured(kSection, row, Spread::of({share}), "%", what));
-    }
+    if (!std::regex_search(line, m, times)) continue;
+    report.add(measured(kSection, fmt::format("{}: expert demonstrations, {}", r.policy, r.demos),
+                        Spread::of({std::stod(m[1])}), "s", "two recordings side by side"));
+    report.add(measured(kSection, fmt::format("{}: {}", r.policy, r.training),
+                        Spread::of({std::stod(m[2])}), "s", "torch on the CPU, 2 threads"));
+  }
+  if (const auto placed = placedRingsIn(*lines)) {
+    const std::string row = fmt::format("{}: rings placed on unseen seeds 1-20", r.policy);
+    const Spread share = Spread::of({placed->percent()});
+    report.add(r.target_percent > 0.0
+                   ? atLeast(kSection, row, share, "%", r.target_percent, placed->summary())
+                   : measured(kSection, row, share, "%", placed->summary()));
   }
 }
 

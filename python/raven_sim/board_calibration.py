@@ -6,7 +6,9 @@ says where the camera is.
 
 The pose (the point it aims at, in the calibrated aim point's horizontal plane, the camera's yaw
 and pitch and its distance from that point; its roll and field of view are taken as calibrated)
-is fitted by robust least squares so that every pixel, taken back into the
+and the depth's scale (a stereo camera's depth is off by up to 2 %, Intel's figure for its D400
+series: 4 mm at the task cameras' 0.2 m, which moves every ring 0.8 mm; the board's posts,
+spread across the image, tell a scaled depth from a camera moved back) are fitted by robust least squares so that every pixel, taken back into the
 world through it, lies on the board's top or on a post. The rings' pixels are left out (a ring
 around a post would pull the camera onto it); pixels of anything else (the arms, the
 background) lie on neither and count little (soft L1, its scale narrowed from 5 mm to
@@ -25,20 +27,27 @@ from .ring_fit import TaskCamera, ring_pixels
 POST_WEIGHT = 5.0  # a point on a post counts this many times one on the board's top
 # m: the soft L1 scales, coarse to fine (a camera a few millimetres off sees the posts that far)
 ROBUST_SCALES = (0.005, 0.0015, 0.0005)
-SCALES = np.array([0.001, 0.001, 0.01, 0.01, 0.001])  # m, m, rad, rad, m: the parameters' sizes
+# the parameters' sizes: m, m, rad, rad, m and the depth's scale
+SCALES = np.array([0.001, 0.001, 0.01, 0.01, 0.001, 0.01])
 FAR = 0.02  # m: a point farther than this from the board's top and every post is not the board's
 # The starts around the calibration: the aim point this far along x and y and the view turned
 # this much, each either way (as far as a camera mounted again by hand moves).
 START_SHIFT = 0.003  # m
 START_TURN = 0.03  # rad
+# How far the fit may take the camera's distance and its depth's scale from the calibration's
+# (factors): a camera a hand mounts again, a depth camera's bias of a few per cent. Unbounded,
+# both run off to where every point collapses onto one point of the board (a distance of 0 and
+# a scale of 10).
+DISTANCE_RANGE = (0.8, 1.25)
+DEPTH_SCALE_RANGE = (0.95, 1.05)
 
 
-def camera_at(target, yaw, pitch, distance, fov_y):
+def camera_at(target, yaw, pitch, distance, fov_y, depth_scale=1.0):
     """The camera looking at `target` from `distance` along yaw and pitch (viewer::Camera's
     angles: the eye lies at the target plus distance (cos p cos y, cos p sin y, sin p))."""
     back = np.array([math.cos(pitch) * math.cos(yaw), math.cos(pitch) * math.sin(yaw),
                      math.sin(pitch)])
-    return TaskCamera(np.asarray(target) + distance * back, target, fov_y)
+    return TaskCamera(np.asarray(target) + distance * back, target, fov_y, depth_scale)
 
 
 def angles_of(camera):
@@ -63,8 +72,8 @@ def scene_distances(points, board_top, posts, post_radius, post_height):
 
 
 def calibrate(camera, rgb, depth, layout, posts):
-    """`camera` (the calibration: a TaskCamera with its target) moved to where its colour and
-    depth images (H, W, 3 and H, W: m along the axis) show the board (`layout`:
+    """`camera` (the calibration: a TaskCamera with its target) moved, and its depth's scale
+    found, to where its colour and depth images (H, W, 3 and H, W: m along the axis) show the board (`layout`:
     raven_sim.peg_layout(), with the posts' height and radius) and its `posts` (P, 2) to be."""
     from scipy.optimize import least_squares
     depth = np.asarray(depth, dtype=np.float64)
@@ -77,7 +86,7 @@ def calibrate(camera, rgb, depth, layout, posts):
     height = camera.target[2]
 
     def at(x):
-        return camera_at([x[0], x[1], height], x[2], x[3], x[4], camera.fov_y)
+        return camera_at([x[0], x[1], height], x[2], x[3], x[4], camera.fov_y, x[5])
 
     def residuals(x):
         return scene_distances(at(x).points(depth, every), layout["board_top"], posts,
@@ -85,15 +94,18 @@ def calibrate(camera, rgb, depth, layout, posts):
 
     def fitted(x):
         for scale in ROBUST_SCALES:
-            fit = least_squares(residuals, x, loss="soft_l1", f_scale=scale, x_scale=SCALES,
-                                max_nfev=100)
+            fit = least_squares(residuals, x, bounds=bounds, loss="soft_l1", f_scale=scale,
+                                x_scale=SCALES, max_nfev=100)
             x = fit.x
         return fit.cost, x
 
     calibrated = np.array([camera.target[0], camera.target[1], *angles_of(camera),
-                           np.linalg.norm(camera.eye - camera.target)])
+                           np.linalg.norm(camera.eye - camera.target), camera.depth_scale])
+    free = np.full(4, np.inf)
+    bounds = (np.concatenate([-free, [calibrated[4] * DISTANCE_RANGE[0], DEPTH_SCALE_RANGE[0]]]),
+              np.concatenate([free, [calibrated[4] * DISTANCE_RANGE[1], DEPTH_SCALE_RANGE[1]]]))
     starts = [calibrated] + [
-        calibrated + np.array([sx * START_SHIFT, sy * START_SHIFT, yaw * START_TURN, 0.0, 0.0])
+        calibrated + np.array([sx * START_SHIFT, sy * START_SHIFT, yaw * START_TURN, 0, 0, 0])
         for sx, sy, yaw in itertools.product((-1, 1), repeat=3)]
     _, best = min((fitted(start) for start in starts), key=lambda fit: fit[0])
     return at(best)

@@ -91,7 +91,9 @@ class TaskCamera:
     """A calibrated camera: its eye, where it looks and its vertical field of view (the twin's
     raven_sim.task_camera(name), or a real camera's calibration)."""
 
-    def __init__(self, eye, target, fov_y):
+    def __init__(self, eye, target, fov_y, depth_scale=1.0):
+        """`depth_scale`: what its depth reads per metre (an RGB-D camera's depth bias)."""
+        self.depth_scale = float(depth_scale)
         self.eye = np.asarray(eye, dtype=np.float64)
         self.target = np.asarray(target, dtype=np.float64)
         forward = self.target - self.eye
@@ -106,7 +108,7 @@ class TaskCamera:
         axis), rows top first."""
         height, width = depth.shape
         rows, cols = np.nonzero(mask & np.isfinite(depth))
-        along = depth[rows, cols].astype(np.float64)
+        along = depth[rows, cols].astype(np.float64) / self.depth_scale
         half = math.tan(self.fov_y / 2)
         right = (2 * (cols + 0.5) / width - 1) * half * width / height * along
         up = (1 - 2 * (rows + 0.5) / height) * half * along

@@ -76,6 +76,8 @@ PegCameras::PegCameras(const ambf_like::World& world, const std::vector<std::str
   look_.light = static_cast<float>(look.light);
   look_.body_tint = look.body_tint.cast<float>();
   look_.soft_tint = look.ring_tint.cast<float>();
+  depth_errors_ = {look.depth_noise, look.depth_scale, look.depth_baseline};
+  seed_ = look.seed;
   sensor_ = std::make_unique<viewer::CameraSensor>(
       world, width, height,
       [&](const viewer::SceneGeometry& geometry) {
@@ -87,8 +89,12 @@ PegCameras::PegCameras(const ambf_like::World& world, const std::vector<std::str
 std::vector<viewer::CameraImages> PegCameras::render(const ambf_like::World& world, bool rgb,
                                                      bool depth, bool segmentation) {
   std::vector<viewer::CameraImages> out;
-  for (const viewer::View& view : views_) {
-    out.push_back(sensor_->render(world, view, rgb, depth, segmentation, look_));
+  for (std::size_t i = 0; i < views_.size(); ++i) {
+    viewer::CameraImages images =
+        sensor_->render(world, views_[i], rgb, depth, segmentation, look_);
+    viewer::applyStereoErrors(images.depth, images.width, images.height, views_[i].camera.fov_y,
+                              depth_errors_, viewer::depthNoiseKey(seed_, i, world.time()));
+    out.push_back(std::move(images));
   }
   return out;
 }

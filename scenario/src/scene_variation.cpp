@@ -46,6 +46,10 @@ SceneVariation SceneVariation::draw(std::uint64_t seed, const VariationRanges& r
   v.light = within(r.light);
   for (int i = 0; i < 3; ++i) v.ring_tint(i) = within(r.tint);
   for (int i = 0; i < 3; ++i) v.body_tint(i) = within(r.tint);
+  // The depth camera's errors after the look, so a seed's look is the same whatever they are.
+  v.depth_noise = within(r.depth_noise);
+  v.depth_scale = within(r.depth_scale);
+  v.depth_baseline = within(r.depth_baseline);
   return v;
 }
 
@@ -110,6 +114,9 @@ nlohmann::json SceneVariation::json() const {
   j["light"] = light;
   j["ring_tint"] = {ring_tint.x(), ring_tint.y(), ring_tint.z()};
   j["body_tint"] = {body_tint.x(), body_tint.y(), body_tint.z()};
+  j["depth_noise_m"] = depth_noise;
+  j["depth_scale"] = depth_scale;
+  j["depth_baseline_m"] = depth_baseline;
   j["actuation_sd"] = actuation_sd;
   for (raven::Arm arm : raven::kArms) {
     for (std::size_t k = 0; k < twin::MotorMechanics::kNames.size(); ++k) {

@@ -15,10 +15,10 @@ namespace scenario {
 
 namespace {
 
-constexpr std::array<std::string_view, 11> kKeys{
-    "ring_offset",  "ring_kDF",     "ring_shore_a", "board_friction",
-    "actuation_sd", "camera_shift", "camera_turn",  "camera_distance",
-    "light",        "tint",         "at_edges"};
+constexpr std::array<std::string_view, 14> kKeys{
+    "ring_offset",  "ring_kDF",    "ring_shore_a",    "board_friction", "actuation_sd",
+    "camera_shift", "camera_turn", "camera_distance", "light",          "tint",
+    "depth_noise",  "depth_scale", "depth_baseline",  "at_edges"};
 
 /// The [low, high] at `key`, within [least, most], if the key is there.
 void readRange(const common::YamlView& node, const char* key, double least, double most,
@@ -63,6 +63,9 @@ VariationRanges readVariationRanges(const std::filesystem::path& file) {
   readRange(root, "camera_distance", kLeastFactor, kUnbounded, r.camera_distance);
   readRange(root, "light", kLeastFactor, kUnbounded, r.light);
   readRange(root, "tint", kLeastFactor, kUnbounded, r.tint);
+  readRange(root, "depth_noise", 0.0, kUnbounded, r.depth_noise);
+  readRange(root, "depth_scale", kLeastFactor, kUnbounded, r.depth_scale);
+  readRange(root, "depth_baseline", 0.0, kUnbounded, r.depth_baseline);
   if (const auto edges = root.find("at_edges")) r.at_edges = edges->asBool();
   return r;
 }

@@ -13,6 +13,7 @@
 #include "bridge/ros/ros_camera_images.hpp"
 #include "bridge/ros/ros_image_publisher.hpp"
 #include "raven/platform_profile.hpp"
+#include "scenario/peg_cameras.hpp"
 #include "twin/ros/camera_topics.hpp"
 #include "twin/twin_platform.hpp"
 #include "viewer/viewer.hpp"
@@ -150,6 +151,16 @@ class TwinNodeCameras : public ::testing::Test {
     return options;
   }
 
+  /// `views` at 64 x 48, 10 frames a second, colour only.
+  static twin::ros1::CameraTopicOptions small(std::vector<std::string> views) {
+    twin::ros1::CameraTopicOptions options;
+    options.views = std::move(views);
+    options.width = 64;
+    options.height = 48;
+    options.rate = 10.0;
+    return options;
+  }
+
   /// The topics of `options`' views; empty, saying why in `no_display_`, without headless GL.
   bool start(const twin::ros1::CameraTopicOptions& options) {
     try {
@@ -167,7 +178,7 @@ class TwinNodeCameras : public ::testing::Test {
 };
 
 TEST_F(TwinNodeCameras, TheTwinNodesTaskCamerasReachAPolicysClient) {
-  if (!start({{"left-task", "right-task"}, 64, 48, 10.0})) {
+  if (!start(small({"left-task", "right-task"}))) {
     GTEST_SKIP() << "no headless OpenGL here: " << no_display_;
   }
   EXPECT_EQ(twin::ros1::CameraTopics::topicOf("left-task"), "cameras/left_task/image_raw");
@@ -186,7 +197,7 @@ TEST_F(TwinNodeCameras, TheTwinNodesTaskCamerasReachAPolicysClient) {
 }
 
 TEST_F(TwinNodeCameras, AnRgbdTwinNodePublishesEachViewsDepthBesideItsColour) {
-  twin::ros1::CameraTopicOptions rgbd{{"left-task"}, 64, 48, 10.0};
+  twin::ros1::CameraTopicOptions rgbd = small({"left-task"});
   rgbd.depth = true;
   if (!start(rgbd)) GTEST_SKIP() << "no headless OpenGL here: " << no_display_;
   EXPECT_EQ(twin::ros1::CameraTopics::depthTopicOf("left-task"),
@@ -203,6 +214,28 @@ TEST_F(TwinNodeCameras, AnRgbdTwinNodePublishesEachViewsDepthBesideItsColour) {
   const float middle = depth.depth[24 * 64 + 32];
   EXPECT_GT(middle, 0.15f);
   EXPECT_LT(middle, 0.30f);
+}
+
+TEST_F(TwinNodeCameras, ItsDepthCanReadAsAStereoCameraReadsIt) {
+  twin::ros1::CameraTopicOptions biased = small({"left-task"});
+  biased.depth = true;
+  biased.depth_scale = 1.02;  // a depth camera's 2 % bias, nothing else
+  if (!start(biased)) GTEST_SKIP() << "no headless OpenGL here: " << no_display_;
+  bridge::ros1::RosCameraImages images(
+      {{ros::names::resolve("cameras/left_task/depth/image_raw")}, 5.0});
+  cameras_->update(twin_.world(), 0.0, 0.0);
+  const std::vector<float> read = images.latest(0, 0).depth;
+  const std::vector<float> exact = scenario::PegCameras(twin_.world(), {"left-task"}, 64, 48)
+                                       .render(twin_.world(), false, true, false)[0]
+                                       .depth;
+  ASSERT_EQ(read.size(), exact.size());
+  int seen = 0;
+  for (std::size_t i = 0; i < exact.size(); ++i) {
+    if (!std::isfinite(exact[i])) continue;
+    EXPECT_FLOAT_EQ(read[i], 1.02f * exact[i]) << "pixel " << i;
+    ++seen;
+  }
+  EXPECT_GT(seen, 1000);
 }
 
 }  // namespace

@@ -157,6 +157,29 @@ class CameraFoundFromTheBoard(unittest.TestCase):
             self.assertGreater(errors[0], 0.003, arm)  # the old calibration: millimetres off
             self.assertLess(errors[1], 2e-4, arm)
 
+    def test_a_stereo_cameras_depth_scale_is_found_with_its_pose(self):
+        # Seed 5 at depth.yaml's edges: each depth read 2 % long (4 mm at 0.2 m, every ring
+        # 0.8 mm off unless found), its noise and the shadows of a 55 mm baseline besides. Left
+        # free, the fit ran to a camera at its aim point with a tenfold scale, every point
+        # collapsed onto the board (rings 60-160 mm off).
+        env, o = rgbd_cameras(seed=5, randomize=os.path.join(ROOT, "scenario", "ranges",
+                                                             "depth.yaml"))
+        drawn = env.reset(seed=5)[1]["variation"]
+        self.assertEqual(drawn["depth_scale"], 1.02)
+        true = o["state"][imitation.RINGS].reshape(6, 3)
+        layout = raven_sim.peg_layout()
+        for arm in (0, 1):
+            found = board_calibration.calibrate(TaskCamera(**raven_sim.task_camera(arm)),
+                                                o[vision.image_key(arm)],
+                                                o[rgbd_policy.depth_key(arm)], layout,
+                                                rgbd_policy.POSTS)
+            self.assertAlmostEqual(found.depth_scale, drawn["depth_scale"], delta=0.001)
+            rows = rgbd_policy.RING_ROWS[arm]
+            tracker = RingTracker(found, RingShape.of_layout(layout), true[rows],
+                                  rgbd_policy.POSTS)
+            seen = tracker.update(o[vision.image_key(arm)], o[rgbd_policy.depth_key(arm)])
+            self.assertLess(np.linalg.norm(seen - true[rows], axis=1).max(), 2e-4, arm)
+
 
 class ShippedRgbdPolicy(unittest.TestCase):
     def test_the_shipped_rgbd_policy_places_rings_on_an_unseen_seed(self):

@@ -86,6 +86,41 @@ TEST(VariationRanges, TheCamerasLookIsDrawnWithinItsRanges) {
   EXPECT_EQ(edges.actuation_sd, scenario::VariationRanges{}.actuation_sd);
 }
 
+TEST(VariationRanges, TheDepthCamerasErrorsAreDrawnWithinTheirRangesAndChangeNothingElse) {
+  harness::TempDir dir;
+  const auto r =
+      readVariationRanges(dir.write("depth.yaml",
+                                    "depth_noise: [0.001, 0.004]\ndepth_scale: [0.98, 1.02]\n"
+                                    "depth_baseline: [0.018, 0.055]\n"));
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const auto v = scenario::SceneVariation::draw(seed, r);
+    EXPECT_GE(v.depth_noise, 0.001);
+    EXPECT_LE(v.depth_noise, 0.004);
+    EXPECT_GE(v.depth_scale, 0.98);
+    EXPECT_LE(v.depth_scale, 1.02);
+    EXPECT_GE(v.depth_baseline, 0.018);
+    EXPECT_LE(v.depth_baseline, 0.055);
+    EXPECT_EQ(v.json()["depth_scale"], v.depth_scale);
+    // Drawn last: the same seed's scene, motors and look as without them.
+    auto same = v.json(), plain = scenario::SceneVariation::draw(seed, {}).json();
+    for (const char* key : {"depth_noise_m", "depth_scale", "depth_baseline_m"}) {
+      same.erase(key);
+      plain.erase(key);
+    }
+    EXPECT_EQ(same, plain);
+  }
+  // Exact depth unless a file says otherwise.
+  const auto shipped = scenario::SceneVariation::draw(3, {});
+  EXPECT_EQ(shipped.depth_noise, 0.0);
+  EXPECT_EQ(shipped.depth_scale, 1.0);
+  EXPECT_EQ(shipped.depth_baseline, 0.0);
+  const auto depth = readVariationRanges(std::string(RAVEN_RANGES_DIR) + "/depth.yaml");
+  EXPECT_TRUE(depth.at_edges);
+  EXPECT_GT(depth.depth_noise[1], 0.0);
+  EXPECT_NE(errorFor("depth_noise: [-0.001, 0.002]\n").find("depth_noise"), std::string::npos);
+  EXPECT_NE(errorFor("depth_scale: [0, 1]\n").find("depth_scale"), std::string::npos);
+}
+
 TEST(VariationRanges, AtTheEdgesEveryValueIsAnEndOfItsRangeAndBothEndsComeUp) {
   harness::TempDir dir;
   const auto r = readVariationRanges(dir.write("edges.yaml", "at_edges: true\n"));

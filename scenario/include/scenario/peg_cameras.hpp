@@ -11,6 +11,7 @@
 #include "scenario/peg_layout.hpp"
 #include "scenario/scene_variation.hpp"
 #include "viewer/camera_sensor.hpp"
+#include "viewer/stereo_depth.hpp"
 
 namespace scenario {
 
@@ -40,13 +41,16 @@ class PegCameras {
   PegCameras(const ambf_like::World& world, const std::vector<std::string>& views, int width,
              int height, const SceneVariation& look = {}, const PegLayout& layout = {});
 
-  /// Per view (in the order asked), the images asked for.
+  /// Per view (in the order asked), the images asked for; the depth as `look`'s stereo camera
+  /// reads it, its noise drawn from the look's seed, the view and the world's time.
   std::vector<viewer::CameraImages> render(const ambf_like::World& world, bool rgb, bool depth,
                                            bool segmentation);
 
  private:
   std::vector<viewer::View> views_;
   viewer::Look look_;
+  viewer::StereoDepthErrors depth_errors_;
+  std::uint64_t seed_ = 0;
   std::unique_ptr<viewer::CameraSensor> sensor_;
 };
 

@@ -37,6 +37,12 @@ struct VariationRanges {
   std::array<double, 2> camera_distance{1.0, 1.0};
   std::array<double, 2> light{1.0, 1.0};
   std::array<double, 2> tint{1.0, 1.0};
+  /// The depth images as a stereo RGB-D camera reads them (viewer::StereoDepthErrors): its RMS
+  /// error at 1 m (m), its scale bias (a factor) and its baseline (m). Exact by default;
+  /// scenario/ranges/depth.yaml varies them.
+  std::array<double, 2> depth_noise{0.0, 0.0};
+  std::array<double, 2> depth_scale{1.0, 1.0};
+  std::array<double, 2> depth_baseline{0.0, 0.0};
   /// Draw each value at its range's low or high end (a fair coin each), every ring's start at
   /// the full offset radius: a robustness check at the edges of what a policy was trained on.
   bool at_edges = false;
@@ -46,6 +52,7 @@ struct VariationRanges {
 /// `ring_offset: 0.001` (m), `ring_kDF`, `ring_shore_a`, `board_friction`: [low, high];
 /// `actuation_sd: 1` (standard deviations of the fit, >= 0); `camera_shift` (m), `camera_turn`
 /// (rad), both >= 0; `camera_distance`, `light`, `tint`: [low, high] factors > 0;
+/// `depth_noise` (m), `depth_scale`, `depth_baseline` (m): [low, high], >= 0 (the scale > 0);
 /// `at_edges: true` draws at the ranges' ends (VariationRanges::at_edges). Throws
 /// common::LoadError naming the file, line and key for an unknown key, a value that is not
 /// one, or one out of what it can be (kDF within 0..1, Shore A within 0..100, frictions and the
@@ -71,6 +78,9 @@ struct SceneVariation {
   double camera_yaw = 0.0, camera_pitch = 0.0, camera_distance = 1.0;
   double light = 1.0;
   Eigen::Vector3d ring_tint = Eigen::Vector3d::Ones(), body_tint = Eigen::Vector3d::Ones();
+  /// How the cameras' depth images are read (viewer::StereoDepthErrors): the RMS error at 1 m
+  /// (m), the scale bias, the stereo baseline (m); exact by default.
+  double depth_noise = 0.0, depth_scale = 1.0, depth_baseline = 0.0;
   /// The rings' Young's modulus (Pa) from their hardness, by Ruess' relation.
   double ringYoungsModulus() const;
 

@@ -87,6 +87,18 @@ void addOptions(CLI::App& app, NodeSettings& s) {
   app.add_flag("--camera-depth", s.cameras.depth,
                "each view's depth image too, as an RGB-D camera's driver publishes it: "
                "cameras/<view>/depth/image_raw (sensor_msgs/Image, 32FC1, m along the axis)");
+  app.add_option("--depth-noise", s.cameras.depth_noise,
+                 "the depth read as a stereo RGB-D camera reads it: its RMS error at 1 m (m; it "
+                 "grows as the depth squared), 0: exact")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--depth-scale", s.cameras.depth_scale, "... and its scale bias (a factor)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--depth-baseline", s.cameras.depth_baseline,
+                 "... and its baseline (m): no reading where only one imager sees")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   app.add_option("--duration", s.duration,
                  "stop after this much platform time (s); 0: run until "
                  "interrupted")

@@ -25,6 +25,15 @@ std::vector<std::string> frameIdsOf(const CameraTopicOptions& options) {
   return ids;
 }
 
+/// The nominal scene's look, its depth read as `options` say.
+scenario::SceneVariation lookOf(const CameraTopicOptions& options) {
+  scenario::SceneVariation look;
+  look.depth_noise = options.depth_noise;
+  look.depth_scale = options.depth_scale;
+  look.depth_baseline = options.depth_baseline;
+  return look;
+}
+
 std::string rosName(const std::string& view) {
   std::string name = view;
   std::replace(name.begin(), name.end(), '-', '_');  // ROS names take no '-'
@@ -44,7 +53,7 @@ std::string CameraTopics::depthTopicOf(const std::string& view) {
 CameraTopics::CameraTopics(const ambf_like::World& world, CameraTopicOptions options)
     : options_(std::move(options)),
       cameras_(std::make_unique<scenario::PegCameras>(world, options_.views, options_.width,
-                                                      options_.height)),
+                                                      options_.height, lookOf(options_))),
       publisher_(topicsOf(options_), frameIdsOf(options_)) {
   if (!(options_.rate > 0.0)) {
     throw std::invalid_argument("a camera's frame rate must be positive, not " +

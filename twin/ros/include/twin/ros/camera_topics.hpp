@@ -26,6 +26,9 @@ struct CameraTopicOptions {
   int height = 96;
   double rate = 30.0;  ///< frames per second of the twin's clock
   bool depth = false;  ///< each view's depth image too (an RGB-D camera)
+  /// How that depth reads (viewer::StereoDepthErrors): exact by default, or as a stereo RGB-D
+  /// camera reads it, with its RMS error at 1 m (m), its scale bias and its baseline (m).
+  double depth_noise = 0.0, depth_scale = 1.0, depth_baseline = 0.0;
 };
 
 /// Renders and publishes the views (needs initRos() and a headless OpenGL).
