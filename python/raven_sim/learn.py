@@ -314,9 +314,15 @@ def drawn(variation):
     """What a scene's draw varied, in a few words (reset's info["variation"])."""
     if variation.get("nominal", True):
         return "the nominal scene"
-    return (f"rings Shore A {variation['ring_shore_a']:.1f}, kDF {variation['ring_kDF']:.2f}, "
-            f"board friction {variation['board_friction']:.2f}, "
-            f"motors within {variation['actuation_sd']:g} sd of the fit")
+    words = (f"rings Shore A {variation['ring_shore_a']:.1f}, kDF {variation['ring_kDF']:.2f}, "
+             f"board friction {variation['board_friction']:.2f}, "
+             f"motors within {variation['actuation_sd']:g} sd of the fit")
+    if (variation.get("depth_noise_m", 0.0), variation.get("depth_scale", 1.0),
+            variation.get("depth_baseline_m", 0.0)) != (0.0, 1.0, 0.0):
+        words += (f", depth x{variation['depth_scale']:.3f} with "
+                  f"{1e3 * variation['depth_noise_m']:.1f} mm at 1 m, "
+                  f"a {1e3 * variation['depth_baseline_m']:.0f} mm baseline")
+    return words
 
 
 def evaluate_seed(policy, seed, time_limit, actuation="motors", randomize=True, launch_file=None,

@@ -303,6 +303,12 @@ class Demonstrations(unittest.TestCase):
             placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 3, 2.0,
                                                randomize=ranges)
             self.assertIn(f"rings Shore A {draws[0]['ring_shore_a']:.1f}", line)
+            self.assertNotIn("depth", line)  # exact depth unless the ranges vary it
+            with open(ranges, "a") as f:
+                f.write("depth_scale: [1.02, 1.02]\n")
+            placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 3, 2.0,
+                                               randomize=ranges)
+            self.assertIn("depth x1.020 with 0.0 mm at 1 m", line)
             placed, line = learn.evaluate_seed(imitation.Policy.load(SHIPPED_POLICY), 3, 2.0,
                                                randomize=False)
             self.assertTrue(line.endswith("; the nominal scene"), line)
