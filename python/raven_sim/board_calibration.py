@@ -6,15 +6,19 @@ says where the camera is.
 
 The pose (the point it aims at, in the calibrated aim point's horizontal plane, the camera's yaw
 and pitch and its distance from that point; its roll and field of view are taken as calibrated)
-and the depth's scale (a stereo camera's depth is off by up to 2 %, Intel's figure for its D400
-series: 4 mm at the task cameras' 0.2 m, which moves every ring 0.8 mm; the board's posts,
-spread across the image, tell a scaled depth from a camera moved back) are fitted by robust least squares so that every pixel, taken back into the
-world through it, lies on the board's top or on a post. The rings' pixels are left out (a ring
-around a post would pull the camera onto it); pixels of anything else (the arms, the
-background) lie on neither and count little (soft L1, its scale narrowed from 5 mm to
-0.5 mm as the fit closes in). Only the posts fix the camera across the board, and they are
-narrow: their points weigh more, and the fit starts from the calibration and from poses around
-it, the cheapest kept.
+is fitted by robust least squares so that every pixel, taken back into the world through it,
+lies on the board's top or on a post. The rings' pixels are left out (a ring around a post
+would pull the camera onto it); pixels of anything else (the arms, the background) lie on
+neither and count little (soft L1, its scale narrowed from 5 mm to 0.5 mm as the fit closes
+in). Only the posts fix the camera across the board, and they are narrow: their points weigh
+more, and the fit starts from the calibration and from poses around it, the cheapest kept.
+
+Then the depth's scale is fitted with the pose, from the best pose: a stereo camera's depth is
+off by up to 2 % (Intel's figure for its D400 series), 4 mm at the task cameras' 0.2 m, which
+moves every ring 0.8 mm; the posts, spread across the image, tell a longer depth from a camera
+moved back. Every parameter is held within what a camera mounted again by hand and a depth
+camera's bias can be: the board's top alone looks the same from any yaw about the aim point, and
+a far pose can fit it as well as the right one.
 """
 
 import itertools
@@ -35,11 +39,13 @@ FAR = 0.02  # m: a point farther than this from the board's top and every post i
 START_SHIFT = 0.003  # m
 START_TURN = 0.03  # rad
 # How far the fit may take the camera's distance and its depth's scale from the calibration's
-# (factors): a camera a hand mounts again, a depth camera's bias of a few per cent. Unbounded,
-# both run off to where every point collapses onto one point of the board (a distance of 0 and
-# a scale of 10).
+# (factors), its aim point and its view. Unbounded, the scale and the distance ran off to where
+# every point collapses onto one point of the board (a distance of 0 and a scale of 10), and in
+# a dark scene the view turned 4 rad round its aim point (rings 30-70 mm off).
 DISTANCE_RANGE = (0.8, 1.25)
 DEPTH_SCALE_RANGE = (0.95, 1.05)
+REACH = 0.02  # m: the aim point within this of the calibration's, on each axis
+TURN = 0.2  # rad: the yaw and the pitch within this of the calibration's
 
 
 def camera_at(target, yaw, pitch, distance, fov_y, depth_scale=1.0):
@@ -92,20 +98,30 @@ def calibrate(camera, rgb, depth, layout, posts):
         return scene_distances(at(x).points(depth, every), layout["board_top"], posts,
                                layout["post_radius"], layout["post_height"])
 
-    def fitted(x):
+    def fitted(x, free, within):
+        """`x` with its first `free` parameters fitted, coarse to fine, the rest held."""
+        def partial(y):
+            return residuals(np.concatenate([y, x[free:]]))
+        y = x[:free]
         for scale in ROBUST_SCALES:
-            fit = least_squares(residuals, x, bounds=bounds, loss="soft_l1", f_scale=scale,
-                                x_scale=SCALES, max_nfev=100)
-            x = fit.x
-        return fit.cost, x
+            fit = least_squares(partial, y, bounds=within, loss="soft_l1", f_scale=scale,
+                                x_scale=SCALES[:free], max_nfev=100)
+            y = fit.x
+        return fit.cost, np.concatenate([y, x[free:]])
 
     calibrated = np.array([camera.target[0], camera.target[1], *angles_of(camera),
                            np.linalg.norm(camera.eye - camera.target), camera.depth_scale])
-    free = np.full(4, np.inf)
-    bounds = (np.concatenate([-free, [calibrated[4] * DISTANCE_RANGE[0], DEPTH_SCALE_RANGE[0]]]),
-              np.concatenate([free, [calibrated[4] * DISTANCE_RANGE[1], DEPTH_SCALE_RANGE[1]]]))
+    reach = np.array([REACH, REACH, TURN, TURN])
+    bounds = (np.concatenate([calibrated[:4] - reach, [calibrated[4] * DISTANCE_RANGE[0],
+                                                       DEPTH_SCALE_RANGE[0]]]),
+              np.concatenate([calibrated[:4] + reach, [calibrated[4] * DISTANCE_RANGE[1],
+                                                       DEPTH_SCALE_RANGE[1]]]))
     starts = [calibrated] + [
         calibrated + np.array([sx * START_SHIFT, sy * START_SHIFT, yaw * START_TURN, 0, 0, 0])
         for sx, sy, yaw in itertools.product((-1, 1), repeat=3)]
-    _, best = min((fitted(start) for start in starts), key=lambda fit: fit[0])
+    # The pose first, the depth's scale held as calibrated, then both from the best pose (the
+    # scale free from every start put one camera of 20 scenes at the ranges' edges 42 mm off).
+    pose_bounds = (bounds[0][:5], bounds[1][:5])
+    _, pose = min((fitted(start, 5, pose_bounds) for start in starts), key=lambda fit: fit[0])
+    _, best = fitted(pose, 6, bounds)
     return at(best)
