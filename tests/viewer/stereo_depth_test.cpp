@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <vector>
 
 namespace stereo_depth_test {
@@ -85,6 +86,16 @@ TEST(StereoDepth, TheSameKeyDrawsTheSameNoiseAndExactDepthIsLeftAlone) {
   EXPECT_NE(viewer::depthNoiseKey(5, 0, 1.25), viewer::depthNoiseKey(5, 1, 1.25));
   EXPECT_NE(viewer::depthNoiseKey(5, 0, 1.25), viewer::depthNoiseKey(6, 0, 1.25));
   EXPECT_EQ(exact, plane(0.3f));
+}
+
+TEST(StereoDepth, AColourOnlyRenderHasNoDepthToSpoilAndAWrongSizeIsRefused) {
+  const StereoDepthErrors camera{0.002, 1.02, 0.05};
+  std::vector<float> none;
+  applyStereoErrors(none, kWidth, kHeight, kFovY, camera, 1);
+  EXPECT_TRUE(none.empty());
+  std::vector<float> short_image(10, 0.3f);
+  EXPECT_THROW(applyStereoErrors(short_image, kWidth, kHeight, kFovY, camera, 1),
+               std::invalid_argument);
 }
 
 }  // namespace stereo_depth_test

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace viewer {
 
@@ -50,7 +52,12 @@ void dropOccluded(std::vector<float>& depth, int width, int height, double focal
 
 void applyStereoErrors(std::vector<float>& depth, int width, int height, double fov_y,
                        const StereoDepthErrors& errors, std::uint64_t key) {
-  if (errors.exact()) return;
+  if (errors.exact() || depth.empty()) return;  // exact, or no depth image asked for
+  if (depth.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height)) {
+    throw std::invalid_argument("a depth image of " + std::to_string(depth.size()) +
+                                " pixels is not " + std::to_string(width) + " x " +
+                                std::to_string(height));
+  }
   if (errors.baseline > 0.0) {
     const double focal = 0.5 * height / std::tan(0.5 * fov_y);  // pixels
     dropOccluded(depth, width, height, focal * errors.baseline);

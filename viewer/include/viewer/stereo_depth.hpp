@@ -27,7 +27,8 @@ struct StereoDepthErrors {
 
 /// `depth` (m along the axis, rows top first, +infinity where nothing is; `width` x `height`
 /// pixels, vertical field of view `fov_y` rad) as the stereo camera `errors` would read it.
-/// `key` draws the noise: the same key, the same noise.
+/// `key` draws the noise: the same key, the same noise. An empty `depth` (none rendered) stays
+/// empty; one of another size than width x height is std::invalid_argument.
 void applyStereoErrors(std::vector<float>& depth, int width, int height, double fov_y,
                        const StereoDepthErrors& errors, std::uint64_t key);
 
