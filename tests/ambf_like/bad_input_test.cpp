@@ -566,6 +566,45 @@ TEST(BadInput, XmlNestedDeeperThanAnyRealFileIsRefusedBeforeItsRecursiveParser) 
   EXPECT_EQ(common::xmlNestedBeyond("<a>\n<b>\n<c/></b></a>", 1), 2u);
 }
 
+/// A COLLADA scene whose library holds `library` (nodes) and whose scene instances `root`.
+std::string colladaInstancing(const std::string& library, const std::string& root) {
+  return "<?xml version=\"1.0\"?>\n<COLLADA>\n<library_nodes>\n" + library +
+         "</library_nodes>\n<library_visual_scenes><visual_scene id=\"s\">\n<node>"
+         "<instance_node url=\"#" +
+         root + "\"/></node>\n</visual_scene></library_visual_scenes>\n</COLLADA>\n";
+}
+
+TEST(BadInput, AColladaNodeThatInstancesItselfOrMultipliesIsRefusedBeforeAssimpFollowsIt) {
+  TempDir dir;
+  auto refusal = [&](const std::string& text) {
+    const auto mesh = dir.write("nodes.dae", text);
+    const auto model = dir.write(
+        "m.yaml", "bodies: [BODY b]\nBODY b: {name: b, mass: 1, mesh: " + mesh.string() + "}\n");
+    return loadErrorOf([&] { test_support::simulate({model}); });
+  };
+  // A node that instances itself: assimp recursed until the stack ended (a segmentation fault).
+  EXPECT_THAT(
+      refusal(colladaInstancing("<node id=\"a\">\n<instance_node url=\"#a\"/></node>\n", "a")),
+      AllOf(HasSubstr("nodes.dae: line 5"), HasSubstr("node 'a' instances itself")));
+  // The same through another node, and through a nested one.
+  EXPECT_THAT(
+      refusal(colladaInstancing("<node id=\"a\"><instance_node url=\"#b\"/></node>\n"
+                                "<node id=\"b\">\n<node id=\"c\">\n"
+                                "<instance_node url=\"#a\"/></node></node>\n",
+                                "a")),
+      AllOf(HasSubstr("nodes.dae: line 7"), HasSubstr("instances itself (through node 'c')")));
+  // Each of 20 nodes instancing the one before twice: two million nodes from 21 lines.
+  std::string doubling = "<node id=\"n0\"/>\n";
+  for (int i = 1; i <= 20; ++i) {
+    const std::string before = "#n" + std::to_string(i - 1);
+    doubling += "<node id=\"n" + std::to_string(i) + "\"><instance_node url=\"" + before +
+                "\"/><instance_node url=\"" + before + "\"/></node>\n";
+  }
+  EXPECT_THAT(refusal(colladaInstancing(doubling, "n20")),
+              AllOf(HasSubstr("nodes.dae: line 20"), HasSubstr("node 'n16' expands to more than "
+                                                               "100000 nodes")));
+}
+
 TEST(BadInput, AUrdfThatIsNotUtf8IsRefusedBeforeTinyxmlWalksPastItsEnd) {
   // tinyxml steps over a character by its lead byte: 0xD5 at the very end made it read past
   // the text (found by fuzz_urdf; the input is in fuzz/regressions/urdf/).

@@ -110,6 +110,38 @@ TEST(MeshFormats, ColladaKeepsItsZUpCoordinates) {
   expectTetrahedron(*load(dir.write("tet.dae", dae)));
 }
 
+TEST(MeshFormats, ColladaBuildsANodeAsOftenAsItsSceneInstancesIt) {
+  // The loader's guard against instance loops (BadInput) lets a shared node through, and a
+  // name no node has.
+  test_support::TempDir dir;
+  const char* dae = R"(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <library_geometries>
+    <geometry id="tet" name="tet"><mesh>
+      <source id="tet-pos">
+        <float_array id="tet-pos-array" count="12">0 0 0 1 0 0 0 1 0 0 0 1</float_array>
+        <technique_common><accessor source="#tet-pos-array" count="4" stride="3">
+          <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+        </accessor></technique_common>
+      </source>
+      <vertices id="tet-vtx"><input semantic="POSITION" source="#tet-pos"/></vertices>
+      <triangles count="4"><input semantic="VERTEX" source="#tet-vtx" offset="0"/>
+        <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
+    </mesh></geometry>
+  </library_geometries>
+  <library_nodes><node id="shared"><instance_geometry url="#tet"/></node></library_nodes>
+  <library_visual_scenes><visual_scene id="scene">
+    <node id="here"><instance_node url="#shared"/><instance_node url="#nowhere"/></node>
+    <node id="there"><translate>5 0 0</translate><instance_node url="#shared"/></node>
+  </visual_scene></library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)";
+  const auto mesh = load(dir.write("two.dae", dae));
+  EXPECT_EQ(mesh->vertices.size(), 8u);
+  EXPECT_EQ(mesh->triangles.size(), 8u);
+}
+
 TEST(MeshFormats, ThreeDsHasTheSameTopologyAsTheObjExport) {
   const auto shared = test_support::sharedDataDir();
   if (shared.empty()) GTEST_SKIP() << "../shared/data is absent: AMBF's cloth meshes are not here";

@@ -1,3 +1,4 @@
+#include <assimp/DefaultIOSystem.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -13,6 +14,7 @@
 #include <unordered_map>
 
 #include "ambf_like/mesh.hpp"
+#include "collada_instances.hpp"
 #include "common/farthest.hpp"
 #include "common/file_problem.hpp"
 #include "common/lower_case.hpp"
@@ -156,7 +158,7 @@ std::optional<std::size_t> miscountedColladaArray(const std::string& text) {
 
 /// assimp's XML formats (COLLADA and others, whatever the file is called) recurse once per
 /// nested node until the stack ends: a file that is XML is measured first, and its COLLADA
-/// index lists checked.
+/// index lists, arrays and node instances checked.
 template <typename Fail>
 void refuseDeepXml(const std::filesystem::path& file, Fail fail) {
   std::ifstream in(file, std::ios::binary);
@@ -181,7 +183,21 @@ void refuseDeepXml(const std::filesystem::path& file, Fail fail) {
     throw fail("line " + std::to_string(*line) +
                ": an array's count is not the number of values it holds");
   }
+  if (const auto problem = detail::colladaInstanceProblem(text.str())) {
+    throw fail("line " + std::to_string(problem->line) + ": " + problem->what);
+  }
 }
+
+/// The files assimp opens besides the mesh (an OBJ's material library, ...), each only if it is a
+/// regular file: opening a named pipe blocks until something writes to it, and a device may never
+/// end.
+class RegularFilesOnly : public Assimp::DefaultIOSystem {
+ public:
+  bool Exists(const char* file) const override { return common::isReadableFile(file); }
+  Assimp::IOStream* Open(const char* file, const char* mode) override {
+    return common::isReadableFile(file) ? DefaultIOSystem::Open(file, mode) : nullptr;
+  }
+};
 
 /// The file's extension in lower case (AMBF's own files say .STL and .3DS).
 std::string extensionOf(const std::filesystem::path& file) {
@@ -208,6 +224,7 @@ Mesh readMesh(const std::filesystem::path& file, const SourceRef& referenced_fro
   refuseDeepXml(file, fail);
 
   Assimp::Importer importer;
+  importer.SetIOHandler(new RegularFilesOnly);  // the importer owns it
   // Keep a Z-up COLLADA file's coordinates as written (assimp would turn it Y-up).
   importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
   const unsigned flags = aiProcess_Triangulate | aiProcess_DropNormals |
