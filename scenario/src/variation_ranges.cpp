@@ -9,6 +9,7 @@
 
 #include "common/load_error.hpp"
 #include "common/yaml_view.hpp"
+#include "raven/design/peg_scene_design.hpp"
 #include "scenario/scene_variation.hpp"
 
 namespace scenario {
@@ -42,6 +43,22 @@ void readNonNegative(const common::YamlView& node, const char* key, double& valu
   if (!(value >= 0.0)) throw common::LoadError(found->where(), "must be >= 0");
 }
 
+/// The ring_offset at `key`: a ring starts around its post, so at most the gap between the
+/// ring's hole and the post (3.5 mm; farther, its wall would start inside the post, and 1e300
+/// made the world's state non-finite).
+void readRingOffset(const common::YamlView& node, double& value) {
+  const raven::design::PegSceneDesign design;
+  const double most = design.ring_major_radius - design.ring_minor_radius - design.post_radius;
+  readNonNegative(node, "ring_offset", value);
+  if (value > most) {
+    throw common::LoadError(
+        node.find("ring_offset")->where(),
+        fmt::format("{} m would start a ring off its post: at most {} m (its hole's radius less "
+                    "the post's)",
+                    value, most));
+  }
+}
+
 }  // namespace
 
 VariationRanges readVariationRanges(const std::filesystem::path& file) {
@@ -51,7 +68,7 @@ VariationRanges readVariationRanges(const std::filesystem::path& file) {
   root.checkKeys(kKeys, {true, duplicates});
   if (!duplicates.empty()) throw common::LoadError(duplicates);
   VariationRanges r;
-  readNonNegative(root, "ring_offset", r.ring_offset);
+  readRingOffset(root, r.ring_offset);
   readNonNegative(root, "actuation_sd", r.actuation_sd);
   readNonNegative(root, "camera_shift", r.camera_shift);
   readNonNegative(root, "camera_turn", r.camera_turn);

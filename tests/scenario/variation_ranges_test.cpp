@@ -149,6 +149,10 @@ TEST(VariationRanges, ABadFileIsAnErrorNamingTheFileAndTheKey) {
             std::string::npos);
   EXPECT_NE(errorFor("ring_shore_a: [25]\n").find("ring_shore_a"), std::string::npos);
   EXPECT_NE(errorFor("ring_offset: -0.001\n").find("ring_offset"), std::string::npos);
+  // A ring starts around its post: 6 mm hole, 2.5 mm post (1e300 made the state non-finite).
+  EXPECT_NE(errorFor("ring_offset: 1e300\n").find("at most 0.0035 m"), std::string::npos);
+  EXPECT_NE(errorFor("ring_offset: 0.0036\n").find("off its post"), std::string::npos);
+  EXPECT_EQ(errorFor("ring_offset: 0.0035\n"), "");
   EXPECT_NE(errorFor("actuation_sd: -1\n").find("actuation_sd"), std::string::npos);
   EXPECT_NE(errorFor("actuation_sd: .nan\n").find("actuation_sd"), std::string::npos);
   EXPECT_NE(errorFor("camera_turn: -0.1\n").find("camera_turn"), std::string::npos);
