@@ -14,6 +14,7 @@
 #include "ambf_like/physics_loop.hpp"
 #include "ambf_like/scene_loader.hpp"
 #include "ambf_like/world.hpp"
+#include "common/number_checks.hpp"
 #include "viewer/snapshot_schedule.hpp"
 #include "viewer/video_recorder.hpp"
 #include "viewer/viewer.hpp"
@@ -144,7 +145,7 @@ void addOptions(CLI::App& app, Options& o) {
   app.add_option("--world", o.world_file, "world file when no launch file is given")
       ->check(CLI::ExistingFile);
   app.add_option("-p,--phx_frequency", o.rate_hz, "dynamic loop rate in Hz")
-      ->check(CLI::PositiveNumber);
+      ->check(common::kFinitePositive);
   app.add_option("-t,--fixed_phx_timestep", o.fixed_time_step,
                  "advance exactly 1/p per iteration (false: follow the wall clock)");
   app.add_flag("--free-run", o.free_run, "do not pace the loop: run as fast as the CPU allows");
@@ -159,15 +160,15 @@ void addOptions(CLI::App& app, Options& o) {
                  "ambf_visuals.yaml (AMBF's Raven-II meshes on our links)")
       ->check(CLI::ExistingFile);
   app.add_option("--snapshot-every", o.snapshot_every, "simulated seconds between snapshots")
-      ->check(CLI::PositiveNumber);
+      ->check(common::kFinitePositive);
   app.add_flag("--collision-view", o.collision_view,
                "show Bullet's collision shapes instead of the visuals (key C in the window)");
   app.add_flag("--contacts", o.contacts, "show contact points (key K in the window)");
   app.add_option("--steps", o.max_steps, "stop after this many internal steps");
   app.add_option("--duration", o.duration, "stop after this many simulated seconds")
-      ->check(CLI::NonNegativeNumber);
+      ->check(common::kFiniteNonNegative);
   app.add_option("--step-size", o.step_size, "fixed internal step in seconds")
-      ->check(CLI::Range(1e-6, 0.1));
+      ->check(common::finiteWithin(1e-6, 0.1));
   app.add_flag("--strict", o.strict,
                "what AMBF tolerates (unknown keys, missing meshes or mass) is an error, not a "
                "warning");

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/number_checks.hpp"
 #include "sections.hpp"
 
 namespace {
@@ -63,10 +64,10 @@ int main(int argc, char** argv) {
 
   CLI::App app{"Measures the Raven-II twin's pipeline; prints a table and writes JSON"};
   app.add_option("--repeat", settings.repeat, "repetitions of each timed run")
-      ->check(CLI::Range(1, 100));
+      ->check(common::finiteWithin(1, 100));
   app.add_option("--scene-seconds", settings.scene_seconds,
                  "simulated seconds of the moving peg-transfer scene per run")
-      ->check(CLI::Range(1.0, 300.0));
+      ->check(common::finiteWithin(1.0, 300.0));
   app.add_option("--only", only, "sections to run (default: all, in this order)")
       ->check(CLI::IsMember(names));
   app.add_option("--out", out, "JSON results file");

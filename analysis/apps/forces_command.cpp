@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "analysis/force_report.hpp"
+#include "common/number_checks.hpp"
 #include "recording/cf_recording.hpp"
 
 namespace analysis {
@@ -62,11 +63,11 @@ CLI::App& addForcesCommand(CLI::App& app, ForcesArgs& args) {
   forces
       .add_option("--grip-depth", args.grip.depth,
                   "m from the jaw axis to where the jaws hold the object (the squeeze's lever)")
-      ->check(CLI::Range(0.001, 0.011));
+      ->check(common::finiteWithin(0.001, 0.011));
   forces
       .add_option("--grip-spread", args.grip.spread,
                   "m either side of the grip depth the contact may lie")
-      ->check(CLI::Range(0.0, 0.005));
+      ->check(common::finiteWithin(0.0, 0.005));
   forces.add_flag("!--no-figures", args.figures, "write the data only, draw nothing");
   return forces;
 }

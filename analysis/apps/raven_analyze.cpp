@@ -11,6 +11,7 @@
 #include "analysis/metrics.hpp"
 #include "analysis/report.hpp"
 #include "analysis/trial_set.hpp"
+#include "common/number_checks.hpp"
 #include "forces_command.hpp"
 
 namespace {
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
   app.add_option("--align", align, "index: rows by index (the paper's); time: resample on time")
       ->check(CLI::IsMember({"index", "time"}));
   app.add_option("--period", period, "resampling period for --align time (s)")
-      ->check(CLI::Range(1e-4, 10.0));
+      ->check(common::finiteWithin(1e-4, 10.0));
   app.add_flag("!--no-figures", figures, "write the data only, draw nothing");
   analysis::ForcesArgs forces_args;
   const CLI::App& forces = analysis::addForcesCommand(app, forces_args);

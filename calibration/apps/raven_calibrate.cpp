@@ -21,6 +21,7 @@
 #include "calibration/replay_score.hpp"
 #include "calibration/replay_timing.hpp"
 #include "common/actuation_flag.hpp"
+#include "common/number_checks.hpp"
 #include "raven/control_cycle.hpp"
 #include "recording/recording_io.hpp"
 #include "twin/calibration_profile.hpp"
@@ -47,9 +48,9 @@ struct ReplayFlags {
     app.add_option("--mapping", mapping, "initial mapping of the replay: m2, m1-left, m1-right")
         ->check(CLI::IsMember({"m2", "m1-left", "m1-right"}));
     app.add_option("--rate", rate, "command steps per second of the replay")
-        ->check(CLI::Range(1.0, raven::kControlRate));
+        ->check(common::finiteWithin(1.0, raven::kControlRate));
     app.add_option("--man-steps", man_steps, "least steps per manual iteration")
-        ->check(CLI::Range(1, 100));
+        ->check(common::finiteWithin(1, 100));
   }
   calibration::ReplaySetup setup(double iteration_overhead) const {
     calibration::ReplaySetup s;
@@ -484,8 +485,9 @@ int main(int argc, char** argv) {
   fit.replay.add(*fit_cmd, false);
   fit_cmd->add_option("--out", fit.out, "calibration profile to write (YAML)");
   fit_cmd->add_option("--evaluations", fit.evaluations, "model replays per motor and sweep")
-      ->check(CLI::Range(5, 10000));
-  fit_cmd->add_option("--threads", fit.threads, "fits run in parallel")->check(CLI::Range(1, 64));
+      ->check(common::finiteWithin(5, 10000));
+  fit_cmd->add_option("--threads", fit.threads, "fits run in parallel")
+      ->check(common::finiteWithin(1, 64));
   fit_cmd->add_flag("!--no-leave-one-out", fit.leave_one_out, "fit on every trial only");
   fit_cmd->add_option("--from", fit.from, "profile to start from (default: catalogue values)")
       ->check(CLI::ExistingFile);
@@ -532,9 +534,9 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   propose_cmd->add_option("--out", propose.out, "ci file to write");
   propose_cmd->add_option("--candidates", propose.candidates, "random candidates scored")
-      ->check(CLI::Range(1, 1000));
+      ->check(common::finiteWithin(1, 1000));
   propose_cmd->add_option("--seconds", propose.seconds, "length of the motion")
-      ->check(CLI::Range(2.0, 600.0));
+      ->check(common::finiteWithin(2.0, 600.0));
   propose_cmd->add_option("--seed", propose.seed, "seed of the candidates");
 
   CLI11_PARSE(app, argc, argv);

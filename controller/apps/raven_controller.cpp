@@ -17,6 +17,7 @@
 #include "bridge/ros/raven_ros_client.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "common/actuation_flag.hpp"
+#include "common/number_checks.hpp"
 #include "controller/first_move.hpp"
 #include "controller/session.hpp"
 #include "controller/terminal_keys.hpp"
@@ -350,24 +351,24 @@ int main(int argc, char** argv) {
   app.add_flag("--no-gamepad", s.no_gamepad, "do not look for a gamepad");
   app.add_flag("--no-keyboard", s.no_keyboard, "do not read mode keys from the terminal");
   app.add_option("--duration", s.duration, "stop after this many seconds of platform time")
-      ->check(CLI::NonNegativeNumber);
+      ->check(common::kFiniteNonNegative);
   app.add_option("--rate", s.rate, "command steps per second (1..one per robot cycle)")
-      ->check(CLI::Range(1.0, raven::kControlRate));
+      ->check(common::finiteWithin(1.0, raven::kControlRate));
   app.add_option("--man-steps", s.man_steps,
                  "least steps per manual iteration; the pad is read between iterations, so this "
                  "bounds the input latency (10, the paper's, is needed to replay its recordings)")
-      ->check(CLI::Range(1, 100));
+      ->check(common::finiteWithin(1, 100));
   app.add_option("--deadzone", s.deadzone, "the sticks' radial deadzone (the paper's: 0.15)")
-      ->check(CLI::Range(0.0, 0.9));
+      ->check(common::finiteWithin(0.0, 0.9));
   app.add_option("--divisor", s.divisor,
                  "stick / divisor = metres per manual iteration (the paper's: 2000)")
-      ->check(CLI::Range(200.0, 20000.0));
+      ->check(common::finiteWithin(200.0, 20000.0));
   app.add_option("--wrist-divisor", s.wrist_divisor,
                  "M1: stick / wrist-divisor = rad per iteration (the paper's: 10)")
-      ->check(CLI::Range(2.0, 200.0));
+      ->check(common::finiteWithin(2.0, 200.0));
   app.add_option("--velocity-scale", s.velocity_scale,
                  "C_V: the paper's joint speed caps times this (above 1: the twin only)")
-      ->check(CLI::Range(0.05, 2.0));
+      ->check(common::finiteWithin(0.05, 2.0));
   CLI11_PARSE(app, argc, argv);
   std::signal(SIGINT, [](int) { interrupted = true; });
   std::signal(SIGTERM, [](int) { interrupted = true; });

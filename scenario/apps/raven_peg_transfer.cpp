@@ -18,6 +18,7 @@
 
 #include "bridge/ros/ros_runtime.hpp"
 #include "common/actuation_flag.hpp"
+#include "common/number_checks.hpp"
 #include "harness/ros_master.hpp"
 #include "raven/design/arm_design.hpp"
 #include "recording/cf_recording.hpp"
@@ -294,7 +295,8 @@ void addOptions(CLI::App& app, Settings& s) {
   app.add_option("--task", s.task, "peg (the peg transfer, default) or rectangle (D_II)")
       ->check(CLI::IsMember({"peg", "rectangle"}));
   app.add_option("--seed", s.seed, "first seed (run k uses seed + k)");
-  app.add_option("--runs", s.runs, "how many runs in the whole batch")->check(CLI::PositiveNumber);
+  app.add_option("--runs", s.runs, "how many runs in the whole batch")
+      ->check(common::kFinitePositive);
   app.add_option("--shard", s.shard,
                  "i/N: run only this shard's share of the batch (runs k with k mod N = i - 1)");
   app.add_option("--randomize", s.ranges,
@@ -310,7 +312,7 @@ void addOptions(CLI::App& app, Settings& s) {
          "--squeeze", s.squeeze_mm,
          fmt::format("how far the closed jaws reach into a ring's 4 mm wall (mm, default {})",
                      scenario::ArmRoutine::kDefaultSqueeze * 1e3))
-      ->check(CLI::Range(0.0, 4.0));
+      ->check(common::finiteWithin(0.0, 4.0));
   app.add_option("--launch", s.launch,
                  "the scene's launch file (default: the shipped peg_transfer/launch.yaml)")
       ->check(CLI::ExistingFile);
@@ -325,11 +327,11 @@ void addOptions(CLI::App& app, Settings& s) {
                  "shipped one)")
       ->check(CLI::ExistingFile);
   app.add_option("--time-limit", s.time_limit, "simulated seconds a run may take")
-      ->check(CLI::PositiveNumber);
+      ->check(common::kFinitePositive);
   app.add_option("--rect-width", s.rect_width_mm, "rectangle task: the side along x (mm)")
-      ->check(CLI::PositiveNumber);
+      ->check(common::kFinitePositive);
   app.add_option("--rect-depth", s.rect_depth_mm, "rectangle task: the side along y (mm)")
-      ->check(CLI::PositiveNumber);
+      ->check(common::kFinitePositive);
   app.add_option("-g,--show_gui", s.gui, "watch the run in a viewer window (AMBF's -g true)");
   app.add_flag("--gui", s.gui, "the same as -g true");
   app.add_option("--snapshot", s.snapshot,

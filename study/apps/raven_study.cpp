@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 
+#include "common/number_checks.hpp"
 #include "harness/virtual_gamepad.hpp"
 #include "study/participant_session.hpp"
 #include "study/questionnaire_server.hpp"
@@ -190,7 +191,7 @@ int main(int argc, char** argv) {
   run_cmd
       ->add_option("--virtual", o.virtual_count,
                    "run N virtual participants V01..VN instead of a person")
-      ->check(CLI::Range(1, 999));
+      ->check(common::finiteWithin(1, 999));
   run_cmd->add_flag("--autopilot", o.autopilot,
                     "a virtual participant drives the named participant's pad (rehearsal); the "
                     "questionnaires are still asked here");
@@ -204,7 +205,7 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--video", o.video,
                     "a video of every trial (its folder's trial.mp4; headless, no display needed)");
   run_cmd->add_option("--video-fps", o.video_fps, "frames per simulated second (default 30)")
-      ->check(CLI::Range(1, 240));
+      ->check(common::finiteWithin(1, 240));
   run_cmd->add_option("--video-size", o.video_size, "WIDTHxHEIGHT, even (default 960x540)");
   run_cmd
       ->add_option("--questionnaires", o.questionnaires,
@@ -214,7 +215,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--host", o.host,
                       "the pages' address (default 127.0.0.1; 0.0.0.0 for a tablet on the LAN)");
   run_cmd->add_option("--port", o.port, "the pages' port (default 8765; 0: any free one)")
-      ->check(CLI::Range(0, 65535));
+      ->check(common::finiteWithin(0, 65535));
 
   std::vector<fs::path> dirs;
   fs::path report_out;
@@ -229,9 +230,11 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingDirectory);
   for (CLI::App* cmd : {report_cmd, power_cmd}) {
-    cmd->add_option("--alpha", question.alpha, "significance level")->check(CLI::Range(0.0, 0.5));
-    cmd->add_option("--power", question.power, "wanted power")->check(CLI::Range(0.5, 0.999));
-    cmd->add_option("--effect", question.effects, "stated effects (d_z)");
+    cmd->add_option("--alpha", question.alpha, "significance level")
+        ->check(common::finiteWithin(0.0, 0.5));
+    cmd->add_option("--power", question.power, "wanted power")
+        ->check(common::finiteWithin(0.5, 0.999));
+    cmd->add_option("--effect", question.effects, "stated effects (d_z)")->check(common::kFinite);
   }
   CLI11_PARSE(app, argc, argv);
 

@@ -5,6 +5,8 @@
 #include <CLI/CLI.hpp>
 #include <string>
 
+#include "common/number_checks.hpp"
+
 namespace common {
 
 /// What the command line asked of a video.
@@ -20,7 +22,7 @@ inline void addVideoFlags(CLI::App& app, VideoFlags& flags, const std::string& w
                  "FILE.mp4: a video of " + what +
                      ", one frame every 1/fps simulated seconds (headless: no display needed)");
   app.add_option("--video-fps", flags.fps, "frames per simulated second (default 30)")
-      ->check(CLI::Range(1, 240));
+      ->check(common::finiteWithin(1, 240));
   app.add_option("--video-size", flags.size, "WIDTHxHEIGHT, even (default 960x540)");
 }
 

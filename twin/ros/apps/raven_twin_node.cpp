@@ -16,6 +16,7 @@
 #include "bridge/ros/raven_ros_server.hpp"
 #include "bridge/ros/ros_runtime.hpp"
 #include "common/actuation_flag.hpp"
+#include "common/number_checks.hpp"
 #include "twin/calibration_profile.hpp"
 #include "twin/ros/ambf_object_topics.hpp"
 #include "twin/ros/camera_topics.hpp"
@@ -64,7 +65,7 @@ void addOptions(CLI::App& app, NodeSettings& s) {
   app.add_option("--command-wait", s.server.command_wait,
                  "lock-step: wall seconds a step waits for the commands it names before it is "
                  "refused")
-      ->check(CLI::PositiveNumber);
+      ->check(common::kFinitePositive);
   app.add_option("--crtk-namespace", s.crtk.ros_namespace,
                  "namespace of the standard CRTK face, relative to the node's (absolute with a "
                  "leading /)")
@@ -82,7 +83,7 @@ void addOptions(CLI::App& app, NodeSettings& s) {
       ->delimiter(',');
   app.add_option("--camera-size", s.camera_size, "the cameras' images, WxH")->capture_default_str();
   app.add_option("--camera-rate", s.cameras.rate, "the cameras' frames per second of twin time")
-      ->check(CLI::PositiveNumber)
+      ->check(common::kFinitePositive)
       ->capture_default_str();
   app.add_flag("--camera-depth", s.cameras.depth,
                "each view's depth image too, as an RGB-D camera's driver publishes it: "
@@ -90,19 +91,19 @@ void addOptions(CLI::App& app, NodeSettings& s) {
   app.add_option("--depth-noise", s.cameras.depth_noise,
                  "the depth read as a stereo RGB-D camera reads it: its RMS error at 1 m (m; it "
                  "grows as the depth squared), 0: exact")
-      ->check(CLI::NonNegativeNumber)
+      ->check(common::kFiniteNonNegative)
       ->capture_default_str();
   app.add_option("--depth-scale", s.cameras.depth_scale, "... and its scale bias (a factor)")
-      ->check(CLI::PositiveNumber)
+      ->check(common::kFinitePositive)
       ->capture_default_str();
   app.add_option("--depth-baseline", s.cameras.depth_baseline,
                  "... and its baseline (m): no reading where only one imager sees")
-      ->check(CLI::NonNegativeNumber)
+      ->check(common::kFiniteNonNegative)
       ->capture_default_str();
   app.add_option("--duration", s.duration,
                  "stop after this much platform time (s); 0: run until "
                  "interrupted")
-      ->check(CLI::NonNegativeNumber);
+      ->check(common::kFiniteNonNegative);
 }
 
 /// The twin the settings ask for: its scene, clock, bindings and actuation.
