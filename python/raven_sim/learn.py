@@ -116,15 +116,29 @@ def image_size(text):
     return w, h
 
 
-def non_negative(text):
-    """A finite number >= 0 (a distance in mm)."""
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"a distance in mm, not '{text}'") from None
-    if not np.isfinite(value) or value < 0.0:
-        raise argparse.ArgumentTypeError(f"{text}: a distance is finite and at least 0")
-    return value
+def bounded(kind, low, high=None, above=False):
+    """An argparse type: a finite `kind` (int or float) at least `low` (above: more than it) and at
+    most `high`. float() reads 'nan' and 'inf', which no option here means."""
+    what = (("a whole number" if kind is int else "a finite number") + (" > " if above else " >= ")
+            + f"{low:g}" + ("" if high is None else f" and <= {high:g}"))
+
+    def read(text):
+        try:
+            value = kind(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"'{text}' is not {what}") from None
+        fits = np.isfinite(value) and (value > low if above else value >= low) and (
+            high is None or value <= high)
+        if not fits:
+            raise argparse.ArgumentTypeError(f"'{text}' is not {what}")
+        return value
+
+    return read
+
+
+COUNT = bounded(int, 1)  # episodes, steps, workers, threads, layers: at least one
+POSITIVE = bounded(float, 0.0, above=True)  # a time, a rate
+NON_NEGATIVE = bounded(float, 0.0)  # a noise, a distance
 
 
 def enough_seeds(args):
@@ -386,18 +400,18 @@ def main(argv=None):
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
     p = sub.add_parser("record", help="the expert's demonstrations (HDF5)")
-    p.add_argument("--episodes", type=int, required=True)
+    p.add_argument("--episodes", type=COUNT, required=True)
     p.add_argument("--seeds", type=seed_range, required=True, help="A-B: one per episode")
     p.add_argument("--obs", type=observation_keys, default=["state"],
                    help="state and any of rgb, depth, segmentation (stored as obs/<camera>_<kind>)")
     p.add_argument("--camera", default="overview",
                    help="the images' views, comma-separated (e.g. grasper-left,left-task)")
     p.add_argument("--image-size", type=image_size, default=(128, 96), help="WxH")
-    p.add_argument("--max-steps", type=int, help="an episode's steps at most")
-    p.add_argument("--noise", type=float, default=0.0, help="DART noise, times NOISE_SCALE")
+    p.add_argument("--max-steps", type=COUNT, help="an episode's steps at most")
+    p.add_argument("--noise", type=NON_NEGATIVE, default=0.0, help="DART noise, times NOISE_SCALE")
     p.add_argument("--noise-seed", type=int, default=0,
                    help="with the episode's seed, seeds its noise")
-    p.add_argument("--workers", type=int, default=2, help="episodes recorded side by side")
+    p.add_argument("--workers", type=COUNT, default=2, help="episodes recorded side by side")
     p.add_argument("--out", required=True)
     add_actuation(p)
     add_randomize(p)
@@ -412,13 +426,13 @@ def main(argv=None):
     p = sub.add_parser("train", help="behaviour cloning on the CPU")
     p.add_argument("--demos", required=True, nargs="+", help="one or more HDF5 files")
     p.add_argument("--out", required=True)
-    p.add_argument("--width", type=int, default=256)
-    p.add_argument("--layers", type=int, default=3)
-    p.add_argument("--epochs", type=int, default=30)
-    p.add_argument("--batch", type=int, default=512)
-    p.add_argument("--lr", type=float, default=2e-3)
+    p.add_argument("--width", type=COUNT, default=256)
+    p.add_argument("--layers", type=COUNT, default=3)
+    p.add_argument("--epochs", type=COUNT, default=30)
+    p.add_argument("--batch", type=COUNT, default=512)
+    p.add_argument("--lr", type=POSITIVE, default=2e-3)
     p.add_argument("--seed", type=int, default=0)
-    p.add_argument("--threads", type=int, default=2, help="torch's CPU threads")
+    p.add_argument("--threads", type=COUNT, default=2, help="torch's CPU threads")
     p.add_argument("--init", help="a policy to go on training (its network and scaling; with "
                    "--obs rgb an image policy, whose ring locator goes on training)")
     p.add_argument("--obs", choices=["state", "rgb"], default="state",
@@ -445,12 +459,12 @@ def main(argv=None):
     p.set_defaults(run=locate)
     p = sub.add_parser("dagger", help="a DAgger round: the policy drives, the expert labels")
     p.add_argument("--policy", required=True, help="the policy that drives")
-    p.add_argument("--episodes", type=int, required=True)
+    p.add_argument("--episodes", type=COUNT, required=True)
     p.add_argument("--seeds", type=seed_range, required=True, help="A-B: one per episode")
-    p.add_argument("--beta", type=float, default=0.0,
+    p.add_argument("--beta", type=bounded(float, 0.0, 1.0), default=0.0,
                    help="the share of steps the expert drives instead")
     p.add_argument("--noise-seed", type=int, default=0)
-    p.add_argument("--max-steps", type=int, default=1500,
+    p.add_argument("--max-steps", type=COUNT, default=1500,
                    help="an episode's steps at most (the expert needs 500-900)")
     p.add_argument("--collect", required=True, help="the HDF5 file the episodes join")
     add_actuation(p)
@@ -459,9 +473,9 @@ def main(argv=None):
     p = sub.add_parser("evaluate", help="the policy on randomised scenes")
     p.add_argument("--policy", required=True)
     p.add_argument("--seeds", type=seed_range, required=True)
-    p.add_argument("--time-limit", type=float, default=240.0)
-    p.add_argument("--workers", type=int, default=1, help="episodes run side by side")
-    p.add_argument("--ring-error", type=non_negative, default=0.0, metavar="MM",
+    p.add_argument("--time-limit", type=POSITIVE, default=240.0)
+    p.add_argument("--workers", type=COUNT, default=1, help="episodes run side by side")
+    p.add_argument("--ring-error", type=NON_NEGATIVE, default=0.0, metavar="MM",
                    help="a state policy sees every ring this far off in the board's plane, each "
                         "in its own direction drawn from the seed: the camera precision it needs")
     add_actuation(p)
@@ -486,9 +500,9 @@ def main(argv=None):
                         "twin: /peg_transfer/; none on the robot: the cameras judge)")
     p.add_argument("--no-arm-swap", action="store_true",
                    help="each arm on its own measured_js (upstream swaps them)")
-    p.add_argument("--time-limit", type=float, default=240.0, help="s of the robot's clock")
-    p.add_argument("--max-steps", type=int, help="steps at most (default: the time limit's)")
-    p.add_argument("--connect-timeout", type=float, default=10.0,
+    p.add_argument("--time-limit", type=POSITIVE, default=240.0, help="s of the robot's clock")
+    p.add_argument("--max-steps", type=COUNT, help="steps at most (default: the time limit's)")
+    p.add_argument("--connect-timeout", type=POSITIVE, default=10.0,
                    help="wall s to find the topics")
     p.set_defaults(run=run)
     args = parser.parse_args(argv)

@@ -196,7 +196,7 @@ class RingsSeenOff(unittest.TestCase):
         with contextlib.redirect_stderr(io.StringIO()) as err, self.assertRaises(SystemExit):
             learn.main(["evaluate", "--policy", SHIPPED_POLICY, "--seeds", "7",
                         "--ring-error", "-1"])
-        self.assertIn("a distance is finite and at least 0", err.getvalue())
+        self.assertIn("'-1' is not a finite number >= 0", err.getvalue())
 
 
 class ShippedPolicy(unittest.TestCase):
@@ -379,6 +379,21 @@ class Demonstrations(unittest.TestCase):
         with contextlib.redirect_stderr(io.StringIO()) as err, self.assertRaises(SystemExit):
             learn.main(["record", "--episodes", "1", "--seeds", "5-2", "--out", "x.hdf5"])
         self.assertIn("the last comes before the first", err.getvalue())
+        # float() reads nan and inf, which no option means (a time limit of nan never ends).
+        for command, wanted in ((["evaluate", "--policy", "p", "--seeds", "1", "--time-limit",
+                                  "nan"], "'nan' is not a finite number > 0"),
+                                (["evaluate", "--policy", "p", "--seeds", "1", "--workers", "0"],
+                                 "'0' is not a whole number >= 1"),
+                                (["train", "--demos", "d", "--out", "o", "--lr", "inf"],
+                                 "'inf' is not a finite number > 0"),
+                                (["dagger", "--policy", "p", "--episodes", "1", "--seeds", "1",
+                                  "--collect", "c", "--beta", "1.5"],
+                                 "'1.5' is not a finite number >= 0 and <= 1"),
+                                (["record", "--episodes", "1", "--seeds", "1", "--out", "x",
+                                  "--noise=-nan"], "'-nan' is not a finite number >= 0")):
+            with contextlib.redirect_stderr(io.StringIO()) as err, self.assertRaises(SystemExit):
+                learn.main(command)
+            self.assertIn(wanted, err.getvalue())
 
 
 if __name__ == "__main__":
