@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "common/number_checks.hpp"
 #include "scenario/batch_merge.hpp"
 
 namespace {
@@ -118,7 +119,9 @@ int main(int argc, char** argv) {
   CLI::App* plan_cmd = app.add_subcommand(
       "plan", "write DIR/batch.json: seeds, shards, and raven_peg_transfer's options after --");
   plan_cmd->add_option("dir", dir, "the batch's folder (shared by every shard)")->required();
-  plan_cmd->add_option("--runs", batch_plan.runs, "runs in the batch")->required();
+  plan_cmd->add_option("--runs", batch_plan.runs, "runs in the batch")
+      ->required()
+      ->check(common::finiteWithin(1, static_cast<double>(scenario::kMostRuns)));
   plan_cmd->add_option("--shards", batch_plan.shards, "shards (array tasks) to split it in")
       ->required();
   plan_cmd->add_option("--seed", batch_plan.first_seed, "first seed (run k uses seed + k)");

@@ -296,7 +296,7 @@ void addOptions(CLI::App& app, Settings& s) {
       ->check(CLI::IsMember({"peg", "rectangle"}));
   app.add_option("--seed", s.seed, "first seed (run k uses seed + k)");
   app.add_option("--runs", s.runs, "how many runs in the whole batch")
-      ->check(common::kFinitePositive);
+      ->check(common::finiteWithin(1, static_cast<double>(scenario::kMostRuns)));
   app.add_option("--shard", s.shard,
                  "i/N: run only this shard's share of the batch (runs k with k mod N = i - 1)");
   app.add_option("--randomize", s.ranges,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 #include <string_view>
 
@@ -26,10 +27,29 @@ bool isOneOf(std::string_view name, const auto& list) {
   return std::find(list.begin(), list.end(), name) != list.end();
 }
 
+/// The whole number >= 0 at `key`: nlohmann's get<> converts 1e300 and -5 to counts without a
+/// word.
+std::uint64_t wholeNumber(const nlohmann::json& j, const char* key) {
+  const nlohmann::json& value = j.at(key);
+  if (!value.is_number_unsigned()) {
+    throw std::invalid_argument(std::string(key) + ": " + value.dump() +
+                                " is not a whole number >= 0");
+  }
+  return value.get<std::uint64_t>();
+}
+
 }  // namespace
 
 void BatchPlan::validate() const {
   if (runs == 0) throw std::invalid_argument("a batch needs at least one run");
+  if (runs > kMostRuns) {
+    throw std::invalid_argument("runs: " + std::to_string(runs) + " (a batch holds at most " +
+                                std::to_string(kMostRuns) + ")");
+  }
+  if (first_seed > std::numeric_limits<std::uint64_t>::max() - runs) {
+    throw std::invalid_argument("first_seed: " + std::to_string(first_seed) +
+                                " leaves no room for " + std::to_string(runs) + " seeds");
+  }
   if (shards == 0 || shards > runs) {
     throw std::invalid_argument("shards: " + std::to_string(shards) + " for " +
                                 std::to_string(runs) + " runs (needs 1 <= shards <= runs)");
@@ -72,9 +92,9 @@ BatchPlan BatchPlan::read(const std::filesystem::path& dir) {
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
     BatchPlan plan;
-    plan.first_seed = j.at("first_seed").get<std::uint64_t>();
-    plan.runs = j.at("runs").get<std::size_t>();
-    plan.shards = j.at("shards").get<std::size_t>();
+    plan.first_seed = wholeNumber(j, "first_seed");
+    plan.runs = wholeNumber(j, "runs");
+    plan.shards = wholeNumber(j, "shards");
     plan.options = j.at("options").get<std::vector<std::string>>();
     plan.validate();
     return plan;

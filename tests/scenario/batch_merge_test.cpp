@@ -91,6 +91,25 @@ TEST(BatchPlan, AMissingOrMalformedPlanIsAnErrorNamingFileAndField) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("'shards'"), std::string::npos) << e.what();
   }
+  // Counts are whole numbers within reach: 1e300 runs had merge and run allocating until memory
+  // ran out, and nlohmann reads 1e300 and -5 as counts without a word.
+  for (const auto& [plan, wanted] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"first_seed": 0, "runs": 1e300, "shards": 2, "options": []})",
+            "runs: 1e+300 is not a whole number >= 0"},
+           {R"({"first_seed": -5, "runs": 8, "shards": 2, "options": []})",
+            "first_seed: -5 is not a whole number >= 0"},
+           {R"({"first_seed": 0, "runs": 1000001, "shards": 2, "options": []})",
+            "runs: 1000001 (a batch holds at most 1000000)"},
+           {R"({"first_seed": 18446744073709551615, "runs": 2, "shards": 2, "options": []})",
+            "first_seed: 18446744073709551615 leaves no room for 2 seeds"}}) {
+    dir.write("batch.json", plan);
+    try {
+      BatchPlan::read(dir.path());
+      ADD_FAILURE() << plan << " read";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(wanted), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(BatchMerge, NamesMissingRepeatedStoppedForeignAndCutOffRunsAndTheShardToRerun) {

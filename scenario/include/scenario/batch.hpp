@@ -14,6 +14,10 @@
 
 namespace scenario {
 
+/// The most runs a batch may hold: a million peg transfers take some 200 CPU-days, and every
+/// count beyond is a typo (a plan of 1e300 runs had its readers allocating until memory ran out).
+inline constexpr std::size_t kMostRuns = 1'000'000;
+
 /// Shard `index` of `count` (1-based, as `--shard 3/8` reads).
 struct Shard {
   std::size_t index = 1;
