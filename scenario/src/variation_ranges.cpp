@@ -43,7 +43,7 @@ void readNonNegative(const common::YamlView& node, const char* key, double& valu
   if (!(value >= 0.0)) throw common::LoadError(found->where(), "must be >= 0");
 }
 
-/// The ring_offset at `key`: a ring starts around its post, so at most the gap between the
+/// The ring_offset, if given: a ring starts around its post, so at most the gap between the
 /// ring's hole and the post (3.5 mm; farther, its wall would start inside the post, and 1e300
 /// made the world's state non-finite).
 void readRingOffset(const common::YamlView& node, double& value) {

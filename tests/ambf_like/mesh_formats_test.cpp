@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <string>
 
 #include "ambf_like/mesh.hpp"
 #include "test_files.hpp"
@@ -83,11 +84,13 @@ TEST(MeshFormats, Obj) {
   expectTetrahedron(*load(dir.write("tet.obj", objTetrahedron())));
 }
 
-TEST(MeshFormats, ColladaKeepsItsZUpCoordinates) {
-  test_support::TempDir dir;
-  const char* dae = R"(<?xml version="1.0" encoding="utf-8"?>
+/// A COLLADA file holding the tetrahedron as geometry "tet", with `head` (e.g. an <asset>) before
+/// it and `scene` (libraries of nodes, the visual scene) after it.
+std::string colladaTetrahedron(const std::string& head, const std::string& scene) {
+  return R"(<?xml version="1.0" encoding="utf-8"?>
 <COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
-  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>
+)" + head +
+         R"(
   <library_geometries>
     <geometry id="tet" name="tet"><mesh>
       <source id="tet-pos">
@@ -101,12 +104,20 @@ TEST(MeshFormats, ColladaKeepsItsZUpCoordinates) {
         <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
     </mesh></geometry>
   </library_geometries>
-  <library_visual_scenes><visual_scene id="scene">
-    <node id="n"><instance_geometry url="#tet"/></node>
-  </visual_scene></library_visual_scenes>
+)" + scene +
+         R"(
   <scene><instance_visual_scene url="#scene"/></scene>
 </COLLADA>
 )";
+}
+
+TEST(MeshFormats, ColladaKeepsItsZUpCoordinates) {
+  test_support::TempDir dir;
+  const std::string dae = colladaTetrahedron(
+      R"(  <asset><unit name="meter" meter="1"/><up_axis>Z_UP</up_axis></asset>)",
+      R"(  <library_visual_scenes><visual_scene id="scene">
+    <node id="n"><instance_geometry url="#tet"/></node>
+  </visual_scene></library_visual_scenes>)");
   expectTetrahedron(*load(dir.write("tet.dae", dae)));
 }
 
@@ -114,29 +125,12 @@ TEST(MeshFormats, ColladaBuildsANodeAsOftenAsItsSceneInstancesIt) {
   // The loader's guard against instance loops (BadInput) lets a shared node through, and a
   // name no node has.
   test_support::TempDir dir;
-  const char* dae = R"(<?xml version="1.0" encoding="utf-8"?>
-<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
-  <library_geometries>
-    <geometry id="tet" name="tet"><mesh>
-      <source id="tet-pos">
-        <float_array id="tet-pos-array" count="12">0 0 0 1 0 0 0 1 0 0 0 1</float_array>
-        <technique_common><accessor source="#tet-pos-array" count="4" stride="3">
-          <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
-        </accessor></technique_common>
-      </source>
-      <vertices id="tet-vtx"><input semantic="POSITION" source="#tet-pos"/></vertices>
-      <triangles count="4"><input semantic="VERTEX" source="#tet-vtx" offset="0"/>
-        <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
-    </mesh></geometry>
-  </library_geometries>
+  const std::string dae = colladaTetrahedron("", R"(
   <library_nodes><node id="shared"><instance_geometry url="#tet"/></node></library_nodes>
   <library_visual_scenes><visual_scene id="scene">
     <node id="here"><instance_node url="#shared"/><instance_node url="#nowhere"/></node>
     <node id="there"><translate>5 0 0</translate><instance_node url="#shared"/></node>
-  </visual_scene></library_visual_scenes>
-  <scene><instance_visual_scene url="#scene"/></scene>
-</COLLADA>
-)";
+  </visual_scene></library_visual_scenes>)");
   const auto mesh = load(dir.write("two.dae", dae));
   EXPECT_EQ(mesh->vertices.size(), 8u);
   EXPECT_EQ(mesh->triangles.size(), 8u);
