@@ -13,6 +13,11 @@ current ones; it acts by moving at most STEP_CAP towards it. Heading for a point
 itself leaves the policy to guess the step at which a long move stops, and an overshoot feeds on
 itself. The waypoints span three orders of magnitude (a millimetre's joint change to a 2 rad
 turn), so they are learnt as asinh(waypoint / RESOLUTION): to a relative accuracy at every scale.
+The operator either holds an arm (a wait: every joint's waypoint zero) or moves some joint by 3.4
+resolutions or more. A regression trained on both answers a state where the features leave it
+unsure with a step between, too small to arrive, and the arm creeps on such steps without end. A
+gated policy (fit's `gated`, `learn train --hold-gate`) learns the hold as a class of its own and
+the waypoint from the moves alone: a whole move or none.
 
 The policy is one network for either arm (each arm moves its own three rings, as the operator's
 routines do): it sees one arm's `ArmFeatures` and gives that arm's waypoint. An arm's features
@@ -38,11 +43,13 @@ from .env import part
 
 ACTION = "joint_deltas"
 OUTPUT = "asinh(waypoint / RESOLUTION), per arm"
+GATED = "asinh(waypoint / RESOLUTION) of a move, then the logit that the arm holds, per arm"
 # At most this per step and joint: 0.1 rad for the rotary joints, 2 mm of insertion.
 STEP_CAP = np.array([0.1, 0.1, 0.002, 0.1, 0.1, 0.1, 0.1] * 2)
 # Waypoints are learnt at this resolution: linear below it, logarithmic above (rad; m).
 RESOLUTION = np.array([0.002, 0.002, 0.0002, 0.002, 0.002, 0.002, 0.002])
 HOLD_MEMORY = 20
+HOLD = 0.5  # learnt resolutions: an arm's waypoint under this in every joint holds it
 STILL = 2e-4  # targets changing less than this per step stand still (rad or m; the
 #               operator's moves change some joint by a millimetre's 1e-3 or more)
 NEAR = 0.02  # m: the current ring's offset from the tool, clipped
@@ -149,6 +156,12 @@ class Features:
         return np.stack([features(s) for s in states], axis=1)
 
 
+def holds(waypoints):
+    """Per row of an arm's waypoints (n, 7): whether the operator holds the arm there (every
+    joint under HOLD resolutions; its moves change some joint by 3.4 or more)."""
+    return (np.abs(waypoints) / RESOLUTION).max(axis=1) < HOLD
+
+
 def to_learnt(waypoints):
     """Per arm's seven joints: the scale a network learns waypoints at."""
     return np.arcsinh(waypoints / RESOLUTION)
@@ -170,12 +183,13 @@ def make_network(inputs, outputs, hidden):
 
 class Policy:
     """A cloned policy: a standardised MLP from an arm's features to its waypoint (learnt scale),
-    run for each arm; it acts by moving at most STEP_CAP towards it."""
+    run for each arm; it acts by moving at most STEP_CAP towards it. A gated one also gives the
+    logit that the arm holds, and holds it where that is positive (fit's `gated`)."""
 
     env_kwargs = {}  # the observations it needs of PegTransferEnv besides the defaults: none
 
-    def __init__(self, network, stats, hidden):
-        self.network, self.stats, self.hidden = network, stats, hidden
+    def __init__(self, network, stats, hidden, gated=False):
+        self.network, self.stats, self.hidden, self.gated = network, stats, hidden, gated
         self.features = Features()
 
     def reset(self):
@@ -183,7 +197,7 @@ class Policy:
 
     def fresh(self):
         """The same network with a memory of its own (the features' hold counts)."""
-        return Policy(self.network, self.stats, self.hidden)
+        return Policy(self.network, self.stats, self.hidden, self.gated)
 
     def act(self, observation):
         """Both arms' joint deltas (14) from the observation (the state, or a dict with it)."""
@@ -192,14 +206,17 @@ class Policy:
         x = (self.features(state) - self.stats["input_mean"]) / self.stats["input_std"]
         with torch.no_grad():
             y = self.network(torch.as_tensor(x, dtype=torch.float32)).numpy().astype(np.float64)
-        waypoint = from_learnt(y * self.stats["output_std"] + self.stats["output_mean"]).ravel()
-        return np.clip(waypoint, -STEP_CAP, STEP_CAP)
+        waypoint = from_learnt(y[:, :7] * self.stats["output_std"] + self.stats["output_mean"])
+        if self.gated:
+            waypoint[y[:, 7] > 0.0] = 0.0
+        return np.clip(waypoint.ravel(), -STEP_CAP, STEP_CAP)
 
     def checkpoint(self, **about):
         """What save() writes: the network, its scaling and what it was made from."""
         return {"network": self.network.state_dict(), "hidden": self.hidden,
                 "stats": {k: v.tolist() for k, v in self.stats.items()},
-                "features": ArmFeatures.size, "output": OUTPUT, **about}
+                "features": ArmFeatures.size, "output": GATED if self.gated else OUTPUT,
+                **about}
 
     def save(self, path, **about):
         import torch
@@ -207,15 +224,17 @@ class Policy:
 
     @staticmethod
     def from_checkpoint(saved, path):
-        if saved.get("features") != ArmFeatures.size or saved.get("output") != OUTPUT:
+        if saved.get("features") != ArmFeatures.size or saved.get("output") not in (OUTPUT, GATED):
             raise ValueError(f"{path}: a policy of another version ({saved.get('features')} "
                              f"inputs per arm, output {saved.get('output')}; this version: "
-                             f"{ArmFeatures.size}, {OUTPUT}); train it again")
+                             f"{ArmFeatures.size}, {OUTPUT} or {GATED}); train it again")
+        gated = saved["output"] == GATED
         stats = {k: np.asarray(v) for k, v in saved["stats"].items()}
-        network = make_network(ArmFeatures.size, len(stats["output_mean"]), saved["hidden"])
+        network = make_network(ArmFeatures.size, len(stats["output_mean"]) + gated,
+                               saved["hidden"])
         network.load_state_dict(saved["network"])
         network.eval()
-        return Policy(network, stats, saved["hidden"])
+        return Policy(network, stats, saved["hidden"], gated)
 
     @staticmethod
     def load(path):
@@ -250,12 +269,29 @@ class RingsSeenOff:
         return self.policy.act(state)
 
 
-def train_mse(network, inputs, targets, epochs, batch, lr, seed, measure, log_epoch):
-    """Trains `network` on the tensors (inputs, targets): mean squared error over shuffled
-    batches, Adam with a cosine schedule. Per epoch it calls log_epoch(epoch, the sum of
-    measure(predicted, target, loss) over its batches, seconds so far). Leaves the network in
-    evaluation mode; returns the last epoch's sum and the seconds it took."""
+def hold_and_move_loss(predicted, target):
+    """A gated policy's loss (target: the learnt waypoint, then 1 where the operator held): the
+    hold's binary cross-entropy plus the squared error of the waypoints it moved to. Its holds
+    teach the regression nothing, so a state where the operator sometimes holds and sometimes
+    moves gives a whole move or none, never the average of both (a step too small to arrive)."""
     import torch
+    held = target[:, -1]
+    loss = torch.nn.functional.binary_cross_entropy_with_logits(predicted[:, -1], held)
+    moved = held < 0.5
+    if moved.any():
+        loss = loss + torch.nn.functional.mse_loss(predicted[moved, :-1], target[moved, :-1])
+    return loss
+
+
+def train_network(network, inputs, targets, epochs, batch, lr, seed, measure, log_epoch,
+                  loss_of=None):
+    """Trains `network` on the tensors (inputs, targets): `loss_of(predicted, target)` (mean
+    squared error unless told) over shuffled batches, Adam with a cosine schedule. Per epoch it
+    calls log_epoch(epoch, the sum of measure(predicted, target, loss) over its batches, seconds
+    so far). Leaves the network in evaluation mode; returns the last epoch's sum and the seconds
+    it took."""
+    import torch
+    loss_of = loss_of or torch.nn.functional.mse_loss
     optimiser = torch.optim.Adam(network.parameters(), lr=lr)
     batches = (len(inputs) + batch - 1) // batch
     schedule = torch.optim.lr_scheduler.CosineAnnealingLR(optimiser, epochs * batches)
@@ -268,7 +304,7 @@ def train_mse(network, inputs, targets, epochs, batch, lr, seed, measure, log_ep
         for i in range(0, len(inputs), batch):
             rows = order[i:i + batch]
             predicted = network(inputs[rows])
-            loss = torch.nn.functional.mse_loss(predicted, targets[rows])
+            loss = loss_of(predicted, targets[rows])
             optimiser.zero_grad()
             loss.backward()
             optimiser.step()
@@ -293,11 +329,12 @@ def labelled_as_seen(features, expert_jobs):
 
 
 def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print, start=None,
-        expert_jobs=None):
+        expert_jobs=None, gated=False):
     """Trains a Policy on episodes (lists of state and waypoint arrays): Adam with a cosine
     schedule, mean squared error on the standardised learnt scale, on the arm-steps whose labels
     answer what the policy sees (labelled_as_seen, from each episode's `expert_jobs`, if given).
-    `start`: a policy to go on from."""
+    `gated`: a hold gate besides, the regression on the moves alone (hold_and_move_loss).
+    `start`: a policy to go on from (gated if it is)."""
     import torch
     torch.manual_seed(seed)
     jobs = expert_jobs if expert_jobs is not None else [None] * len(states)
@@ -305,23 +342,30 @@ def fit(states, waypoints, hidden, epochs, batch=512, lr=2e-3, seed=0, log=print
     kept = [labelled_as_seen(f, j) for f, j in zip(features, jobs)]
     x = np.vstack([f[arm][k[arm]] for f, k in zip(features, kept) for arm in (0, 1)])
     # Each arm's rows in the order of_episode gives them: per episode the left arm, then the right.
-    y = to_learnt(np.vstack([w[k[arm]][:, joints_of(arm)] for w, k in zip(waypoints, kept)
-                             for arm in (0, 1)]))
-    log(f"{len(x)} of {sum(k.size for k in kept)} arm-steps labelled as the policy sees them")
+    raw = np.vstack([w[k[arm]][:, joints_of(arm)] for w, k in zip(waypoints, kept)
+                     for arm in (0, 1)])
+    y = to_learnt(raw)
+    gated = start.gated if start is not None else gated
+    held = holds(raw) if gated else np.zeros(len(raw), bool)
+    log(f"{len(x)} of {sum(k.size for k in kept)} arm-steps labelled as the policy sees them"
+        + (f", {held.mean():.1%} of them holds" if gated else ""))
     if start is None:
         stats = {"input_mean": x.mean(0), "input_std": x.std(0) + 1e-6,
-                 "output_mean": y.mean(0), "output_std": y.std(0) + 1e-6}
-        network = make_network(x.shape[1], y.shape[1], hidden)
+                 "output_mean": y[~held].mean(0), "output_std": y[~held].std(0) + 1e-6}
+        network = make_network(x.shape[1], y.shape[1] + gated, hidden)
     else:
         stats, network, hidden = start.stats, start.network, start.hidden
         network.train()
     xt = torch.as_tensor((x - stats["input_mean"]) / stats["input_std"], dtype=torch.float32)
     yt = torch.as_tensor((y - stats["output_mean"]) / stats["output_std"], dtype=torch.float32)
+    if gated:
+        yt = torch.cat([yt, torch.as_tensor(held, dtype=torch.float32)[:, None]], dim=1)
 
     def log_epoch(epoch, total, seconds):
         if epoch % 10 == 0 or epoch == epochs - 1:
             log(f"epoch {epoch}: loss {total / len(xt):.5f} ({seconds:.0f} s)")
 
-    _, seconds = train_mse(network, xt, yt, epochs, batch, lr, seed,
-                           lambda predicted, target, loss: loss * len(target), log_epoch)
-    return Policy(network, stats, list(hidden)), len(xt), seconds
+    _, seconds = train_network(network, xt, yt, epochs, batch, lr, seed,
+                               lambda predicted, target, loss: loss * len(target), log_epoch,
+                               hold_and_move_loss if gated else None)
+    return Policy(network, stats, list(hidden), gated), len(xt), seconds

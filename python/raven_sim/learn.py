@@ -226,7 +226,8 @@ def train(args):
         states, waypoints, jobs = demos.load_all(args.demos)
     start = Policy.load(args.init) if args.init else None
     policy, samples, seconds = fit(states, waypoints, [args.width] * args.layers, args.epochs,
-                                   args.batch, args.lr, args.seed, start=start, expert_jobs=jobs)
+                                   args.batch, args.lr, args.seed, start=start, expert_jobs=jobs,
+                                   gated=args.hold_gate)
     if locator is not None:
         policy = ImagePolicy(locator, policy, saved["image_size"])
     policy.save(args.out, demos=args.demos, samples=samples, seconds=seconds,
@@ -433,6 +434,9 @@ def main(argv=None):
     p.add_argument("--lr", type=POSITIVE, default=2e-3)
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--threads", type=COUNT, default=2, help="torch's CPU threads")
+    p.add_argument("--hold-gate", action="store_true",
+                   help="a state policy that also learns whether the operator holds each arm, "
+                        "and regresses only the waypoints it moves to (imitation.fit)")
     p.add_argument("--init", help="a policy to go on training (its network and scaling; with "
                    "--obs rgb an image policy, whose ring locator goes on training)")
     p.add_argument("--obs", choices=["state", "rgb"], default="state",

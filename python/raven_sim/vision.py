@@ -21,7 +21,7 @@ policy from the same demonstrations' states (behaviour cloning, imitation.fit).
 import numpy as np
 
 from .demos import expert_jobs_of, stored
-from .imitation import LAYOUT, REST_Z, RINGS, Policy, train_mse
+from .imitation import LAYOUT, REST_Z, RINGS, Policy, train_network
 
 CAMERAS = ("left-task", "right-task")  # per arm, left first
 KIND = "image policy: RingLocator on each arm's task camera + imitation.Policy"
@@ -249,6 +249,6 @@ def fit_locator(images, rings, epochs, batch=128, lr=1e-3, seed=0, log=print, st
     def log_epoch(epoch, total, seconds):
         log(f"epoch {epoch}: ring error {total / (3 * len(images)):.2f} mm ({seconds:.0f} s)")
 
-    total, seconds = train_mse(locator, images, rings, epochs, batch, lr, seed, ring_error,
-                               log_epoch)
+    total, seconds = train_network(locator, images, rings, epochs, batch, lr, seed,
+                                   ring_error, log_epoch)
     return locator, total / (3 * len(images)), seconds

@@ -7,7 +7,6 @@ import contextlib
 import io
 import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -139,6 +138,43 @@ class PolicyInputsAndOutputs(unittest.TestCase):
         env = raven_sim.PegTransferEnv(action_type="joint_deltas")
         action = policy.act(env.reset(seed=0)[0])
         self.assertTrue(np.array_equal(np.abs(action), imitation.STEP_CAP))
+
+    def test_a_gated_policy_holds_where_its_gate_says_and_else_moves_the_whole_waypoint(self):
+        import torch
+        size = imitation.ArmFeatures.size
+        network = imitation.make_network(size, 8, [4])
+        for p in network.parameters():
+            torch.nn.init.zeros_(p)
+        # The last layer's biases: a waypoint of 1 learnt unit per joint; the gate's logit from
+        # the first feature (the arm: +1 left, -1 right) through one hidden unit.
+        with torch.no_grad():
+            network[0].weight[0, 0] = 1.0
+            network[2].bias[:7] = 1.0
+            network[2].weight[7, 0] = 5.0
+        stats = {"input_mean": np.zeros(size), "input_std": np.ones(size),
+                 "output_mean": np.zeros(7), "output_std": np.ones(7)}
+        env = raven_sim.PegTransferEnv(action_type="joint_deltas")
+        state = env.reset(seed=0)[0]
+        gated = imitation.Policy(network, stats, [4], gated=True).act(state).reshape(2, 7)
+        self.assertTrue(np.array_equal(gated[0], np.zeros(7)))  # the left arm: logit 5, holds
+        self.assertTrue(np.allclose(gated[1], imitation.from_learnt(np.ones(7))))
+        # Saved and loaded, it is the same policy.
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "gated.pt")
+            imitation.Policy(network, stats, [4], gated=True).save(path)
+            self.assertTrue(np.array_equal(imitation.Policy.load(path).act(state).reshape(2, 7),
+                                           gated))
+
+    def test_the_operators_holds_teach_the_gate_and_not_the_waypoints(self):
+        import torch
+        waypoints = np.array([[0.0] * 7, [1e-4] + [0.0] * 6, [0.01] + [0.0] * 6])
+        self.assertEqual(imitation.holds(waypoints).tolist(), [True, True, False])
+        target = torch.tensor([[9.0, 9.0, 1.0], [2.0, 3.0, 0.0]])  # a hold, then a move
+        right = torch.tensor([[-50.0, 50.0, 40.0], [2.0, 3.0, -40.0]])
+        self.assertLess(imitation.hold_and_move_loss(right, target).item(), 1e-12)
+        wrong_move = torch.tensor([[-50.0, 50.0, 40.0], [2.0, 4.0, -40.0]])
+        self.assertAlmostEqual(imitation.hold_and_move_loss(wrong_move, target).item(), 0.5,
+                               places=6)
 
 
 class RingsSeenOff(unittest.TestCase):
