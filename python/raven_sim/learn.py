@@ -215,6 +215,9 @@ def train(args):
     torch.set_num_threads(args.threads)
     if args.obs == "rgb":
         return train_image_policy(args)
+    start = Policy.load(args.init) if args.init else None
+    if start is not None and args.hold_gate and not start.gated:
+        sys.exit(f"train --hold-gate: {args.init} has no hold gate to go on training")
     locator = None
     if args.rings_from:  # the acting part of an image policy, on the rings its locator sees
         saved = torch.load(args.rings_from)
@@ -224,7 +227,6 @@ def train(args):
         states, waypoints, jobs = load_located(args.demos, locator)
     else:
         states, waypoints, jobs = demos.load_all(args.demos)
-    start = Policy.load(args.init) if args.init else None
     policy, samples, seconds = fit(states, waypoints, [args.width] * args.layers, args.epochs,
                                    args.batch, args.lr, args.seed, start=start, expert_jobs=jobs,
                                    gated=args.hold_gate)

@@ -430,6 +430,11 @@ class Demonstrations(unittest.TestCase):
             with contextlib.redirect_stderr(io.StringIO()) as err, self.assertRaises(SystemExit):
                 learn.main(command)
             self.assertIn(wanted, err.getvalue())
+        # A plain policy has no gate to go on training: refused before any demo is read.
+        with self.assertRaises(SystemExit) as refused:
+            learn.main(["train", "--hold-gate", "--init", SHIPPED_POLICY, "--demos",
+                        "missing.hdf5", "--out", "o.pt"])
+        self.assertIn("has no hold gate to go on training", str(refused.exception))
 
 
 if __name__ == "__main__":
